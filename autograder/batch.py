@@ -1,0 +1,202 @@
+"""Grade a whole class: a pool of forked graders, one student per process.
+
+The parent imports everything once (numpy, scipy, pytest, the hidden suite,
+the reference solutions) and then forks a fresh grader per student
+(``maxtasksperchild=1``), so starting a student costs a fork, not a Python
+start-up, and no state survives from one student to the next.
+
+Each student's result is written atomically to ``OUT/students/<id>.json``
+as soon as it is ready, with the content hash of the submission and a
+fingerprint of the grader (masters, hidden suite, options). A re-run skips
+students whose submission and grader did not change (``force`` re-grades),
+so an interrupted run loses nothing already graded.
+"""
+
+import hashlib
+import json
+import multiprocessing
+import os
+import signal
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import feedback, submissions
+from .catalog import load_catalog
+from .gradebook import gradebook_csv
+from .grading import GradingOptions, grade_student
+from .paths import HIDDEN_SUITE, SOLUTIONS
+from .reference import load_reference
+from .results import COULD_NOT_GRADE, MISSING, StudentResult
+from .sandbox import launcher, process_tree
+from .suite import preload_hidden_suite
+
+STUDENT_TIMEOUT = 900
+
+
+def safe_name(student_id):
+    """A file name for a student id: letters, digits, ``._-`` kept, the rest %-escaped.
+
+    Examples
+    --------
+    >>> safe_name("=cmd|' /C calc'!A0")
+    '%3Dcmd%7C%27%20%2FC%20calc%27%21A0'
+    """
+    out = []
+    for char in student_id:
+        if char.isascii() and (char.isalnum() or char in "._-"):
+            out.append(char)
+        else:
+            out.append("".join(f"%{b:02X}" for b in char.encode("utf-8")))
+    name = "".join(out)
+    return name if name not in ("", ".", "..") else f"%{name}"
+
+
+def grader_fingerprint(options, solutions_dir=SOLUTIONS):
+    """A hash of everything that decides a grade besides the submission."""
+    digest = hashlib.sha256()
+    files = sorted(Path(solutions_dir).glob("[0-9][0-9]_*.ipynb")) + sorted(HIDDEN_SUITE.glob("*.py"))
+    files += sorted((Path(solutions_dir) / "coursekit").rglob("*.py"))
+    for path in files:
+        digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+    digest.update(repr((options.nbval, options.notebook_points, options.limits, options.lessons)).encode())
+    return digest.hexdigest()[:16]
+
+
+def write_atomically(path, text):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    with open(tmp, "w", encoding="utf-8") as handle:
+        handle.write(text)
+        handle.flush()
+        os.fsync(handle.fileno())
+    os.replace(tmp, path)
+
+
+@dataclass
+class Outputs:
+    """Where a run writes; all under one directory."""
+
+    root: Path
+
+    def student_json(self, student_id):
+        return self.root / "students" / f"{safe_name(student_id)}.json"
+
+    def feedback_html(self, student_id):
+        return self.root / "feedback" / f"{safe_name(student_id)}.html"
+
+    @property
+    def gradebook(self):
+        return self.root / "grades.csv"
+
+
+def load_saved(outputs, student_id):
+    """(fingerprint, submission hash, StudentResult) saved for a student, or None."""
+    path = outputs.student_json(student_id)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        return data["fingerprint"], data["result"]["submission_hash"], StudentResult.from_json(
+            json.dumps(data["result"]))
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def save_result(outputs, result, fingerprint, graded_at):
+    payload = {"fingerprint": fingerprint, "graded_at": graded_at, "result": json.loads(result.to_json())}
+    write_atomically(outputs.feedback_html(result.student_id), feedback.feedback_html(result))
+    write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
+
+
+def _grade_task(task):
+    """Runs in a forked worker: grade one student, save, return a summary row."""
+    student_id, folder, options, out_root, fingerprint = task
+    process_tree.become_subreaper()
+    outputs = Outputs(Path(out_root))
+
+    def on_alarm(signum, frame):
+        raise TimeoutError(f"grading this student took longer than {STUDENT_TIMEOUT} s")
+
+    signal.signal(signal.SIGALRM, on_alarm)
+    signal.alarm(STUDENT_TIMEOUT)
+    try:
+        result = grade_student(student_id, Path(folder), options)
+    except Exception as error:  # our fault, not the student's: report, keep the batch going
+        result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
+                               reason=f"{type(error).__name__}: {error}",
+                               submission_hash=submissions.submission_hash(folder))
+        result.problems.append(traceback.format_exc(limit=3).strip().splitlines()[-1])
+    finally:
+        signal.alarm(0)
+        process_tree.kill_descendants()
+    save_result(outputs, result, fingerprint, time.strftime("%Y-%m-%d %H:%M:%S"))
+    return result.student_id, result.score, result.max_score, result.status, result.seconds
+
+
+@dataclass
+class RunSummary:
+    graded: list = field(default_factory=list)  # (student_id, score, max, status, seconds)
+    skipped: list = field(default_factory=list)  # student ids whose saved result was reused
+    seconds: float = 0.0
+
+
+def _prewarm():
+    """Import and compute, once, everything the forked graders share read-only."""
+    load_catalog()
+    load_reference()
+    preload_hidden_suite()
+    launcher.isolation()
+    launcher.limits_mode_can_drop_root()
+
+
+def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None):
+    """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`."""
+    started = time.monotonic()
+    outputs = Outputs(Path(out_dir))
+    outputs.root.mkdir(parents=True, exist_ok=True)
+    _prewarm()
+    fingerprint = grader_fingerprint(options)
+    students = submissions.student_folders(path)
+    summary = RunSummary()
+    tasks = []
+    for student_id, folder in students:
+        saved = None if force else load_saved(outputs, student_id)
+        if saved and saved[0] == fingerprint and saved[1] == submissions.submission_hash(folder):
+            summary.skipped.append(student_id)
+            continue
+        tasks.append((student_id, str(folder), options, str(outputs.root), fingerprint))
+    jobs = max(1, jobs or os.cpu_count() or 1)
+    if progress:
+        progress.start(len(tasks))
+    if tasks:
+        context = multiprocessing.get_context("fork")
+        with context.Pool(processes=min(jobs, len(tasks)), maxtasksperchild=1) as pool:
+            for row in pool.imap_unordered(_grade_task, tasks):
+                summary.graded.append(row)
+                if progress:
+                    progress.advance(row)
+    if progress:
+        progress.finish()
+    write_gradebook(outputs, [sid for sid, _ in students])
+    summary.seconds = time.monotonic() - started
+    return summary
+
+
+def collect_results(outputs, student_ids):
+    results, timestamps = [], {}
+    for student_id in student_ids:
+        path = outputs.student_json(student_id)
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+            results.append(StudentResult.from_json(json.dumps(data["result"])))
+            timestamps[student_id] = data.get("graded_at", "")
+        except (OSError, ValueError, KeyError, TypeError):
+            results.append(StudentResult(student_id=student_id, status=MISSING, reason="no result saved"))
+    return results, timestamps
+
+
+def write_gradebook(outputs, student_ids):
+    results, timestamps = collect_results(outputs, student_ids)
+    write_atomically(outputs.gradebook, gradebook_csv(results, load_catalog(), timestamps))
+    return results

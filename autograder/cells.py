@@ -1,0 +1,122 @@
+"""The roles a cell plays in a lesson notebook, read from its metadata.
+
+A lesson master (``solutions/NN_*.ipynb``) is an nbgrader source notebook:
+
+- an **answer cell** holds one exercise: ``nbgrader.solution`` is true and its
+  ``grade_id`` is the exercise's function name (``rot_z``); the solution sits
+  between ``### BEGIN SOLUTION`` and ``### END SOLUTION``;
+- a **check cell** follows it: ``nbgrader.grade`` is true, ``grade_id`` is
+  ``check_<name>``, ``points`` is what the exercise is worth, and its source
+  is ``check("<name>", <name>)``;
+- the **setup cell** (tag ``setup``) holds the imports the answers need; the
+  grader runs it before a student's answer cells;
+- **demonstration cells** tagged ``nbval-check-output`` print results that
+  nbval compares with the reference outputs.
+
+The constructors below build such cells for authors; the predicates read them.
+"""
+
+import nbformat
+
+NBGRADER_SCHEMA = 3
+SETUP_TAG = "setup"
+CHECK_OUTPUT_TAG = "nbval-check-output"
+CHECK_PREFIX = "check_"
+BEGIN_SOLUTION = "### BEGIN SOLUTION"
+END_SOLUTION = "### END SOLUTION"
+
+
+def _nbgrader(cell):
+    meta = cell.get("metadata", {}).get("nbgrader")
+    return meta if isinstance(meta, dict) else {}
+
+
+def tags(cell):
+    value = cell.get("metadata", {}).get("tags", [])
+    return [t for t in value if isinstance(t, str)] if isinstance(value, list) else []
+
+
+def grade_id(cell):
+    value = _nbgrader(cell).get("grade_id")
+    return value if isinstance(value, str) else None
+
+
+def is_answer_cell(cell):
+    meta = _nbgrader(cell)
+    return cell.get("cell_type") == "code" and bool(meta.get("solution")) and not meta.get("grade")
+
+
+def is_check_cell(cell):
+    meta = _nbgrader(cell)
+    return cell.get("cell_type") == "code" and bool(meta.get("grade")) and not meta.get("solution")
+
+
+def is_setup_cell(cell):
+    return cell.get("cell_type") == "code" and SETUP_TAG in tags(cell)
+
+
+def checks_output(cell):
+    return cell.get("cell_type") == "code" and CHECK_OUTPUT_TAG in tags(cell)
+
+
+def points(cell):
+    value = _nbgrader(cell).get("points", 0)
+    return float(value) if isinstance(value, (int, float)) else 0.0
+
+
+def source_text(cell):
+    source = cell.get("source", "")
+    return "".join(source) if isinstance(source, list) else str(source)
+
+
+# ---------------------------------------------------------------- constructors for authors
+def _meta(grade, solution, locked, cell_id, points_value=None):
+    meta = {"grade": grade, "grade_id": cell_id, "locked": locked,
+            "schema_version": NBGRADER_SCHEMA, "solution": solution, "task": False}
+    if points_value is not None:
+        meta["points"] = points_value
+    return {"nbgrader": meta}
+
+
+def markdown(text):
+    """A narrative cell."""
+    return nbformat.v4.new_markdown_cell(text.strip("\n"))
+
+
+def code(source, check_output=False):
+    """A demonstration cell; ``check_output`` makes nbval compare its printed output."""
+    cell = nbformat.v4.new_code_cell(source.strip("\n"))
+    if check_output:
+        cell.metadata["tags"] = [CHECK_OUTPUT_TAG]
+    return cell
+
+
+def setup(source):
+    """The lesson's imports, run by the grader before the student's answers."""
+    cell = nbformat.v4.new_code_cell(source.strip("\n"))
+    cell.metadata["tags"] = [SETUP_TAG]
+    cell.metadata.update(_meta(False, False, True, "setup"))
+    cell.metadata["editable"] = False
+    cell.metadata["deletable"] = False
+    cell.id = "setup"
+    return cell
+
+
+def answer(name, source):
+    """The answer cell of exercise ``name``; ``source`` contains the solution markers."""
+    if BEGIN_SOLUTION not in source or END_SOLUTION not in source:
+        raise ValueError(f"answer cell {name!r} has no solution markers")
+    cell = nbformat.v4.new_code_cell(source.strip("\n"))
+    cell.metadata.update(_meta(False, True, False, name))
+    cell.id = name
+    return cell
+
+
+def check(name, points_value):
+    """The locked check cell that follows exercise ``name``."""
+    cell = nbformat.v4.new_code_cell(f'check("{name}", {name})')
+    cell.metadata.update(_meta(True, False, True, CHECK_PREFIX + name, points_value))
+    cell.metadata["editable"] = False
+    cell.metadata["deletable"] = False
+    cell.id = CHECK_PREFIX + name
+    return cell

@@ -1,0 +1,142 @@
+"""``python -m autograder``: release the course, record outputs, grade a class.
+
+Commands
+--------
+release [--check]
+    Regenerate ``course/`` from ``solutions/``; ``--check`` only verifies.
+record [--only NN ...]
+    Re-record the demonstration outputs stored in the masters.
+grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--force]
+    Grade every student folder in PATH (or the bundled sample class).
+status --out DIR
+    Who is graded, who could not be graded and why, who is missing.
+"""
+
+import argparse
+import sys
+from pathlib import Path
+
+
+def _cmd_release(args):
+    from .release import release, stale_files
+
+    if args.check:
+        problems = stale_files()
+        for path, reason in problems:
+            print(f"{path}: {reason}")
+        if problems:
+            print(f"course/ is out of date: {len(problems)} file(s). Run: python -m autograder release")
+            return 1
+        print("course/ and solutions/ are in sync.")
+        return 0
+    written = release()
+    for path in written:
+        print(f"wrote {path}")
+    print(f"release done: {len(written)} file(s) changed.")
+    return 0
+
+
+def _cmd_record(args):
+    from .record import RecordingFailed, record_outputs
+
+    try:
+        changed = record_outputs(only=args.only)
+    except RecordingFailed as error:
+        print(f"record failed: {error}", file=sys.stderr)
+        return 1
+    for path in changed:
+        print(f"recorded {path}")
+    print(f"record done: {len(changed)} master(s) changed. Run `python -m autograder release` next.")
+    return 0
+
+
+def _print_table(results):
+    width = max([len("student")] + [len(r.student_id) for r in results])
+    print(f"{'student':<{width}}  {'score':>13}  status")
+    for r in results:
+        score = f"{r.score:g} / {r.max_score:g}" if r.max_score else "—"
+        status = r.status + (f": {r.reason}" if r.reason else "")
+        print(f"{r.student_id:<{width}}  {score:>13}  {status}")
+
+
+def _cmd_grade(args):
+    from .batch import grade_class, write_gradebook, Outputs
+    from .grading import GradingOptions
+    from .progress import Progress
+    from .sandbox import launcher
+
+    out = Path(args.out)
+    path = args.path
+    if path is None:
+        from .sample_class import build_sample_class
+
+        path = out / "sample_class"
+        build_sample_class(path)
+        print(f"No PATH given: grading the bundled sample class, written to {path}")
+    path = Path(path)
+    if not path.is_dir():
+        print(f"error: {path} is not a folder of student submissions", file=sys.stderr)
+        return 2
+    print(launcher.describe_isolation())
+    options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
+    summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
+                          progress=Progress(sys.stderr))
+    from .submissions import student_folders
+
+    results = write_gradebook(Outputs(out), [sid for sid, _ in student_folders(path)])
+    print()
+    _print_table(results)
+    print()
+    reused = f", {len(summary.skipped)} unchanged and reused" if summary.skipped else ""
+    print(f"graded {len(summary.graded)} student(s){reused} in {summary.seconds:.1f} s")
+    print(f"gradebook: {out / 'grades.csv'}")
+    print(f"feedback:  {out / 'feedback'}/<student>.html")
+    return 0
+
+
+def _cmd_status(args):
+    from .batch import Outputs, collect_results
+
+    outputs = Outputs(Path(args.out))
+    ids = sorted(p.stem for p in (outputs.root / "students").glob("*.json"))
+    from urllib.parse import unquote
+
+    results, _ = collect_results(outputs, [unquote(i) for i in ids])
+    if not results:
+        print(f"no results in {outputs.root}")
+        return 1
+    _print_table(results)
+    return 0
+
+
+def build_parser():
+    parser = argparse.ArgumentParser(prog="python -m autograder", description=__doc__.split("\n")[0])
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    release = commands.add_parser("release", help="regenerate course/ from solutions/")
+    release.add_argument("--check", action="store_true", help="only check that course/ is up to date")
+    release.set_defaults(run=_cmd_release)
+
+    record = commands.add_parser("record", help="re-record the masters' demonstration outputs")
+    record.add_argument("--only", nargs="*", help="lesson prefixes such as 01 03")
+    record.set_defaults(run=_cmd_record)
+
+    grade = commands.add_parser("grade", help="grade a folder of submissions (or the sample class)")
+    grade.add_argument("path", nargs="?", help="one folder per student, or nbgrader's submitted/ layout")
+    grade.add_argument("--out", required=True, help="where grades.csv and feedback/ go")
+    grade.add_argument("--jobs", type=int, default=None, help="parallel graders (default: number of cores)")
+    grade.add_argument("--no-nbval", action="store_true", help="skip the notebook stage (faster)")
+    grade.add_argument("--lessons", nargs="+", default=(), metavar="NN",
+                       help="grade only these lessons, e.g. --lessons 01 03 (default: all)")
+    grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
+    grade.set_defaults(run=_cmd_grade)
+
+    status = commands.add_parser("status", help="show the saved results of a grading run")
+    status.add_argument("--out", required=True)
+    status.set_defaults(run=_cmd_status)
+    return parser
+
+
+def main(argv=None):
+    args = build_parser().parse_args(argv)
+    return args.run(args)

@@ -1,0 +1,92 @@
+"""What hidden tests are written with: marks, failures with hints, comparisons.
+
+Every hidden test names the exercise it grades and, through its docstring's
+first line, what it checks — that line is what the student reads. When a
+check fails it raises :class:`Wrong` with one line on what was seen and,
+where a mistake is recognisable, a hint::
+
+    @exercise("rot_z", weight=2)
+    def test_rot_z_matches_scipy(student):
+        \"\"\"agrees with scipy for 20 random angles\"\"\"
+        for angle in angles(seed=1):
+            got = expect_array(student.rot_z(angle), (3, 3), "rot_z")
+            expect_close(got, Rotation.from_euler("z", angle).as_matrix(), 1e-9,
+                         f"rot_z({angle:.3f})", hint=rotation_hint(got, ...))
+
+A test may call student functions of its own exercise only; inputs and
+expected values come from the reference (``ref``), scipy, or the test itself,
+so one wrong exercise never costs points elsewhere.
+"""
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from coursekit.diagnose import rotation_hint, rotation_problem, shape_problem  # noqa: F401
+
+
+class Wrong(AssertionError):
+    """A failed hidden check: ``reason`` is what was seen, ``hint`` a likely cause."""
+
+    def __init__(self, reason, hint=""):
+        super().__init__(reason)
+        self.reason = reason
+        self.hint = hint or ""
+
+
+def exercise(name, weight=1.0):
+    """Mark a test as grading exercise ``name`` with relative ``weight``."""
+    return pytest.mark.exercise(name=name, weight=float(weight))
+
+
+def fmt(value, digits=4):
+    """Short text for a value in a failure message."""
+    array = np.asarray(value, dtype=float) if not isinstance(value, (str, dict)) else None
+    if array is None:
+        return repr(value)[:120]
+    text = np.array2string(np.round(array, digits) + 0.0, separator=", ", threshold=20, max_line_width=1000)
+    return " ".join(text.split())
+
+
+def expect(condition, reason, hint=""):
+    """Raise :class:`Wrong` unless ``condition``."""
+    if not condition:
+        raise Wrong(reason, hint)
+
+
+def expect_array(value, shape, what):
+    """``value`` as a float array of ``shape``, or :class:`Wrong` saying why not."""
+    problem = shape_problem(value, shape)
+    if problem:
+        raise Wrong(f"{what} {problem}")
+    return np.asarray(value, dtype=float)
+
+
+def expect_close(got, expected, tol, what, hint=""):
+    """Raise :class:`Wrong` unless ``got`` matches ``expected`` entrywise within ``tol``."""
+    got = np.asarray(got, dtype=float)
+    expected = np.asarray(expected, dtype=float)
+    if got.shape != expected.shape:
+        raise Wrong(f"{what}: shape {got.shape}, expected {expected.shape}", hint)
+    error = float(np.max(np.abs(got - expected))) if got.size else 0.0
+    if not error <= tol:
+        raise Wrong(f"{what} is off by {error:.2g} (tolerance {tol:g}): got {fmt(got)}, expected {fmt(expected)}",
+                    hint)
+
+
+def expect_bool(value, what):
+    """``value`` as a Python bool, or :class:`Wrong` if it is not a boolean."""
+    if isinstance(value, bool):
+        return value
+    raise Wrong(f"{what} returned {value!r} ({type(value).__name__}), not True or False",
+                "return a bool: wrap numpy's result in bool(...)")
+
+
+def random_rotations(count, seed):
+    """``count`` uniformly random rotation matrices, shape (count, 3, 3), seeded."""
+    return Rotation.random(count, random_state=seed).as_matrix()
+
+
+def random_angles(count, seed, low=-2 * np.pi, high=2 * np.pi):
+    """``count`` seeded random angles in [low, high)."""
+    return np.random.default_rng(seed).uniform(low, high, count)

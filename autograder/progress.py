@@ -1,0 +1,44 @@
+"""A progress line for long grading runs: count, rate, time left.
+
+It draws only on a terminal (``stream.isatty()``) and stays quiet otherwise,
+so logs and CI output are not filled with carriage returns.
+"""
+
+import time
+
+
+class Progress:
+    """``start(total)``, then ``advance(row)`` per finished student, then ``finish()``."""
+
+    def __init__(self, stream, min_seconds=2.0):
+        self.stream = stream
+        self.enabled = hasattr(stream, "isatty") and stream.isatty()
+        self.min_seconds = min_seconds
+        self.total = self.done = 0
+        self.started = time.monotonic()
+        self.drawn = False
+
+    def start(self, total):
+        self.total, self.done, self.started = total, 0, time.monotonic()
+
+    def line(self):
+        elapsed = time.monotonic() - self.started
+        rate = self.done / elapsed if elapsed > 0 else 0.0
+        left = (self.total - self.done) / rate if rate > 0 else float("nan")
+        width = 24
+        filled = int(width * self.done / self.total) if self.total else width
+        bar = "█" * filled + "·" * (width - filled)
+        eta = f"{left:4.0f} s left" if left == left else "  … s left"
+        return f"\r{bar} {self.done}/{self.total} students  {rate * 60:5.1f}/min  {eta}"
+
+    def advance(self, row=None):
+        self.done += 1
+        if self.enabled and time.monotonic() - self.started >= self.min_seconds:
+            self.stream.write(self.line())
+            self.stream.flush()
+            self.drawn = True
+
+    def finish(self):
+        if self.enabled and self.drawn:
+            self.stream.write(self.line() + "\n")
+            self.stream.flush()

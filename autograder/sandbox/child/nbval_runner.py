@@ -1,0 +1,90 @@
+"""Run nbval on a student's merged notebooks, inside the sandbox (copied there).
+
+Usage: ``python -I nbval_runner.py NOTEBOOK...`` in the folder that holds the
+notebooks. The kernels nbval starts inherit ``/dev/null`` as their output;
+the summary goes out on the original stdout as one JSON line:
+``{"notebooks": {name: {"cells": n, "failures": ["cell 7: ...", ...]}}}``.
+
+Nothing here is trusted by the grader: a student's kernel shares this
+sandbox, so the summary can only lower a grade, never raise it.
+"""
+
+import json
+import os
+import re
+import sys
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import jail  # noqa: E402
+
+if "--keep-user" in sys.argv:
+    sys.argv.remove("--keep-user")
+else:
+    jail.drop_privileges()
+
+
+ANSI = re.compile(r"\x1b\[[0-9;]*m")
+ERROR_LINE = re.compile(r"^([A-Za-z_][\w.]*(Error|Exception|Failed|Exit|Interrupt)): ?(.*)$")
+
+
+def describe_failure(source, longrepr):
+    """One line for a failed cell: its first line of code and what went wrong."""
+    lines = [line for line in (source or "").strip().splitlines() if line.strip()]
+    first = lines[0].strip() if lines else "(empty cell)"
+    first = first if len(first) <= 70 else first[:69] + "…"
+    text = ANSI.sub("", longrepr)
+    if "Cell outputs differ" in text:
+        what = "printed something different from the reference notebook"
+    elif "Timeout" in text or "timed out" in text:
+        what = "did not finish in time (an endless loop?)"
+    elif "Kernel dead" in text or "Kernel died" in text:
+        what = "could not run: the kernel had stopped (os._exit, sys.exit or a crash in an earlier cell)"
+    else:
+        errors = [m for m in (ERROR_LINE.match(line.strip()) for line in text.splitlines()) if m]
+        what = "raised " + (f"{errors[-1].group(1)}: {errors[-1].group(3)}".rstrip(": ") if errors else "an error")
+    return f"the cell `{first}` {' '.join(what.split())[:240]}"
+
+
+class Summary:
+    """pytest plugin: count cells and keep one line per failing cell."""
+
+    def __init__(self):
+        self.notebooks = {}
+
+    @pytest.hookimpl(hookwrapper=True)
+    def pytest_runtest_makereport(self, item, call):
+        outcome = yield
+        report = outcome.get_result()
+        if report.when != "call" and not (report.failed and report.when == "setup"):
+            return
+        name = report.nodeid.split("::")[0]
+        entry = self.notebooks.setdefault(name, {"cells": 0, "failures": []})
+        entry["cells"] += 1
+        if report.failed:
+            source = getattr(getattr(item, "cell", None), "source", "")
+            entry["failures"].append(describe_failure(source, str(report.longrepr)))
+
+
+def main(notebooks):
+    out = os.fdopen(os.dup(1), "w")
+    devnull = os.open(os.devnull, os.O_RDWR)
+    for fd in (0, 1, 2):
+        os.dup2(devnull, fd)
+    summary = Summary()
+    args = ["--nbval-lax", "--nbval-current-env", "--nbval-cell-timeout=10",
+            "--nbval-kernel-startup-timeout=60", "-p", "no:cacheprovider", "-q",
+            "-o", "addopts=", "--rootdir", os.getcwd()]
+    if os.path.exists(os.path.join(HERE, "nbval_sanitize.cfg")):
+        args += ["--nbval-sanitize-with", os.path.join(HERE, "nbval_sanitize.cfg")]
+    pytest.main(args + notebooks, plugins=[summary])
+    out.write(json.dumps({"notebooks": summary.notebooks}) + "\n")
+    out.flush()
+    os._exit(0)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

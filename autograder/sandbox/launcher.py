@@ -1,0 +1,293 @@
+"""Start a process that runs student code, as locked down as this machine allows.
+
+Two isolation modes:
+
+``namespaces``
+    bubblewrap (Debian package ``bubblewrap``) puts the process in new user,
+    PID, network, IPC and mount namespaces. It sees a read-only system and
+    Python installation, the worker files at ``/sandbox``, and a private,
+    writable ``/tmp``; the project (solutions, hidden suite), the grading
+    output and other students' files do not exist in its world. It has no
+    network. Killing it kills everything it started.
+``limits``
+    where bubblewrap is missing or user namespaces are disabled: resource
+    limits, a new session, a scrubbed environment and (when the grader runs
+    as root) the unprivileged ``nobody`` user. The grader says so loudly:
+    student code can then read files that are readable to everyone.
+
+Both modes apply the same resource limits (:class:`Limits`).
+"""
+
+import functools
+import os
+import pwd
+import resource
+import shutil
+import site
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..paths import PROJECT_ROOT
+
+NOBODY = 65534
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Resource limits for one student's sandbox (all per process, except ``processes``)."""
+
+    memory_bytes: int = 2 * 1024**3
+    cpu_seconds: int = 120
+    processes: int = 64
+    file_bytes: int = 32 * 1024**2
+    open_files: int = 256
+    call_timeout: float = 5.0
+    load_timeout: float = 10.0
+    student_seconds: float = 240.0
+    extra_env: dict = field(default_factory=dict)
+
+
+def _running_as_root():
+    return os.geteuid() == 0
+
+
+def _process_count(uid):
+    count = 0
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                if os.stat(f"/proc/{entry}").st_uid == uid:
+                    count += 1
+            except OSError:
+                pass
+    return count
+
+
+def _preexec(limits):
+    """Runs in the child between fork and exec: resource limits.
+
+    Privileges are dropped later, by our own worker (``child/jail.py``), so
+    that bubblewrap can still read a Python installed under ``/root``.
+    RLIMIT_NPROC counts every process of the sandbox's user: for ``nobody``
+    the sandbox is alone; for an ordinary user we add room to what they run.
+    """
+    nproc = limits.processes if _running_as_root() else _process_count(os.getuid()) + limits.processes
+
+    def apply():
+        for kind, value in ((resource.RLIMIT_AS, limits.memory_bytes),
+                            (resource.RLIMIT_CPU, limits.cpu_seconds),
+                            (resource.RLIMIT_FSIZE, limits.file_bytes),
+                            (resource.RLIMIT_NOFILE, limits.open_files),
+                            (resource.RLIMIT_CORE, 0),
+                            (resource.RLIMIT_NPROC, nproc)):
+            try:
+                resource.setrlimit(kind, (value, value))
+            except (ValueError, OSError):
+                pass
+
+    return apply
+
+
+def _python_roots():
+    """Directories the sandboxed Python needs: installation, venv and site-packages."""
+    candidates = [sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix]
+    candidates += site.getsitepackages()
+    user_site = site.getusersitepackages()
+    if isinstance(user_site, str):
+        candidates.append(user_site)
+    candidates.append(os.path.dirname(os.path.realpath(sys.executable)))
+    roots = []
+    for path in sorted({os.path.realpath(p) for p in candidates if p and os.path.isdir(p)}, key=len):
+        if any(path == r or path.startswith(r + os.sep) for r in roots):
+            continue
+        project = str(PROJECT_ROOT)
+        if path == project or project.startswith(path + os.sep):
+            continue  # never bind the project (or a folder holding it), only what is inside
+        roots.append(path)
+    # the venv's own path (a symlinked interpreter lives there) when it differs from its real path
+    venv = os.path.abspath(sys.prefix)
+    if os.path.realpath(venv) != venv and os.path.isdir(venv):
+        roots.append(venv)
+    return roots
+
+
+def _system_binds():
+    args = ["--ro-bind", "/usr", "/usr"]
+    for name in ("/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"):
+        if os.path.islink(name):
+            args += ["--symlink", os.readlink(name), name]
+        elif os.path.isdir(name):
+            args += ["--ro-bind", name, name]
+    for name in ("/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives",
+                 "/etc/localtime", "/etc/nsswitch.conf", "/etc/passwd", "/etc/group"):
+        if os.path.exists(name):
+            args += ["--ro-bind", name, name]
+    return args
+
+
+def sandbox_environment(limits):
+    """The whole environment of a sandboxed process (nothing inherited)."""
+    env = {
+        "HOME": "/tmp", "TMPDIR": "/tmp", "PATH": "/usr/bin:/bin", "LANG": "C.UTF-8",
+        "MPLBACKEND": "Agg", "MPLCONFIGDIR": "/tmp/.matplotlib", "PYTHONHASHSEED": "0",
+        "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
+        "PYTHONDONTWRITEBYTECODE": "1",
+    }
+    env.update(limits.extra_env)
+    return env
+
+
+def _parent_dirs(paths):
+    """bubblewrap creates missing parents of a mount point as root-only (0700): make them 0755."""
+    parents = set()
+    for path in paths:
+        parent = os.path.dirname(path)
+        while parent not in ("", "/"):
+            parents.add(parent)
+            parent = os.path.dirname(parent)
+    args = []
+    for parent in sorted(parents, key=lambda p: (p.count("/"), p)):
+        if parent not in ("/usr", "/etc", "/tmp"):
+            args += ["--perms", "0755", "--dir", parent]
+    return args
+
+
+def bwrap_command(program, sandbox_dir, scratch_dir, limits):
+    """The bubblewrap command line that runs ``program`` (a list) isolated.
+
+    As root, bubblewrap makes PID, network, IPC and mount namespaces without a
+    user namespace, and our worker drops to ``nobody``; as an ordinary user it
+    needs a user namespace too (``--unshare-all``).
+    """
+    if _running_as_root():
+        args = ["bwrap", "--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts",
+                "--unshare-cgroup-try"]
+    else:
+        args = ["bwrap", "--unshare-all"]
+    args += ["--die-with-parent", "--new-session"]
+    args += _system_binds()
+    roots = _python_roots()
+    args += _parent_dirs(roots)
+    for root in roots:
+        args += ["--ro-bind", root, root]
+    args += ["--ro-bind", str(sandbox_dir), "/sandbox",
+             "--bind", str(scratch_dir), "/tmp",
+             "--proc", "/proc", "--dev", "/dev",
+             "--chdir", "/tmp", "--clearenv"]
+    for key, value in sandbox_environment(limits).items():
+        args += ["--setenv", key, value]
+    return args + ["--"] + list(program)
+
+
+_PROBE_PROGRAM = "import sys; sys.path.insert(0, sys.argv[1]); import jail; jail.drop_privileges(); import numpy"
+
+
+@functools.lru_cache(maxsize=1)
+def isolation():
+    """``("namespaces", detail)`` if bubblewrap works here, else ``("limits", why)``."""
+    child_dir = str(Path(__file__).resolve().parent / "child")
+    if shutil.which("bwrap") is None:
+        return "limits", "bubblewrap (bwrap) is not installed"
+    probe_dir = Path(tempfile.mkdtemp(prefix="autograder-probe-"))
+    try:
+        shutil.copy2(Path(child_dir) / "jail.py", probe_dir / "jail.py")
+        os.chmod(probe_dir, 0o755)
+        result = subprocess.run(
+            bwrap_command([sys.executable, "-I", "-c", _PROBE_PROGRAM, "/sandbox"],
+                          probe_dir, probe_dir, Limits()),
+            preexec_fn=_preexec(Limits()), capture_output=True, timeout=60)
+    except (OSError, subprocess.SubprocessError) as error:
+        return "limits", f"bubblewrap could not start ({error})"
+    finally:
+        shutil.rmtree(probe_dir, ignore_errors=True)
+    if result.returncode != 0:
+        reason = result.stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or ["unknown error"]
+        return "limits", f"bubblewrap could not start: {reason[0]}"
+    return "namespaces", "user, PID, network, IPC and mount namespaces (bubblewrap)"
+
+
+@functools.lru_cache(maxsize=1)
+def limits_mode_can_drop_root():
+    """In ``limits`` mode as root: can ``nobody`` still import Python's packages?"""
+    if not _running_as_root():
+        return False
+    child_dir = str(Path(__file__).resolve().parent / "child")
+    result = subprocess.run([sys.executable, "-I", "-c", _PROBE_PROGRAM, child_dir],
+                            capture_output=True, timeout=60, cwd="/")
+    return result.returncode == 0
+
+
+def describe_isolation():
+    """One line for the run's output: how student code is isolated on this machine."""
+    mode, detail = isolation()
+    if mode == "namespaces":
+        return (f"sandbox: {detail}; runs as {user_name()}; no network; "
+                "project files out of reach; resource limits")
+    return (f"sandbox: RESOURCE LIMITS ONLY — {detail}. Student code runs in its own process as "
+            f"{user_name()} with limits and timeouts, but it can read files readable to that user "
+            "and use the network. Install bubblewrap (apt-get install bubblewrap) for full isolation.")
+
+
+def prepare_dirs(base):
+    """Create ``base/sandbox`` (worker files, read-only inside) and ``base/scratch`` (writable)."""
+    base = Path(base)
+    sandbox_dir, scratch_dir = base / "sandbox", base / "scratch"
+    sandbox_dir.mkdir(parents=True, exist_ok=True)
+    scratch_dir.mkdir(parents=True, exist_ok=True)
+    child_dir = Path(__file__).resolve().parent / "child"
+    for name in ("worker.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py"):
+        if (child_dir / name).exists():
+            shutil.copy2(child_dir / name, sandbox_dir / name)
+    from ..paths import SOLUTIONS, SUPPORT_PACKAGE
+
+    shutil.copytree(SOLUTIONS / SUPPORT_PACKAGE, sandbox_dir / SUPPORT_PACKAGE,
+                    ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True)
+    for path in (base, sandbox_dir):
+        os.chmod(path, 0o755)
+    os.chmod(scratch_dir, 0o777)
+    if _running_as_root():
+        os.chown(scratch_dir, NOBODY, NOBODY)
+    return sandbox_dir, scratch_dir
+
+
+def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE):
+    """Start ``program`` (argv relative to the sandbox: ``/sandbox/...`` paths) isolated.
+
+    In ``limits`` mode, ``/sandbox`` and ``/tmp`` in the argv are rewritten to
+    the real directories.
+    """
+    mode, _ = isolation()
+    if mode == "namespaces":
+        argv = bwrap_command(program, sandbox_dir, scratch_dir, limits)
+        env, cwd = None, None
+    else:
+        argv = [str(a).replace("/sandbox", str(sandbox_dir), 1) if str(a).startswith("/sandbox") else a
+                for a in program]
+        env = sandbox_environment(limits)
+        env.update(HOME=str(scratch_dir), TMPDIR=str(scratch_dir),
+                   MPLCONFIGDIR=str(Path(scratch_dir) / ".matplotlib"))
+        cwd = str(scratch_dir)
+    return subprocess.Popen(argv, stdin=stdin, stdout=stdout, stderr=subprocess.DEVNULL,
+                            preexec_fn=_preexec(limits), start_new_session=True, env=env, cwd=cwd,
+                            close_fds=True)
+
+
+def user_name():
+    """Who the student code runs as, for the run's output."""
+    if _running_as_root():
+        mode, _ = isolation()
+        if mode == "namespaces" or limits_mode_can_drop_root():
+            return "nobody"
+        return "root (nobody cannot read this Python installation)"
+    return pwd.getpwuid(os.getuid()).pw_name
+
+
+def worker_flags():
+    """Extra worker arguments: keep the user when dropping root would break imports."""
+    mode, _ = isolation()
+    if mode == "limits" and _running_as_root() and not limits_mode_can_drop_root():
+        return ["--keep-user"]
+    return []

@@ -1,0 +1,306 @@
+"""The grader's side of a student's sandbox: load their cells, call their functions.
+
+A :class:`StudentSandbox` starts the worker lazily, runs each lesson's setup
+cell and the student's answer cells, and then serves calls. If the student's
+code kills the process (``os._exit``, a segfault, the memory limit) or a call
+hangs, the sandbox is restarted without the cell that crashed it and the call
+fails with a :class:`StudentError` that says what happened; the other
+exercises are unaffected.
+
+Examples
+--------
+>>> program = {"01": LessonProgram(setup="import numpy as np",
+...                                cells=[("rot_z", "def rot_z(a):\\n    return np.eye(3)")])}
+>>> with StudentSandbox(program) as box:                        # doctest: +SKIP
+...     box.call("01", "rot_z", [0.3])
+array([[1., 0., 0.], ...
+"""
+
+import os
+import selectors
+import signal
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+
+from . import launcher, process_tree
+from .child import wire
+
+_SIGNAL_REASONS = {
+    signal.SIGKILL: "was killed (memory or time limit, or a kill signal)",
+    signal.SIGXCPU: "used up its CPU time limit",
+    signal.SIGSEGV: "crashed with a segmentation fault (runaway recursion?)",
+    signal.SIGXFSZ: "wrote a file larger than the limit",
+    signal.SIGABRT: "aborted",
+}
+
+
+class StudentError(Exception):
+    """A student's function could not produce a value.
+
+    Attributes
+    ----------
+    kind : str
+        ``"exception"``, ``"not_implemented"``, ``"timeout"``, ``"crash"``,
+        ``"missing"`` or ``"bad_value"``.
+    message : str
+        One line for the feedback page.
+    stdout : str
+        What the student's code printed (capped).
+    """
+
+    def __init__(self, kind, message, stdout=""):
+        super().__init__(message)
+        self.kind = kind
+        self.message = message
+        self.stdout = stdout
+
+
+@dataclass
+class LessonProgram:
+    """What to run for one lesson: the master's setup cell, then the student's cells."""
+
+    setup: str
+    cells: list  # [(label, source)]
+    problems: list = field(default_factory=list)  # notes from extraction, e.g. "grade_id missing"
+
+
+@dataclass
+class CellOutcome:
+    lesson: str
+    label: str
+    ok: bool
+    message: str = ""
+    stdout: str = ""
+
+
+class _Dead(Exception):
+    """The worker process is gone or stopped answering."""
+
+
+class StudentSandbox:
+    """One student's sandbox; use as a context manager."""
+
+    def __init__(self, program, limits=None, base_dir=None):
+        self.program = program
+        self.limits = limits or launcher.Limits()
+        self._tmp = None
+        self._base_dir = base_dir
+        self.process = None
+        self.loaded = False
+        self.bad_cells = {}  # (lesson, label) -> why the cell is skipped
+        self.outcomes = []  # CellOutcome of each cell, from the first time it ran
+        self.restarts = 0
+        self.time_used = 0.0
+        self.last_stdout = ""
+        self.hung = {}  # (lesson, name) -> seconds it ran before being stopped
+        self._buffer = b""
+
+    # ------------------------------------------------------------ lifecycle
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def _dirs(self):
+        if self._tmp is None:
+            if self._base_dir is None:
+                self._tmp = tempfile.TemporaryDirectory(prefix="autograder-sandbox-")
+                base = self._tmp.name
+            else:
+                base = self._base_dir
+            self.sandbox_dir, self.scratch_dir = launcher.prepare_dirs(base)
+        return self.sandbox_dir, self.scratch_dir
+
+    def _start(self):
+        sandbox_dir, scratch_dir = self._dirs()
+        self._buffer = b""
+        # the venv's own interpreter path (not its realpath), so Python finds the venv's packages
+        self.process = launcher.spawn([sys.executable, "-I", "-B", "/sandbox/worker.py"]
+                                      + launcher.worker_flags(),
+                                      sandbox_dir, scratch_dir, self.limits)
+        self._selector = selectors.DefaultSelector()
+        self._selector.register(self.process.stdout, selectors.EVENT_READ)
+        hello = self._receive(deadline=time.monotonic() + 60.0)
+        if not (isinstance(hello, dict) and hello.get("ready")):
+            raise _Dead("the sandbox did not start")
+
+    def _kill(self):
+        if self.process is None:
+            return
+        try:
+            os.killpg(self.process.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+        try:
+            self.process.kill()
+        except ProcessLookupError:
+            pass
+        self.process.wait()
+        for stream in (self.process.stdin, self.process.stdout):
+            try:
+                stream.close()
+            except OSError:
+                pass
+        self._selector.close()
+        self.process = None
+        self.loaded = False
+
+    def close(self):
+        if self.process is not None:
+            try:
+                self._send({"op": "bye"})
+            except _Dead:
+                pass
+        self._kill()
+        if self._tmp is not None:
+            self._tmp.cleanup()
+            self._tmp = None
+
+    def _death_reason(self):
+        code = self.process.poll() if self.process else None
+        if code is None:
+            return "stopped answering"
+        if code < 0:
+            return _SIGNAL_REASONS.get(-code, f"was killed by signal {-code}")
+        return f"exited with status {code} (sys.exit or os._exit in the student's code?)"
+
+    # ------------------------------------------------------------ messages
+    def _send(self, message):
+        try:
+            self.process.stdin.write(wire.dumps(message).encode("utf-8") + b"\n")
+            self.process.stdin.flush()
+        except (BrokenPipeError, OSError, ValueError, AttributeError):
+            raise _Dead(self._death_reason() if self.process else "not running") from None
+
+    def _receive(self, deadline):
+        while b"\n" not in self._buffer:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                raise _Dead("timeout")
+            if not self._selector.select(timeout=remaining):
+                continue
+            chunk = os.read(self.process.stdout.fileno(), 1 << 20)
+            if not chunk:
+                self.process.wait(timeout=5)
+                raise _Dead(self._death_reason())
+            self._buffer += chunk
+            if len(self._buffer) > wire.MAX_LINE_BYTES:
+                raise _Dead("sent a reply larger than the limit")
+        line, self._buffer = self._buffer.split(b"\n", 1)
+        try:
+            return wire.loads(line.decode("utf-8"))
+        except (wire.WireError, UnicodeDecodeError) as error:
+            raise _Dead(f"sent a malformed reply ({error})") from None
+
+    def _request(self, message, timeout):
+        started = time.monotonic()
+        try:
+            self._send(message)
+            reply = self._receive(deadline=started + timeout + 2.0)
+        finally:
+            self.time_used += time.monotonic() - started
+        if not isinstance(reply, dict) or "ok" not in reply:
+            raise _Dead("sent a malformed reply")
+        return reply
+
+    # ------------------------------------------------------------ loading
+    def _ensure_loaded(self):
+        if self.loaded:
+            return
+        recorded = {(o.lesson, o.label) for o in self.outcomes}
+        while True:
+            try:
+                self._start()
+                for lesson, program in sorted(self.program.items()):
+                    for label, source in [("setup", program.setup)] + list(program.cells):
+                        if (lesson, label) in self.bad_cells:
+                            continue
+                        self._current = (lesson, label)
+                        reply = self._request({"op": "exec", "lesson": lesson, "label": label,
+                                               "source": source, "timeout": self.limits.load_timeout},
+                                              self.limits.load_timeout)
+                        if (lesson, label) not in recorded:
+                            recorded.add((lesson, label))
+                            error = reply.get("error") or {}
+                            self.outcomes.append(CellOutcome(
+                                lesson, label, bool(reply["ok"]),
+                                _format_error(error) if not reply["ok"] else "",
+                                str(reply.get("stdout", ""))))
+                self.loaded = True
+                return
+            except _Dead as death:
+                reason = str(death)
+                if reason == "timeout":
+                    reason = f"did not finish within {self.limits.load_timeout:g} s"
+                lesson, label = self._current
+                self.bad_cells[(lesson, label)] = f"running this cell {reason}"
+                if (lesson, label) not in recorded:
+                    recorded.add((lesson, label))
+                    self.outcomes.append(CellOutcome(lesson, label, False, f"running this cell {reason}"))
+                self._kill()
+                self.restarts += 1
+                if self.restarts > 8:
+                    raise StudentError("crash", "the student's code crashed the sandbox too many times") from None
+
+    # ------------------------------------------------------------ calls
+    def call(self, lesson, name, args=(), kwargs=None, timeout=None):
+        """Call the student's ``name`` from ``lesson``; return the decoded value.
+
+        Raises
+        ------
+        StudentError
+            The function raised, timed out, crashed the process, is missing,
+            or returned something that is not plain data.
+        """
+        timeout = self.limits.call_timeout if timeout is None else timeout
+        self.last_stdout = ""
+        if self.time_used > self.limits.student_seconds:
+            raise StudentError("timeout", f"not run: this student's code already used its "
+                                          f"{self.limits.student_seconds:g} s time budget")
+        if (lesson, name) in self.hung:
+            raise StudentError("timeout", f"{name} did not return within {self.hung[(lesson, name)]:g} s "
+                                          "in an earlier check, so it was not called again")
+        self._ensure_loaded()
+        request = {"op": "call", "lesson": lesson, "name": name, "args": list(args),
+                   "kwargs": dict(kwargs or {}), "timeout": timeout}
+        try:
+            reply = self._request(request, timeout)
+        except _Dead as death:
+            reason = str(death)
+            self._kill()
+            self.restarts += 1
+            if reason == "timeout":
+                self.hung[(lesson, name)] = timeout
+                raise StudentError("timeout", f"{name} did not return within {timeout:g} s "
+                                              "(an endless loop, or far too slow?)") from None
+            raise StudentError("crash", f"calling {name}, the student's process {reason}") from None
+        stdout = str(reply.get("stdout", ""))
+        self.last_stdout = stdout if reply["ok"] else ""
+        if reply["ok"]:
+            return reply.get("value")
+        error = reply.get("error") or {}
+        kind = {"NotImplementedError": "not_implemented", "Timeout": "timeout",
+                "NameError": "missing" if "not defined in the graded cells" in str(error.get("message"))
+                else "exception",
+                "UnsupportedValue": "bad_value"}.get(error.get("type"), "exception")
+        if kind == "not_implemented":
+            raise StudentError(kind, f"{name} is not written yet (it raises NotImplementedError)", stdout)
+        if kind == "timeout":
+            self.hung[(lesson, name)] = timeout
+            raise StudentError(kind, f"{name} did not return within {timeout:g} s "
+                                     "(an endless loop, or far too slow?)", stdout)
+        if kind == "missing":
+            raise StudentError(kind, f"{name} is not defined by the graded cells of the notebook", stdout)
+        if kind == "bad_value":
+            raise StudentError(kind, f"{name} {error.get('message', '')}", stdout)
+        raise StudentError(kind, f"{name} raised {_format_error(error)}", stdout)
+
+
+def _format_error(error):
+    text = f"{error.get('type', 'Error')}: {error.get('message', '')}".rstrip(": ")
+    if error.get("where"):
+        text += f" ({error['where']})"
+    return text

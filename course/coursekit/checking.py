@@ -1,0 +1,150 @@
+"""The visible check cells: run a few public checks on one exercise.
+
+Every exercise in the course is followed by a locked cell such as::
+
+    check("rot_z", rot_z)
+
+:func:`check` runs the public checks registered for that exercise (see the
+modules in :mod:`coursekit.checks`) and prints one line per check. A failed
+check prints what is wrong and a hint. Public checks test properties (shapes,
+orthogonality, a quarter turn about an axis); the hidden checks that grade
+your work are more thorough and run only when your notebook is graded, so a
+clean run here is encouraging, not a guarantee.
+
+When a check fails the cell raises :class:`CheckFailed`, and an exercise that
+is not written yet re-raises its ``NotImplementedError``: that is how the
+course's notebooks also work as ordinary nbgrader assignments.
+"""
+
+import time
+import traceback
+
+__all__ = ["check", "public_check", "Mismatch", "CheckFailed", "registered_exercises"]
+
+_REGISTRY = {}
+
+
+class Mismatch(Exception):
+    """Raised by a public check: one line on what is wrong, and a hint.
+
+    Parameters
+    ----------
+    reason : str
+        What the check saw, e.g. ``"rot_z(pi/2) sends x to [0, -1, 0]"``.
+    hint : str, optional
+        A likely cause, e.g. ``"looks like the transpose"``.
+    """
+
+    def __init__(self, reason, hint=None):
+        super().__init__(reason)
+        self.reason = reason
+        self.hint = hint
+
+
+class CheckFailed(AssertionError):
+    """Raised by :func:`check` when at least one public check failed."""
+
+
+def public_check(exercise, description):
+    """Register a public check for ``exercise``.
+
+    The decorated function receives the student's function and returns
+    nothing when the property holds, or raises :class:`Mismatch`.
+
+    Examples
+    --------
+    >>> @public_check("double", "doubles 2 to 4")
+    ... def _(double):
+    ...     if double(2) != 4:
+    ...         raise Mismatch(f"double(2) returned {double(2)!r}")
+    """
+
+    def register(function):
+        _REGISTRY.setdefault(exercise, []).append((description, function))
+        return function
+
+    return register
+
+
+def registered_exercises():
+    """Names of the exercises that have public checks, sorted."""
+    _load_check_modules()
+    return sorted(_REGISTRY)
+
+
+def _load_check_modules():
+    from . import checks  # noqa: F401  (importing registers every lesson's checks)
+
+
+def _one_line(text, limit=200):
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def _where_in_student_code(error):
+    """The last line of the traceback that is not inside coursekit."""
+    frames = traceback.extract_tb(error.__traceback__)
+    for frame in reversed(frames):
+        if "coursekit" not in frame.filename.replace("\\", "/"):
+            return f" (line {frame.lineno} of your {frame.name})"
+    return ""
+
+
+def check(exercise, function):
+    """Run the public checks of ``exercise`` on ``function`` and report.
+
+    Parameters
+    ----------
+    exercise : str
+        The exercise's name, e.g. ``"rot_z"``.
+    function : callable
+        Your implementation.
+
+    Raises
+    ------
+    NotImplementedError
+        If the exercise still raises it (the stub has not been replaced).
+    CheckFailed
+        If any public check failed; the printed lines say which and why.
+    """
+    __tracebackhide__ = True
+    _load_check_modules()
+    checks = _REGISTRY.get(exercise)
+    if not checks:
+        raise KeyError(f"no public checks are registered for {exercise!r}")
+    passed, failed = 0, 0
+    lines = []
+    started = time.perf_counter()
+    for description, run in checks:
+        try:
+            run(function)
+        except NotImplementedError:
+            print(
+                f"{exercise}: not written yet. Replace the line "
+                "`raise NotImplementedError(...)` with your code, then run this cell again."
+            )
+            raise NotImplementedError(f"{exercise} is not written yet") from None
+        except Mismatch as mismatch:
+            failed += 1
+            line = f"  ✗ {description}: {_one_line(mismatch.reason)}"
+            if mismatch.hint:
+                line += f"\n      hint: {_one_line(mismatch.hint)}"
+            lines.append(line)
+        except Exception as error:  # the student's code crashed: report, do not explode
+            failed += 1
+            lines.append(
+                f"  ✗ {description}: raised {type(error).__name__}: "
+                f"{_one_line(error, 120)}{_where_in_student_code(error)}"
+            )
+        else:
+            passed += 1
+            lines.append(f"  ✓ {description}")
+    elapsed = time.perf_counter() - started
+    print(f"{exercise}: public checks")
+    print("\n".join(lines))
+    total = passed + failed
+    if failed:
+        print(f"{passed} of {total} public checks passed. Fix the ✗ lines above and run this cell again.")
+        raise CheckFailed(f"{failed} of {total} public checks failed for {exercise}") from None
+    passed_text = "The public check passed" if total == 1 else f"All {total} public checks passed"
+    print(f"{passed_text} ({elapsed:.2f} s). The hidden checks run when your notebook is graded.")

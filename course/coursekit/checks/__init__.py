@@ -1,0 +1,12 @@
+"""Public checks, one module per lesson (``lesson01.py``, ``lesson02.py``, ...).
+
+Importing this package imports every lesson module, and each registers its
+checks with :func:`coursekit.checking.public_check`.
+"""
+
+import importlib
+import pkgutil
+
+for _module in pkgutil.iter_modules(__path__):
+    if _module.name.startswith("lesson"):
+        importlib.import_module(f"{__name__}.{_module.name}")

@@ -1,0 +1,73 @@
+"""Deterministic printing of numbers and arrays.
+
+The demonstration cells of the lessons print their results through
+:func:`show`, so that the text is the same on every machine: values are
+rounded to a fixed number of decimals and negative zeros are printed as
+zeros. The grader compares these printed lines with the reference notebook,
+so two correct answers that differ by 1e-16 print the same thing.
+"""
+
+import numpy as np
+
+__all__ = ["show", "format_value"]
+
+
+def format_value(value, digits=4):
+    """Return a stable text form of a number, array, tuple or dict.
+
+    Parameters
+    ----------
+    value : float, int, bool, array_like, tuple, list or dict
+        What to format. Arrays of any shape are accepted.
+    digits : int
+        Decimals kept after rounding.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> format_value(np.array([1e-17, -0.0, 0.5]))
+    '[0.     0.     0.5   ]'
+    >>> format_value((1.0, -2e-20))
+    '(1.0, 0.0)'
+    """
+    if isinstance(value, dict):
+        inner = ", ".join(f"{k!r}: {format_value(v, digits)}" for k, v in value.items())
+        return "{" + inner + "}"
+    if isinstance(value, tuple):
+        return "(" + ", ".join(format_value(v, digits) for v in value) + ")"
+    if isinstance(value, (bool, np.bool_, str)) or value is None:
+        return str(value)
+    array = np.asarray(value)
+    if array.dtype.kind in "iu":
+        return np.array2string(array) if array.ndim else str(int(array))
+    rounded = np.round(array.astype(float), digits) + 0.0  # + 0.0 turns -0.0 into 0.0
+    if rounded.ndim == 0:
+        return repr(float(rounded))
+    with np.printoptions(precision=digits, floatmode="fixed", suppress=True):
+        return np.array2string(rounded, separator=" ")
+
+
+def show(label, value, digits=4):
+    """Print ``label = value`` with :func:`format_value`.
+
+    Parameters
+    ----------
+    label : str
+        A short name for what is printed, such as ``"p_w"``.
+    value : number, array_like, tuple or dict
+    digits : int
+        Decimals kept after rounding.
+
+    Examples
+    --------
+    >>> show("p_w", [1.0, 2.0, -0.0])
+    p_w = [1.0000 2.0000 0.0000]
+    """
+    text = format_value(value, digits)
+    if "\n" in text:
+        print(f"{label} =\n{text}")
+    else:
+        print(f"{label} = {text}")

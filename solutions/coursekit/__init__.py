@@ -1,0 +1,12 @@
+"""Support code for the course "Rotations, hands on".
+
+- :func:`check` runs the public checks of an exercise (the check cells).
+- :func:`show` prints values the same way on every machine.
+- :mod:`coursekit.plotting` draws frames, points and axes (imports matplotlib).
+- :mod:`coursekit.diagnose` names likely mistakes; the grader uses it too.
+"""
+
+from .checking import check
+from .display import show
+
+__all__ = ["check", "show"]

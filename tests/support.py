@@ -1,0 +1,61 @@
+"""Build submissions from answer choices and grade them in-process (for the tests).
+
+Examples
+--------
+>>> folder = build_submission(tmp_path, {"rot_z": mistakes["rot_z_transposed"].source})  # doctest: +SKIP
+>>> result = grade(folder, lessons=("01",))                                             # doctest: +SKIP
+"""
+
+from functools import lru_cache
+from pathlib import Path
+
+from autograder import cells
+from autograder.catalog import load_catalog
+from autograder.grading import GradingOptions, grade_student
+from autograder.mistakes import all_mistakes
+from autograder.notebook_files import canonical_text, read_master
+from autograder.paths import COURSE
+from autograder.reference import answer_sources
+
+STUB = "stub"
+
+
+@lru_cache(maxsize=1)
+def references():
+    return answer_sources()
+
+
+@lru_cache(maxsize=1)
+def mistakes():
+    return all_mistakes()
+
+
+def build_submission(folder, overrides=None, default="reference", lessons=None):
+    """Write one student's notebooks into ``folder`` from the released course.
+
+    ``overrides`` maps an exercise to an answer-cell source (or ``STUB``);
+    other exercises get ``default``: ``"reference"`` or ``STUB``.
+    """
+    overrides = overrides or {}
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    for lesson in load_catalog().graded_lessons:
+        if lessons and lesson.number not in lessons:
+            continue
+        nb = read_master(COURSE / lesson.filename)
+        for cell in nb.cells:
+            if cells.is_answer_cell(cell):
+                choice = overrides.get(cells.grade_id(cell), default)
+                if choice != STUB:
+                    cell.source = references()[cells.grade_id(cell)] if choice == "reference" else choice
+        (folder / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
+    return folder
+
+
+def grade(folder, lessons=(), nbval=False):
+    """Grade one folder in this process and return its StudentResult."""
+    return grade_student(Path(folder).name, Path(folder), GradingOptions(nbval=nbval, lessons=tuple(lessons)))
+
+
+def points_by_exercise(result):
+    return {e.name: (e.points, e.max_points) for e in result.exercises}

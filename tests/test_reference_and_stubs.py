@@ -1,0 +1,31 @@
+"""The reference answers earn full marks and the released stubs earn zero, lesson by lesson."""
+
+import pytest
+
+from autograder.catalog import load_catalog
+from support import STUB, build_submission, grade
+
+LESSONS = [lesson.number for lesson in load_catalog().graded_lessons]
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=lambda n: f"lesson{n}")
+def test_reference_answers_score_full_marks(lesson, tmp_path):
+    result = grade(build_submission(tmp_path / "ref", lessons=(lesson,)), lessons=(lesson,))
+    failed = [(c.exercise, c.description, c.reason) for e in result.exercises for c in e.checks if not c.passed]
+    assert not failed, failed
+    assert result.score == result.max_score > 0
+    assert result.status == "graded", result.problems
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=lambda n: f"lesson{n}")
+def test_released_stubs_score_zero(lesson, tmp_path):
+    result = grade(build_submission(tmp_path / "stub", default=STUB, lessons=(lesson,)), lessons=(lesson,))
+    assert result.score == 0, {e.name: e.points for e in result.exercises}
+    reasons = {c.reason for e in result.exercises for c in e.checks}
+    assert all("not written yet" in r for r in reasons), reasons
+
+
+def test_every_exercise_has_hidden_checks(tmp_path):
+    result = grade(build_submission(tmp_path / "ref"))
+    empty = [e.name for e in result.exercises if not e.checks]
+    assert not empty, f"exercises without hidden checks: {empty}"
