@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
+from autograder.sandbox.child.wire import Probe  # noqa: F401  (callable arguments, by name)
 from coursekit.diagnose import rotation_hint, rotation_problem, shape_problem  # noqa: F401
 
 

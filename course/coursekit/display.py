@@ -29,7 +29,7 @@ def format_value(value, digits=4):
     Examples
     --------
     >>> format_value(np.array([1e-17, -0.0, 0.5]))
-    '[0.     0.     0.5   ]'
+    '[0.0000 0.0000 0.5000]'
     >>> format_value((1.0, -2e-20))
     '(1.0, 0.0)'
     """

@@ -111,7 +111,11 @@ def check(exercise, function):
     _load_check_modules()
     checks = _REGISTRY.get(exercise)
     if not checks:
-        raise KeyError(f"no public checks are registered for {exercise!r}")
+        from .checks import IMPORT_ERRORS
+
+        broken = "; ".join(f"{name}: {why}" for name, why in IMPORT_ERRORS.items())
+        raise KeyError(f"no public checks are registered for {exercise!r}"
+                       + (f" (a checks module failed to import: {broken})" if broken else ""))
     passed, failed = 0, 0
     lines = []
     started = time.perf_counter()

@@ -1,0 +1,47 @@
+"""Library versions of the rotation maps, for the lessons after you wrote your own.
+
+Lesson 03 asks you to write ``hat``, ``exp_so3`` and ``log_so3`` yourself.
+From lesson 04 on, the notebooks use these versions instead, so that a slip
+in an earlier exercise never breaks a later lesson. They are built on
+``scipy.spatial.transform.Rotation``, which handles every edge case
+(tiny angles, angles at π) carefully.
+"""
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+__all__ = ["skew", "unskew", "Exp", "Log"]
+
+
+def skew(v):
+    """The 3×3 cross-product matrix [v]×, so that ``skew(v) @ u == np.cross(v, u)``.
+
+    Examples
+    --------
+    >>> skew([1.0, 2.0, 3.0]) @ [4.0, 5.0, 6.0]
+    array([-3.,  6., -3.])
+    """
+    x, y, z = np.asarray(v, dtype=float)
+    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+
+
+def unskew(S):
+    """The vector v of a skew-symmetric matrix S = [v]× (the antisymmetric part is used)."""
+    S = np.asarray(S, dtype=float)
+    return 0.5 * np.array([S[2, 1] - S[1, 2], S[0, 2] - S[2, 0], S[1, 0] - S[0, 1]])
+
+
+def Exp(w):
+    """Rotation matrix of the rotation vector ``w`` (shape (3,)): angle |w| about w/|w|.
+
+    Examples
+    --------
+    >>> np.round(Exp([0.0, 0.0, np.pi / 2]) @ [1.0, 0.0, 0.0], 12)
+    array([0., 1., 0.])
+    """
+    return Rotation.from_rotvec(np.asarray(w, dtype=float)).as_matrix()
+
+
+def Log(R):
+    """Rotation vector of the rotation matrix ``R`` (shape (3, 3)), angle in [0, π]."""
+    return Rotation.from_matrix(np.asarray(R, dtype=float)).as_rotvec()
