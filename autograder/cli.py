@@ -10,6 +10,9 @@ grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--force]
     Grade every student folder in PATH (or the bundled sample class).
 status --out DIR
     Who is graded, who could not be graded and why, who is missing.
+preview NOTEBOOK [--figures DIR]
+    Run a notebook top to bottom; report errors, warnings and check cells;
+    save every figure as a PNG to look at (for authors).
 """
 
 import argparse
@@ -109,6 +112,31 @@ def _cmd_status(args):
     return 0
 
 
+def _cmd_preview(args):
+    import time
+
+    from .execute import errors, execute_notebook, save_figures
+    from .notebook_files import read_master
+
+    path = Path(args.notebook)
+    nb = read_master(path)
+    started = time.monotonic()
+    execute_notebook(nb, cwd=path.parent, allow_errors=True)
+    print(f"ran {path.name} in {time.monotonic() - started:.1f} s")
+    for index, cell in enumerate(nb.cells):
+        for output in cell.get("outputs", []):
+            if output.get("output_type") == "stream" and output.get("name") == "stderr":
+                print(f"cell {index + 1} wrote to stderr: {output['text'].strip()[:400]}")
+            if output.get("output_type") == "stream" and cell.source.startswith("check("):
+                print(output["text"].rstrip())
+    for index, ename, evalue in errors(nb):
+        print(f"cell {index + 1} raised {ename}: {evalue}")
+    if args.figures:
+        for figure in save_figures(nb, args.figures, path.stem[:2]):
+            print(f"figure: {figure}")
+    return 1 if errors(nb) else 0
+
+
 def build_parser():
     parser = argparse.ArgumentParser(prog="python -m autograder", description=__doc__.split("\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
@@ -134,6 +162,11 @@ def build_parser():
     status = commands.add_parser("status", help="show the saved results of a grading run")
     status.add_argument("--out", required=True)
     status.set_defaults(run=_cmd_status)
+
+    preview = commands.add_parser("preview", help="run a notebook and save its figures (for authors)")
+    preview.add_argument("notebook")
+    preview.add_argument("--figures", help="folder for the PNG files")
+    preview.set_defaults(run=_cmd_preview)
     return parser
 
 
