@@ -1,0 +1,123 @@
+"""course/ is generated from solutions/, in sync, and gives nothing away."""
+
+import ast
+import shutil
+from pathlib import Path
+
+from autograder import cells
+from autograder.notebook_files import read_master
+from autograder.paths import COURSE, HIDDEN_SUITE, SOLUTIONS
+from autograder.release import stale_files
+
+
+def _course_line_pairs():
+    """Consecutive pairs of stripped code lines in every file of course/ (notebook cells split)."""
+    pairs = set()
+    for path in sorted(COURSE.rglob("*")):
+        if not path.is_file() or "__pycache__" in path.parts:
+            continue
+        if path.suffix == ".ipynb":
+            chunks = [cells.source_text(c) for c in read_master(path).cells]
+        elif path.suffix == ".py":
+            chunks = [path.read_text(encoding="utf-8")]
+        else:
+            continue
+        for chunk in chunks:
+            lines = [line.strip() for line in chunk.splitlines() if line.strip()]
+            pairs.update(zip(lines, lines[1:]))
+    return pairs
+
+
+def _distinctive(line):
+    return len(line) >= 12 and not line.startswith(("#", "import ", "from ", '"""', "return None"))
+
+
+def _blocks(text, only_between_markers=False):
+    """Runs of consecutive distinctive lines (stripped) of ``text``."""
+    blocks, current, inside = [], [], not only_between_markers
+    for raw in text.splitlines():
+        line = raw.strip()
+        if cells.BEGIN_SOLUTION in line:
+            inside, current = True, []
+            continue
+        if cells.END_SOLUTION in line:
+            inside = False
+            blocks.append(current)
+            current = []
+            continue
+        if inside and line:
+            current.append(line)
+    blocks.append(current)
+    return blocks
+
+
+def _leaks(blocks, pairs):
+    found = []
+    for block in blocks:
+        for first, second in zip(block, block[1:]):
+            if _distinctive(first) and _distinctive(second) and (first, second) in pairs:
+                found.append(f"{first} / {second}")
+    return found
+
+
+def test_course_is_in_sync_with_solutions():
+    assert stale_files() == [], "run: python -m autograder release"
+
+
+def test_no_solution_code_in_course():
+    pairs = _course_line_pairs()
+    for master in sorted(SOLUTIONS.glob("[0-9][0-9]_*.ipynb")):
+        for cell in read_master(master).cells:
+            if cells.is_answer_cell(cell):
+                leaks = _leaks(_blocks(cells.source_text(cell), only_between_markers=True), pairs)
+                assert not leaks, f"{master.name} {cells.grade_id(cell)}: solution lines in course/: {leaks[:3]}"
+
+
+def test_no_hidden_test_code_in_course():
+    pairs = _course_line_pairs()
+    for path in sorted(HIDDEN_SUITE.glob("test_*.py")):
+        leaks = _leaks(_blocks(path.read_text(encoding="utf-8")), pairs)
+        assert not leaks, f"{path.name}: hidden test lines in course/: {leaks[:3]}"
+
+
+def test_the_leak_detector_finds_a_leak():
+    solution = "    c, s = np.cos(a), np.sin(a)\n    return np.array([[c, -s], [s, c]])"
+    pairs = {("c, s = np.cos(a), np.sin(a)", "return np.array([[c, -s], [s, c]])")}
+    assert _leaks(_blocks(solution), pairs)
+
+
+def test_released_answers_are_stubs_and_checks_are_locked():
+    for path in sorted(COURSE.glob("[0-9][0-9]_*.ipynb")):
+        nb = read_master(path)
+        for cell in nb.cells:
+            if cell.cell_type == "code":
+                assert cell.outputs == [] and cell.execution_count is None, f"{path.name}: outputs left"
+            if cells.is_answer_cell(cell):
+                source = cells.source_text(cell)
+                assert "raise NotImplementedError" in source and cells.BEGIN_SOLUTION not in source, path.name
+                function = [n for n in ast.parse(source).body if isinstance(n, ast.FunctionDef)]
+                assert function and ast.get_docstring(function[0]), f"{path.name}: stub lost its docstring"
+            if cells.is_check_cell(cell):
+                assert cell.metadata.get("editable") is False and cell.metadata.get("deletable") is False
+                assert cell.metadata["nbgrader"]["points"] > 0 and "checksum" in cell.metadata["nbgrader"]
+
+
+def test_release_check_notices_an_edited_master(tmp_path):
+    solutions, course = tmp_path / "solutions", tmp_path / "course"
+    shutil.copytree(SOLUTIONS, solutions, ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(COURSE, course, ignore=shutil.ignore_patterns("__pycache__"))
+    assert stale_files(solutions, course) == []
+    master = sorted(solutions.glob("01_*.ipynb"))[0]
+    master.write_text(master.read_text(encoding="utf-8").replace("Lesson 01", "Lesson 1", 1), encoding="utf-8")
+    (course / "stray.ipynb").write_text("{}", encoding="utf-8")
+    reasons = dict(stale_files(solutions, course))
+    assert any("differs" in r for r in reasons.values()), reasons
+    assert str(course / "stray.ipynb") in reasons
+
+
+def test_release_command_exits_nonzero_when_stale(tmp_path, monkeypatch):
+    import autograder.release as release_module
+    from autograder.cli import main
+
+    monkeypatch.setattr(release_module, "stale_files", lambda *a, **k: [("course/x.ipynb", "missing")])
+    assert main(["release", "--check"]) == 1

@@ -1,0 +1,112 @@
+"""The main job, end to end: `python -m autograder grade --out DIR` on the bundled sample class."""
+
+import csv
+import subprocess
+import sys
+
+import pytest
+
+from autograder.catalog import load_catalog
+from autograder.mistakes import all_mistakes, sample_assignments
+from autograder.paths import PROJECT_ROOT
+
+FORMULA_ID = '=HYPERLINK("evil","click me")'
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("grading")
+    result = subprocess.run([sys.executable, "-m", "autograder", "grade", "--out", str(out)],
+                            cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=1500)
+    assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-2000:]
+    with open(out / "grades.csv", newline="", encoding="utf-8") as handle:
+        rows = {row["student_id"]: row for row in csv.DictReader(handle)}
+    return out, result.stdout, rows
+
+
+def _points(row):
+    return {e.name: float(row[e.name]) for e in load_catalog().exercises}
+
+
+def _maximum():
+    return {e.name: e.points for e in load_catalog().exercises}
+
+
+def test_gradebook_columns(run):
+    out, _, rows = run
+    header = (out / "grades.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    assert header[:4] == ["student_id", "score", "max_score", "status"]
+    assert header[4:4 + len(_maximum())] == list(_maximum())
+    assert len(rows) >= 8
+
+
+def test_full_marks_and_zero(run):
+    _, _, rows = run
+    assert float(rows["ada"]["score"]) == float(rows["ada"]["max_score"]) > 0
+    assert rows["ada"]["status"] == "graded"
+    assert float(rows["ben"]["score"]) == 0.0
+
+
+def test_partial_and_typical_mistakes(run):
+    _, _, rows = run
+    for student in ("chloe", "dev", "emma", "farid"):
+        assert 0 < float(rows[student]["score"]) < float(rows[student]["max_score"]), student
+    mistakes, assignments = all_mistakes(), sample_assignments()
+    for student in ("dev", "emma", "farid"):
+        points, maximum = _points(rows[student]), _maximum()
+        wrong = {mistakes[name].exercise for name in assignments[student]}
+        for name in maximum:
+            if name in wrong:
+                assert points[name] < maximum[name], (student, name)
+            else:
+                assert points[name] == maximum[name], (student, name)
+
+
+def test_cheaters_get_no_points_for_wrong_answers(run):
+    _, _, rows = run
+    for cheater in ("gina", "hugo"):
+        assert float(rows[cheater]["score"]) == 0.0, rows[cheater]
+
+
+def test_faults_cost_only_their_exercises(run):
+    _, _, rows = run
+    faulty = {all_mistakes()[n].exercise for n in sample_assignments()["ivy"]}
+    points, maximum = _points(rows["ivy"]), _maximum()
+    assert all(points[name] < maximum[name] for name in faulty)
+    assert all(points[name] == maximum[name] for name in maximum if name not in faulty)
+
+
+def test_a_damaged_notebook_costs_only_its_lesson(run):
+    _, _, rows = run
+    first = load_catalog().graded_lessons[0]
+    points, maximum = _points(rows["kim"]), _maximum()
+    for exercise in load_catalog().exercises:
+        expected = 0.0 if exercise.lesson == first.number else maximum[exercise.name]
+        assert points[exercise.name] == expected, exercise.name
+    assert rows["kim"]["status"] == "graded with problems"
+    assert "not valid JSON" in rows["kim"]["problems"]
+
+
+def test_spreadsheet_formula_ids_are_escaped(run):
+    out, _, rows = run
+    assert "'" + FORMULA_ID in rows
+    raw = (out / "grades.csv").read_text(encoding="utf-8")
+    assert not any(line.startswith("=") or line.startswith('"=') for line in raw.splitlines())
+
+
+def test_feedback_pages(run):
+    out, _, rows = run
+    pages = sorted((out / "feedback").glob("*.html"))
+    assert len(pages) == len(rows)
+    dev = (out / "feedback" / "dev.html").read_text(encoding="utf-8")
+    assert "transpose" in dev and "hint:" in dev
+    for page in pages:
+        text = page.read_text(encoding="utf-8")
+        assert "def test_" not in text and "expect_close(" not in text and "@exercise" not in text
+    formula = next(p for p in pages if p.name.startswith("%3D")).read_text(encoding="utf-8")
+    assert "=HYPERLINK(&quot;evil&quot;" in formula and '=HYPERLINK("evil"' not in formula
+
+
+def test_summary_is_printed(run):
+    _, stdout, _ = run
+    assert "gradebook:" in stdout and "ada" in stdout and "sandbox:" in stdout

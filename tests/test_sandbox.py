@@ -1,0 +1,100 @@
+"""Student code runs in its own locked-down process; faults cost only that call."""
+
+import time
+
+import pytest
+
+from autograder.paths import SOLUTIONS
+from autograder.sandbox import launcher
+from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
+
+NAMESPACES = launcher.isolation()[0] == "namespaces"
+
+
+def _box(source, **limits):
+    program = {"01": LessonProgram(setup="import numpy as np", cells=[("code", source)])}
+    return StudentSandbox(program, limits=launcher.Limits(**limits) if limits else None)
+
+
+def _call(box, name, *args, timeout=None):
+    return box.call("01", name, list(args), timeout=timeout)
+
+
+def test_values_come_back_as_plain_data():
+    with _box("def f(x):\n    return (np.eye(2) * x, [1, 2], {'k': np.float64(1.5)})") as box:
+        matrix, items, mapping = _call(box, "f", 2.0)
+    assert matrix.tolist() == [[2.0, 0.0], [0.0, 2.0]] and items == [1, 2] and mapping == {"k": 1.5}
+
+
+def test_an_endless_loop_times_out_and_is_not_called_again():
+    with _box("def loop():\n    while True:\n        pass\ndef ok():\n    return 1") as box:
+        started = time.monotonic()
+        with pytest.raises(StudentError) as first:
+            _call(box, "loop", timeout=1.0)
+        with pytest.raises(StudentError) as second:
+            _call(box, "loop", timeout=1.0)
+        assert first.value.kind == second.value.kind == "timeout"
+        assert "not called again" in second.value.message
+        assert _call(box, "ok") == 1
+        assert time.monotonic() - started < 8
+
+
+def test_os_exit_during_a_call_costs_only_that_call():
+    with _box("import os\ndef bye():\n    os._exit(3)\ndef ok():\n    return 2") as box:
+        with pytest.raises(StudentError) as error:
+            _call(box, "bye")
+        assert error.value.kind == "crash" and "status 3" in error.value.message
+        assert _call(box, "ok") == 2
+
+
+def test_exit_at_import_is_reported_and_skipped():
+    program = {"01": LessonProgram(setup="import numpy as np", cells=[
+        ("first", "import sys\nsys.exit(0)"), ("second", "def ok():\n    return 3")])}
+    with StudentSandbox(program) as box:
+        assert box.call("01", "ok") == 3
+        assert [o.ok for o in box.outcomes] == [True, False, True]
+
+
+def test_prints_are_capped_and_do_not_break_the_protocol():
+    with _box("import sys, os\ndef noisy():\n    print('x' * 10_000_000)\n    os.write(1, b'garbage\\n')\n"
+              "    sys.__stdout__.write('more garbage\\n')\n    return 5") as box:
+        assert _call(box, "noisy", timeout=10) == 5
+        assert len(box.last_stdout) < 10_000
+
+
+def test_lying_objects_never_reach_the_grader():
+    with _box("class Liar:\n    def __eq__(self, other):\n        return True\ndef f():\n    return Liar()") as box:
+        with pytest.raises(StudentError) as error:
+            _call(box, "f")
+    assert error.value.kind == "bad_value"
+
+
+def test_memory_limit():
+    with _box("def hog():\n    return len(bytearray(8 * 1024**3))", memory_bytes=1024**3) as box:
+        with pytest.raises(StudentError) as error:
+            _call(box, "hog")
+    assert "MemoryError" in error.value.message or error.value.kind == "crash"
+
+
+@pytest.mark.skipif(not NAMESPACES, reason="bubblewrap is not available: limits-only sandbox")
+def test_project_files_are_out_of_reach():
+    target = SOLUTIONS / "01_frames_and_rotations.ipynb"
+    with _box(f"def peek():\n    return open({str(target)!r}).read()[:20]") as box:
+        with pytest.raises(StudentError) as error:
+            _call(box, "peek")
+    assert "FileNotFoundError" in error.value.message or "PermissionError" in error.value.message
+
+
+@pytest.mark.skipif(not NAMESPACES, reason="bubblewrap is not available: limits-only sandbox")
+def test_no_network():
+    with _box("import socket\ndef dial():\n    s = socket.socket()\n    s.settimeout(2)\n"
+              "    s.connect(('1.1.1.1', 80))\n    return 'connected'") as box:
+        with pytest.raises(StudentError) as error:
+            _call(box, "dial")
+    assert "OSError" in error.value.message or "Error" in error.value.message
+
+
+@pytest.mark.skipif(not NAMESPACES, reason="bubblewrap is not available: limits-only sandbox")
+def test_runs_as_an_unprivileged_user():
+    with _box("import os\ndef who():\n    return os.getuid()") as box:
+        assert _call(box, "who") != 0
