@@ -91,6 +91,10 @@ class Outputs:
     def gradebook(self):
         return self.root / "grades.csv"
 
+    @property
+    def report(self):
+        return self.root / "report.html"
+
 
 def load_saved(outputs, student_id):
     """(fingerprint, submission hash, StudentResult) saved for a student, or None."""
@@ -138,6 +142,7 @@ def _grade_task(task):
 class RunSummary:
     graded: list = field(default_factory=list)  # (student_id, score, max, status, seconds)
     skipped: list = field(default_factory=list)  # student ids whose saved result was reused
+    results: list = field(default_factory=list)  # StudentResult of everyone in the gradebook
     seconds: float = 0.0
 
 
@@ -150,11 +155,16 @@ def _prewarm():
     launcher.limits_mode_can_drop_root()
 
 
-def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None):
-    """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`."""
+def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=()):
+    """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
+
+    ``roster``: student ids expected; those without a folder are reported missing.
+    """
     started = time.monotonic()
     outputs = Outputs(Path(out_dir))
     outputs.root.mkdir(parents=True, exist_ok=True)
+    for stale in outputs.root.glob("*/.*.tmp"):  # left by a run that was killed mid-write
+        stale.unlink(missing_ok=True)
     _prewarm()
     fingerprint = grader_fingerprint(options)
     students = submissions.student_folders(path)
@@ -178,12 +188,14 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
                     progress.advance(row)
     if progress:
         progress.finish()
-    write_gradebook(outputs, [sid for sid, _ in students])
+    submitted = [sid for sid, _ in students]
+    summary.results = write_reports(outputs, sorted(set(submitted) | set(roster)), set(submitted))
     summary.seconds = time.monotonic() - started
     return summary
 
 
-def collect_results(outputs, student_ids):
+def collect_results(outputs, student_ids, submitted=None):
+    """Saved results for ``student_ids``; a student without one is missing or not finished."""
     results, timestamps = [], {}
     for student_id in student_ids:
         path = outputs.student_json(student_id)
@@ -192,11 +204,22 @@ def collect_results(outputs, student_ids):
             results.append(StudentResult.from_json(json.dumps(data["result"])))
             timestamps[student_id] = data.get("graded_at", "")
         except (OSError, ValueError, KeyError, TypeError):
-            results.append(StudentResult(student_id=student_id, status=MISSING, reason="no result saved"))
+            if submitted is not None and student_id not in submitted:
+                results.append(StudentResult(student_id=student_id, status=MISSING,
+                                             reason="no submission folder"))
+            else:
+                results.append(StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
+                                             reason="no saved result: the run was interrupted before "
+                                                    "this student was graded; run grade again"))
     return results, timestamps
 
 
-def write_gradebook(outputs, student_ids):
-    results, timestamps = collect_results(outputs, student_ids)
-    write_atomically(outputs.gradebook, gradebook_csv(results, load_catalog(), timestamps))
+def write_reports(outputs, student_ids, submitted=None):
+    """Write grades.csv and report.html for ``student_ids``; return their results."""
+    from .report import class_report_html
+
+    results, timestamps = collect_results(outputs, student_ids, submitted)
+    catalog = load_catalog()
+    write_atomically(outputs.gradebook, gradebook_csv(results, catalog, timestamps))
+    write_atomically(outputs.report, class_report_html(results, catalog))
     return results

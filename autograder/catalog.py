@@ -82,7 +82,7 @@ def lesson_from_notebook(path, nb):
         if cell.cell_type == "markdown":
             first = cells.source_text(cell).strip().splitlines()[0] if cells.source_text(cell).strip() else ""
             if first.startswith("# "):
-                title = first[2:].strip()
+                title = re.sub(r"^Lesson\s+\d+\s*[—:-]\s*", "", first[2:].strip())
                 break
     exercises, setup_source, pending = [], "", None
     for cell in nb.cells:

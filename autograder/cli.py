@@ -6,9 +6,9 @@ release [--check]
     Regenerate ``course/`` from ``solutions/``; ``--check`` only verifies.
 record [--only NN ...]
     Re-record the demonstration outputs stored in the masters.
-grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--force]
+grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE] [--force]
     Grade every student folder in PATH (or the bundled sample class).
-status --out DIR
+status --out DIR [--roster FILE]
     Who is graded, who could not be graded and why, who is missing.
 preview NOTEBOOK [--figures DIR]
     Run a notebook top to bottom; report errors, warnings and check cells;
@@ -62,8 +62,15 @@ def _print_table(results):
         print(f"{r.student_id:<{width}}  {score:>13}  {status}")
 
 
+def _read_roster(path):
+    if not path:
+        return ()
+    lines = Path(path).read_text(encoding="utf-8").splitlines()
+    return tuple(line.strip() for line in lines if line.strip() and not line.startswith("#"))
+
+
 def _cmd_grade(args):
-    from .batch import grade_class, write_gradebook, Outputs
+    from .batch import grade_class
     from .grading import GradingOptions
     from .progress import Progress
     from .sandbox import launcher
@@ -83,32 +90,40 @@ def _cmd_grade(args):
     print(launcher.describe_isolation())
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
-                          progress=Progress(sys.stderr))
-    from .submissions import student_folders
-
-    results = write_gradebook(Outputs(out), [sid for sid, _ in student_folders(path)])
+                          progress=Progress(sys.stderr), roster=_read_roster(args.roster))
     print()
-    _print_table(results)
+    _print_table(summary.results)
     print()
     reused = f", {len(summary.skipped)} unchanged and reused" if summary.skipped else ""
     print(f"graded {len(summary.graded)} student(s){reused} in {summary.seconds:.1f} s")
-    print(f"gradebook: {out / 'grades.csv'}")
-    print(f"feedback:  {out / 'feedback'}/<student>.html")
+    print(f"gradebook:    {out / 'grades.csv'}")
+    print(f"class report: {out / 'report.html'}")
+    print(f"feedback:     {out / 'feedback'}/<student>.html")
     return 0
 
 
 def _cmd_status(args):
+    import json
+    from collections import Counter
+
     from .batch import Outputs, collect_results
 
     outputs = Outputs(Path(args.out))
-    ids = sorted(p.stem for p in (outputs.root / "students").glob("*.json"))
-    from urllib.parse import unquote
-
-    results, _ = collect_results(outputs, [unquote(i) for i in ids])
+    ids = []
+    for path in sorted((outputs.root / "students").glob("*.json")):
+        try:
+            ids.append(json.loads(path.read_text(encoding="utf-8"))["result"]["student_id"])
+        except (OSError, ValueError, KeyError):
+            continue
+    roster = _read_roster(args.roster)
+    results, _ = collect_results(outputs, sorted(set(ids) | set(roster)), submitted=set(ids))
     if not results:
         print(f"no results in {outputs.root}")
         return 1
     _print_table(results)
+    counts = Counter(r.status for r in results)
+    print()
+    print(", ".join(f"{count} {status}" for status, count in sorted(counts.items())))
     return 0
 
 
@@ -156,11 +171,13 @@ def build_parser():
     grade.add_argument("--no-nbval", action="store_true", help="skip the notebook stage (faster)")
     grade.add_argument("--lessons", nargs="+", default=(), metavar="NN",
                        help="grade only these lessons, e.g. --lessons 01 03 (default: all)")
+    grade.add_argument("--roster", help="a file with one student id per line; absent ones are 'missing'")
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
     grade.set_defaults(run=_cmd_grade)
 
     status = commands.add_parser("status", help="show the saved results of a grading run")
     status.add_argument("--out", required=True)
+    status.add_argument("--roster", help="a file with one student id per line; absent ones are 'missing'")
     status.set_defaults(run=_cmd_status)
 
     preview = commands.add_parser("preview", help="run a notebook and save its figures (for authors)")

@@ -60,8 +60,7 @@ def _exercise_html(exercise):
     if passed:
         items = "".join(f'<li><span class="ok">✓</span> {_e(c.description)}</li>' for c in passed)
         label = "1 check passed" if len(passed) == 1 else f"{len(passed)} checks passed"
-        opened = " open" if not failed else ""
-        parts.append(f'<details{opened}><summary>{label}</summary><ul class="checks">{items}</ul></details>')
+        parts.append(f'<details><summary>{label}</summary><ul class="checks">{items}</ul></details>')
     if not exercise.checks and not exercise.notes:
         parts.append('<p class="muted">No checks ran for this exercise.</p>')
     printed = "".join(dict.fromkeys(c.printed for c in exercise.checks if c.printed))

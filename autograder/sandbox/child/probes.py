@@ -48,6 +48,11 @@ def cross(a, b):
     return np.cross(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
 
 
+def second(a, b):
+    """a ∘ b = b: associative, every element a left identity, no two-sided identity."""
+    return np.array(b, dtype=float)
+
+
 # ---------------------------------------------------------------- inverses
 def transpose(a):
     return np.asarray(a, dtype=float).T.copy()
@@ -72,6 +77,11 @@ def quat_conjugate(q):
     return np.array([q[0], -q[1], -q[2], -q[3]])
 
 
+def constant(value, a):
+    """Probe("constant", e) is the map a ↦ e (a one-sided "inverse" for ``second``)."""
+    return np.array(value, dtype=float)
+
+
 # ---------------------------------------------------------------- membership tests
 def is_rotation(M):
     M = np.asarray(M, dtype=float)
@@ -86,6 +96,14 @@ def is_orthogonal(M):
     if M.ndim != 2 or M.shape[0] != M.shape[1] or not np.all(np.isfinite(M)):
         return False
     return bool(np.max(np.abs(M.T @ M - np.eye(M.shape[0]))) <= _ROTATION_TOL)
+
+
+def is_rotation_within(tol, M):
+    """Probe("is_rotation_within", tol): a rotation test with a looser tolerance."""
+    M = np.asarray(M, dtype=float)
+    if M.ndim != 2 or M.shape[0] != M.shape[1] or not np.all(np.isfinite(M)):
+        return False
+    return bool(np.max(np.abs(M.T @ M - np.eye(M.shape[0]))) <= tol and np.linalg.det(M) > 0)
 
 
 def is_finite(x):

@@ -1,0 +1,175 @@
+"""Benchmark: our grader against stock ``nbgrader autograde``, on one machine, in one run.
+
+Builds a class of N students for every lesson (half the reference answers,
+half untouched stubs or typical mistakes), grades it with stock nbgrader
+(``generate_assignment`` + ``autograde``, one assignment per lesson) and with
+``python -m autograder grade`` (full, then ``--no-nbval``), and prints wall
+times, the ratios, seconds per student at N and at a larger N, and the
+grader's peak memory (resident memory of its whole process tree, sampled).
+
+Usage::
+
+    .venv/bin/python benchmarks/grading_speed.py                 # N = 20 and 100 (about 30 min on 2 cores)
+    .venv/bin/python benchmarks/grading_speed.py --students 6 --large 12   # a quick look
+
+Targets (2 cores, N = 20): full grading ≤ 0.5 × nbgrader; ``--no-nbval`` ≤ 0.1 ×;
+seconds per student about the same at N = 20 and N = 100.
+"""
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "tests"))
+
+from autograder.catalog import load_catalog  # noqa: E402
+from autograder.mistakes import all_mistakes  # noqa: E402
+from autograder.nbgrader_course import assignment_name, build_course, run_nbgrader, submit  # noqa: E402
+from support import STUB, build_submission  # noqa: E402
+
+
+def build_class(target, count):
+    """``count`` students: even ones hand in the reference answers, odd ones stubs or mistakes."""
+    mistakes = [m for m in all_mistakes().values() if m.kind == "mistake"]
+    target.mkdir(parents=True, exist_ok=True)
+    for index in range(count):
+        if index % 2 == 0:
+            build_submission(target / f"student{index:03d}")
+        elif index % 4 == 1:
+            build_submission(target / f"student{index:03d}", default=STUB)
+        else:  # a handful of typical mistakes, different for each student
+            chosen = {}
+            for mistake in mistakes[index % len(mistakes)::7]:
+                chosen.setdefault(mistake.exercise, mistake.source)
+            build_submission(target / f"student{index:03d}", chosen)
+    return sorted(p for p in target.iterdir() if p.is_dir())
+
+
+class PeakMemory:
+    """Samples the resident memory of a process and all its descendants."""
+
+    def __init__(self, pid, interval=0.2):
+        self.pid, self.interval, self.peak = pid, interval, 0
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+
+    def __enter__(self):
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc):
+        self._stop.set()
+        self._thread.join()
+
+    def _tree(self):
+        children = {}
+        for entry in os.listdir("/proc"):
+            if entry.isdigit():
+                try:
+                    stat = open(f"/proc/{entry}/stat").read()
+                    children.setdefault(int(stat[stat.rfind(")") + 2:].split()[1]), []).append(int(entry))
+                except OSError:
+                    pass
+        found, stack = [self.pid], [self.pid]
+        while stack:
+            for child in children.get(stack.pop(), []):
+                found.append(child)
+                stack.append(child)
+        return found
+
+    def _rss(self, pid):
+        try:
+            for line in open(f"/proc/{pid}/status"):
+                if line.startswith("VmRSS:"):
+                    return int(line.split()[1]) * 1024
+        except OSError:
+            pass
+        return 0
+
+    def _run(self):
+        while not self._stop.is_set():
+            self.peak = max(self.peak, sum(self._rss(p) for p in self._tree()))
+            self._stop.wait(self.interval)
+
+
+def timed(command, cwd, measure_memory=False):
+    started = time.monotonic()
+    process = subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    peak = 0
+    if measure_memory:
+        with PeakMemory(process.pid) as memory:
+            output, _ = process.communicate()
+        peak = memory.peak
+    else:
+        output, _ = process.communicate()
+    if process.returncode != 0:
+        raise RuntimeError(f"{' '.join(command)} failed:\n{output[-3000:]}")
+    return time.monotonic() - started, peak
+
+
+def run_nbgrader_baseline(students, work):
+    """Wall time of stock nbgrader generating and autograding every lesson for every student."""
+    course = build_course(work / "nbgrader_course")
+    lessons = load_catalog().graded_lessons
+    for lesson in lessons:
+        run_nbgrader(course, "generate_assignment", assignment_name(lesson), "--force")
+    for folder in students:
+        for lesson in lessons:
+            submit(course, folder.name, lesson, folder / lesson.filename)
+    started = time.monotonic()
+    for lesson in lessons:
+        run_nbgrader(course, "autograde", assignment_name(lesson), "--force")
+    return time.monotonic() - started
+
+
+def run_ours(class_dir, out, extra=()):
+    command = [sys.executable, "-m", "autograder", "grade", str(class_dir), "--out", str(out), "--force", *extra]
+    return timed(command, ROOT, measure_memory=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--students", type=int, default=20, help="class size compared with nbgrader")
+    parser.add_argument("--large", type=int, default=100, help="larger class for the per-student cost")
+    parser.add_argument("--work", default=str(ROOT / "benchmark-output"), help="scratch folder")
+    args = parser.parse_args()
+    work = Path(args.work)
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    lessons = load_catalog().graded_lessons
+    print(f"{os.cpu_count()} cores; {len(lessons)} lessons; N = {args.students} and {args.large}")
+
+    students = build_class(work / "class_small", args.students)
+    print(f"built {len(students)} students × {len(lessons)} notebooks")
+    nbgrader_seconds = run_nbgrader_baseline(students, work)
+    print(f"stock nbgrader autograde:       {nbgrader_seconds:8.1f} s")
+    full_seconds, full_memory = run_ours(work / "class_small", work / "ours_full")
+    print(f"ours, full (suite + nbval):     {full_seconds:8.1f} s   peak memory {full_memory / 2**20:6.0f} MiB")
+    fast_seconds, fast_memory = run_ours(work / "class_small", work / "ours_fast", ["--no-nbval"])
+    print(f"ours, --no-nbval:               {fast_seconds:8.1f} s   peak memory {fast_memory / 2**20:6.0f} MiB")
+
+    large = build_class(work / "class_large", args.large)
+    large_full, large_full_memory = run_ours(work / "class_large", work / "ours_large_full")
+    large_fast, _ = run_ours(work / "class_large", work / "ours_large_fast", ["--no-nbval"])
+
+    print()
+    print(f"ratio full / nbgrader:          {full_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.5)")
+    print(f"ratio --no-nbval / nbgrader:    {fast_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.1)")
+    print()
+    print("seconds per student             "
+          f"N = {len(students):<4d}  N = {len(large):<4d}")
+    print(f"  nbgrader                      {nbgrader_seconds / len(students):7.2f}")
+    print(f"  ours, full                    {full_seconds / len(students):7.2f}  {large_full / len(large):7.2f}")
+    print(f"  ours, --no-nbval              {fast_seconds / len(students):7.2f}  {large_fast / len(large):7.2f}")
+    print(f"peak memory of the grader (N = {len(large)}, full): {large_full_memory / 2**20:.0f} MiB")
+
+
+if __name__ == "__main__":
+    main()
