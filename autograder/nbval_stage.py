@@ -16,7 +16,6 @@ it can never add to what honest answers earn.
 import json
 import os
 import select
-import signal
 import subprocess
 import sys
 import tempfile
@@ -115,13 +114,7 @@ def _run(names, sandbox_dir, scratch_dir, limits, timeout):
             if len(output) > SUMMARY_LIMIT:
                 return None, "the notebook stage produced too much output"
     finally:
-        try:
-            os.killpg(process.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
-        process.kill()
-        process.wait()
-        process.stdout.close()
+        launcher.terminate(process)
     lines = output.decode("utf-8", "replace").strip().splitlines()
     try:
         data = json.loads(lines[-1]) if lines else None

@@ -35,8 +35,12 @@ KEPT_OUTPUT_MIME = ("text/plain",)
 def _clean_output(output):
     if output.get("output_type") == "stream":
         return NotebookNode(output_type="stream", name=output["name"], text=output["text"])
-    if output.get("output_type") == "execute_result":
+    if output.get("output_type") in ("execute_result", "display_data"):
         data = {k: v for k, v in output.get("data", {}).items() if k in KEPT_OUTPUT_MIME}
+        if not data:
+            return None
+        if output["output_type"] == "display_data":
+            return NotebookNode(output_type="display_data", data=data, metadata={})
         return NotebookNode(output_type="execute_result", data=data, metadata={}, execution_count=1)
     return None
 
@@ -44,8 +48,9 @@ def _clean_output(output):
 def normalize_master(nb):
     """Strip execution noise from a master, keeping recorded demonstration outputs.
 
-    Only cells tagged ``nbval-check-output`` keep outputs (text only, execution
-    count 1, as nbval needs a count to compare); every other cell is cleared.
+    Only cells tagged ``nbval-check-output`` keep outputs (printed text and
+    plain-text displays, execution count 1, as nbval needs a count to compare);
+    every other cell is cleared.
     Cell ids are made unique and stable: answer and check cells use their
     ``grade_id``, others keep theirs or get ``cell-NNN``.
     """

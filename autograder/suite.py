@@ -24,6 +24,7 @@ if str(SOLUTIONS) not in sys.path:
     sys.path.insert(0, str(SOLUTIONS))  # the hidden suite uses coursekit.diagnose for hints
 
 CONTEXT = SimpleNamespace(student=None, reference=None)
+PRINTED_KEEP = 2000  # characters of a check's printed output kept for the feedback page
 
 
 class SuiteError(RuntimeError):
@@ -135,10 +136,11 @@ class _Collector:
         if report.failed and call.excinfo is not None:
             reason, hint = _explain(call.excinfo.value)
         printed = "".join(self.proxy.printed)
+        if len(printed) > PRINTED_KEEP:
+            printed = printed[:PRINTED_KEEP] + "\n[… more characters not kept]"
         self.results.append(CheckResult(
             exercise=mark.kwargs["name"], description=doc, weight=mark.kwargs.get("weight", 1.0),
-            passed=report.passed, reason=reason, hint=hint,
-            printed=printed[:2000] + ("…" if len(printed) > 2000 else "")))
+            passed=report.passed, reason=reason, hint=hint, printed=printed))
 
 
 def preload_hidden_suite():

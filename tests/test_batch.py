@@ -11,7 +11,7 @@ import time
 
 import pytest
 
-from autograder.batch import Outputs, grade_class, safe_name
+from autograder.batch import grade_class, safe_name
 from autograder.catalog import load_catalog
 from autograder.gradebook import spreadsheet_safe
 from autograder.grading import GradingOptions

@@ -6,7 +6,6 @@ import pytest
 
 from autograder.catalog import load_catalog
 from autograder.reference import load_reference
-from autograder.paths import SOLUTIONS
 
 EXERCISES = [e.name for e in load_catalog().exercises]
 

@@ -2,7 +2,6 @@
 
 import ast
 import shutil
-from pathlib import Path
 
 from autograder import cells
 from autograder.notebook_files import read_master

@@ -1,6 +1,5 @@
 """Only plain data crosses from the sandbox: the decoder builds nothing else."""
 
-import json
 
 import numpy as np
 import pytest

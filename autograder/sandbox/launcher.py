@@ -23,6 +23,7 @@ import os
 import pwd
 import resource
 import shutil
+import signal
 import site
 import subprocess
 import sys
@@ -31,6 +32,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..paths import PROJECT_ROOT
+from . import cgroups
 
 NOBODY = 65534
 
@@ -66,7 +68,7 @@ def _process_count(uid):
     return count
 
 
-def _preexec(limits):
+def _preexec(limits, cgroup=None):
     """Runs in the child between fork and exec: resource limits.
 
     Privileges are dropped later, by our own worker (``child/jail.py``), so
@@ -77,6 +79,8 @@ def _preexec(limits):
     nproc = limits.processes if _running_as_root() else _process_count(os.getuid()) + limits.processes
 
     def apply():
+        if cgroup is not None:
+            cgroup.join()
         for kind, value in ((resource.RLIMIT_AS, limits.memory_bytes),
                             (resource.RLIMIT_CPU, limits.cpu_seconds),
                             (resource.RLIMIT_FSIZE, limits.file_bytes),
@@ -206,7 +210,8 @@ def isolation():
     if result.returncode != 0:
         reason = result.stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or ["unknown error"]
         return "limits", f"bubblewrap could not start: {reason[0]}"
-    return "namespaces", "user, PID, network, IPC and mount namespaces (bubblewrap)"
+    spaces = "PID, network, IPC and mount" if _running_as_root() else "user, PID, network, IPC and mount"
+    return "namespaces", f"{spaces} namespaces (bubblewrap)"
 
 
 @functools.lru_cache(maxsize=1)
@@ -223,12 +228,13 @@ def limits_mode_can_drop_root():
 def describe_isolation():
     """One line for the run's output: how student code is isolated on this machine."""
     mode, detail = isolation()
+    caps = f"; cgroup {cgroups.flavour()} caps memory and processes per student" if cgroups.flavour() else ""
     if mode == "namespaces":
         return (f"sandbox: {detail}; runs as {user_name()}; no network; "
-                "project files out of reach; resource limits")
+                f"project files out of reach; resource limits{caps}")
     return (f"sandbox: RESOURCE LIMITS ONLY — {detail}. Student code runs in its own process as "
             f"{user_name()} with limits and timeouts, but it can read files readable to that user "
-            "and use the network. Install bubblewrap (apt-get install bubblewrap) for full isolation.")
+            f"and use the network{caps}. Install bubblewrap (apt-get install bubblewrap) for full isolation.")
 
 
 def prepare_dirs(base):
@@ -249,15 +255,16 @@ def prepare_dirs(base):
         os.chmod(path, 0o755)
     os.chmod(scratch_dir, 0o777)
     if _running_as_root():
-        os.chown(scratch_dir, NOBODY, NOBODY)
+        os.chown(scratch_dir, sandbox_uid(), sandbox_uid())
     return sandbox_dir, scratch_dir
 
 
 def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE):
     """Start ``program`` (argv relative to the sandbox: ``/sandbox/...`` paths) isolated.
 
-    In ``limits`` mode, ``/sandbox`` and ``/tmp`` in the argv are rewritten to
-    the real directories.
+    In ``limits`` mode, ``/sandbox`` in the argv is rewritten to the real
+    directory. The process gets its own cgroup when one can be made; stop it
+    with :func:`terminate`, which kills everything it started.
     """
     mode, _ = isolation()
     if mode == "namespaces":
@@ -269,10 +276,40 @@ def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdo
         env = sandbox_environment(limits)
         env.update(HOME=str(scratch_dir), TMPDIR=str(scratch_dir),
                    MPLCONFIGDIR=str(Path(scratch_dir) / ".matplotlib"))
+        for key in ("PYTHONPATH",):
+            if key in env:
+                env[key] = env[key].replace("/sandbox", str(sandbox_dir))
         cwd = str(scratch_dir)
-    return subprocess.Popen(argv, stdin=stdin, stdout=stdout, stderr=subprocess.DEVNULL,
-                            preexec_fn=_preexec(limits), start_new_session=True, env=env, cwd=cwd,
-                            close_fds=True)
+    group = cgroups.SandboxCgroup.create("sandbox", limits.memory_bytes, limits.processes)
+    process = subprocess.Popen(argv, stdin=stdin, stdout=stdout, stderr=subprocess.DEVNULL,
+                               preexec_fn=_preexec(limits, group), start_new_session=True, env=env, cwd=cwd,
+                               close_fds=True)
+    process.cgroup = group
+    return process
+
+
+def terminate(process):
+    """Kill ``process`` and everything it started (its session, its cgroup), then reap it."""
+    try:
+        os.killpg(process.pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+    try:
+        process.kill()
+    except ProcessLookupError:
+        pass
+    group = getattr(process, "cgroup", None)
+    if group is not None:
+        group.kill_all()
+    process.wait()
+    for stream in (process.stdin, process.stdout):
+        if stream is not None:
+            try:
+                stream.close()
+            except OSError:
+                pass
+    if group is not None:
+        group.remove()
 
 
 def user_name():
@@ -280,14 +317,26 @@ def user_name():
     if _running_as_root():
         mode, _ = isolation()
         if mode == "namespaces" or limits_mode_can_drop_root():
-            return "nobody"
+            return "an unprivileged user of its own (uid 200000 + grader pid)"
         return "root (nobody cannot read this Python installation)"
     return pwd.getpwuid(os.getuid()).pw_name
 
 
+UID_BASE = 200_000
+
+
+def sandbox_uid():
+    """The unprivileged uid for a sandbox started by this process (when the grader is root).
+
+    Derived from our pid, so two sandboxes running at the same time never share
+    a uid, and the per-user process limit stays per sandbox.
+    """
+    return UID_BASE + os.getpid()
+
+
 def worker_flags():
-    """Extra worker arguments: keep the user when dropping root would break imports."""
+    """Extra worker arguments: which uid to become, or keep the user when dropping root would break imports."""
     mode, _ = isolation()
     if mode == "limits" and _running_as_root() and not limits_mode_can_drop_root():
         return ["--keep-user"]
-    return []
+    return ["--uid", str(sandbox_uid())] if _running_as_root() else []

@@ -24,7 +24,7 @@ import tempfile
 import time
 from dataclasses import dataclass, field
 
-from . import launcher, process_tree
+from . import launcher
 from .child import wire
 
 _SIGNAL_REASONS = {
@@ -95,6 +95,7 @@ class StudentSandbox:
         self.time_used = 0.0
         self.last_stdout = ""
         self.hung = {}  # (lesson, name) -> seconds it ran before being stopped
+        self._next_id = 0
         self._buffer = b""
 
     # ------------------------------------------------------------ lifecycle
@@ -124,26 +125,14 @@ class StudentSandbox:
         self._selector = selectors.DefaultSelector()
         self._selector.register(self.process.stdout, selectors.EVENT_READ)
         hello = self._receive(deadline=time.monotonic() + 60.0)
+        self._next_id = 0
         if not (isinstance(hello, dict) and hello.get("ready")):
             raise _Dead("the sandbox did not start")
 
     def _kill(self):
         if self.process is None:
             return
-        try:
-            os.killpg(self.process.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
-        try:
-            self.process.kill()
-        except ProcessLookupError:
-            pass
-        self.process.wait()
-        for stream in (self.process.stdin, self.process.stdout):
-            try:
-                stream.close()
-            except OSError:
-                pass
+        launcher.terminate(self.process)
         self._selector.close()
         self.process = None
         self.loaded = False
@@ -196,14 +185,21 @@ class StudentSandbox:
             raise _Dead(f"sent a malformed reply ({error})") from None
 
     def _request(self, message, timeout):
+        """Send one request and wait for the reply that carries its id.
+
+        Replies must echo the request's id: a line the student's code forged
+        into the reply channel cannot stand in for the worker's answer.
+        """
         started = time.monotonic()
+        self._next_id += 1
+        message = dict(message, id=self._next_id)
         try:
             self._send(message)
             reply = self._receive(deadline=started + timeout + 2.0)
         finally:
             self.time_used += time.monotonic() - started
-        if not isinstance(reply, dict) or "ok" not in reply:
-            raise _Dead("sent a malformed reply")
+        if not isinstance(reply, dict) or "ok" not in reply or reply.get("id") != self._next_id:
+            raise _Dead("sent a reply that does not match the request (forged output?)")
         return reply
 
     # ------------------------------------------------------------ loading

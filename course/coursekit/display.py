@@ -50,13 +50,36 @@ def format_value(value, digits=4):
         return np.array2string(rounded, separator=" ")
 
 
+class _Shown:
+    """Text shown as a notebook *display* output (not a print), with a plain-text repr."""
+
+    def __init__(self, text):
+        self.text = text
+
+    def __repr__(self):
+        return self.text
+
+
+def _in_a_kernel():
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return False
+    shell = get_ipython()
+    return shell is not None and getattr(shell, "kernel", None) is not None
+
+
 def show(label, value, digits=4):
-    """Print ``label = value`` with :func:`format_value`.
+    """Show ``label = value`` with :func:`format_value`.
+
+    In a notebook the line is a display output rather than printed text: the
+    grader compares these outputs with the reference notebook and ignores
+    anything your own code prints, so a debugging print never costs a point.
 
     Parameters
     ----------
     label : str
-        A short name for what is printed, such as ``"p_w"``.
+        A short name for what is shown, such as ``"p_w"``.
     value : number, array_like, tuple or dict
     digits : int
         Decimals kept after rounding.
@@ -67,7 +90,10 @@ def show(label, value, digits=4):
     p_w = [1.0000 2.0000 0.0000]
     """
     text = format_value(value, digits)
-    if "\n" in text:
-        print(f"{label} =\n{text}")
+    line = f"{label} =\n{text}" if "\n" in text else f"{label} = {text}"
+    if _in_a_kernel():
+        from IPython.display import display
+
+        display(_Shown(line))
     else:
-        print(f"{label} = {text}")
+        print(line)

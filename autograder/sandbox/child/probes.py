@@ -106,6 +106,11 @@ def is_rotation_within(tol, M):
     return bool(np.max(np.abs(M.T @ M - np.eye(M.shape[0]))) <= tol and np.linalg.det(M) > 0)
 
 
+def is_reflection(M):
+    """Orthogonal with det = -1."""
+    return is_orthogonal(M) and bool(np.linalg.det(np.asarray(M, dtype=float)) < 0)
+
+
 def is_finite(x):
     return bool(np.all(np.isfinite(np.asarray(x, dtype=float))))
 

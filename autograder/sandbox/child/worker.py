@@ -29,7 +29,7 @@ sys.path.insert(0, HERE)
 import jail  # noqa: E402
 
 if "--keep-user" not in sys.argv:
-    jail.drop_privileges()
+    jail.drop_privileges(jail.sandbox_uid(sys.argv))
 
 import numpy  # noqa: E402,F401  (imported before student code, as a notebook would)
 
@@ -99,6 +99,7 @@ class Worker:
         self.replies = replies
         self.namespaces = {}
         self.output = CappedText()
+        self.request_id = 0
 
     def namespace(self, lesson):
         if lesson not in self.namespaces:
@@ -106,10 +107,11 @@ class Worker:
         return self.namespaces[lesson]
 
     def reply(self, message):
+        message["id"] = self.request_id
         try:
             line = wire.dumps(message)
         except wire.WireError as error:
-            line = wire.dumps({"ok": False, "stdout": self.output.text(),
+            line = wire.dumps({"ok": False, "stdout": self.output.text(), "id": self.request_id,
                                "error": {"type": "UnsupportedValue",
                                          "message": f"returned {error}; return numbers, numpy arrays, "
                                                     "tuples, lists or dicts of those",
@@ -176,6 +178,7 @@ class Worker:
             if not line:
                 return
             request = wire.loads(line.decode("utf-8"))
+            self.request_id = request.get("id", 0)
             op = request.get("op")
             if op == "exec":
                 self.do_exec(request)

@@ -1,0 +1,250 @@
+"""Hidden checks for lesson 02: groups and SO(3).
+
+The student's functions receive callables as named probes (``Probe("matmul")``)
+that the sandbox rebuilds from ``autograder/sandbox/child/probes.py``. Each
+structure below has a verdict that follows from the lesson's definitions:
+rotations under the product (a group), under addition (closure, identity and
+inverse fail), reals with 0 under multiplication (the inverse fails), the
+cross product (no identity, not associative), "keep the second" (one-sided
+identity and inverses), reflections (no closure, no identity). Every test
+calls the student's functions of its own exercise only.
+"""
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from .helpers import Probe, Wrong, exercise, expect, expect_bool, random_rotations
+
+KEYS = ("closure", "identity", "inverse", "associativity")
+MIRROR = np.diag([1.0, 1.0, -1.0])
+
+
+def _verdict(value, what):
+    """The dict returned by check_group_axioms, as {key: bool}, or Wrong."""
+    if not isinstance(value, dict):
+        raise Wrong(f"{what} returned {type(value).__name__}, not a dict",
+                    'return {"closure": ..., "identity": ..., "inverse": ..., "associativity": ...}')
+    missing = [k for k in KEYS if k not in value]
+    if missing:
+        raise Wrong(f"{what}: the dict has no key {missing[0]!r}",
+                    "use exactly the keys closure, identity, inverse, associativity")
+    return {k: expect_bool(value[k], f"{what}[{k!r}]") for k in KEYS}
+
+
+def _expect_verdict(got, expected, what, hints=None):
+    hints = hints or {}
+    for key in KEYS:
+        expect(got[key] == expected[key], f"{what}: {key} came out {got[key]}, expected {expected[key]}",
+               hints.get(key, ""))
+
+
+ALL_TRUE = dict.fromkeys(KEYS, True)
+
+
+# ---------------------------------------------------------------- check_group_axioms
+@exercise("check_group_axioms", weight=3)
+def test_check_group_axioms_so3_is_a_group(student):
+    """random rotations under the matrix product pass all four axioms"""
+    samples = list(random_rotations(6, seed=201))
+    got = _verdict(student.check_group_axioms(samples, Probe("matmul"), np.eye(3), Probe("transpose"),
+                                              Probe("is_rotation")), "check_group_axioms(SO(3), @)")
+    _expect_verdict(got, ALL_TRUE, "rotations under @", {
+        "associativity": "(AB)C and A(BC) differ by rounding (~1e-16): compare with tol, not ==",
+        "inverse": "compare op(a, inverse(a)) with the identity within tol",
+        "identity": "compare op(identity, a) and op(a, identity) with a within tol"})
+
+
+@exercise("check_group_axioms", weight=3)
+def test_check_group_axioms_so3_under_addition(student):
+    """rotations under addition: closure, identity and inverse fail, associativity holds"""
+    samples = list(random_rotations(4, seed=202))
+    got = _verdict(student.check_group_axioms(samples, Probe("add"), np.zeros((3, 3)), Probe("negate"),
+                                              Probe("is_rotation")), "check_group_axioms(SO(3), +)")
+    _expect_verdict(got, {"closure": False, "identity": False, "inverse": False, "associativity": True},
+                    "rotations under +", {
+                        "closure": "closure must test is_member(op(a, b)) with the op you are given",
+                        "identity": "the identity must belong to the set: check is_member(identity)",
+                        "inverse": "each inverse must belong to the set: check is_member(inverse(a)) "
+                                   "(-R has det -1)",
+                        "associativity": "use op for both groupings: op(op(a, b), c) vs op(a, op(b, c))"})
+
+
+@exercise("check_group_axioms", weight=2)
+def test_check_group_axioms_reals_with_zero(student):
+    """all reals under multiplication fail only the inverse axiom (0 has none)"""
+    got = _verdict(student.check_group_axioms([2.0, -0.5, 0.0, 3.0], Probe("multiply"), 1.0, Probe("reciprocal"),
+                                              Probe("is_finite")), "check_group_axioms(reals, *)")
+    _expect_verdict(got, {"closure": True, "identity": True, "inverse": False, "associativity": True},
+                    "reals with 0 under *", {
+                        "inverse": "1/0 = inf is not a member, and 0·inf = NaN must not count as equal to 1",
+                        "closure": "closure asks is_member(op(a, b)) for every ordered pair"})
+
+
+@exercise("check_group_axioms", weight=2)
+def test_check_group_axioms_nonzero_reals(student):
+    """nonzero reals under multiplication pass all four axioms"""
+    got = _verdict(student.check_group_axioms([2.0, -0.5, 0.25, 3.0, -7.0], Probe("multiply"), 1.0,
+                                              Probe("reciprocal"), Probe("is_nonzero")),
+                   "check_group_axioms(nonzero reals, *)")
+    _expect_verdict(got, ALL_TRUE, "nonzero reals under *", {
+        "associativity": "products of numbers differ by rounding: compare with tol"})
+
+
+@exercise("check_group_axioms", weight=2)
+def test_check_group_axioms_cross_product(student):
+    """vectors under the cross product: no identity and not associative"""
+    vectors = list(np.random.default_rng(203).normal(size=(4, 3)))
+    got = _verdict(student.check_group_axioms(vectors, Probe("cross"), np.zeros(3), Probe("negate"),
+                                              Probe("is_finite")), "check_group_axioms(R^3, ×)")
+    _expect_verdict(got, {"closure": True, "identity": False, "inverse": True, "associativity": False},
+                    "3-vectors under ×", {
+                        "identity": "0 × a = 0, not a: compare op(identity, a) with a",
+                        "inverse": "a × (-a) = 0, which is the proposed identity: this part passes",
+                        "associativity": "check every ordered triple with op: (a × b) × c ≠ a × (b × c)"})
+
+
+@exercise("check_group_axioms", weight=2)
+def test_check_group_axioms_both_sides(student):
+    """checks identity and inverses from both sides (a ∘ b = b has only left identities)"""
+    samples = [1.0, 2.0, -3.0]
+    got = _verdict(student.check_group_axioms(samples, Probe("second"), 1.0, Probe("constant", 1.0),
+                                              Probe("is_finite")), "check_group_axioms(a ∘ b = b)")
+    _expect_verdict(got, {"closure": True, "identity": False, "inverse": False, "associativity": True},
+                    "'keep the second' (a ∘ b = b)", {
+                        "identity": "1 ∘ a = a, but a ∘ 1 = 1: check op(a, identity) as well as op(identity, a)",
+                        "inverse": "a ∘ 1 = 1, but 1 ∘ a = a: check op(inverse(a), a) as well as op(a, inverse(a))"})
+
+
+@exercise("check_group_axioms", weight=2)
+def test_check_group_axioms_orthogonal_and_reflections(student):
+    """O(3) is a group; the reflections alone fail closure and identity"""
+    rotations = list(random_rotations(3, seed=204))
+    reflections = [R @ MIRROR for R in random_rotations(3, seed=205)]
+    got = _verdict(student.check_group_axioms(rotations + reflections, Probe("matmul"), np.eye(3),
+                                              Probe("transpose"), Probe("is_orthogonal")),
+                   "check_group_axioms(O(3), @)")
+    _expect_verdict(got, ALL_TRUE, "O(3) under @")
+    got = _verdict(student.check_group_axioms(reflections, Probe("matmul"), np.eye(3), Probe("transpose"),
+                                              Probe("is_reflection")), "check_group_axioms(reflections, @)")
+    _expect_verdict(got, {"closure": False, "identity": False, "inverse": True, "associativity": True},
+                    "reflections under @", {
+                        "closure": "the product of two reflections is a rotation: test is_member(op(a, b))",
+                        "identity": "I is not a reflection: check is_member(identity)"})
+
+
+@exercise("check_group_axioms", weight=1)
+def test_check_group_axioms_uses_tol(student):
+    """uses tol: rotations with 1e-7 noise pass with tol=1e-5, fail the inverse with tol=1e-9"""
+    noise = np.random.default_rng(206).normal(size=(4, 3, 3))
+    samples = [R + 1e-7 * n for R, n in zip(random_rotations(4, seed=207), noise)]
+    args = (samples, Probe("matmul"), np.eye(3), Probe("transpose"), Probe("is_rotation_within", 1e-4))
+    loose = _verdict(student.check_group_axioms(*args, tol=1e-5), "check_group_axioms(..., tol=1e-5)")
+    _expect_verdict(loose, ALL_TRUE, "noisy rotations with tol=1e-5",
+                    dict.fromkeys(KEYS, "compare with the tol argument, not a fixed number"))
+    strict = _verdict(student.check_group_axioms(*args, tol=1e-9), "check_group_axioms(..., tol=1e-9)")
+    expect(strict["inverse"] is False, "noisy rotations with tol=1e-9: inverse came out True, but "
+           "R @ Rᵀ differs from I by ~1e-7 > tol",
+           "compare the largest absolute difference with tol (np.allclose adds rtol=1e-5 unless rtol=0)")
+
+
+@exercise("check_group_axioms", weight=1)
+def test_check_group_axioms_absolute_tolerance(student):
+    """tol is an absolute tolerance: an identity off by 1e-7 passes with tol=1e-5, fails with tol=1e-9"""
+    args = ([2.0, -0.5, 4.0], Probe("multiply"), 1.0 + 1e-7, Probe("reciprocal"), Probe("is_nonzero"))
+    loose = _verdict(student.check_group_axioms(*args, tol=1e-5), "check_group_axioms(..., tol=1e-5)")
+    expect(loose["identity"], "with identity 1 + 1e-7 and tol=1e-5, identity came out False",
+           "compare with the tol argument, not a fixed number")
+    strict = _verdict(student.check_group_axioms(*args, tol=1e-9), "check_group_axioms(..., tol=1e-9)")
+    expect(not strict["identity"], "with identity 1 + 1e-7 and tol=1e-9, identity came out True "
+           "although (1 + 1e-7)·4 differs from 4 by 4e-7",
+           "np.allclose(x, y, atol=tol) also allows a relative error of 1e-5: compare "
+           "np.max(np.abs(x - y)) <= tol, or pass rtol=0")
+
+
+@exercise("check_group_axioms", weight=1)
+def test_check_group_axioms_single_sample(student):
+    """works with a single sample (the identity alone is a group)"""
+    got = _verdict(student.check_group_axioms([np.eye(3)], Probe("matmul"), np.eye(3), Probe("transpose"),
+                                              Probe("is_rotation")), "check_group_axioms([I], @)")
+    _expect_verdict(got, ALL_TRUE, "the trivial group {I}")
+
+
+# ---------------------------------------------------------------- commutes
+def _commutes(student, a, b, op, what, **kwargs):
+    return expect_bool(student.commutes(a, b, op, **kwargs), what)
+
+
+def _about_axis(axis, angle):
+    axis = np.asarray(axis, dtype=float)
+    return Rotation.from_rotvec(angle * axis / np.linalg.norm(axis)).as_matrix()
+
+
+@exercise("commutes", weight=3)
+def test_commutes_same_axis(student):
+    """rotations about the same axis commute (their products differ only by rounding)"""
+    rng = np.random.default_rng(211)
+    for index in range(10):
+        axis = rng.normal(size=3)
+        a, b = rng.uniform(-3.0, 3.0, 2)
+        A, B = _about_axis(axis, a), _about_axis(axis, b)
+        expect(_commutes(student, A, B, Probe("matmul"), "commutes(A, B, matmul)"),
+               f"said two rotations about one axis do not commute (pair #{index}, angles {a:.3f}, {b:.3f})",
+               "A @ B and B @ A differ by ~1e-16: compare with tol, never with ==")
+
+
+@exercise("commutes", weight=3)
+def test_commutes_random_rotations(student):
+    """random pairs of rotations do not commute"""
+    As, Bs = random_rotations(10, seed=212), random_rotations(10, seed=213)
+    for index, (A, B) in enumerate(zip(As, Bs)):
+        expect(not _commutes(student, A, B, Probe("matmul"), "commutes(A, B, matmul)"),
+               f"said a random pair of rotations commutes (pair #{index})",
+               "compare op(a, b) with op(b, a): the arguments must be swapped in the second product")
+
+
+@exercise("commutes", weight=2)
+def test_commutes_special_pairs(student):
+    """half turns about perpendicular axes commute; R commutes with Rᵀ; quarter turns do not"""
+    u = np.array([1.0, 2.0, 2.0]) / 3.0
+    v = np.array([2.0, -2.0, 1.0]) / 3.0          # perpendicular to u
+    expect(_commutes(student, _about_axis(u, np.pi), _about_axis(v, np.pi), Probe("matmul"), "commutes"),
+           "said two half turns about perpendicular axes do not commute",
+           "their products agree up to rounding (~1e-15): compare with tol")
+    R = random_rotations(1, seed=214)[0]
+    expect(_commutes(student, R, R.T, Probe("matmul"), "commutes(R, Rᵀ)"), "said R and Rᵀ do not commute",
+           "both products are I up to rounding: compare with tol")
+    expect(not _commutes(student, _about_axis(u, np.pi / 2), _about_axis(v, np.pi / 2), Probe("matmul"),
+                         "commutes"), "said two quarter turns about perpendicular axes commute")
+
+
+@exercise("commutes", weight=2)
+def test_commutes_uses_op(student):
+    """uses the op it is given: numbers, cross products, quaternions, addition"""
+    expect(_commutes(student, 2.5, -4.0, Probe("multiply"), "commutes(2.5, -4.0, multiply)"),
+           "said 2.5 and -4.0 do not commute under multiplication")
+    rng = np.random.default_rng(215)
+    a, b = rng.normal(size=3), rng.normal(size=3)
+    expect(not _commutes(student, a, b, Probe("cross"), "commutes(a, b, cross)"),
+           "said two random vectors commute under the cross product (a × b = -(b × a))",
+           "use the op argument rather than a fixed product")
+    expect(_commutes(student, a, -2.0 * a, Probe("cross"), "commutes(a, -2a, cross)"),
+           "said parallel vectors do not commute under the cross product (both products are 0)")
+    p, q = rng.normal(size=4), rng.normal(size=4)
+    expect(not _commutes(student, p, q, Probe("quat_multiply"), "commutes(p, q, quat_multiply)"),
+           "said two random quaternions commute under the Hamilton product",
+           "use the op argument rather than a fixed product")
+    A, B = random_rotations(2, seed=216)
+    expect(_commutes(student, A, B, Probe("add"), "commutes(A, B, add)"),
+           "said two matrices do not commute under addition", "use the op argument rather than @")
+
+
+@exercise("commutes", weight=2)
+def test_commutes_uses_tol(student):
+    """uses tol: a commutator of ~3e-8 passes with tol=1e-5 and fails with tol=1e-9"""
+    A = _about_axis([0.0, 0.0, 1.0], 0.3)
+    B = Rotation.from_rotvec([1e-7, 0.0, 0.5]).as_matrix()
+    expect(_commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-5)", tol=1e-5),
+           "with tol=1e-5 a difference of ~3e-8 was not accepted", "compare with the tol argument")
+    expect(not _commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-9)", tol=1e-9),
+           "with tol=1e-9 a difference of ~3e-8 was accepted",
+           "compare the largest absolute difference with tol (np.allclose adds rtol=1e-5 unless rtol=0)")

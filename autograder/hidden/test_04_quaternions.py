@@ -1,0 +1,580 @@
+"""Hidden checks for lesson 04: quaternions (Hamilton product, scalar first [w, x, y, z]).
+
+Independent oracle: scipy's ``Rotation`` in both layouts (``scalar_first=True``
+and its default scalar-last ``[x, y, z, w]``) and ``Slerp``; exact values come
+from the reference solutions (``ref``) or from the definitions written here.
+Quaternions of rotations are compared up to sign (q and -q are one rotation)
+wherever the exercise's meaning allows it; the conjugate, the inverse, the
+conversions, the product of non-unit quaternions and the canonical sign of
+``matrix_to_quat`` are compared exactly. Random quaternions come from both
+hemispheres (w > 0 and w < 0). Every test calls the student's function of its
+own exercise only. Tolerance 1e-9 unless stated.
+"""
+
+import numpy as np
+from scipy.spatial.transform import Rotation, Slerp
+
+from coursekit.diagnose import quaternion_hint, same_rotation_quat
+
+from .helpers import Wrong, exercise, expect, expect_array, expect_close, fmt, rotation_hint, rotation_problem
+
+TOL = 1e-9
+ONE = np.array([1.0, 0.0, 0.0, 0.0])
+UNITS = {"1": ONE, "i": np.array([0.0, 1.0, 0.0, 0.0]), "j": np.array([0.0, 0.0, 1.0, 0.0]),
+         "k": np.array([0.0, 0.0, 0.0, 1.0])}
+# Hamilton's table: (a, b) -> (sign, unit) of a ⊗ b
+TABLE = {("i", "j"): (1, "k"), ("j", "k"): (1, "i"), ("k", "i"): (1, "j"),
+         ("j", "i"): (-1, "k"), ("k", "j"): (-1, "i"), ("i", "k"): (-1, "j"),
+         ("i", "i"): (-1, "1"), ("j", "j"): (-1, "1"), ("k", "k"): (-1, "1")}
+
+
+def unit_quats(count, seed):
+    """``count`` random unit quaternions [w, x, y, z]; every other one has w < 0."""
+    q = Rotation.random(count, random_state=seed).as_quat(scalar_first=True, canonical=True)
+    q[1::2] *= -1.0
+    return q
+
+
+def general_quats(count, seed):
+    """``count`` random quaternions of lengths between 0.1 and 10, both hemispheres."""
+    rng = np.random.default_rng(seed)
+    q = rng.normal(size=(count, 4))
+    return q / np.linalg.norm(q, axis=1)[:, None] * 10.0 ** rng.uniform(-1.0, 1.0, count)[:, None]
+
+
+def scipy_rotation(q):
+    return Rotation.from_quat(np.asarray(q, dtype=float), scalar_first=True)
+
+
+def conj(q):
+    return np.asarray(q, dtype=float) * [1.0, -1.0, -1.0, -1.0]
+
+
+def expect_same_rotation(got, expected, tol, what, hint=""):
+    """``got`` must equal ``expected`` or ``-expected`` (one rotation) within ``tol``."""
+    got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
+    if not same_rotation_quat(got, expected, tol):
+        error = min(np.max(np.abs(got - expected)), np.max(np.abs(got + expected)))
+        raise Wrong(f"{what} is off by {error:.2g} even up to sign (tolerance {tol:g}): "
+                    f"got {fmt(got)}, expected ±{fmt(expected)}", hint or quaternion_hint(got, expected) or "")
+
+
+def rotation_of_pi(axis):
+    """The exact half-turn matrix 2 u uᵀ - I about ``axis`` (normalised)."""
+    u = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
+    return 2.0 * np.outer(u, u) - np.eye(3)
+
+
+# ---------------------------------------------------------------- quat_multiply
+@exercise("quat_multiply", weight=3)
+def test_quat_multiply_matches_scipy(student):
+    """composes like scipy's rotations for 20 random unit pairs (both hemispheres)"""
+    for p, q in zip(unit_quats(20, seed=401), unit_quats(20, seed=402)[::-1]):
+        got = expect_array(student.quat_multiply(p, q), (4,), "quat_multiply(p, q)")
+        expected = (scipy_rotation(p) * scipy_rotation(q)).as_quat(scalar_first=True)
+        swapped = (scipy_rotation(q) * scipy_rotation(p)).as_quat(scalar_first=True)
+        hint = ("matches q ⊗ p: the sign of the cross product p_v × q_v is flipped (JPL product) "
+                "or the factors are swapped" if same_rotation_quat(got, swapped, 1e-6) else "")
+        expect_same_rotation(got, expected, TOL, "quat_multiply(p, q) as a rotation", hint)
+
+
+@exercise("quat_multiply", weight=2)
+def test_quat_multiply_exact_general(student, ref):
+    """exact Hamilton product of 20 random quaternions that are not unit"""
+    for p, q in zip(general_quats(20, seed=403), general_quats(20, seed=404)):
+        got = expect_array(student.quat_multiply(p, q), (4,), "quat_multiply(p, q)")
+        expected = ref.quat_multiply(p, q)
+        scale = np.linalg.norm(p) * np.linalg.norm(q)
+        hint = ("matches q ⊗ p: flip the sign of the cross product p_v × q_v"
+                if np.allclose(got, ref.quat_multiply(q, p), atol=1e-9 * scale) else "")
+        expect_close(got, expected, TOL * scale, f"quat_multiply(p, q) with |p| |q| = {scale:.3g}", hint)
+
+
+@exercise("quat_multiply", weight=1)
+def test_quat_multiply_unit_table(student):
+    """reproduces Hamilton's table: i² = j² = k² = -1, ij = k = -ji, jk = i, ki = j"""
+    for (a, b), (sign, c) in TABLE.items():
+        got = expect_array(student.quat_multiply(UNITS[a], UNITS[b]), (4,), f"quat_multiply({a}, {b})")
+        hint = "the cross product has the wrong sign (that is the JPL rule ij = -k)" \
+            if np.allclose(got, -sign * UNITS[c]) and c != "1" else ""
+        expect_close(got, sign * UNITS[c], TOL, f"{a} ⊗ {b}", hint)
+
+
+@exercise("quat_multiply", weight=1)
+def test_quat_multiply_identity_and_lists(student):
+    """[1, 0, 0, 0] is a two-sided identity; plain lists are accepted"""
+    for q in general_quats(5, seed=405):
+        expect_close(expect_array(student.quat_multiply(ONE.tolist(), q.tolist()), (4,), "quat_multiply"),
+                     q, TOL * np.linalg.norm(q), "1 ⊗ q (given as lists)", "convert inputs with np.asarray")
+        expect_close(expect_array(student.quat_multiply(q, ONE), (4,), "quat_multiply"),
+                     q, TOL * np.linalg.norm(q), "q ⊗ 1")
+
+
+# ---------------------------------------------------------------- quat_left, quat_right
+def _check_product_matrix(student, ref, name, seed):
+    function = getattr(student, name)
+    for p, q in zip(general_quats(15, seed=seed), general_quats(15, seed=seed + 1)):
+        if name == "quat_left":
+            M = expect_array(function(p), (4, 4), "quat_left(p)")
+            got, expected, what = M @ q, ref.quat_multiply(p, q), "quat_left(p) @ q vs p ⊗ q"
+            hint = ("this is [p]_R: in [p]_L the [v]× block has a plus sign"
+                    if np.allclose(M, ref.quat_right(p)) else
+                    "looks like the transpose of [p]_L: row i holds the coefficients of component i of p ⊗ q"
+                    if np.allclose(M, ref.quat_left(p).T) else "")
+        else:
+            M = expect_array(function(q), (4, 4), "quat_right(q)")
+            got, expected, what = M @ p, ref.quat_multiply(p, q), "quat_right(q) @ p vs p ⊗ q"
+            hint = ("this is [q]_L: in [q]_R the [v]× block has a minus sign"
+                    if np.allclose(M, ref.quat_left(q)) else
+                    "looks like the transpose of [q]_R: row i holds the coefficients of component i of p ⊗ q"
+                    if np.allclose(M, ref.quat_right(q).T) else "")
+        scale = np.linalg.norm(p) * np.linalg.norm(q)
+        expect_close(got, expected, TOL * scale, what, hint)
+
+
+def _check_orthogonal(student, name, seed):
+    function = getattr(student, name)
+    for q in unit_quats(6, seed=seed):
+        M = expect_array(function(q), (4, 4), f"{name}(q)")
+        expect_close(M.T @ M, np.eye(4), TOL, f"{name}(q)ᵀ {name}(q) for a unit q",
+                     "the four columns must be orthonormal: compare each sign with the matrix in §4")
+    for q in general_quats(4, seed=seed + 1):
+        M = expect_array(function(q), (4, 4), f"{name}(q)")
+        expect_close(M.T @ M, (q @ q) * np.eye(4), TOL * (q @ q), f"{name}(q)ᵀ {name}(q) for |q|² = {q @ q:.3g}")
+
+
+def _check_scipy(student, name, seed):
+    function = getattr(student, name)
+    for a, b in zip(unit_quats(8, seed=seed), unit_quats(8, seed=seed + 1)):
+        if name == "quat_left":
+            got = expect_array(function(a), (4, 4), "quat_left(a)") @ b
+        else:
+            got = expect_array(function(b), (4, 4), "quat_right(b)") @ a
+        expected = (scipy_rotation(a) * scipy_rotation(b)).as_quat(scalar_first=True)
+        expect_same_rotation(got, expected, TOL, f"the composition a ⊗ b through {name}")
+
+
+@exercise("quat_left", weight=3)
+def test_quat_left_is_left_product(student, ref):
+    """quat_left(p) @ q equals p ⊗ q for 15 random quaternions (not unit)"""
+    _check_product_matrix(student, ref, "quat_left", seed=411)
+
+
+@exercise("quat_left", weight=1)
+def test_quat_left_orthogonal(student):
+    """is orthogonal for unit q, and [q]_Lᵀ [q]_L = |q|² I in general"""
+    _check_orthogonal(student, "quat_left", seed=413)
+
+
+@exercise("quat_left", weight=1)
+def test_quat_left_matches_scipy(student):
+    """[a]_L b composes like scipy's rotations (up to sign)"""
+    _check_scipy(student, "quat_left", seed=415)
+
+
+@exercise("quat_right", weight=3)
+def test_quat_right_is_right_product(student, ref):
+    """quat_right(q) @ p equals p ⊗ q for 15 random quaternions (not unit)"""
+    _check_product_matrix(student, ref, "quat_right", seed=421)
+
+
+@exercise("quat_right", weight=1)
+def test_quat_right_orthogonal(student):
+    """is orthogonal for unit q, and [q]_Rᵀ [q]_R = |q|² I in general"""
+    _check_orthogonal(student, "quat_right", seed=423)
+
+
+@exercise("quat_right", weight=1)
+def test_quat_right_matches_scipy(student):
+    """[b]_R a composes like scipy's rotations (up to sign)"""
+    _check_scipy(student, "quat_right", seed=425)
+
+
+# ---------------------------------------------------------------- quat_conjugate
+@exercise("quat_conjugate", weight=3)
+def test_quat_conjugate_values(student):
+    """[w, x, y, z]* = [w, -x, -y, -z] for 20 random quaternions"""
+    for q in general_quats(20, seed=431):
+        got = expect_array(student.quat_conjugate(q), (4,), "quat_conjugate(q)")
+        hint = "negated the scalar instead of the vector part" if np.allclose(got, -conj(q)) else \
+            "returned q unchanged" if np.allclose(got, q) else ""
+        expect_close(got, conj(q), TOL * np.linalg.norm(q), "quat_conjugate(q)", hint)
+
+
+@exercise("quat_conjugate", weight=1)
+def test_quat_conjugate_is_inverse_rotation(student):
+    """the conjugate of a unit quaternion is the inverse rotation (scipy)"""
+    for q in unit_quats(8, seed=432):
+        got = expect_array(student.quat_conjugate(q), (4,), "quat_conjugate(q)")
+        expected = scipy_rotation(q).inv().as_quat(scalar_first=True)
+        expect_same_rotation(got, expected, TOL, "quat_conjugate(q) as a rotation")
+
+
+@exercise("quat_conjugate", weight=1)
+def test_quat_conjugate_lists(student):
+    """accepts a plain list"""
+    got = expect_array(student.quat_conjugate([1.0, 2.0, 3.0, 4.0]), (4,), "quat_conjugate(list)")
+    expect_close(got, [1.0, -2.0, -3.0, -4.0], TOL, "quat_conjugate([1, 2, 3, 4])", "convert inputs with np.asarray")
+
+
+# ---------------------------------------------------------------- quat_inverse
+@exercise("quat_inverse", weight=3)
+def test_quat_inverse_non_unit(student):
+    """q⁻¹ = q* / |q|² for 20 random quaternions of lengths 0.1 to 10"""
+    for q in general_quats(20, seed=441):
+        got = expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)")
+        n2 = q @ q
+        hint = ("returned the conjugate: divide it by |q|²" if np.allclose(got, conj(q)) else
+                "divided by |q|, not by |q|²" if np.allclose(got, conj(q) / np.sqrt(n2)) else "")
+        expect_close(got, conj(q) / n2, TOL / n2, f"quat_inverse(q) for |q| = {np.sqrt(n2):.3g}", hint)
+
+
+@exercise("quat_inverse", weight=2)
+def test_quat_inverse_undoes_product(student, ref):
+    """q ⊗ q⁻¹ = q⁻¹ ⊗ q = 1 for lengths from 0.001 to 1000"""
+    rng = np.random.default_rng(442)
+    for scale in (1e-3, 0.5, 3.0, 1e3):
+        q = rng.normal(size=4)
+        q = scale * q / np.linalg.norm(q)
+        got = expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)")
+        for what, product in (("q ⊗ q⁻¹", ref.quat_multiply(q, got)), ("q⁻¹ ⊗ q", ref.quat_multiply(got, q))):
+            expect_close(product, ONE, 1e-9, f"{what} for |q| = {scale:g}",
+                         "q⁻¹ = q* / |q|² (the conjugate alone only works for unit q)")
+
+
+@exercise("quat_inverse", weight=1)
+def test_quat_inverse_unit(student):
+    """for unit quaternions the inverse is the conjugate"""
+    for q in unit_quats(6, seed=443):
+        expect_close(expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)"), conj(q), TOL,
+                     "quat_inverse(q) for a unit q")
+
+
+# ---------------------------------------------------------------- quat_from_axis_angle
+def _axis_angle_cases(seed):
+    rng = np.random.default_rng(seed)
+    axes = rng.normal(size=(20, 3))
+    axes /= np.linalg.norm(axes, axis=1)[:, None]
+    angles = list(rng.uniform(-2 * np.pi, 2 * np.pi, 14)) + [0.0, np.pi, -np.pi, 2 * np.pi, 1e-9, np.pi / 2]
+    return zip(axes, angles)
+
+
+@exercise("quat_from_axis_angle", weight=3)
+def test_quat_from_axis_angle_matches_scipy(student):
+    """the same rotation as scipy's rotation vector θu, for 20 random and special cases"""
+    for u, theta in _axis_angle_cases(451):
+        got = expect_array(student.quat_from_axis_angle(u, theta), (4,), f"quat_from_axis_angle(u, {theta:.4g})")
+        expected = Rotation.from_rotvec(theta * u).as_quat(scalar_first=True)
+        hint = ""
+        if same_rotation_quat(got, Rotation.from_rotvec(2 * theta * u).as_quat(scalar_first=True), 1e-6):
+            hint = "this is the rotation by 2θ: the quaternion uses the half angle, [cos(θ/2), u sin(θ/2)]"
+        elif same_rotation_quat(got, Rotation.from_rotvec(np.deg2rad(theta) * u).as_quat(scalar_first=True), 1e-6):
+            hint = "looks like degrees: the course works in radians"
+        expect_same_rotation(got, expected, TOL, f"quat_from_axis_angle(u, {theta:.4g})", hint)
+
+
+@exercise("quat_from_axis_angle", weight=1)
+def test_quat_from_axis_angle_exact_formula(student):
+    """returns exactly [cos(θ/2), u sin(θ/2)], without changing the sign, for θ up to 4π"""
+    rng = np.random.default_rng(452)
+    for theta in (0.5, 2.0, 3.5, 5.0, 7.0, 9.5, 12.0):
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        got = expect_array(student.quat_from_axis_angle(u, theta), (4,), f"quat_from_axis_angle(u, {theta})")
+        expected = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
+        hint = ("the sign was changed: keep [cos(θ/2), u sin(θ/2)] as it is (w may be negative)"
+                if np.allclose(got, -expected) else "")
+        expect_close(got, expected, TOL, f"quat_from_axis_angle(u, {theta})", hint)
+
+
+@exercise("quat_from_axis_angle", weight=1)
+def test_quat_from_axis_angle_normalises_axis(student):
+    """normalises an axis that is not unit length"""
+    for axis, theta in (([0.0, 0.0, 5.0], 1.0), ([1.0, 2.0, 2.0], -2.5), ([0.01, 0.0, 0.0], 0.3)):
+        got = expect_array(student.quat_from_axis_angle(axis, theta), (4,), f"quat_from_axis_angle({axis}, {theta})")
+        u = np.asarray(axis) / np.linalg.norm(axis)
+        expected = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
+        expect_close(got, expected, TOL, f"quat_from_axis_angle({axis}, {theta})", "divide u by its norm first")
+
+
+# ---------------------------------------------------------------- quat_rotate
+@exercise("quat_rotate", weight=3)
+def test_quat_rotate_matches_scipy(student):
+    """rotates 20 random vectors like scipy, for unit q in both hemispheres"""
+    vectors = np.random.default_rng(461).normal(size=(20, 3)) * 3.0
+    for q, v in zip(unit_quats(20, seed=462), vectors):
+        got = expect_array(student.quat_rotate(q, v), (3,), "quat_rotate(q, v)")
+        rotation = scipy_rotation(q)
+        hint = ""
+        if np.allclose(got, rotation.inv().apply(v)):
+            hint = "rotated the opposite way: the sandwich is q ⊗ [0, v] ⊗ q*, with the conjugate on the right"
+        elif np.allclose(got, Rotation.from_quat(q).apply(v)):
+            hint = "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
+        expect_close(got, rotation.apply(v), TOL * 3.0 * np.linalg.norm(v), "quat_rotate(q, v)", hint)
+
+
+@exercise("quat_rotate", weight=1)
+def test_quat_rotate_sign_of_q(student):
+    """q and -q rotate a vector the same way"""
+    v = np.array([0.4, -2.0, 1.1])
+    for q in unit_quats(6, seed=463):
+        a = expect_array(student.quat_rotate(q, v), (3,), "quat_rotate(q, v)")
+        b = expect_array(student.quat_rotate(-q, v), (3,), "quat_rotate(-q, v)")
+        expect_close(a, b, TOL * 3.0, "quat_rotate(q, v) vs quat_rotate(-q, v)")
+
+
+@exercise("quat_rotate", weight=1)
+def test_quat_rotate_axis_and_lists(student):
+    """leaves the rotation axis where it is and accepts plain lists"""
+    rng = np.random.default_rng(464)
+    for _ in range(4):
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        theta = rng.uniform(-3.0, 3.0)
+        q = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
+        got = expect_array(student.quat_rotate(q.tolist(), (2.0 * u).tolist()), (3,), "quat_rotate(q, axis)")
+        expect_close(got, 2.0 * u, TOL * 2.0, "quat_rotate(q, 2u) along the axis u", "convert inputs with np.asarray")
+
+
+# ---------------------------------------------------------------- quat_to_matrix
+@exercise("quat_to_matrix", weight=3)
+def test_quat_to_matrix_matches_scipy(student):
+    """equals scipy's matrix (scalar_first=True) for 20 random unit q, both hemispheres"""
+    for q in unit_quats(20, seed=471):
+        got = expect_array(student.quat_to_matrix(q), (3, 3), "quat_to_matrix(q)")
+        expected = scipy_rotation(q).as_matrix()
+        if np.allclose(got, expected.T):
+            hint = "looks like the transpose (the inverse rotation): check the signs of the 2w[v]× terms"
+        elif np.allclose(got, Rotation.from_quat(q).as_matrix()):
+            hint = "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
+        else:
+            hint = rotation_hint(got, expected) or ""
+        expect_close(got, expected, TOL, "quat_to_matrix(q)", hint)
+
+
+@exercise("quat_to_matrix", weight=1)
+def test_quat_to_matrix_scalar_last_oracle(student):
+    """agrees with scipy's default scalar-last reading of the reordered quaternion"""
+    for xyzw in Rotation.random(8, random_state=472).as_quat():
+        wxyz = np.concatenate([xyzw[3:], xyzw[:3]])
+        got = expect_array(student.quat_to_matrix(wxyz), (3, 3), "quat_to_matrix(q)")
+        expect_close(got, Rotation.from_quat(xyzw).as_matrix(), TOL, "quat_to_matrix([w, x, y, z])")
+
+
+@exercise("quat_to_matrix", weight=1)
+def test_quat_to_matrix_edge_cases(student):
+    """identity, half turns (w = 0) and R(q) == R(-q)"""
+    expect_close(expect_array(student.quat_to_matrix(ONE), (3, 3), "quat_to_matrix(1)"), np.eye(3), TOL,
+                 "quat_to_matrix([1, 0, 0, 0])")
+    rng = np.random.default_rng(473)
+    for _ in range(4):
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        got = expect_array(student.quat_to_matrix(np.concatenate([[0.0], u])), (3, 3), "quat_to_matrix")
+        expect_close(got, rotation_of_pi(u), TOL, "quat_to_matrix([0, u]), a half turn")
+    for q in unit_quats(4, seed=474):
+        a = expect_array(student.quat_to_matrix(q), (3, 3), "quat_to_matrix(q)")
+        b = expect_array(student.quat_to_matrix(-q), (3, 3), "quat_to_matrix(-q)")
+        problem = rotation_problem(a)
+        expect(problem is None, f"quat_to_matrix(q) is not a rotation: {problem}")
+        expect_close(a, b, TOL, "quat_to_matrix(q) vs quat_to_matrix(-q)")
+
+
+# ---------------------------------------------------------------- matrix_to_quat
+NAIVE_HINT = ("near θ = π the trace formula w = ½√(1 + tr R) loses accuracy: start from the largest of "
+              "w², x², y², z² (Shepperd's method)")
+
+
+@exercise("matrix_to_quat", weight=3)
+def test_matrix_to_quat_random(student):
+    """the quaternion of 20 random rotations (compared up to sign)"""
+    for R in Rotation.random(20, random_state=481).as_matrix():
+        got = expect_array(student.matrix_to_quat(R), (4,), "matrix_to_quat(R)")
+        expected = Rotation.from_matrix(R).as_quat(scalar_first=True)
+        expect_same_rotation(got, expected, TOL, "matrix_to_quat(R)")
+
+
+@exercise("matrix_to_quat", weight=2)
+def test_matrix_to_quat_near_pi(student):
+    """stays accurate for rotations by π - δ, δ from 1e-4 down to 1e-12"""
+    rng = np.random.default_rng(482)
+    for delta in (1e-4, 1e-6, 1e-8, 1e-10, 1e-12):
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        theta = np.pi - delta
+        q_true = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
+        R = scipy_rotation(q_true).as_matrix()
+        got = expect_array(student.matrix_to_quat(R), (4,), f"matrix_to_quat(R) at θ = π - {delta:g}")
+        expect_same_rotation(got, q_true, TOL, f"matrix_to_quat(R) at θ = π - {delta:g}", NAIVE_HINT)
+
+
+@exercise("matrix_to_quat", weight=2)
+def test_matrix_to_quat_exactly_pi(student):
+    """exact half turns (w = 0) about coordinate and generic axes"""
+    rng = np.random.default_rng(483)
+    axes = [np.eye(3)[k] for k in range(3)] + [rng.normal(size=3) for _ in range(4)]
+    for axis in axes:
+        u = axis / np.linalg.norm(axis)
+        got = expect_array(student.matrix_to_quat(rotation_of_pi(u)), (4,), f"matrix_to_quat at θ = π about {fmt(u)}")
+        expect_same_rotation(got, np.concatenate([[0.0], u]), TOL, f"matrix_to_quat at θ = π about {fmt(u)}",
+                             NAIVE_HINT)
+
+
+@exercise("matrix_to_quat", weight=2)
+def test_matrix_to_quat_canonical_sign(student):
+    """returns the canonical sign w >= 0 (angles up to 2π, near π too)"""
+    rng = np.random.default_rng(484)
+    for theta in (0.3, 2.0, 3.0, np.pi - 1e-6, 4.0, 5.5, 6.2):
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        q = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
+        canonical = q if q[0] >= 0 else -q
+        got = expect_array(student.matrix_to_quat(scipy_rotation(q).as_matrix()), (4,), "matrix_to_quat(R)")
+        hint = "q and -q are the same rotation; the canonical choice has w >= 0: negate q when w < 0" \
+            if np.allclose(got, -canonical, atol=1e-9) else ""
+        expect_close(got, canonical, TOL, f"matrix_to_quat(R) for a turn by {theta:.4g} rad", hint)
+
+
+@exercise("matrix_to_quat", weight=1)
+def test_matrix_to_quat_identity_and_norm(student):
+    """identity → [1, 0, 0, 0]; the result has unit length"""
+    expect_close(expect_array(student.matrix_to_quat(np.eye(3)), (4,), "matrix_to_quat(I)"), ONE, TOL,
+                 "matrix_to_quat(I)")
+    for R in Rotation.random(5, random_state=485).as_matrix():
+        got = expect_array(student.matrix_to_quat(R.tolist()), (4,), "matrix_to_quat(R as a list)")
+        expect(abs(np.linalg.norm(got) - 1.0) <= TOL, f"|matrix_to_quat(R)| = {np.linalg.norm(got):.12f}",
+               "scale the result to unit length")
+
+
+# ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz
+@exercise("wxyz_to_xyzw", weight=3)
+def test_wxyz_to_xyzw_values(student):
+    """moves the scalar to the end; scipy's default from_quat then gives the same rotation"""
+    for q in unit_quats(10, seed=491):
+        got = expect_array(student.wxyz_to_xyzw(q), (4,), "wxyz_to_xyzw(q)")
+        hint = "the array was reversed: only the scalar moves" if np.allclose(got, q[::-1]) else ""
+        expect_close(got, np.concatenate([q[1:], q[:1]]), 0.0, "wxyz_to_xyzw(q)", hint)
+        expect_close(Rotation.from_quat(got).as_matrix(), scipy_rotation(q).as_matrix(), TOL,
+                     "scipy's Rotation.from_quat(wxyz_to_xyzw(q))")
+
+
+@exercise("wxyz_to_xyzw", weight=1)
+def test_wxyz_to_xyzw_stack(student):
+    """converts a stack of shape (N, 4) row by row, and accepts lists"""
+    stack = general_quats(5, seed=492)
+    got = expect_array(student.wxyz_to_xyzw(stack), (5, 4), "wxyz_to_xyzw(stack of 5)")
+    expect_close(got, np.concatenate([stack[:, 1:], stack[:, :1]], axis=1), 0.0, "wxyz_to_xyzw(stack)",
+                 "index the last axis: q[..., 1:] and q[..., :1]")
+    got = expect_array(student.wxyz_to_xyzw([1.0, 2.0, 3.0, 4.0]), (4,), "wxyz_to_xyzw(list)")
+    expect_close(got, [2.0, 3.0, 4.0, 1.0], 0.0, "wxyz_to_xyzw([1, 2, 3, 4])")
+
+
+@exercise("xyzw_to_wxyz", weight=3)
+def test_xyzw_to_wxyz_values(student):
+    """moves the scalar to the front; scipy's scalar-last output becomes scalar_first=True's"""
+    quats = Rotation.random(10, random_state=493).as_quat(canonical=True)   # scipy's layout: [x, y, z, w]
+    quats[1::2] *= -1.0                                                    # both hemispheres
+    for xyzw in quats:
+        got = expect_array(student.xyzw_to_wxyz(xyzw), (4,), "xyzw_to_wxyz(q)")
+        hint = ("the array was reversed: only the scalar moves" if np.allclose(got, xyzw[::-1]) else
+                "rolled the wrong way: the last entry (w) must come first" if np.allclose(got, np.roll(xyzw, -1))
+                else "")
+        expect_close(got, np.concatenate([xyzw[3:], xyzw[:3]]), 0.0, "xyzw_to_wxyz(q)", hint)
+        expect_close(scipy_rotation(got).as_matrix(), Rotation.from_quat(xyzw).as_matrix(), TOL,
+                     "Rotation.from_quat(xyzw_to_wxyz(q), scalar_first=True)")
+
+
+@exercise("xyzw_to_wxyz", weight=1)
+def test_xyzw_to_wxyz_stack(student):
+    """converts a stack of shape (N, 4) row by row, and accepts lists"""
+    stack = general_quats(5, seed=494)
+    got = expect_array(student.xyzw_to_wxyz(stack), (5, 4), "xyzw_to_wxyz(stack of 5)")
+    expect_close(got, np.concatenate([stack[:, 3:], stack[:, :3]], axis=1), 0.0, "xyzw_to_wxyz(stack)",
+                 "index the last axis: q[..., 3:] and q[..., :3]")
+    got = expect_array(student.xyzw_to_wxyz([2.0, 3.0, 4.0, 1.0]), (4,), "xyzw_to_wxyz(list)")
+    expect_close(got, [1.0, 2.0, 3.0, 4.0], 0.0, "xyzw_to_wxyz([2, 3, 4, 1])")
+
+
+# ---------------------------------------------------------------- quat_slerp
+def scipy_slerp(q0, q1, t):
+    """scipy's Slerp between the rotations of q0 and q1 (always the shorter way)."""
+    pair = Rotation.from_quat(np.array([q0, q1]), scalar_first=True)
+    return Slerp([0.0, 1.0], pair)([t]).as_quat(scalar_first=True)[0]
+
+
+def long_arc(q0, q1, t):
+    omega = np.arccos(np.clip(q0 @ q1, -1.0, 1.0))
+    return (np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega)
+
+
+def angle_between(a, b):
+    return 2.0 * np.arccos(min(abs(float(np.dot(a, b))), 1.0))
+
+
+@exercise("quat_slerp", weight=3)
+def test_quat_slerp_matches_scipy(student):
+    """agrees with scipy's Slerp for 12 random pairs at t = 0.1 … 0.9 (half of them need the sign flip)"""
+    for k, (q0, q1) in enumerate(zip(unit_quats(12, seed=501), unit_quats(12, seed=502))):
+        if (q0 @ q1 < 0) != (k % 2 == 1):
+            q1 = -q1   # odd pairs have q0 · q1 < 0, even pairs q0 · q1 > 0
+        for t in (0.1, 0.25, 0.5, 0.75, 0.9):
+            got = expect_array(student.quat_slerp(q0, q1, t), (4,), f"quat_slerp(q0, q1, {t})")
+            hint = ""
+            if q0 @ q1 < 0 and same_rotation_quat(got, long_arc(q0, q1, t), 1e-6):
+                hint = "took the longer arc: when q0 · q1 < 0, interpolate towards -q1"
+            elif abs(np.linalg.norm(got) - 1.0) > 1e-6:
+                hint = f"|result| = {np.linalg.norm(got):.4f}: slerp stays on the unit sphere"
+            expect_same_rotation(got, scipy_slerp(q0, q1, t), TOL, f"quat_slerp(q0, q1, {t})", hint)
+
+
+@exercise("quat_slerp", weight=2)
+def test_quat_slerp_endpoints(student):
+    """t = 0 gives q0 and t = 1 gives q1 (up to sign)"""
+    for q0, q1 in zip(unit_quats(6, seed=503), unit_quats(6, seed=504)):
+        expect_same_rotation(expect_array(student.quat_slerp(q0, q1, 0.0), (4,), "quat_slerp(q0, q1, 0)"), q0,
+                             TOL, "quat_slerp(q0, q1, 0)")
+        expect_same_rotation(expect_array(student.quat_slerp(q0, q1, 1.0), (4,), "quat_slerp(q0, q1, 1)"), q1,
+                             TOL, "quat_slerp(q0, q1, 1)")
+
+
+@exercise("quat_slerp", weight=2)
+def test_quat_slerp_shorter_arc(student):
+    """turns at constant speed along the shorter arc, also for rotations almost π apart"""
+    rng = np.random.default_rng(505)
+    cases = []
+    for angle in (2.5, 3.0, np.pi - 0.02):          # rotation angle from q0 to q1
+        q0 = unit_quats(1, seed=int(rng.integers(1000)))[0]
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        step = np.concatenate([[np.cos(angle / 2)], np.sin(angle / 2) * u])
+        w, v = q0[0], q0[1:]
+        q1 = np.concatenate([[w * step[0] - v @ step[1:]], w * step[1:] + step[0] * v + np.cross(v, step[1:])])
+        cases.append((q0, -q1 if q0 @ q1 > 0 else q1, angle))   # q1 handed over with q0 · q1 < 0
+    for q0, q1, angle in cases:
+        for t in (0.25, 0.5, 0.8):
+            got = expect_array(student.quat_slerp(q0, q1, t), (4,), f"quat_slerp(q0, q1, {t})")
+            expect(abs(np.linalg.norm(got) - 1.0) <= 1e-9, f"|quat_slerp(q0, q1, {t})| = {np.linalg.norm(got):.6f}",
+                   "slerp stays on the unit sphere: the sine weights do that, plain averaging does not")
+            turned = angle_between(q0, got)
+            expect(abs(turned - t * angle) <= 1e-8,
+                   f"at t = {t} the result is {turned:.6f} rad from q0, expected t × {angle:.4f} = {t * angle:.6f}",
+                   "q1 and -q1 are one rotation: when q0 · q1 < 0 use -q1, or slerp takes the longer arc")
+
+
+@exercise("quat_slerp", weight=1)
+def test_quat_slerp_nearly_identical(student):
+    """nearly identical (and nearly opposite) quaternions: no division by zero (tolerance 1e-8)"""
+    q0 = unit_quats(1, seed=506)[0]
+    rng = np.random.default_rng(507)
+    for tiny in (0.0, 1e-12, 1e-8, 1e-5):
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        step = np.concatenate([[np.cos(tiny)], np.sin(tiny) * u])
+        w, v = q0[0], q0[1:]
+        q1 = np.concatenate([[w * step[0] - v @ step[1:]], w * step[1:] + step[0] * v + np.cross(v, step[1:])])
+        for other, name in ((q1, "nearly identical"), (-q1, "nearly opposite")):
+            for t in (0.3, 0.5):
+                got = expect_array(student.quat_slerp(q0, other, t), (4,), f"quat_slerp for {name} inputs")
+                expect_same_rotation(got, scipy_slerp(q0, other, t), 1e-8,
+                                     f"quat_slerp(q0, q1, {t}) for {name} inputs ({tiny:g} apart)",
+                                     "when sin Ω is tiny, use normalised linear interpolation instead")

@@ -1,0 +1,409 @@
+"""Hidden checks for lesson 07: poses and rigid-body transformations.
+
+Independent oracles: plain block algebra for poses, scipy's general matrix
+exponential ``scipy.linalg.expm`` of the 4×4 twist matrix for the exponential
+map, and group laws (composition, inverse, round trips). Every test calls the
+student's function of its own exercise only; inputs are built here.
+"""
+
+import numpy as np
+from scipy.linalg import expm
+
+from .helpers import (exercise, expect, expect_array, expect_close, fmt, random_rotations,
+                      rotation_problem)
+
+TOL = 1e-9
+MIRROR_HINT = "xi = [rho, phi]: the translation part comes first, the rotation part last"
+
+
+# ---------------------------------------------------------------- building blocks of the tests
+def _pose(R, t):
+    T = np.eye(4)
+    T[:3, :3] = R
+    T[:3, 3] = t
+    return T
+
+
+def _random_poses(count, seed, scale=2.0):
+    rng = np.random.default_rng(seed)
+    return [_pose(R, scale * rng.normal(size=3)) for R in random_rotations(count, seed + 1000)]
+
+
+def _inverse(T):
+    R, t = T[:3, :3], T[:3, 3]
+    return _pose(R.T, -R.T @ t)
+
+
+def _twist_matrix(xi):
+    rho, phi = xi[:3], xi[3:]
+    M = np.zeros((4, 4))
+    M[:3, :3] = [[0.0, -phi[2], phi[1]], [phi[2], 0.0, -phi[0]], [-phi[1], phi[0], 0.0]]
+    M[:3, 3] = rho
+    return M
+
+
+def _exp(xi):
+    return expm(_twist_matrix(np.asarray(xi, dtype=float)))
+
+
+def _unit(v):
+    v = np.asarray(v, dtype=float)
+    return v / np.linalg.norm(v)
+
+
+def _twist(rho, angle, axis):
+    return np.concatenate([np.asarray(rho, dtype=float), angle * _unit(axis)])
+
+
+def _random_twists(count, seed, max_angle):
+    rng = np.random.default_rng(seed)
+    return [_twist(rng.normal(size=3), rng.uniform(0.0, max_angle), rng.normal(size=3)) for _ in range(count)]
+
+
+SERIES_HINT_V = ("below θ = 1e-2 use the Taylor series of the two coefficients of V: "
+                 "the closed forms are 0/0 at θ = 0 and lose digits just above it")
+SERIES_HINT_C = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: "
+                 "the closed form is 0/0 at θ = 0 and cancels catastrophically just above it")
+
+
+def _expect_finite(value, what, hint):
+    """Fail with ``hint`` when an array of the right kind holds NaN or inf."""
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        return
+    expect(bool(np.all(np.isfinite(array))), f"{what} returned NaN or inf values", hint)
+
+
+def _expect_pose(T, what):
+    expect_close(T[3], [0.0, 0.0, 0.0, 1.0], 1e-12, f"{what}: the bottom row",
+                 "a pose's bottom row is [0, 0, 0, 1]: the translation belongs in the last column")
+    problem = rotation_problem(T[:3, :3], 1e-8)
+    expect(problem is None, f"{what}: the rotation block is not a rotation ({problem})")
+
+
+# ---------------------------------------------------------------- make_pose
+@exercise("make_pose", weight=3)
+def test_make_pose_blocks(student):
+    """puts R top-left, t in the last column and [0, 0, 0, 1] below, for 10 random poses"""
+    rng = np.random.default_rng(701)
+    for R in random_rotations(10, seed=702):
+        t = rng.normal(size=3)
+        got = expect_array(student.make_pose(R, t), (4, 4), "make_pose(R, t)")
+        hint = "t belongs in the last column, not the bottom row" if np.allclose(got, _pose(R, t).T) else ""
+        expect_close(got, _pose(R, t), 1e-12, "make_pose(R, t)", hint)
+
+
+@exercise("make_pose", weight=1)
+def test_make_pose_accepts_lists(student):
+    """accepts plain lists (and integers)"""
+    got = expect_array(student.make_pose(np.eye(3, dtype=int).tolist(), [1, 2, 3]), (4, 4), "make_pose(lists)")
+    expect_close(got, _pose(np.eye(3), [1.0, 2.0, 3.0]), 1e-12, "make_pose(I, [1, 2, 3]) with lists",
+                 "convert the inputs with np.asarray(..., dtype=float)")
+
+
+# ---------------------------------------------------------------- pose_inverse
+@exercise("pose_inverse", weight=3)
+def test_pose_inverse_formula(student):
+    """returns [[Rᵀ, -Rᵀ t], [0, 0, 0, 1]] for 20 random poses"""
+    for T in _random_poses(20, seed=711):
+        got = expect_array(student.pose_inverse(T), (4, 4), "pose_inverse(T)")
+        hint = ""
+        if np.allclose(got, T.T):
+            hint = "that is the transpose of T: a pose is not orthogonal; only the rotation block is transposed"
+        elif np.allclose(got[:3, 3], -T[:3, 3]):
+            hint = "the translation must be turned as well as negated: -Rᵀ t"
+        expect_close(got, _inverse(T), TOL, "pose_inverse(T)", hint)
+
+
+@exercise("pose_inverse", weight=2)
+def test_pose_inverse_undoes(student):
+    """T @ pose_inverse(T) and pose_inverse(T) @ T are the identity; the inverse of the inverse is T"""
+    for T in _random_poses(10, seed=712, scale=5.0):
+        inverse = expect_array(student.pose_inverse(T), (4, 4), "pose_inverse(T)")
+        expect_close(T @ inverse, np.eye(4), TOL, "T @ pose_inverse(T)")
+        expect_close(inverse @ T, np.eye(4), TOL, "pose_inverse(T) @ T")
+        again = expect_array(student.pose_inverse(inverse), (4, 4), "pose_inverse(pose_inverse(T))")
+        expect_close(again, T, TOL, "pose_inverse(pose_inverse(T))")
+
+
+@exercise("pose_inverse", weight=1)
+def test_pose_inverse_of_a_chain(student):
+    """the inverse of T_ab T_bc is T_bc⁻¹ T_ab⁻¹ (frame chain walked backwards)"""
+    poses = _random_poses(6, seed=713)
+    for T_ab, T_bc in zip(poses[::2], poses[1::2]):
+        whole = expect_array(student.pose_inverse(T_ab @ T_bc), (4, 4), "pose_inverse(T_ab @ T_bc)")
+        parts = (expect_array(student.pose_inverse(T_bc), (4, 4), "pose_inverse(T_bc)")
+                 @ expect_array(student.pose_inverse(T_ab), (4, 4), "pose_inverse(T_ab)"))
+        expect_close(whole, parts, TOL, "pose_inverse(T_ab T_bc) vs pose_inverse(T_bc) pose_inverse(T_ab)")
+
+
+# ---------------------------------------------------------------- pose_compose
+@exercise("pose_compose", weight=3)
+def test_pose_compose_random(student):
+    """T_ac = T_ab T_bc for 20 random pairs"""
+    poses = _random_poses(40, seed=721)
+    for T_ab, T_bc in zip(poses[::2], poses[1::2]):
+        got = expect_array(student.pose_compose(T_ab, T_bc), (4, 4), "pose_compose(T_ab, T_bc)")
+        hint = "the order is reversed: T_ac = T_ab @ T_bc" if np.allclose(got, T_bc @ T_ab) else ""
+        expect_close(got, T_ab @ T_bc, TOL, "pose_compose(T_ab, T_bc)", hint)
+
+
+@exercise("pose_compose", weight=2)
+def test_pose_compose_frame_chain(student):
+    """world → robot → camera: a camera point reaches the world the same way in one step or two"""
+    T_wr, T_rc = _random_poses(2, seed=722, scale=3.0)
+    T_wc = expect_array(student.pose_compose(T_wr, T_rc), (4, 4), "pose_compose(T_wr, T_rc)")
+    points_c = np.random.default_rng(723).normal(size=(6, 3)) * 4.0
+    for p_c in points_c:
+        p_w_two_steps = T_wr[:3, :3] @ (T_rc[:3, :3] @ p_c + T_rc[:3, 3]) + T_wr[:3, 3]
+        expect_close(T_wc[:3, :3] @ p_c + T_wc[:3, 3], p_w_two_steps, TOL,
+                     "a camera point mapped with pose_compose(T_wr, T_rc)")
+
+
+@exercise("pose_compose", weight=1)
+def test_pose_compose_laws(student):
+    """is associative, has the identity as neutral element and stays a pose"""
+    A, B, C = _random_poses(3, seed=724)
+    AB = expect_array(student.pose_compose(A, B), (4, 4), "pose_compose(A, B)")
+    BC = expect_array(student.pose_compose(B, C), (4, 4), "pose_compose(B, C)")
+    left = expect_array(student.pose_compose(AB, C), (4, 4), "pose_compose(AB, C)")
+    right = expect_array(student.pose_compose(A, BC), (4, 4), "pose_compose(A, BC)")
+    expect_close(left, right, TOL, "(A B) C vs A (B C)")
+    _expect_pose(AB, "pose_compose(A, B)")
+    expect_close(expect_array(student.pose_compose(A, np.eye(4)), (4, 4), "pose_compose(A, I)"), A, TOL,
+                 "pose_compose(A, I)")
+
+
+# ---------------------------------------------------------------- to_homogeneous
+@exercise("to_homogeneous", weight=2)
+def test_to_homogeneous_rows(student):
+    """(N, 3) → (N, 4): each row gets a trailing 1"""
+    P = np.random.default_rng(731).normal(size=(7, 3))
+    got = expect_array(student.to_homogeneous(P), (7, 4), "to_homogeneous(P) for 7 points")
+    hint = "points get a 1; a trailing 0 marks a direction" if np.allclose(got[:, 3], 0.0) else ""
+    expect_close(got, np.column_stack([P, np.ones(7)]), 0.0, "to_homogeneous(P)", hint)
+
+
+@exercise("to_homogeneous", weight=2)
+def test_to_homogeneous_single(student):
+    """(3,) → (4,) for a single point, and lists work"""
+    got = expect_array(student.to_homogeneous([1.5, -2.0, 0.25]), (4,), "to_homogeneous of one point")
+    hint = "points get a 1; a trailing 0 marks a direction" if got[3] == 0.0 else ""
+    expect_close(got, [1.5, -2.0, 0.25, 1.0], 0.0, "to_homogeneous([1.5, -2, 0.25])", hint)
+
+
+@exercise("to_homogeneous", weight=1)
+def test_to_homogeneous_one_row(student):
+    """keeps a batch of one point as a batch: (1, 3) → (1, 4)"""
+    got = expect_array(student.to_homogeneous(np.array([[3.0, 2.0, 1.0]])), (1, 4), "to_homogeneous of shape (1, 3)")
+    expect_close(got, [[3.0, 2.0, 1.0, 1.0]], 0.0, "to_homogeneous([[3, 2, 1]])")
+
+
+# ---------------------------------------------------------------- from_homogeneous
+@exercise("from_homogeneous", weight=3)
+def test_from_homogeneous_divides(student):
+    """(N, 4) → (N, 3), dividing each row by its last coordinate (scales 0.5, 2.5, -3, ...)"""
+    rng = np.random.default_rng(741)
+    P = rng.normal(size=(6, 3))
+    w = np.array([0.5, 2.5, -3.0, 1.0, 1e-3, 7.0])
+    P_h = np.column_stack([P * w[:, None], w])
+    got = expect_array(student.from_homogeneous(P_h), (6, 3), "from_homogeneous(P_h)")
+    hint = "divide by the last coordinate before dropping it" if np.allclose(got, P_h[:, :3]) else ""
+    expect_close(got, P, 1e-12, "from_homogeneous(P_h)", hint)
+
+
+@exercise("from_homogeneous", weight=1)
+def test_from_homogeneous_single(student):
+    """(4,) → (3,) for a single point"""
+    got = expect_array(student.from_homogeneous([2.0, -4.0, 1.0, 2.0]), (3,), "from_homogeneous of one point")
+    hint = "divide by the last coordinate before dropping it" if np.allclose(got, [2.0, -4.0, 1.0]) else ""
+    expect_close(got, [1.0, -2.0, 0.5], 1e-12, "from_homogeneous([2, -4, 1, 2])", hint)
+
+
+@exercise("from_homogeneous", weight=1)
+def test_from_homogeneous_undoes_a_pose(student):
+    """recovers the points after a pose acts on [p, 1] and the vector is rescaled"""
+    T = _random_poses(1, seed=742)[0]
+    P = np.random.default_rng(743).normal(size=(5, 3))
+    P_h = np.column_stack([P, np.ones(5)]) @ T.T * 3.0
+    got = expect_array(student.from_homogeneous(P_h), (5, 3), "from_homogeneous(3 T [p, 1])")
+    expect_close(got, P @ T[:3, :3].T + T[:3, 3], 1e-12, "from_homogeneous(3 T [p, 1])")
+
+
+# ---------------------------------------------------------------- transform_points
+def _transform_hint(got, T, P):
+    R, t = T[:3, :3], T[:3, 3]
+    if np.allclose(got, P @ R + t):
+        return "for rows use P @ R.T (or P_h @ T.T): this is the inverse rotation"
+    moved = np.column_stack([P, np.ones(len(P))]) @ T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if np.allclose(got, moved[:, :3]) or np.allclose(got, moved[:, :3] / moved[:, 3:]):
+            return "P_h @ T applies the transpose of T; rows need P_h @ T.T"
+    if np.allclose(got, P @ R.T):
+        return "the translation is missing: add T[:3, 3]"
+    if np.allclose(got, (P + t) @ R.T):
+        return "rotate first, then shift: R p + t, not R (p + t)"
+    return ""
+
+
+@exercise("transform_points", weight=3)
+def test_transform_points_rows(student):
+    """p_a = R_ab p_b + t_ab for N points as rows, shape (N, 3)"""
+    rng = np.random.default_rng(751)
+    for T in _random_poses(8, seed=752):
+        P = rng.normal(size=(9, 3)) * 3.0
+        got = expect_array(student.transform_points(T, P), (9, 3), "transform_points(T, P) for 9 points")
+        expect_close(got, P @ T[:3, :3].T + T[:3, 3], TOL, "transform_points(T, P)", _transform_hint(got, T, P))
+
+
+@exercise("transform_points", weight=1)
+def test_transform_points_single(student):
+    """accepts one point of shape (3,) and returns shape (3,)"""
+    for T in _random_poses(4, seed=753):
+        p = np.array([0.4, -1.1, 2.3])
+        got = expect_array(student.transform_points(T, p), (3,), "transform_points(T, p) for one point")
+        expect_close(got, T[:3, :3] @ p + T[:3, 3], TOL, "transform_points(T, p)")
+
+
+@exercise("transform_points", weight=1)
+def test_transform_points_chain(student):
+    """transforming by T_ab T_bc equals transforming by T_bc, then by T_ab; inverse poses undo it"""
+    T_ab, T_bc = _random_poses(2, seed=754)
+    P = np.random.default_rng(755).normal(size=(5, 3))
+    in_b = expect_array(student.transform_points(T_bc, P), (5, 3), "transform_points(T_bc, P)")
+    in_a = expect_array(student.transform_points(T_ab, in_b), (5, 3), "transform_points(T_ab, ...)")
+    direct = expect_array(student.transform_points(T_ab @ T_bc, P), (5, 3), "transform_points(T_ab T_bc, P)")
+    expect_close(direct, in_a, TOL, "one step vs two steps along the chain")
+    back = expect_array(student.transform_points(_inverse(T_ab @ T_bc), direct), (5, 3),
+                        "transform_points(T_ac⁻¹, ...)")
+    expect_close(back, P, TOL, "transforming back with the inverse pose")
+
+
+@exercise("transform_points", weight=1)
+def test_transform_points_lists(student):
+    """accepts plain lists"""
+    T = _pose(np.eye(3), [1.0, 2.0, 3.0])
+    got = expect_array(student.transform_points(T.tolist(), [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]), (2, 3),
+                       "transform_points with lists")
+    expect_close(got, [[1.0, 2.0, 3.0], [2.0, 3.0, 4.0]], TOL, "transform_points(shift, lists)",
+                 "convert the inputs with np.asarray(..., dtype=float)")
+
+
+# ---------------------------------------------------------------- exp_se3
+def _exp_hint(got, xi):
+    xi = np.asarray(xi, dtype=float)
+    if np.allclose(got, _exp(np.concatenate([xi[3:], xi[:3]])), atol=1e-8):
+        return MIRROR_HINT
+    if np.allclose(got[:3, 3], xi[:3], atol=1e-12) and np.linalg.norm(xi[3:]) > 0.0:
+        return "the translation is V(phi) @ rho, not rho"
+    if np.allclose(got[:3, :3], _exp(xi)[:3, :3], atol=1e-8):
+        return "the rotation block is right; check V (its two coefficients and the sign of the W term)"
+    return ""
+
+
+@exercise("exp_se3", weight=3)
+def test_exp_se3_matches_expm(student):
+    """agrees with scipy.linalg.expm of the 4×4 twist matrix for 30 random twists (angles up to 3 rad)"""
+    for xi in _random_twists(30, seed=761, max_angle=3.0):
+        got = expect_array(student.exp_se3(xi), (4, 4), f"exp_se3({fmt(xi, 3)})")
+        expect_close(got, _exp(xi), TOL, f"exp_se3({fmt(xi, 3)})", _exp_hint(got, xi))
+
+
+@exercise("exp_se3", weight=2)
+def test_exp_se3_tiny_angles(student):
+    """is exact at tiny rotation parts: |phi| = 0, 1e-12, 1e-9, 1e-6, 1e-4 and 9e-3"""
+    rng = np.random.default_rng(762)
+    for angle in (0.0, 1e-12, 1e-9, 1e-6, 1e-4, 9e-3):
+        xi = _twist(_unit(rng.normal(size=3)), angle, rng.normal(size=3))
+        got = student.exp_se3(xi)
+        _expect_finite(got, f"exp_se3 at |phi| = {angle:g}", SERIES_HINT_V)
+        got = expect_array(got, (4, 4), f"exp_se3 at |phi| = {angle:g}")
+        expect_close(got, _exp(xi), TOL, f"exp_se3 at |phi| = {angle:g}", _exp_hint(got, xi) or SERIES_HINT_V)
+
+
+@exercise("exp_se3", weight=1)
+def test_exp_se3_large_angles(student):
+    """handles rotation parts near and beyond π (π - 1e-6, π, 4 rad, 7 rad)"""
+    rng = np.random.default_rng(763)
+    for angle in (np.pi - 1e-6, np.pi, 4.0, 7.0):
+        xi = _twist(rng.normal(size=3), angle, rng.normal(size=3))
+        got = expect_array(student.exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {angle:.6g}")
+        expect_close(got, _exp(xi), TOL, f"exp_se3 at |phi| = {angle:.6g}", _exp_hint(got, xi))
+
+
+@exercise("exp_se3", weight=1)
+def test_exp_se3_group_laws(student):
+    """returns a pose; exp(a xi) exp(b xi) = exp((a + b) xi); a pure translation moves by rho"""
+    xi = _twist([0.3, -1.0, 0.7], 1.1, [1.0, -2.0, 0.5])
+    T = expect_array(student.exp_se3(xi), (4, 4), "exp_se3(xi)")
+    _expect_pose(T, "exp_se3(xi)")
+    a = expect_array(student.exp_se3(0.3 * xi), (4, 4), "exp_se3(0.3 xi)")
+    b = expect_array(student.exp_se3(0.7 * xi), (4, 4), "exp_se3(0.7 xi)")
+    expect_close(a @ b, T, TOL, "exp_se3(0.3 xi) @ exp_se3(0.7 xi) vs exp_se3(xi)", _exp_hint(T, xi))
+    shift = expect_array(student.exp_se3([1.0, -2.0, 3.0, 0.0, 0.0, 0.0]), (4, 4), "exp_se3 of a pure translation")
+    expect_close(shift, _pose(np.eye(3), [1.0, -2.0, 3.0]), TOL, "exp_se3([1, -2, 3, 0, 0, 0])", MIRROR_HINT)
+
+
+# ---------------------------------------------------------------- log_se3
+def _log_hint(got, T, xi):
+    if np.allclose(np.concatenate([got[3:], got[:3]]), xi, atol=1e-6):
+        return MIRROR_HINT
+    if np.allclose(got[:3], T[:3, 3], atol=1e-12) and np.linalg.norm(xi[3:]) > 0.0:
+        return "rho is V(phi)⁻¹ t, not t itself"
+    if np.allclose(got[3:], xi[3:], atol=1e-6):
+        return "phi is right; check V⁻¹ (the -W/2 term and the coefficient c(θ) of W²)"
+    return ""
+
+
+@exercise("log_se3", weight=3)
+def test_log_se3_round_trip(student):
+    """log_se3(expm(xi^)) = xi for 30 random twists with angles up to π - 0.01"""
+    for xi in _random_twists(30, seed=771, max_angle=np.pi - 0.01):
+        T = _exp(xi)
+        got = expect_array(student.log_se3(T), (6,), "log_se3(T)")
+        expect_close(got, xi, TOL, f"log_se3 of the pose reached by xi = {fmt(xi, 3)}", _log_hint(got, T, xi))
+
+
+@exercise("log_se3", weight=2)
+def test_log_se3_tiny_angles(student):
+    """is exact at tiny rotation parts: |phi| = 0, 1e-12, 1e-9, 1e-6, 1e-4 and 9e-3"""
+    rng = np.random.default_rng(772)
+    for angle in (0.0, 1e-12, 1e-9, 1e-6, 1e-4, 9e-3):
+        xi = _twist(_unit(rng.normal(size=3)), angle, rng.normal(size=3))
+        T = _exp(xi)
+        got = student.log_se3(T)
+        _expect_finite(got, f"log_se3 at |phi| = {angle:g}", SERIES_HINT_C)
+        got = expect_array(got, (6,), f"log_se3 at |phi| = {angle:g}")
+        expect_close(got, xi, TOL, f"log_se3 at |phi| = {angle:g}", _log_hint(got, T, xi) or SERIES_HINT_C)
+
+
+@exercise("log_se3", weight=2)
+def test_log_se3_near_pi(student):
+    """near and at π (π - 1e-6, π - 1e-9, exactly π): exp of the result is T, angle at most π"""
+    rng = np.random.default_rng(773)
+    for angle in (np.pi - 1e-6, np.pi - 1e-9):
+        xi = _twist(rng.normal(size=3), angle, rng.normal(size=3))
+        got = expect_array(student.log_se3(_exp(xi)), (6,), f"log_se3 at |phi| = {angle:.12g}")
+        expect_close(got, xi, 1e-6, f"log_se3 at |phi| = {angle:.12g}", _log_hint(got, _exp(xi), xi))
+    for axis in ([1.0, 1.0, 1.0], [0.3, -0.8, 0.5], [0.0, 0.0, 1.0]):
+        u = _unit(axis)
+        R = 2.0 * np.outer(u, u) - np.eye(3)            # exactly π about u
+        T = _pose(R, rng.normal(size=3))
+        got = expect_array(student.log_se3(T), (6,), f"log_se3 at exactly π about {fmt(u, 3)}")
+        expect(np.linalg.norm(got[3:]) <= np.pi + 1e-9,
+               f"the rotation part has angle {np.linalg.norm(got[3:]):.6f} > π",
+               "Log returns angles in [0, π]")
+        expect_close(_exp(got), T, 1e-8, f"expm of the twist of log_se3(T) at exactly π about {fmt(u, 3)}",
+                     "at θ = π, c(π) = 1/π² and both axis signs work; phi must still be π times the axis")
+
+
+@exercise("log_se3", weight=1)
+def test_log_se3_large_rotation(student):
+    """a twist with a 5 rad rotation part comes back as an equivalent twist with angle ≤ π"""
+    xi = _twist([1.0, 0.5, -2.0], 5.0, [0.2, 0.9, -0.4])
+    T = _exp(xi)
+    got = expect_array(student.log_se3(T), (6,), "log_se3(T) for a 5 rad turn")
+    expect(np.linalg.norm(got[3:]) <= np.pi + 1e-9,
+           f"the rotation part has angle {np.linalg.norm(got[3:]):.4f} > π", "Log returns angles in [0, π]")
+    expect_close(_exp(got), T, TOL, "expm of the twist of log_se3(T) for a 5 rad turn", MIRROR_HINT)

@@ -1,0 +1,89 @@
+"""Typical mistakes for lesson 02: groups and SO(3)."""
+
+from . import Mistake
+
+MISTAKES = [
+    Mistake("group_closure_with_matmul", "check_group_axioms",
+            "tests closure with the matrix product instead of the op it was given", '''
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        return bool(np.max(np.abs(np.asarray(x, dtype=float) - np.asarray(y, dtype=float))) <= tol)
+    closure = all(is_member(np.asarray(a) @ np.asarray(b)) for a in samples for b in samples)
+    has_identity = bool(is_member(identity)) and all(
+        equal(op(identity, a), a) and equal(op(a, identity), a) for a in samples)
+    has_inverses = all(is_member(inverse(a)) and equal(op(a, inverse(a)), identity)
+                       and equal(op(inverse(a), a), identity) for a in samples)
+    associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
+    return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
+            "associativity": associative}
+'''),
+    Mistake("group_identity_one_sided", "check_group_axioms",
+            "checks only identity ∘ a = a and a ∘ inverse(a) = e (one side each)", '''
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        return bool(np.max(np.abs(np.asarray(x, dtype=float) - np.asarray(y, dtype=float))) <= tol)
+    closure = all(is_member(op(a, b)) for a in samples for b in samples)
+    has_identity = bool(is_member(identity)) and all(equal(op(identity, a), a) for a in samples)
+    has_inverses = all(is_member(inverse(a)) and equal(op(a, inverse(a)), identity) for a in samples)
+    associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
+    return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
+            "associativity": associative}
+'''),
+    Mistake("group_no_membership", "check_group_axioms",
+            "never asks whether the identity and the inverses belong to the set", '''
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        return bool(np.max(np.abs(np.asarray(x, dtype=float) - np.asarray(y, dtype=float))) <= tol)
+    closure = all(is_member(op(a, b)) for a in samples for b in samples)
+    has_identity = all(equal(op(identity, a), a) and equal(op(a, identity), a) for a in samples)
+    has_inverses = all(equal(op(a, inverse(a)), identity) and equal(op(inverse(a), a), identity)
+                       for a in samples)
+    associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
+    return {"closure": bool(closure), "identity": has_identity, "inverse": has_inverses,
+            "associativity": associative}
+'''),
+    Mistake("group_associativity_assumed", "check_group_axioms",
+            "assumes associativity always holds instead of testing the triples", '''
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        return bool(np.max(np.abs(np.asarray(x, dtype=float) - np.asarray(y, dtype=float))) <= tol)
+    closure = all(is_member(op(a, b)) for a in samples for b in samples)
+    has_identity = bool(is_member(identity)) and all(
+        equal(op(identity, a), a) and equal(op(a, identity), a) for a in samples)
+    has_inverses = all(is_member(inverse(a)) and equal(op(a, inverse(a)), identity)
+                       and equal(op(inverse(a), a), identity) for a in samples)
+    return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
+            "associativity": True}
+'''),
+    Mistake("group_allclose_rtol", "check_group_axioms",
+            "compares with np.allclose(atol=tol), whose default rtol=1e-5 swamps tol", '''
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        return bool(np.allclose(x, y, atol=tol))
+    closure = all(is_member(op(a, b)) for a in samples for b in samples)
+    has_identity = bool(is_member(identity)) and all(
+        equal(op(identity, a), a) and equal(op(a, identity), a) for a in samples)
+    has_inverses = all(is_member(inverse(a)) and equal(op(a, inverse(a)), identity)
+                       and equal(op(inverse(a), a), identity) for a in samples)
+    associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
+    return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
+            "associativity": associative}
+'''),
+    Mistake("commutes_exact_equality", "commutes", "compares the two products with exact equality", '''
+def commutes(a, b, op, tol=1e-9):
+    return bool(np.array_equal(op(a, b), op(b, a)))
+'''),
+    Mistake("commutes_ignores_op", "commutes", "always uses the matrix product instead of op", '''
+def commutes(a, b, op, tol=1e-9):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return bool(np.max(np.abs(a @ b - b @ a)) <= tol)
+'''),
+    Mistake("commutes_same_order", "commutes", "compares op(a, b) with itself (arguments never swapped)", '''
+def commutes(a, b, op, tol=1e-9):
+    return bool(np.max(np.abs(np.asarray(op(a, b)) - np.asarray(op(a, b)))) <= tol)
+'''),
+]
+
+SAMPLE = {
+    "farid": ["group_no_membership"],   # lets -R and the zero matrix through, as he lets reflections through
+}

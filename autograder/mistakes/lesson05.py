@@ -1,0 +1,145 @@
+"""Typical mistakes for lesson 05: Euler angles and their singularities."""
+
+from . import Mistake
+
+MISTAKES = [
+    Mistake("euler_matrix_xyz_order", "euler_zyx_to_matrix",
+            "multiplies in the x-y-z order, Rx(roll) Ry(pitch) Rz(yaw)", '''
+def euler_zyx_to_matrix(yaw, pitch, roll):
+    cy, sy = np.cos(yaw), np.sin(yaw)
+    cp, sp = np.cos(pitch), np.sin(pitch)
+    cr, sr = np.cos(roll), np.sin(roll)
+    Rz = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
+    Ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
+    Rx = np.array([[1.0, 0.0, 0.0], [0.0, cr, -sr], [0.0, sr, cr]])
+    return Rx @ Ry @ Rz
+'''),
+    Mistake("euler_matrix_degrees", "euler_zyx_to_matrix", "treats the angles as degrees", '''
+def euler_zyx_to_matrix(yaw, pitch, roll):
+    yaw, pitch, roll = np.deg2rad([yaw, pitch, roll])
+    cy, sy = np.cos(yaw), np.sin(yaw)
+    cp, sp = np.cos(pitch), np.sin(pitch)
+    cr, sr = np.cos(roll), np.sin(roll)
+    Rz = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
+    Ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
+    Rx = np.array([[1.0, 0.0, 0.0], [0.0, cr, -sr], [0.0, sr, cr]])
+    return Rz @ Ry @ Rx
+'''),
+    Mistake("matrix_to_euler_asin_unclamped", "matrix_to_euler_zyx",
+            "pitch = arcsin(-R[2, 0]) without clamping: NaN when rounding puts |R[2, 0]| above 1", '''
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+    pitch = np.arcsin(-R[2, 0])
+    if np.cos(pitch) < 1e-12:
+        return np.arctan2(-R[0, 1], R[1, 1]), pitch, 0.0
+    return np.arctan2(R[1, 0], R[0, 0]), pitch, np.arctan2(R[2, 1], R[2, 2])
+'''),
+    Mistake("matrix_to_euler_roll_not_zeroed", "matrix_to_euler_zyx",
+            "no gimbal-lock branch: yaw and roll from the tiny entries, roll not zeroed at the lock", '''
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+    pitch = np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0]))
+    yaw = np.arctan2(R[1, 0], R[0, 0])
+    roll = np.arctan2(R[2, 1], R[2, 2])
+    return yaw, pitch, roll
+'''),
+    Mistake("matrix_to_euler_roll_first", "matrix_to_euler_zyx",
+            "returns (roll, pitch, yaw): yaw and roll swapped in the return", '''
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+    cos_pitch = np.hypot(R[0, 0], R[1, 0])
+    pitch = np.arctan2(-R[2, 0], cos_pitch)
+    if cos_pitch < 1e-12:
+        return 0.0, pitch, np.arctan2(-R[0, 1], R[1, 1])
+    yaw = np.arctan2(R[1, 0], R[0, 0])
+    c, s = np.cos(yaw), np.sin(yaw)
+    roll = np.arctan2(s * R[0, 2] - c * R[1, 2], c * R[1, 1] - s * R[0, 1])
+    return roll, pitch, yaw
+'''),
+    Mistake("matrix_to_euler_scipy_extrinsic", "matrix_to_euler_zyx",
+            "scipy's lowercase 'zyx' (extrinsic) instead of 'ZYX' (intrinsic)", '''
+def matrix_to_euler_zyx(R):
+    from scipy.spatial.transform import Rotation
+    yaw, pitch, roll = Rotation.from_matrix(np.asarray(R, dtype=float)).as_euler("zyx")
+    return yaw, pitch, roll
+'''),
+    Mistake("euler_to_quat_full_angles", "euler_zyx_to_quat", "uses full angles instead of half angles", '''
+def euler_zyx_to_quat(yaw, pitch, roll):
+    cy, sy = np.cos(yaw), np.sin(yaw)
+    cp, sp = np.cos(pitch), np.sin(pitch)
+    cr, sr = np.cos(roll), np.sin(roll)
+    return np.array([cy * cp * cr + sy * sp * sr,
+                     cy * cp * sr - sy * sp * cr,
+                     cy * sp * cr + sy * cp * sr,
+                     sy * cp * cr - cy * sp * sr])
+'''),
+    Mistake("euler_to_quat_extrinsic", "euler_zyx_to_quat",
+            "multiplies q_x ⊗ q_y ⊗ q_z (the extrinsic reading of z-y-x)", '''
+def euler_zyx_to_quat(yaw, pitch, roll):
+    def multiply(p, q):
+        pw, px, py, pz = p
+        qw, qx, qy, qz = q
+        return np.array([pw * qw - px * qx - py * qy - pz * qz,
+                         pw * qx + px * qw + py * qz - pz * qy,
+                         pw * qy - px * qz + py * qw + pz * qx,
+                         pw * qz + px * qy - py * qx + pz * qw])
+    qz = [np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)]
+    qy = [np.cos(pitch / 2), 0.0, np.sin(pitch / 2), 0.0]
+    qx = [np.cos(roll / 2), np.sin(roll / 2), 0.0, 0.0]
+    return multiply(multiply(qx, qy), qz)
+'''),
+    Mistake("quat_to_euler_lecture_verbatim", "quat_to_euler_zyx",
+            "copies the formula under the lecture's swapped label as printed: [φ, θ, ψ] (roll first), "
+            "unclamped asin", '''
+def quat_to_euler_zyx(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    phi = np.arctan2(2 * (w * x + y * z), 1 - 2 * (x ** 2 + y ** 2))
+    theta = np.arcsin(2 * (w * y - z * x))
+    psi = np.arctan2(2 * (w * z + x * y), 1 - 2 * (y ** 2 + z ** 2))
+    return np.array([phi, theta, psi])
+'''),
+    Mistake("quat_to_euler_clamped_asin", "quat_to_euler_zyx",
+            "the lecture's formula in the right order with a clamped asin: no lock handling, "
+            "inaccurate next to the lock", '''
+def quat_to_euler_zyx(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    roll = np.arctan2(2 * (w * x + y * z), 1 - 2 * (x ** 2 + y ** 2))
+    pitch = np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0))
+    yaw = np.arctan2(2 * (w * z + x * y), 1 - 2 * (y ** 2 + z ** 2))
+    return yaw, pitch, roll
+'''),
+    Mistake("quat_to_euler_scalar_last", "quat_to_euler_zyx", "reads q as scalar-last [x, y, z, w]", '''
+def quat_to_euler_zyx(q):
+    x, y, z, w = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    a, b = np.hypot(w + y, z - x), np.hypot(w - y, x + z)
+    pitch = 2 * np.arctan2(a, b) - np.pi / 2
+    wrap = lambda angle: float(np.pi - np.mod(np.pi - angle, 2 * np.pi))
+    if b < 1e-12:
+        return wrap(2 * np.arctan2(z - x, w + y)), pitch, 0.0
+    if a < 1e-12:
+        return wrap(2 * np.arctan2(x + z, w - y)), pitch, 0.0
+    difference, total = 2 * np.arctan2(z - x, w + y), 2 * np.arctan2(x + z, w - y)
+    return wrap((total + difference) / 2), pitch, wrap((total - difference) / 2)
+'''),
+    Mistake("euler_rates_rx_not_transposed", "euler_rates_matrix",
+            "expresses the axes with Rx(roll) instead of Rx(roll)ᵀ (active/passive mix-up)", '''
+def euler_rates_matrix(pitch, roll):
+    cp, sp = np.cos(pitch), np.sin(pitch)
+    cr, sr = np.cos(roll), np.sin(roll)
+    return np.array([[-sp, 0.0, 1.0], [-cp * sr, cr, 0.0], [cp * cr, sr, 0.0]])
+'''),
+    Mistake("euler_rates_columns_reversed", "euler_rates_matrix",
+            "columns ordered [roll_rate, pitch_rate, yaw_rate]", '''
+def euler_rates_matrix(pitch, roll):
+    cp, sp = np.cos(pitch), np.sin(pitch)
+    cr, sr = np.cos(roll), np.sin(roll)
+    return np.array([[1.0, 0.0, -sp], [0.0, cr, cp * sr], [0.0, -sr, cp * cr]])
+'''),
+]
+
+SAMPLE = {
+    "dev": ["euler_rates_rx_not_transposed"],
+    "emma": ["euler_matrix_degrees"],
+    "farid": ["matrix_to_euler_roll_not_zeroed"],
+    "chloe": ["matrix_to_euler_asin_unclamped"],
+}
