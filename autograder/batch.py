@@ -25,6 +25,7 @@ from pathlib import Path
 from . import feedback, submissions
 from .catalog import load_catalog
 from .gradebook import gradebook_csv
+from .gradescope import results_json
 from .grading import GradingOptions, grade_student
 from .paths import HIDDEN_SUITE, SOLUTIONS
 from .reference import load_reference
@@ -87,6 +88,9 @@ class Outputs:
     def feedback_html(self, student_id):
         return self.root / "feedback" / f"{safe_name(student_id)}.html"
 
+    def gradescope_json(self, student_id):
+        return self.root / "results" / f"{safe_name(student_id)}.json"
+
     @property
     def gradebook(self):
         return self.root / "grades.csv"
@@ -110,6 +114,8 @@ def load_saved(outputs, student_id):
 def save_result(outputs, result, fingerprint, graded_at):
     payload = {"fingerprint": fingerprint, "graded_at": graded_at, "result": json.loads(result.to_json())}
     write_atomically(outputs.feedback_html(result.student_id), feedback.feedback_html(result))
+    write_atomically(outputs.gradescope_json(result.student_id),
+                     json.dumps(results_json(result, seconds=result.seconds), indent=1, ensure_ascii=False))
     write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
 
 

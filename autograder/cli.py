@@ -6,10 +6,13 @@ release [--check]
     Regenerate ``course/`` from ``solutions/``; ``--check`` only verifies.
 record [--only NN ...]
     Re-record the demonstration outputs stored in the masters.
-grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE] [--force]
+grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE]
+      [--nbgrader-db PATH] [--force]
     Grade every student folder in PATH (or the bundled sample class).
 status --out DIR [--roster FILE]
     Who is graded, who could not be graded and why, who is missing.
+gradescope --out autograder.zip [--lessons NN ...] [--visibility V]
+    Build a Gradescope autograder bundle (setup.sh, run_autograder, the grader).
 preview NOTEBOOK [--figures DIR]
     Run a notebook top to bottom; report errors, warnings and check cells;
     save every figure as a PNG to look at (for authors).
@@ -96,9 +99,15 @@ def _cmd_grade(args):
     print()
     reused = f", {len(summary.skipped)} unchanged and reused" if summary.skipped else ""
     print(f"graded {len(summary.graded)} student(s){reused} in {summary.seconds:.1f} s")
+    if args.nbgrader_db:
+        from .nbgrader_export import export_to_gradebook
+
+        rows = export_to_gradebook(summary.results, args.nbgrader_db)
+        print(f"nbgrader gradebook: {rows} exercise score(s) written to {args.nbgrader_db}")
     print(f"gradebook:    {out / 'grades.csv'}")
     print(f"class report: {out / 'report.html'}")
     print(f"feedback:     {out / 'feedback'}/<student>.html")
+    print(f"Gradescope:   {out / 'results'}/<student>.json")
     return 0
 
 
@@ -152,6 +161,23 @@ def _cmd_preview(args):
     return 1 if errors(nb) else 0
 
 
+def _cmd_gradescope(args):
+    from .gradescope import build_bundle
+
+    path = build_bundle(args.out, lessons=tuple(args.lessons), visibility=args.visibility, nbval=not args.no_nbval)
+    print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): upload it as the autograder of a "
+          "Gradescope programming assignment (Ubuntu base image).")
+    return 0
+
+
+def _cmd_gradescope_run(args):
+    from .gradescope import run_in_container
+
+    data = run_in_container(args.root)
+    print(f"score {data['score']:g}; results written to {Path(args.root) / 'results' / 'results.json'}")
+    return 0
+
+
 def build_parser():
     parser = argparse.ArgumentParser(prog="python -m autograder", description=__doc__.split("\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
@@ -172,6 +198,8 @@ def build_parser():
     grade.add_argument("--lessons", nargs="+", default=(), metavar="NN",
                        help="grade only these lessons, e.g. --lessons 01 03 (default: all)")
     grade.add_argument("--roster", help="a file with one student id per line; absent ones are 'missing'")
+    grade.add_argument("--nbgrader-db", metavar="PATH",
+                       help="also write the scores into this nbgrader gradebook (e.g. course/gradebook.db)")
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
     grade.set_defaults(run=_cmd_grade)
 
@@ -179,6 +207,19 @@ def build_parser():
     status.add_argument("--out", required=True)
     status.add_argument("--roster", help="a file with one student id per line; absent ones are 'missing'")
     status.set_defaults(run=_cmd_status)
+
+    gradescope = commands.add_parser("gradescope", help="build a Gradescope autograder bundle (zip)")
+    gradescope.add_argument("--out", required=True, help="the zip to write, e.g. autograder.zip")
+    gradescope.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="lessons it grades (default all)")
+    gradescope.add_argument("--visibility", default="after_due_date",
+                            choices=["hidden", "after_due_date", "after_published", "visible"],
+                            help="when students see each check's details (default: after the due date)")
+    gradescope.add_argument("--no-nbval", action="store_true", help="skip the notebook stage")
+    gradescope.set_defaults(run=_cmd_gradescope)
+
+    run = commands.add_parser("gradescope-run", help="(inside Gradescope) grade ROOT/submission")
+    run.add_argument("--root", default="/autograder")
+    run.set_defaults(run=_cmd_gradescope_run)
 
     preview = commands.add_parser("preview", help="run a notebook and save its figures (for authors)")
     preview.add_argument("notebook")

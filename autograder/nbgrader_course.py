@@ -65,12 +65,21 @@ def submit(root, student_id, lesson, notebook):
     return folder
 
 
+def with_environment_tools(env=None):
+    """``env`` (default: ours) with this Python's ``bin/`` first on PATH.
+
+    nbgrader runs the ``alembic`` command of its own environment to create a
+    gradebook; without an activated virtual environment it would not be found.
+    """
+    env = dict(os.environ if env is None else env)
+    env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")
+    return env
+
+
 def run_nbgrader(root, *args, check=True, env=None):
     """Run ``nbgrader ARGS`` in the course root with this Python; return the CompletedProcess."""
     command = [sys.executable, "-m", "nbgrader", *args]
-    env = dict(os.environ if env is None else env)
-    # nbgrader runs the `alembic` command of its environment to set up its database
-    env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")
+    env = with_environment_tools(env)
     result = subprocess.run(command, cwd=root, capture_output=True, text=True, env=env)
     if check and result.returncode != 0:
         raise RuntimeError(f"nbgrader {' '.join(args)} failed:\n{result.stdout[-3000:]}\n{result.stderr[-3000:]}")

@@ -15,7 +15,7 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
-from .helpers import (exercise, expect, expect_array, expect_close, fmt, random_rotations,
+from .helpers import (Wrong, exercise, expect, expect_array, expect_close, fmt, random_rotations,
                       rotation_hint, rotation_problem)
 from coursekit.diagnose import rotation_vector_hint
 
@@ -218,11 +218,17 @@ def test_exp_series_accepts_lists(student):
 
 # ---------------------------------------------------------------- exp_so3
 def _exp_hint(got, expected, w):
+    angle = np.linalg.norm(w)
+    if 0.0 < angle < 1e-4:
+        if np.array_equal(got, np.eye(3)):
+            return ("returned exactly I for a tiny angle: R - I ≈ [w]× is the whole rotation; "
+                    "use the Taylor coefficients sin θ/θ ≈ 1 - θ²/6, (1 - cos θ)/θ² ≈ 1/2 - θ²/24")
+        if np.allclose((got - np.eye(3)) / angle, -(expected - np.eye(3)) / angle, atol=1e-6):
+            return "looks like the inverse rotation: check the sign of the sin θ term (R = I + sin θ K + ...)"
+        return ""
     hint = rotation_hint(got, expected)
     if hint and "transpose" in hint:
         return "looks like the inverse rotation: check the sign of the sin θ term (R = I + sin θ K + ...)"
-    if np.linalg.norm(w) < 1e-4 and np.allclose(got, np.eye(3), atol=0.0, rtol=0.0):
-        return "returned exactly I for a tiny angle: R - I ≈ [w]× is the whole rotation, keep it (Taylor coefficients)"
     return hint or ""
 
 
@@ -243,13 +249,18 @@ def test_exp_so3_special_angles(student):
     """exact at θ = 0, 1e-12, 1e-8, 1e-5, π/2, π (also about (1, 1, 1)/√3), 2π and 10 rad"""
     axes = _special_axes() + list(_unit_axes(3, seed=312))
     for angle in (0.0, 1e-12, 1e-8, 1e-5, np.pi / 2, np.pi, 2 * np.pi, 10.0):
-        tol = 1e-15 if angle < 1e-4 else TOL
         for axis in axes:
             w = angle * axis
             got = expect_array(student.exp_so3(w), (3, 3), f"exp_so3(w) at θ = {angle:.3g}")
             expected = _exp(w)
-            expect_close(got, expected, tol, f"exp_so3(w) at θ = {angle:.3g} about {fmt(axis, 3)}",
-                         _exp_hint(got, expected, w))
+            what = f"exp_so3(w) at θ = {angle:.3g} about {fmt(axis, 3)}"
+            if 0.0 < angle < 1e-4:
+                error = float(np.max(np.abs(got - expected)))
+                expect(error <= 1e-15, f"{what} is off by {error:.2g} (tolerance 1e-15): (R - I)/θ = "
+                       f"{fmt((got - np.eye(3)) / angle)}, expected {fmt((expected - np.eye(3)) / angle)}",
+                       _exp_hint(got, expected, w))
+            else:
+                expect_close(got, expected, TOL, what, _exp_hint(got, expected, w))
 
 
 @exercise("exp_so3", weight=1)
@@ -302,7 +313,7 @@ def test_log_so3_small_angles(student):
         for axis in _special_axes()[:4] + list(_unit_axes(4, seed=315)):
             w = angle * axis
             got = _log(student, _exp(w), f"log_so3(R) at θ = {angle:g}")
-            expect_close(got, w, 1e-6 * angle, f"log_so3(R) at θ = {angle:g} about {fmt(axis, 3)}",
+            expect_close(got / angle, axis, 1e-6, f"log_so3(R) / θ at θ = {angle:g} about {fmt(axis, 3)}",
                          rotation_vector_hint(got, w))
 
 
@@ -360,7 +371,7 @@ def test_log_so3_accepts_lists(student):
 def _axis_angle(student, R, what):
     value = student.axis_angle(R)
     if not isinstance(value, (tuple, list)) or len(value) != 2:
-        raise AssertionError(f"{what} returned {type(value).__name__}, expected a pair (u, theta)")
+        raise Wrong(f"{what} returned {type(value).__name__}, expected a pair (u, theta)", "return u, theta")
     u = expect_array(value[0], (3,), f"{what}: u")
     theta = float(expect_array(value[1], (), f"{what}: theta"))
     expect(abs(np.linalg.norm(u) - 1.0) <= 1e-12, f"{what}: |u| = {np.linalg.norm(u):.6g}, not 1",
@@ -395,8 +406,9 @@ def test_axis_angle_small(student):
     for angle in (1e-8, 1e-5):
         for axis in _unit_axes(5, seed=321):
             u, theta = _axis_angle(student, _exp(angle * axis), f"axis_angle at θ = {angle:g}")
-            expect_close(theta, angle, 1e-6 * angle, f"θ at θ = {angle:g}",
-                         "arccos loses tiny angles: use atan2(|R - Rᵀ|/2, (tr R - 1)/2)")
+            hint = ("θ looks like degrees: the course works in radians" if np.isclose(theta, np.rad2deg(angle))
+                    else "arccos loses tiny angles: use atan2(|R - Rᵀ|/2, (tr R - 1)/2)")
+            expect_close(theta / angle, 1.0, 1e-6, f"θ / θ_true at θ = {angle:g}", hint)
             expect_close(u, axis, 1e-6, f"u at θ = {angle:g}", "u = vee(R - Rᵀ)/(2 sin θ) points along +axis")
 
 
@@ -409,7 +421,9 @@ def test_axis_angle_near_and_at_pi(student):
                      rotation_vector_hint(theta * u, (np.pi - 1e-9) * axis))
         for how, R in _half_turn_matrices(axis):
             u, theta = _axis_angle(student, R, f"axis_angle of a half turn ({how})")
-            expect_close(theta, np.pi, 1e-10, f"θ of the half turn about {fmt(axis, 3)} ({how})")
+            expect(abs(theta - np.pi) <= 1e-10, f"θ of the half turn about {fmt(axis, 3)} ({how}) is "
+                   f"{theta:.12f}, off by {abs(theta - np.pi):.2g} from π (tolerance 1e-10)",
+                   "arccos is inaccurate next to ±1: use θ = atan2(sin θ, cos θ)")
             expect(min(np.max(np.abs(u - axis)), np.max(np.abs(u + axis))) <= 1e-10,
                    f"u of the half turn about {fmt(axis, 3)} ({how}) is {fmt(u)}, expected ± the axis",
                    "at θ = π take the axis from (R + I)/2: the column with the largest diagonal entry")

@@ -20,8 +20,8 @@ TOL = 1e-10
 
 # ---------------------------------------------------------------- oracles written out here
 def _skew(v):
-    x, y, z = np.asarray(v, dtype=float)
-    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+    """[v]×, built column by column: its column j is v × e_j."""
+    return np.column_stack([np.cross(np.asarray(v, dtype=float), e) for e in np.eye(3)])
 
 
 def _exp(w):
@@ -195,9 +195,9 @@ def _random_quats(count, seed):
 
 
 def _quat_hint(got, q, d):
-    norm = np.linalg.norm(got)
-    if abs(norm - 1.0) > 1e-9:
-        return f"|result| = {norm:.6f}: q ⊗ [1, δ/2] is not a unit quaternion; use the exact Exp_q(δ) or normalise"
+    length = np.linalg.norm(got)
+    if abs(length - 1.0) > 1e-9:
+        return f"|result| = {length:.6f}: q ⊗ [1, δ/2] is not a unit quaternion; use the exact Exp_q(δ) or normalise"
     if _same_quat(got, _qmul(q, _exp_q(2.0 * np.asarray(d))), 1e-8):
         return "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and sin(|δ|/2)"
     if _same_quat(got, _qmul(_exp_q(d), q), 1e-8):
@@ -416,11 +416,11 @@ def test_jacobian_rotate_point_linearises(student):
     directions = _unit(653, 6)
     for (R, p), direction in zip(_rotation_cases(652), directions):
         J = expect_array(student.jacobian_rotate_point(R, p), (3, 3), "jacobian_rotate_point(R, p)")
-        for size in (1e-3, 1e-4):
-            d = size * direction
-            remainder = np.linalg.norm(R @ _exp(d) @ p - R @ p - J @ d)
-            expect(remainder <= np.linalg.norm(p) * size**2 + 1e-13,
-                   f"R Exp(δ) p - R p - J δ = {remainder:.2g} for |δ| = {size:g}: not of order |δ|²",
+        for scale in (1e-3, 1e-4):
+            step = scale * direction
+            remainder = np.linalg.norm(R @ _exp(step) @ p - R @ p - J @ step)
+            expect(remainder <= np.linalg.norm(p) * scale**2 + 1e-13,
+                   f"R Exp(δ) p - R p - J δ = {remainder:.2g} for |δ| = {scale:g}: not of order |δ|²",
                    _rotate_point_hint(J, R, p))
 
 

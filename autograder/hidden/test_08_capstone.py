@@ -1,0 +1,247 @@
+"""Hidden checks for lesson 08: estimating a rotation.
+
+Independent oracles: scipy's ``Rotation.align_vectors`` (the closed-form
+Kabsch/Wahba solution, with the reflection handled) for the alignment
+exercises, the reference's single Gauss-Newton step, and the defining
+properties of the geodesic mean (first-order optimality Σ Log(Mᵀ R_i) = 0,
+bi-invariance, the midpoint of two rotations). Every test calls the student's
+function of its own exercise only.
+"""
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from .helpers import exercise, expect, expect_array, expect_close, random_rotations, rotation_problem
+
+TOL = 1e-9
+SLOW = 20  # seconds per call for the iterative exercises
+
+
+# ---------------------------------------------------------------- data
+def _points(count, seed, scale=1.0):
+    return np.random.default_rng(seed).normal(size=(count, 3)) * scale
+
+
+def _data(count, seed, noise=0.0, R=None):
+    """(P, Q, R_true) with rows q_i = R p_i + noise."""
+    rng = np.random.default_rng(seed)
+    R = random_rotations(1, seed + 500)[0] if R is None else R
+    P = rng.normal(size=(count, 3))
+    Q = P @ R.T + noise * rng.normal(size=(count, 3))
+    return P, Q, R
+
+
+def _closed_form(P, Q):
+    """scipy's solution of min Σ |q_i - R p_i|² over rotations (independent of the reference)."""
+    rotation, _ = Rotation.align_vectors(Q, P)
+    return rotation.as_matrix()
+
+
+def _exp(w):
+    return Rotation.from_rotvec(np.asarray(w, dtype=float)).as_matrix()
+
+
+def _log(R):
+    return Rotation.from_matrix(R).as_rotvec()
+
+
+def _angle(A, B):
+    return float(np.linalg.norm(_log(A.T @ B)))
+
+
+def _expect_rotation(R, what, tol=1e-8):
+    problem = rotation_problem(R, tol)
+    expect(problem is None, f"{what} is not a rotation: {problem}",
+           "update with R @ Exp(delta), never by adding to R" if "orthonormal" in (problem or "") else "")
+
+
+# ---------------------------------------------------------------- align_svd
+def _svd_hint(got, expected):
+    if np.allclose(got, expected.T, atol=1e-6):
+        return "that is the inverse rotation: use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q gives Rᵀ)"
+    if np.linalg.det(got) < 0:
+        return "det < 0: a reflection; use U diag(1, 1, det(U Vᵀ)) Vᵀ"
+    return ""
+
+
+@exercise("align_svd", weight=2)
+def test_align_svd_exact(student):
+    """recovers the rotation exactly from noise-free pairs (3 to 20 points, 10 rotations)"""
+    for k, count in enumerate((3, 4, 5, 8, 12, 20, 3, 6, 10, 20)):
+        P, Q, R = _data(count, seed=800 + k)
+        got = expect_array(student.align_svd(P, Q), (3, 3), f"align_svd for {count} exact pairs")
+        expect_close(got, R, TOL, f"align_svd for {count} exact pairs", _svd_hint(got, R))
+
+
+@exercise("align_svd", weight=2)
+def test_align_svd_noisy(student):
+    """matches the closed-form least-squares rotation (scipy) for noisy data"""
+    for k, (count, noise) in enumerate(((10, 0.05), (30, 0.2), (6, 0.5), (50, 1.0))):
+        P, Q, _ = _data(count, seed=820 + k, noise=noise)
+        expected = _closed_form(P, Q)
+        got = expect_array(student.align_svd(P, Q), (3, 3), f"align_svd for {count} noisy pairs")
+        expect_close(got, expected, 1e-8, f"align_svd for {count} pairs with noise {noise}",
+                     _svd_hint(got, expected))
+
+
+@exercise("align_svd", weight=2)
+def test_align_svd_no_reflection(student):
+    """returns the best rotation, not a reflection, when the naive U Vᵀ has det = -1"""
+    mirror = np.diag([1.0, 1.0, -1.0])
+    for k in range(4):
+        P, _, R = _data(15, seed=840 + k)
+        Q = P @ (R @ mirror).T + 0.01 * np.random.default_rng(850 + k).normal(size=P.shape)
+        U, _, Vt = np.linalg.svd(Q.T @ P)
+        assert np.linalg.det(U @ Vt) < 0  # the case this test is about
+        got = expect_array(student.align_svd(P, Q), (3, 3), "align_svd for mirrored data")
+        det = np.linalg.det(got)
+        expect(det > 0, f"returned a reflection (det = {det:.3f}) for mirrored data",
+               "when det(U Vᵀ) < 0 use U diag(1, 1, -1) Vᵀ")
+        expect_close(got, _closed_form(P, Q), 1e-8, "align_svd for mirrored data")
+
+
+@exercise("align_svd", weight=1)
+def test_align_svd_is_a_rotation_and_accepts_lists(student):
+    """returns a rotation for nearly coplanar data, and accepts plain lists"""
+    P, Q, _ = _data(12, seed=860, noise=0.05)
+    P[:, 2] *= 1e-3
+    got = expect_array(student.align_svd(P, Q), (3, 3), "align_svd for nearly coplanar data")
+    _expect_rotation(got, "align_svd for nearly coplanar data")
+    expect_close(got, _closed_form(P, Q), 1e-7, "align_svd for nearly coplanar data")
+    P, Q, R = _data(5, seed=861)
+    got = expect_array(student.align_svd(P.tolist(), Q.tolist()), (3, 3), "align_svd with lists")
+    expect_close(got, R, TOL, "align_svd with lists", "convert the inputs with np.asarray(..., dtype=float)")
+
+
+# ---------------------------------------------------------------- align_gauss_newton
+@exercise("align_gauss_newton", weight=2)
+def test_align_gauss_newton_one_step(student, ref):
+    """one iteration is exactly one Gauss-Newton step (right perturbation, R ← R Exp(δ))"""
+    solver = student.with_timeout(SLOW)
+    for k in range(3):
+        P, Q, R = _data(20, seed=900 + k, noise=0.1)
+        R0 = R @ _exp(0.5 * np.random.default_rng(910 + k).normal(size=3))
+        expected = ref.align_gauss_newton(P, Q, R0, iters=1)
+        got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=1), (3, 3), "align_gauss_newton(..., iters=1)")
+        hint = ""
+        if np.allclose(got, R0):
+            hint = "one iteration must update R0: use the iters argument"
+        elif rotation_problem(got, 1e-8):
+            hint = "update with R @ Exp(delta): the result must stay a rotation"
+        else:
+            hint = ("check the Jacobian and the update side: J_i = -R [p_i]× goes with R ← R Exp(δ) "
+                    "(the left Jacobian -[R p_i]× would need Exp(δ) R), and δ solves H δ = -g")
+        expect_close(got, expected, 1e-8, "one Gauss-Newton step from R0", hint)
+
+
+@exercise("align_gauss_newton", weight=2)
+def test_align_gauss_newton_converges_from_far(student):
+    """converges to the closed-form answer from 2.5 rad away with the default 10 iterations (noisy data)"""
+    solver = student.with_timeout(SLOW)
+    for k in range(3):
+        P, Q, _ = _data(25, seed=920 + k, noise=0.05)
+        expected = _closed_form(P, Q)
+        axis = np.random.default_rng(930 + k).normal(size=3)
+        R0 = expected @ _exp(2.5 * axis / np.linalg.norm(axis))
+        got = expect_array(solver.align_gauss_newton(P, Q, R0), (3, 3), "align_gauss_newton(P, Q, R0)")
+        expect_close(got, expected, 1e-8, f"align_gauss_newton from {2.5:.1f} rad away (10 iterations)",
+                     "J_i = -R [p_i]×, H = Σ J_iᵀ J_i, g = Σ J_iᵀ r_i, δ = solve(H, -g), R ← R Exp(δ)")
+
+
+@exercise("align_gauss_newton", weight=1)
+def test_align_gauss_newton_exact_data(student):
+    """recovers the rotation to 1e-10 from noise-free data, starting 1 rad away"""
+    solver = student.with_timeout(SLOW)
+    P, Q, R = _data(8, seed=940)
+    R0 = R @ _exp([0.6, -0.5, 0.6])
+    got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=10), (3, 3), "align_gauss_newton on exact data")
+    expect_close(got, R, 1e-10, "align_gauss_newton on exact data")
+
+
+@exercise("align_gauss_newton", weight=1)
+def test_align_gauss_newton_stays_on_so3(student):
+    """returns an exact rotation after 30 iterations from a start 1.5 rad away"""
+    solver = student.with_timeout(SLOW)
+    P, Q, R = _data(12, seed=950, noise=0.1)
+    R0 = R @ _exp([1.0, 0.8, -0.7])
+    got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=30), (3, 3), "align_gauss_newton(..., iters=30)")
+    _expect_rotation(got, "align_gauss_newton after 30 iterations", tol=1e-9)
+
+
+# ---------------------------------------------------------------- rotation_mean
+def _cloud(count, seed, spread, centre=None):
+    rng = np.random.default_rng(seed)
+    centre = random_rotations(1, seed + 7)[0] if centre is None else centre
+    return np.array([centre @ _exp(spread * rng.normal(size=3)) for _ in range(count)])
+
+
+def _chordal(Rs):
+    U, _, Vt = np.linalg.svd(np.mean(Rs, axis=0))
+    return U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt
+
+
+def _mean_hint(M, Rs):
+    if np.allclose(M, _chordal(Rs), atol=1e-9):
+        return "that is the chordal mean (the projected arithmetic mean); iterate M ← M Exp(mean Log(Mᵀ R_i))"
+    one_step = Rs[0] @ _exp(np.mean([_log(Rs[0].T @ R) for R in Rs], axis=0))
+    if np.allclose(M, one_step, atol=1e-9):
+        return "that is a single step from Rs[0]: repeat until the step is tiny (|δ| < 1e-12)"
+    if np.allclose(M, _exp(np.mean([_log(R) for R in Rs], axis=0)), atol=1e-9):
+        return "averaging Log(R_i) about the identity is not the mean: average Log(Mᵀ R_i) about the current M"
+    return "iterate δ = mean of Log(Mᵀ R_i), M ← M Exp(δ), until |δ| < 1e-12"
+
+
+def _imbalance(M, Rs):
+    return float(np.linalg.norm(sum(_log(M.T @ R) for R in Rs))) / len(Rs)
+
+
+@exercise("rotation_mean", weight=3)
+def test_rotation_mean_first_order_optimality(student):
+    """Σ Log(Mᵀ R_i) ≈ 0 at the returned mean, for clouds of spread 0.1 to 0.6 rad"""
+    solver = student.with_timeout(SLOW)
+    for k, (count, spread) in enumerate(((10, 0.1), (25, 0.4), (40, 0.6), (7, 0.5))):
+        Rs = _cloud(count, seed=1000 + k, spread=spread)
+        M = expect_array(solver.rotation_mean(Rs), (3, 3), f"rotation_mean of {count} rotations")
+        _expect_rotation(M, f"rotation_mean of {count} rotations")
+        imbalance = _imbalance(M, Rs)
+        expect(imbalance <= 1e-8,
+               f"|Σ Log(Mᵀ R_i)| / N = {imbalance:.2g} for {count} rotations of spread {spread} rad "
+               "(should be 0 at the geodesic mean)", _mean_hint(M, Rs))
+
+
+@exercise("rotation_mean", weight=2)
+def test_rotation_mean_bi_invariant(student):
+    """the mean of A R_i B is A M B (for 3 random pairs A, B)"""
+    solver = student.with_timeout(SLOW)
+    Rs = _cloud(20, seed=1010, spread=0.5)
+    M = expect_array(solver.rotation_mean(Rs), (3, 3), "rotation_mean(Rs)")
+    for A, B in zip(random_rotations(3, seed=1011), random_rotations(3, seed=1012)):
+        moved = np.array([A @ R @ B for R in Rs])
+        got = expect_array(solver.rotation_mean(moved), (3, 3), "rotation_mean of A R_i B")
+        expect_close(got, A @ M @ B, 1e-8, "rotation_mean(A R_i B) vs A rotation_mean(R_i) B",
+                     "average Log(Mᵀ R_i) about the current M (not about the identity) and iterate to convergence")
+
+
+@exercise("rotation_mean", weight=1)
+def test_rotation_mean_simple_cases(student):
+    """copies of one rotation average to it; two rotations average to the midpoint of their arc"""
+    solver = student.with_timeout(SLOW)
+    R = random_rotations(1, seed=1020)[0]
+    got = expect_array(solver.rotation_mean(np.array([R, R, R, R])), (3, 3), "rotation_mean of 4 copies of R")
+    expect_close(got, R, TOL, "rotation_mean of 4 copies of R")
+    A = random_rotations(1, seed=1021)[0]
+    step = np.array([0.3, -1.1, 0.9])
+    got = expect_array(solver.rotation_mean(np.array([A, A @ _exp(step)])), (3, 3), "rotation_mean of two rotations")
+    expect_close(got, A @ _exp(step / 2.0), 1e-8, "rotation_mean of two rotations (the midpoint)",
+                 "iterate until the step is tiny")
+    expect(_angle(got, A) > 0.1, "the mean of two different rotations is one of them")
+
+
+@exercise("rotation_mean", weight=1)
+def test_rotation_mean_accepts_a_list(student):
+    """accepts a list of 3×3 arrays as well as one (N, 3, 3) array"""
+    solver = student.with_timeout(SLOW)
+    Rs = _cloud(6, seed=1030, spread=0.3)
+    got = expect_array(solver.rotation_mean([R for R in Rs]), (3, 3), "rotation_mean(list of rotations)")
+    expect(_imbalance(got, Rs) <= 1e-8, "rotation_mean of a list is not the geodesic mean",
+           "convert the input with np.asarray(Rs, dtype=float)")

@@ -1,0 +1,152 @@
+"""Works with what instructors already run: stock nbgrader and Gradescope."""
+
+import csv
+import json
+import os
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+
+import pytest
+
+from autograder import cells
+from autograder.catalog import load_catalog
+from autograder.gradescope import build_bundle, unpack_bundle
+from autograder.nbgrader_course import assignment_name, build_course, run_nbgrader, submit, with_environment_tools
+from autograder.notebook_files import canonical_text, read_master
+from autograder.paths import COURSE, PROJECT_ROOT
+from autograder.reference import answer_sources
+from support import STUB, build_submission
+
+LESSONS = load_catalog().graded_lessons
+
+
+def _gradebook(root):
+    from nbgrader.api import Gradebook
+
+    os.environ.update(with_environment_tools())
+    warnings.simplefilter("ignore")
+    return Gradebook(f"sqlite:///{root / 'gradebook.db'}")
+
+
+@pytest.fixture(scope="module")
+def nbgrader_course(tmp_path_factory):
+    """Every lesson as an nbgrader assignment, generated and autograded by stock nbgrader."""
+    root = build_course(tmp_path_factory.mktemp("nbgrader") / "course")
+    references = answer_sources()
+    for lesson in LESSONS:
+        run_nbgrader(root, "generate_assignment", assignment_name(lesson), "--force")
+        released = root / "release" / assignment_name(lesson) / lesson.filename
+        submit(root, "untouched", lesson, released)
+        nb = read_master(released)
+        for cell in nb.cells:
+            if cells.is_answer_cell(cell):
+                cell.source = references[cells.grade_id(cell)]
+        filled = root / f"filled_{lesson.filename}"
+        filled.write_text(canonical_text(nb), encoding="utf-8")
+        submit(root, "reference", lesson, filled)
+        run_nbgrader(root, "autograde", assignment_name(lesson), "--force")
+    return root
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=lambda l: f"lesson{l.number}")
+def test_stock_nbgrader_release_matches_ours(nbgrader_course, lesson):
+    theirs = read_master(nbgrader_course / "release" / assignment_name(lesson) / lesson.filename)
+    ours = read_master(COURSE / lesson.filename)
+    assert [cells.source_text(c) for c in theirs.cells] == [cells.source_text(c) for c in ours.cells]
+    assert [c.metadata.get("nbgrader") for c in theirs.cells] == [c.metadata.get("nbgrader") for c in ours.cells]
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=lambda l: f"lesson{l.number}")
+def test_stock_nbgrader_grades_reference_full_and_release_zero(nbgrader_course, lesson):
+    with _gradebook(nbgrader_course) as gradebook:
+        reference = gradebook.find_submission(assignment_name(lesson), "reference")
+        untouched = gradebook.find_submission(assignment_name(lesson), "untouched")
+        assert reference.max_score == lesson.points > 0
+        assert reference.score == reference.max_score
+        assert untouched.score == 0
+
+
+def test_grade_writes_into_an_nbgrader_gradebook(tmp_path):
+    lesson = LESSONS[0]
+    build_submission(tmp_path / "class" / "ada", lessons=(lesson.number,))
+    build_submission(tmp_path / "class" / "ben", default=STUB, lessons=(lesson.number,))
+    mistake = {"rot_z": "def rot_z(a):\n    return np.eye(3)\n"} if lesson.number == "01" else {}
+    build_submission(tmp_path / "class" / "cy", mistake, lessons=(lesson.number,))
+    database = tmp_path / "gradebook.db"
+    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(tmp_path / "class"), "--out",
+                          str(tmp_path / "out"), "--no-nbval", "--lessons", lesson.number,
+                          "--nbgrader-db", str(database)], cwd=PROJECT_ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr[-2000:]
+    with open(tmp_path / "out" / "grades.csv", newline="", encoding="utf-8") as handle:
+        ours = {row["student_id"]: float(row["score"]) for row in csv.DictReader(handle)}
+    with _gradebook(tmp_path) as gradebook:
+        for student, score in ours.items():
+            submission = gradebook.find_submission(assignment_name(lesson), student)
+            assert submission.score == pytest.approx(score) and submission.max_score == lesson.points
+    assert ours["ada"] == lesson.points and ours["ben"] == 0
+
+
+@pytest.fixture(scope="module")
+def gradescope_root(tmp_path_factory):
+    base = tmp_path_factory.mktemp("gradescope")
+    bundle = build_bundle(base / "autograder.zip", lessons=(LESSONS[0].number,))
+    root = base / "autograder"
+    source = unpack_bundle(bundle, root)
+    for name in ("setup.sh", "run_autograder"):
+        assert os.access(source / name, os.X_OK), f"{name} is not executable in the bundle"
+    return root
+
+
+def _run_gradescope(root, folder):
+    submission = root / "submission"
+    if submission.exists():
+        subprocess.run(["rm", "-rf", str(submission), str(root / "results")], check=True)
+    subprocess.run(["cp", "-r", str(folder), str(submission)], check=True)
+    env = dict(os.environ, AUTOGRADER_ROOT=str(root), AUTOGRADER_PYTHON=sys.executable)
+    run = subprocess.run([str(root / "source" / "run_autograder")], env=env, capture_output=True, text=True,
+                         timeout=600)
+    assert run.returncode == 0, run.stderr[-2000:]
+    return json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
+
+
+def _check_schema(data):
+    assert {"score", "output", "tests"} <= set(data)
+    for test in data["tests"]:
+        assert {"name", "score", "max_score", "status", "output", "visibility"} <= set(test)
+        assert test["visibility"] == "after_due_date" and test["status"] in ("passed", "failed")
+
+
+def test_gradescope_reference_full_marks(gradescope_root, tmp_path):
+    lesson = LESSONS[0]
+    data = _run_gradescope(gradescope_root, build_submission(tmp_path / "s", lessons=(lesson.number,)))
+    _check_schema(data)
+    assert data["score"] == sum(t["max_score"] for t in data["tests"]) == lesson.points + 1
+    assert all(t["status"] == "passed" for t in data["tests"])
+
+
+def test_gradescope_stubs_zero(gradescope_root, tmp_path):
+    data = _run_gradescope(gradescope_root, build_submission(tmp_path / "s", default=STUB,
+                                                             lessons=(LESSONS[0].number,)))
+    _check_schema(data)
+    assert data["score"] == 0 and "not written yet" in data["tests"][0]["output"]
+
+
+def test_gradescope_corrupt_notebook(gradescope_root, tmp_path):
+    folder = build_submission(tmp_path / "s", lessons=(LESSONS[0].number,))
+    notebook = folder / LESSONS[0].filename
+    notebook.write_text(notebook.read_text(encoding="utf-8")[:500], encoding="utf-8")
+    data = _run_gradescope(gradescope_root, folder)
+    assert data["score"] == 0 and "not valid JSON" in data["output"]
+
+
+def test_grade_writes_gradescope_results(tmp_path):
+    build_submission(tmp_path / "class" / "ada", lessons=(LESSONS[0].number,))
+    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(tmp_path / "class"), "--out",
+                          str(tmp_path / "out"), "--no-nbval", "--lessons", LESSONS[0].number],
+                         cwd=PROJECT_ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr[-2000:]
+    data = json.loads(Path(tmp_path / "out" / "results" / "ada.json").read_text(encoding="utf-8"))
+    _check_schema(data)
+    assert data["score"] == LESSONS[0].points
