@@ -84,7 +84,7 @@ def _cmd_grade(args):
         from .sample_class import build_sample_class
 
         path = out / "sample_class"
-        build_sample_class(path)
+        build_sample_class(path, lessons=tuple(args.lessons))
         print(f"No PATH given: grading the bundled sample class, written to {path}")
     path = Path(path)
     if not path.is_dir():

@@ -97,8 +97,11 @@ def student_notebook(student, lesson, references, mistakes, chosen):
     return nb
 
 
-def build_sample_class(target):
-    """Write every sample student's notebooks to ``target/<student_id>/``; return the ids."""
+def build_sample_class(target, lessons=()):
+    """Write every sample student's notebooks to ``target/<student_id>/``; return the ids.
+
+    ``lessons``: only these lesson numbers (default: every graded lesson).
+    """
     target = Path(target)
     if target.exists():
         shutil.rmtree(target)
@@ -113,7 +116,8 @@ def build_sample_class(target):
         folder = target / student.student_id
         folder.mkdir(parents=True)
         chosen = assignments.get(student.student_id, [])
-        for number, lesson in enumerate(catalog.graded_lessons):
+        chosen_lessons = [l for l in catalog.graded_lessons if not lessons or l.number in lessons]
+        for number, lesson in enumerate(chosen_lessons):
             text = canonical_text(student_notebook(student, lesson, references, mistakes, chosen))
             if student.damage == "corrupt_first" and number == 0:
                 text = text[: len(text) // 2]  # cut in the middle: no longer valid JSON

@@ -22,13 +22,21 @@ def _normal(args):
 def _spec_signatures():
     if not SPEC.exists():
         pytest.skip("../shared/COURSE_SPEC.md is not beside the project")
+    text = SPEC.read_text(encoding="utf-8")
     signatures = {}
-    for line in SPEC.read_text(encoding="utf-8").splitlines():
+    for line in text.splitlines():
         match = re.match(r"^\| (\d\d) \|", line)
         if match:
             last_column = line.rstrip(" |").split(" | ")[-1]
             for name, args in SIGNATURE.findall(last_column):
                 signatures[name] = (match.group(1), _normal(args))
+    # "Exact meanings" may spell a signature out with its defaults: the more specific one wins
+    for name, args in SIGNATURE.findall(text):
+        if name in signatures and args.count("=") > signatures[name][1].count("="):
+            try:
+                signatures[name] = (signatures[name][0], _normal(args))
+            except SyntaxError:
+                pass
     return signatures
 
 

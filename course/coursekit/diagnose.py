@@ -13,7 +13,11 @@ __all__ = [
     "shape_problem",
     "rotation_problem",
     "rotation_hint",
+    "rotation_vector_hint",
+    "pose_problem",
     "close",
+    "same_rotation_quat",
+    "quaternion_hint",
 ]
 
 
@@ -120,4 +124,97 @@ def rotation_hint(got, expected, tol=1e-6, degrees_version=None):
         return "det < 0: a reflection, not a rotation; check the signs"
     if close(got, -expected, tol):
         return "every entry has the wrong sign"
+    return None
+
+
+def pose_problem(T, tol=1e-6):
+    """Describe why a 4×4 array is not a pose [[R, t], [0, 0, 0, 1]], or return None.
+
+    Examples
+    --------
+    >>> pose_problem(np.eye(4)) is None
+    True
+    >>> pose_problem(np.diag([1.0, 1.0, 1.0, 2.0]))
+    'the bottom row is [0.0, 0.0, 0.0, 2.0], expected [0, 0, 0, 1]'
+    """
+    T = np.asarray(T, dtype=float)
+    bottom = T[3]
+    if not close(bottom, [0.0, 0.0, 0.0, 1.0], tol):
+        shown = ", ".join(f"{x:.3g}" if abs(x - round(x)) > 1e-9 else f"{round(x):.1f}" for x in bottom + 0.0)
+        hint = " (the translation ended up in the bottom row: it belongs in the last column)" \
+            if not close(bottom[:3], 0.0 * bottom[:3], tol) and close(T[:3, 3], [0.0, 0.0, 0.0], tol) else ""
+        return f"the bottom row is [{shown}], expected [0, 0, 0, 1]{hint}"
+    problem = rotation_problem(T[:3, :3], tol)
+    if problem:
+        return f"the top-left 3×3 block is not a rotation: {problem}"
+    return None
+
+
+def same_rotation_quat(a, b, tol=1e-9):
+    """True when quaternions ``a`` and ``b`` are equal or opposite within ``tol``: one rotation.
+
+    Examples
+    --------
+    >>> same_rotation_quat([0.0, 1.0, 0.0, 0.0], [0.0, -1.0, 0.0, 0.0])
+    True
+    """
+    return close(a, b, tol) or close(a, -np.asarray(b, dtype=float), tol)
+
+
+def quaternion_hint(got, expected, tol=1e-6):
+    """Guess why a scalar-first quaternion ``got`` differs from ``expected``, or return None.
+
+    Recognises the scalar-last layout, the conjugate (the inverse rotation)
+    and the opposite sign, each up to the sign of the whole quaternion where
+    that is the same rotation.
+
+    Examples
+    --------
+    >>> quaternion_hint([0.0, 0.0, 0.6, 0.8], [0.8, 0.0, 0.0, 0.6])
+    'looks like scalar-last order [x, y, z, w]: this course stores [w, x, y, z]'
+    """
+    got = as_float_array(got)
+    expected = as_float_array(expected)
+    if got is None or expected is None or got.shape != (4,) or expected.shape != (4,):
+        return None
+    if same_rotation_quat(got, expected, tol):
+        return "q and -q are the same rotation, but here the sign matters" if not close(got, expected, tol) else None
+    if same_rotation_quat(got, np.roll(expected, -1), tol):
+        return "looks like scalar-last order [x, y, z, w]: this course stores [w, x, y, z]"
+    if same_rotation_quat(got, expected * [1.0, -1.0, -1.0, -1.0], tol):
+        return "looks like the conjugate (the inverse rotation): check the signs of the vector part"
+    return None
+
+
+def rotation_vector_hint(got, expected):
+    """Guess why a rotation vector ``got`` (shape (3,)) differs from ``expected``, or return None.
+
+    Recognises NaN (a division by sin θ = 0), a zero vector where a rotation
+    was expected (the axis lost at θ = 0 or θ = π), the opposite rotation (the
+    axis sign) and an angle in degrees. Comparisons are relative to |expected|.
+
+    Examples
+    --------
+    >>> rotation_vector_hint([0.0, 0.0, -1.0], [0.0, 0.0, 1.0])
+    'the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)'
+    """
+    got = as_float_array(got)
+    expected = as_float_array(expected)
+    if got is None or expected is None or got.shape != (3,) or expected.shape != (3,):
+        return None
+    if not np.all(np.isfinite(got)):
+        return ("NaN or inf: a division by sin θ (zero at θ = 0 and θ = π), "
+                "or arccos of a trace that rounding pushed just outside [-1, 1]?")
+    angle = float(np.linalg.norm(expected))
+    if angle == 0.0:
+        return None
+    if np.linalg.norm(got) <= 1e-3 * angle:
+        if angle > 3.0:
+            return ("returned (almost) zero near θ = π, where R - Rᵀ vanishes: "
+                    "take the axis from the symmetric part (R + Rᵀ)/2 there")
+        return "returned (almost) zero for a small rotation: arccos rounds tiny angles to 0; use atan2(sin θ, cos θ)"
+    if np.linalg.norm(got + expected) <= 1e-3 * angle:
+        return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
+    if np.linalg.norm(got - np.rad2deg(expected)) <= 1e-3 * np.rad2deg(angle):
+        return "looks like the angle is in degrees: the course works in radians"
     return None

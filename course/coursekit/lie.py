@@ -10,7 +10,7 @@ in an earlier exercise never breaks a later lesson. They are built on
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-__all__ = ["skew", "unskew", "Exp", "Log"]
+__all__ = ["skew", "unskew", "Exp", "Log", "quat_product"]
 
 
 def skew(v):
@@ -45,3 +45,22 @@ def Exp(w):
 def Log(R):
     """Rotation vector of the rotation matrix ``R`` (shape (3, 3)), angle in [0, π]."""
     return Rotation.from_matrix(np.asarray(R, dtype=float)).as_rotvec()
+
+
+def quat_product(p, q):
+    """Hamilton product p ⊗ q of two quaternions stored scalar first, ``[w, x, y, z]``.
+
+    Lesson 04 asks you to write this yourself as ``quat_multiply``; later
+    lessons use this copy.
+
+    Examples
+    --------
+    >>> quat_product([0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0])   # i ⊗ j = k
+    array([0., 0., 0., 1.])
+    """
+    pw, px, py, pz = np.asarray(p, dtype=float)
+    qw, qx, qy, qz = np.asarray(q, dtype=float)
+    return np.array([pw * qw - px * qx - py * qy - pz * qz,
+                     pw * qx + px * qw + py * qz - pz * qy,
+                     pw * qy - px * qz + py * qw + pz * qx,
+                     pw * qz + px * qy - py * qx + pz * qw])

@@ -15,12 +15,14 @@ __all__ = [
     "draw_point",
     "draw_frame_2d",
     "finish_3d_axes",
+    "draw_slope",
+    "draw_circle",
 ]
 
 AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")
 
 
-def new_3d_axes(title, limit=1.5, elev=22, azim=-58, ax=None, figsize=(5.2, 4.6), unit="m"):
+def new_3d_axes(title, limit=1.5, elev=22, azim=-58, ax=None, figsize=(5.2, 4.6), unit="m", zoom=1.0):
     """Make (or prepare) a 3D axes with labelled axes, equal scale and a title.
 
     Parameters
@@ -34,6 +36,9 @@ def new_3d_axes(title, limit=1.5, elev=22, azim=-58, ax=None, figsize=(5.2, 4.6)
         An existing 3D axes to prepare instead of a new figure.
     unit : str
         The length unit written on the axis labels.
+    zoom : float
+        Below 1 shrinks the box inside its panel, so that axis labels of
+        several 3D panels side by side are not clipped (0.85 works well).
 
     Returns
     -------
@@ -53,7 +58,7 @@ def new_3d_axes(title, limit=1.5, elev=22, azim=-58, ax=None, figsize=(5.2, 4.6)
     ax.set_xlim(lo, hi)
     ax.set_ylim(lo, hi)
     ax.set_zlim(lo, hi)
-    ax.set_box_aspect((1, 1, 1))
+    ax.set_box_aspect((1, 1, 1), zoom=zoom)
     ax.set_xlabel(f"x [{unit}]")
     ax.set_ylabel(f"y [{unit}]")
     ax.set_zlabel(f"z [{unit}]")
@@ -116,3 +121,47 @@ def finish_3d_axes(ax, legend=None):
         axis.pane.set_alpha(0.08)
     if legend:
         ax.legend(loc=legend)
+
+
+def draw_slope(ax, x, anchor, slope, label=None, color="0.45"):
+    """On log-log axes, draw a dashed guide line y ∝ x**slope through ``anchor``.
+
+    Parameters
+    ----------
+    ax : matplotlib axes (log-log)
+    x : array_like
+        The x values where the guide is drawn (its extent).
+    anchor : (float, float)
+        A point (x0, y0) the guide passes through.
+    slope : float
+        The power: 1 for first-order errors, 2 for second-order ones, -1 for rounding noise.
+    label : str, optional
+        Legend text; ``"slope 2"`` style labels read well.
+
+    Examples
+    --------
+    >>> fig, ax = plt.subplots()
+    >>> ax.loglog([1e-4, 1e-1], [1e-8, 1e-2])
+    >>> draw_slope(ax, [1e-4, 1e-1], (1e-4, 1e-8), 2, label="slope 2")
+    """
+    x = np.asarray(x, dtype=float)
+    x0, y0 = anchor
+    ax.loglog(x, y0 * (x / x0) ** slope, linestyle="--", linewidth=1.0, color=color, label=label)
+
+
+def draw_circle(ax, u, v, radius=1.0, center=(0.0, 0.0, 0.0), **style):
+    """Draw the circle ``center + radius (cos t u + sin t v)`` on a 3D axes.
+
+    ``u`` and ``v`` are orthonormal vectors spanning the circle's plane (shape (3,)),
+    for example two columns of a rotation matrix: a gimbal ring, or the path of an
+    axis tip. ``style`` goes to ``ax.plot`` (color, linewidth, alpha, label, ...).
+
+    Examples
+    --------
+    >>> fig, ax = new_3d_axes("A ring in the horizontal plane")
+    >>> draw_circle(ax, [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], radius=0.8, color="tab:blue")
+    """
+    t = np.linspace(0.0, 2.0 * np.pi, 121)
+    u, v = np.asarray(u, dtype=float), np.asarray(v, dtype=float)
+    points = np.asarray(center, dtype=float)[:, None] + radius * (np.outer(u, np.cos(t)) + np.outer(v, np.sin(t)))
+    ax.plot(*points, **style)
