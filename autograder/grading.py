@@ -6,6 +6,7 @@ lesson's points (with the reason), a function that crashes or hangs costs
 that exercise's points, and everything else is still graded.
 """
 
+import ast
 import time
 from dataclasses import dataclass
 
@@ -37,6 +38,30 @@ def _score(max_points, checks):
         return 0.0
     passed = sum(c.weight for c in checks if c.passed)
     return round(max_points * passed / total, 2)
+
+
+def _calls_to_other_exercises(source, names):
+    """Exercise names (from ``names``) that a student's answer cell refers to."""
+    try:
+        tree = ast.parse(source)
+    except (SyntaxError, ValueError):
+        return set()
+    return {node.id for node in ast.walk(tree) if isinstance(node, ast.Name) and node.id in names}
+
+
+def _note_failed_prerequisites(shell, program):
+    """Say plainly when an exercise that lost points calls another exercise that lost points."""
+    if program is None:
+        return
+    sources = dict(program.cells)
+    lost = {e.name for e in shell.exercises if e.points < e.max_points}
+    for exercise in shell.exercises:
+        if exercise.name not in lost or exercise.name not in sources:
+            continue
+        used = _calls_to_other_exercises(sources[exercise.name], lost - {exercise.name})
+        for other in sorted(used):
+            exercise.notes.append(f"your {exercise.name} calls your {other}, which also lost points: "
+                                  f"fix {other} first, its mistake may be the cause here")
 
 
 def _read_lessons(folder, catalog, only=()):
@@ -109,6 +134,7 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
             if program is None:
                 entry.notes.append(shell.reason)
             shell.exercises.append(entry)
+        _note_failed_prerequisites(shell, program)
         if options.nbval:
             shell.run = runs.get(shell.number) or NotebookRun(
                 status="failed", max_points=options.notebook_points,

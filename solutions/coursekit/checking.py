@@ -90,6 +90,11 @@ def _where_in_student_code(error):
     return ""
 
 
+def _stop_the_cell(error):
+    # The check cell ends with an error so that nbgrader counts the check as failed.
+    raise error from None
+
+
 def check(exercise, function):
     """Run the public checks of ``exercise`` on ``function`` and report.
 
@@ -127,7 +132,7 @@ def check(exercise, function):
                 f"{exercise}: not written yet. Replace the line "
                 "`raise NotImplementedError(...)` with your code, then run this cell again."
             )
-            raise NotImplementedError(f"{exercise} is not written yet") from None
+            _stop_the_cell(NotImplementedError(f"{exercise} is not written yet"))
         except Mismatch as mismatch:
             failed += 1
             line = f"  ✗ {description}: {_one_line(mismatch.reason)}"
@@ -149,6 +154,6 @@ def check(exercise, function):
     total = passed + failed
     if failed:
         print(f"{passed} of {total} public checks passed. Fix the ✗ lines above and run this cell again.")
-        raise CheckFailed(f"{failed} of {total} public checks failed for {exercise}") from None
+        _stop_the_cell(CheckFailed(f"{failed} of {total} public checks failed for {exercise}"))
     passed_text = "The public check passed" if total == 1 else f"All {total} public checks passed"
     print(f"{passed_text} ({elapsed:.2f} s). The hidden checks run when your notebook is graded.")
