@@ -153,3 +153,19 @@ def test_no_placeholder_text_anywhere_a_student_looks():
                     if pattern.search(line):
                         found.append(f"{path.relative_to(folder.parent)}:{number}: {line.strip()[:80]}")
     assert not found, found[:10]
+
+
+def test_start_page_lists_every_lesson_with_its_time():
+    """00_start_here's table names each lesson, links to it, and quotes the time the lesson states."""
+    start = "\n".join(cells.source_text(c) for c in read_master(SOLUTIONS / "00_start_here.ipynb").cells
+                      if c.cell_type == "markdown")
+    for name in MASTERS:
+        if name.startswith("00_"):
+            continue
+        first = cells.source_text(read_master(SOLUTIONS / name).cells[0])
+        title = first.splitlines()[0].split("—", 1)[1].strip()
+        time_stated = re.search(r"\*\*Time:?\*\*:?\s*([^.\n]*)", first).group(1).strip()
+        row = next((line for line in start.splitlines() if f"]({name})" in line), None)
+        assert row is not None, f"00_start_here does not link to {name}"
+        assert f"[{title}]" in row, f"00_start_here calls {name} something other than {title!r}"
+        assert time_stated in row, f"00_start_here gives {name} a different time than its own {time_stated!r}"
