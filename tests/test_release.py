@@ -2,6 +2,7 @@
 
 import ast
 import shutil
+from pathlib import Path
 
 from autograder import cells
 from autograder.notebook_files import read_master
@@ -9,10 +10,10 @@ from autograder.paths import COURSE, HIDDEN_SUITE, SOLUTIONS
 from autograder.release import stale_files
 
 
-def _course_line_pairs():
-    """Consecutive pairs of stripped code lines in every file of course/ (notebook cells split)."""
+def _course_line_pairs(folder=COURSE):
+    """Consecutive pairs of stripped code lines in every file under ``folder`` (notebook cells split)."""
     pairs = set()
-    for path in sorted(COURSE.rglob("*")):
+    for path in sorted(Path(folder).rglob("*")):
         if not path.is_file() or "__pycache__" in path.parts:
             continue
         if path.suffix == ".ipynb":
@@ -51,12 +52,19 @@ def _blocks(text, only_between_markers=False):
     return blocks
 
 
-def _leaks(blocks, pairs):
+def _leaks(blocks, pairs, run=2, public=frozenset()):
+    """Runs of ``run`` consecutive distinctive lines of ``blocks`` that also stand together in course/.
+
+    Runs whose pairs all occur in ``public`` (code students get anyway) are not leaks.
+    """
     found = []
     for block in blocks:
-        for first, second in zip(block, block[1:]):
-            if _distinctive(first) and _distinctive(second) and (first, second) in pairs:
-                found.append(f"{first} / {second}")
+        for start in range(len(block) - run + 1):
+            lines = block[start:start + run]
+            steps = list(zip(lines, lines[1:]))
+            if all(_distinctive(line) for line in lines) and all(step in pairs for step in steps) \
+                    and not all(step in public for step in steps):
+                found.append(" / ".join(lines))
     return found
 
 
@@ -76,16 +84,18 @@ def test_no_solution_code_in_course():
 
 
 def test_no_hidden_test_code_in_course():
-    pairs = _course_line_pairs()
+    """No run of three distinctive lines of a hidden test appears in course/ (beyond public coursekit code)."""
+    pairs, public = _course_line_pairs(), _course_line_pairs(COURSE / "coursekit")
     found = [f"{path.name}: {leak}" for path in sorted(HIDDEN_SUITE.glob("test_*.py"))
-             for leak in _leaks(_blocks(path.read_text(encoding="utf-8")), pairs)]
+             for leak in _leaks(_blocks(path.read_text(encoding="utf-8")), pairs, run=3, public=public)]
     assert not found, "hidden test lines in course/:\n" + "\n".join(found)
 
 
 def test_the_leak_detector_finds_a_leak():
-    solution = "    c, s = np.cos(a), np.sin(a)\n    return np.array([[c, -s], [s, c]])"
-    pairs = {("c, s = np.cos(a), np.sin(a)", "return np.array([[c, -s], [s, c]])")}
+    solution = "    c, s = np.cos(theta), np.sin(theta)\n    return np.array([[c, -s], [s, c]])"
+    pairs = {("c, s = np.cos(theta), np.sin(theta)", "return np.array([[c, -s], [s, c]])")}
     assert _leaks(_blocks(solution), pairs)
+    assert not _leaks(_blocks(solution), pairs, public=frozenset(pairs))
 
 
 def test_released_answers_are_stubs_and_checks_are_locked():

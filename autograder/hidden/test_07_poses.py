@@ -9,6 +9,8 @@ student's function of its own exercise only; inputs are built here.
 import numpy as np
 from scipy.linalg import expm
 
+from coursekit.diagnose import as_float_array
+
 from .helpers import (exercise, expect, expect_array, expect_close, fmt, random_rotations,
                       rotation_problem)
 
@@ -67,12 +69,10 @@ SERIES_HINT_C = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/302
 
 
 def _expect_finite(value, what, hint):
-    """Fail with ``hint`` when an array of the right kind holds NaN or inf."""
-    try:
-        array = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        return
-    expect(bool(np.all(np.isfinite(array))), f"{what} returned NaN or inf values", hint)
+    """Fail with ``hint`` when a numeric answer holds NaN or inf."""
+    numbers = as_float_array(value)
+    if numbers is not None:
+        expect(bool(np.all(np.isfinite(numbers))), f"{what} returned NaN or inf values", hint)
 
 
 def _expect_pose(T, what):
