@@ -7,7 +7,8 @@ entries are 0 and ±1) and properties that any correct answer has.
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, rotation_problem, shape_problem
+from ..diagnose import close
+from .common import fmt, require_rotation, require_shape
 
 # A quarter turn about z, written out: x goes to y, y goes to -x.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -16,73 +17,56 @@ QUARTER_TURN_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 E = np.eye(3)
 
 
-def _require_shape(value, shape):
-    problem = shape_problem(value, shape)
-    if problem:
-        raise Mismatch(problem)
-    return np.asarray(value, dtype=float)
-
-
-def _require_rotation(R):
-    problem = rotation_problem(R)
-    if problem:
-        raise Mismatch(problem)
-
-
-def _fmt(v):
-    return np.array2string(np.round(np.asarray(v, dtype=float), 3) + 0.0, separator=", ")
-
-
 # ---------------------------------------------------------------- rot2d
 @public_check("rot2d", "returns a 2×2 rotation matrix")
 def _(rot2d):
-    _require_rotation(_require_shape(rot2d(0.7), (2, 2)))
+    require_rotation(require_shape(rot2d(0.7), (2, 2)))
 
 
 @public_check("rot2d", "a positive angle turns x counter-clockwise (quarter turn: x → y)")
 def _(rot2d):
-    R = _require_shape(rot2d(np.pi / 2), (2, 2))
+    R = require_shape(rot2d(np.pi / 2), (2, 2))
     image = R @ [1.0, 0.0]
     if close(image, [0.0, 1.0], 1e-9):
         return
     if close(image, [0.0, -1.0], 1e-9):
-        raise Mismatch(f"rot2d(pi/2) sends x to {_fmt(image)}",
+        raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}",
                        "looks like the transpose (a clockwise turn): check the sign of the sines")
     if close(image, [np.cos(np.pi / 360), np.sin(np.pi / 360)], 1e-3):
-        raise Mismatch(f"rot2d(pi/2) barely moves x: {_fmt(image)}",
+        raise Mismatch(f"rot2d(pi/2) barely moves x: {fmt(image)}",
                        "looks like degrees: angles in this course are radians")
-    raise Mismatch(f"rot2d(pi/2) sends x to {_fmt(image)}, expected [0, 1]")
+    raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}, expected [0, 1]")
 
 
 # ---------------------------------------------------------------- rot_x, rot_y, rot_z
 def _elementary_checks(name, axis, quarter_from, quarter_to):
     @public_check(name, "returns a 3×3 rotation matrix")
     def _(fn):
-        _require_rotation(_require_shape(fn(0.9), (3, 3)))
+        require_rotation(require_shape(fn(0.9), (3, 3)))
 
     @public_check(name, f"leaves its own axis ({'xyz'[axis]}) where it is")
     def _(fn):
-        R = _require_shape(fn(0.9), (3, 3))
+        R = require_shape(fn(0.9), (3, 3))
         if not close(R @ E[axis], E[axis], 1e-9):
-            raise Mismatch(f"{name}(0.9) moves the {'xyz'[axis]} axis to {_fmt(R @ E[axis])}",
+            raise Mismatch(f"{name}(0.9) moves the {'xyz'[axis]} axis to {fmt(R @ E[axis])}",
                            f"row and column {axis} of {name} should be the unit vector e_{'xyz'[axis]}")
 
     src, dst = "xyz"[quarter_from], "xyz"[quarter_to]
 
     @public_check(name, f"a quarter turn sends {src} to {dst} (right-hand rule)")
     def _(fn):
-        R = _require_shape(fn(np.pi / 2), (3, 3))
+        R = require_shape(fn(np.pi / 2), (3, 3))
         image = R @ E[quarter_from]
         if close(image, E[quarter_to], 1e-9):
             return
         if close(image, -E[quarter_to], 1e-9):
-            raise Mismatch(f"{name}(pi/2) sends {src} to {_fmt(image)}",
+            raise Mismatch(f"{name}(pi/2) sends {src} to {fmt(image)}",
                            "looks like the transpose: the minus sign is on the wrong sine"
                            + (" (for rot_y it sits in the bottom-left)" if name == "rot_y" else ""))
         if close(image, E[quarter_from], 0.01):
-            raise Mismatch(f"{name}(pi/2) barely moves {src}: {_fmt(image)}",
+            raise Mismatch(f"{name}(pi/2) barely moves {src}: {fmt(image)}",
                            "looks like degrees: angles in this course are radians")
-        raise Mismatch(f"{name}(pi/2) sends {src} to {_fmt(image)}, expected e_{dst}")
+        raise Mismatch(f"{name}(pi/2) sends {src} to {fmt(image)}, expected e_{dst}")
 
 
 _elementary_checks("rot_x", 0, 1, 2)
@@ -118,18 +102,18 @@ def _(is_rotation_matrix):
 # ---------------------------------------------------------------- rotate_point
 @public_check("rotate_point", "expresses a point of frame b in frame w (one point, shape (3,))")
 def _(rotate_point):
-    p_w = _require_shape(rotate_point(QUARTER_TURN_Z, [1.0, 0.0, 0.0]), (3,))
+    p_w = require_shape(rotate_point(QUARTER_TURN_Z, [1.0, 0.0, 0.0]), (3,))
     if close(p_w, [0.0, -1.0, 0.0], 1e-9):
-        raise Mismatch(f"got {_fmt(p_w)} for x_b with R_wb a quarter turn about z",
+        raise Mismatch(f"got {fmt(p_w)} for x_b with R_wb a quarter turn about z",
                        "looks like you used the transpose of R_wb: p_w = R_wb @ p_b")
     if not close(p_w, [0.0, 1.0, 0.0], 1e-9):
-        raise Mismatch(f"got {_fmt(p_w)}, expected [0, 1, 0]")
+        raise Mismatch(f"got {fmt(p_w)}, expected [0, 1, 0]")
 
 
 @public_check("rotate_point", "handles N points at once (shape (N, 3))")
 def _(rotate_point):
     points = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 3.0], [1.0, 1.0, 1.0]])
-    got = _require_shape(rotate_point(QUARTER_TURN_Z, points), (4, 3))
+    got = require_shape(rotate_point(QUARTER_TURN_Z, points), (4, 3))
     one_by_one = np.array([QUARTER_TURN_Z @ p for p in points])
     if not close(got, one_by_one, 1e-9):
         raise Mismatch("rows do not match rotating each point on its own",
@@ -140,7 +124,7 @@ def _(rotate_point):
 @public_check("compose", "R_ac = compose(R_ab, R_bc) maps points of c to a in one step")
 def _(compose):
     R_ab, R_bc = QUARTER_TURN_Z, QUARTER_TURN_X
-    R_ac = _require_shape(compose(R_ab, R_bc), (3, 3))
+    R_ac = require_shape(compose(R_ab, R_bc), (3, 3))
     p_c = np.array([0.3, -1.2, 2.0])
     if close(R_ac @ p_c, R_ab @ (R_bc @ p_c), 1e-9):
         return
@@ -153,7 +137,7 @@ def _(compose):
 # ---------------------------------------------------------------- invert_rotation
 @public_check("invert_rotation", "R_ab composed with its inverse is the identity")
 def _(invert_rotation):
-    R_ba = _require_shape(invert_rotation(QUARTER_TURN_Z), (3, 3))
+    R_ba = require_shape(invert_rotation(QUARTER_TURN_Z), (3, 3))
     if close(R_ba, QUARTER_TURN_Z, 1e-9):
         raise Mismatch("returned the same rotation", "the inverse of a rotation is its transpose")
     if not close(QUARTER_TURN_Z @ R_ba, E, 1e-9):
@@ -163,7 +147,7 @@ def _(invert_rotation):
 # ---------------------------------------------------------------- nearest_rotation
 @public_check("nearest_rotation", "leaves an exact rotation unchanged")
 def _(nearest_rotation):
-    got = _require_shape(nearest_rotation(QUARTER_TURN_Z), (3, 3))
+    got = require_shape(nearest_rotation(QUARTER_TURN_Z), (3, 3))
     if not close(got, QUARTER_TURN_Z, 1e-9):
         raise Mismatch("changed a matrix that was already a rotation")
 
@@ -171,16 +155,16 @@ def _(nearest_rotation):
 @public_check("nearest_rotation", "turns a slightly wrong matrix into a rotation close to it")
 def _(nearest_rotation):
     noisy = QUARTER_TURN_Z + 0.01 * np.array([[0.3, -0.2, 0.5], [0.1, 0.4, -0.3], [-0.2, 0.2, 0.1]])
-    got = _require_shape(nearest_rotation(noisy), (3, 3))
-    _require_rotation(got)
+    got = require_shape(nearest_rotation(noisy), (3, 3))
+    require_rotation(got)
     if np.max(np.abs(got - noisy)) > 0.02:
         raise Mismatch("the result is a rotation, but far from the input")
 
 
 @public_check("nearest_rotation", "never returns a mirror, even for a mirror-like input")
 def _(nearest_rotation):
-    got = _require_shape(nearest_rotation(np.diag([1.0, 1.0, -0.9])), (3, 3))
+    got = require_shape(nearest_rotation(np.diag([1.0, 1.0, -0.9])), (3, 3))
     if np.linalg.det(got) < 0:
         raise Mismatch(f"det of the result is {np.linalg.det(got):.3f}",
                        "U Vᵀ can be a reflection: flip the sign of the last column of U when det(U Vᵀ) < 0")
-    _require_rotation(got)
+    require_rotation(got)

@@ -11,6 +11,7 @@ import numpy as np
 from ..checking import Mismatch, public_check
 from ..diagnose import close, rotation_problem, shape_problem
 from ..lie import Exp, Log, quat_product, skew
+from .common import fmt, require_shape
 
 # A quarter turn about z (x goes to y) and about x (y goes to z), written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -19,23 +20,6 @@ E = np.eye(3)
 # A generic attitude and a generic small rotation vector.
 R_SAMPLE = Exp([0.4, -0.7, 1.1])
 D_SAMPLE = np.array([0.2, -0.3, 0.25])
-
-
-def _require_shape(value, shape):
-    problem = shape_problem(value, shape)
-    if problem:
-        raise Mismatch(problem)
-    return np.asarray(value, dtype=float)
-
-
-def _require_rotation(R):
-    problem = rotation_problem(R)
-    if problem:
-        raise Mismatch(problem)
-
-
-def _fmt(v):
-    return np.array2string(np.round(np.asarray(v, dtype=float), 3) + 0.0, separator=", ")
 
 
 def _first_order_hint(R):
@@ -47,18 +31,18 @@ def _first_order_hint(R):
 # ---------------------------------------------------------------- boxplus_right
 @public_check("boxplus_right", "returns a rotation, and δ = 0 leaves R unchanged")
 def _(boxplus_right):
-    got = _require_shape(boxplus_right(R_SAMPLE, D_SAMPLE), (3, 3))
+    got = require_shape(boxplus_right(R_SAMPLE, D_SAMPLE), (3, 3))
     problem = rotation_problem(got)
     if problem:
         raise Mismatch(problem, _first_order_hint(got))
-    same = _require_shape(boxplus_right(R_SAMPLE, np.zeros(3)), (3, 3))
+    same = require_shape(boxplus_right(R_SAMPLE, np.zeros(3)), (3, 3))
     if not close(same, R_SAMPLE, 1e-12):
         raise Mismatch("boxplus_right(R, 0) differs from R", "Exp(0) is the identity: nothing should move")
 
 
 @public_check("boxplus_right", "turns about the body's own axis: R ⊞ (0, 0, π/2) keeps the body z axis")
 def _(boxplus_right):
-    got = _require_shape(boxplus_right(QUARTER_TURN_X, [0.0, 0.0, np.pi / 2]), (3, 3))
+    got = require_shape(boxplus_right(QUARTER_TURN_X, [0.0, 0.0, np.pi / 2]), (3, 3))
     expected = QUARTER_TURN_X @ QUARTER_TURN_Z
     if close(got, expected, 1e-9):
         return
@@ -68,59 +52,59 @@ def _(boxplus_right):
     if close(got, QUARTER_TURN_Z @ QUARTER_TURN_X, 1e-9):
         raise Mismatch("turned about the world z axis instead of the body's z axis",
                        "that is the left perturbation Exp(δ) R; the right one is R @ Exp(δ)")
-    raise Mismatch(f"R ⊞ δ moved the body z axis from {_fmt(QUARTER_TURN_X[:, 2])} to {_fmt(got[:, 2])}",
+    raise Mismatch(f"R ⊞ δ moved the body z axis from {fmt(QUARTER_TURN_X[:, 2])} to {fmt(got[:, 2])}",
                    "the right perturbation is R @ Exp(δ)")
 
 
 # ---------------------------------------------------------------- boxplus_left
 @public_check("boxplus_left", "returns a rotation, and δ = 0 leaves R unchanged")
 def _(boxplus_left):
-    got = _require_shape(boxplus_left(R_SAMPLE, D_SAMPLE), (3, 3))
+    got = require_shape(boxplus_left(R_SAMPLE, D_SAMPLE), (3, 3))
     problem = rotation_problem(got)
     if problem:
         raise Mismatch(problem, "use Exp(δ), which is always a rotation")
-    same = _require_shape(boxplus_left(R_SAMPLE, np.zeros(3)), (3, 3))
+    same = require_shape(boxplus_left(R_SAMPLE, np.zeros(3)), (3, 3))
     if not close(same, R_SAMPLE, 1e-12):
         raise Mismatch("boxplus_left(R, 0) differs from R", "Exp(0) is the identity: nothing should move")
 
 
 @public_check("boxplus_left", "turns about the world axis: (0, 0, π/2) sends the body z axis from -y to x")
 def _(boxplus_left):
-    got = _require_shape(boxplus_left(QUARTER_TURN_X, [0.0, 0.0, np.pi / 2]), (3, 3))
+    got = require_shape(boxplus_left(QUARTER_TURN_X, [0.0, 0.0, np.pi / 2]), (3, 3))
     expected = QUARTER_TURN_Z @ QUARTER_TURN_X
     if close(got, expected, 1e-9):
         return
     if close(got, QUARTER_TURN_X @ QUARTER_TURN_Z, 1e-9):
         raise Mismatch("turned about the body's z axis instead of the world z axis",
                        "that is the right perturbation R Exp(δ); the left one is Exp(δ) @ R")
-    raise Mismatch(f"the body z axis went to {_fmt(got[:, 2])}, expected [1, 0, 0]",
+    raise Mismatch(f"the body z axis went to {fmt(got[:, 2])}, expected [1, 0, 0]",
                    "the left perturbation is Exp(δ) @ R")
 
 
 # ---------------------------------------------------------------- boxminus
 @public_check("boxminus", "R ⊟ R is zero, shape (3,)")
 def _(boxminus):
-    got = _require_shape(boxminus(R_SAMPLE, R_SAMPLE), (3,))
+    got = require_shape(boxminus(R_SAMPLE, R_SAMPLE), (3,))
     if not close(got, np.zeros(3), 1e-9):
-        raise Mismatch(f"boxminus(R, R) returned {_fmt(got)}", "the difference of a rotation with itself is 0")
+        raise Mismatch(f"boxminus(R, R) returned {fmt(got)}", "the difference of a rotation with itself is 0")
 
 
 @public_check("boxminus", "a quarter turn about the body's z axis: (R Q_z) ⊟ R = (0, 0, π/2)")
 def _(boxminus):
-    got = _require_shape(boxminus(R_SAMPLE @ QUARTER_TURN_Z, R_SAMPLE), (3,))
+    got = require_shape(boxminus(R_SAMPLE @ QUARTER_TURN_Z, R_SAMPLE), (3,))
     if close(got, [0.0, 0.0, np.pi / 2], 1e-9):
         return
     if close(got, [0.0, 0.0, -np.pi / 2], 1e-9):
-        raise Mismatch(f"got {_fmt(got)}, the step back",
+        raise Mismatch(f"got {fmt(got)}, the step back",
                        "arguments swapped? boxminus(R_a, R_b) = Log(R_bᵀ R_a), the step from R_b to R_a")
-    raise Mismatch(f"got {_fmt(got)}, expected [0, 0, 1.571]",
+    raise Mismatch(f"got {fmt(got)}, expected [0, 0, 1.571]",
                    "boxminus(R_a, R_b) = Log(R_bᵀ R_a): the body-frame step from R_b to R_a")
 
 
 @public_check("boxminus", "round trip: R_b Exp(R_a ⊟ R_b) = R_a")
 def _(boxminus):
     R_b = Exp([-0.5, 0.2, 0.9])
-    got = _require_shape(boxminus(R_SAMPLE, R_b), (3,))
+    got = require_shape(boxminus(R_SAMPLE, R_b), (3,))
     if close(R_b @ Exp(got), R_SAMPLE, 1e-9):
         return
     if close(Exp(got) @ R_b, R_SAMPLE, 1e-9):
@@ -132,24 +116,24 @@ def _(boxminus):
 # ---------------------------------------------------------------- quat_boxplus
 @public_check("quat_boxplus", "identity ⊞ (0, 0, π/2) is the quarter turn [cos 45°, 0, 0, sin 45°]")
 def _(quat_boxplus):
-    got = _require_shape(quat_boxplus([1.0, 0.0, 0.0, 0.0], [0.0, 0.0, np.pi / 2]), (4,))
+    got = require_shape(quat_boxplus([1.0, 0.0, 0.0, 0.0], [0.0, 0.0, np.pi / 2]), (4,))
     half = np.sqrt(0.5)
     if close(got, [half, 0.0, 0.0, half], 1e-9) or close(got, [-half, 0.0, 0.0, -half], 1e-9):
         return
     if close(np.abs(got), [0.0, 0.0, 0.0, 1.0], 1e-9):
-        raise Mismatch(f"got {_fmt(got)}: a half turn", "a quaternion holds the half angle: cos(|δ|/2), sin(|δ|/2) u")
+        raise Mismatch(f"got {fmt(got)}: a half turn", "a quaternion holds the half angle: cos(|δ|/2), sin(|δ|/2) u")
     if close(got, [1.0, 0.0, 0.0, np.pi / 4], 1e-9):
-        raise Mismatch(f"got {_fmt(got)}: the shortcut [1, δ/2] without normalising",
+        raise Mismatch(f"got {fmt(got)}: the shortcut [1, δ/2] without normalising",
                        "use the exact Exp_q(δ), or at least divide by the norm")
     if close(got, [0.0, 0.0, half, half], 1e-9) or close(got, [half, half, 0.0, 0.0], 1e-9):
-        raise Mismatch(f"got {_fmt(got)}", "scalar first: [w, x, y, z]")
-    raise Mismatch(f"got {_fmt(got)}, expected [0.707, 0, 0, 0.707]")
+        raise Mismatch(f"got {fmt(got)}", "scalar first: [w, x, y, z]")
+    raise Mismatch(f"got {fmt(got)}, expected [0.707, 0, 0, 0.707]")
 
 
 @public_check("quat_boxplus", "the result has unit norm, even for a large δ")
 def _(quat_boxplus):
     q = np.array([np.cos(0.4), np.sin(0.4), 0.0, 0.0])
-    got = _require_shape(quat_boxplus(q, [0.6, -0.8, 0.5]), (4,))
+    got = require_shape(quat_boxplus(q, [0.6, -0.8, 0.5]), (4,))
     norm = np.linalg.norm(got)
     if abs(norm - 1.0) > 1e-9:
         raise Mismatch(f"|q ⊞ δ| = {norm:.6f}",
@@ -161,18 +145,18 @@ def _(quat_boxplus):
     half = np.sqrt(0.5)
     q = np.array([half, half, 0.0, 0.0])                  # a quarter turn about x
     exp_z = np.array([half, 0.0, 0.0, half])               # Exp_q of a quarter turn about z
-    got = _require_shape(quat_boxplus(q, [0.0, 0.0, np.pi / 2]), (4,))
+    got = require_shape(quat_boxplus(q, [0.0, 0.0, np.pi / 2]), (4,))
     expected = quat_product(q, exp_z)
     if not (close(got, expected, 1e-9) or close(got, -expected, 1e-9)):
         if abs(np.linalg.norm(got) - 1.0) > 1e-9:
-            raise Mismatch(f"got {_fmt(got)}, of norm {np.linalg.norm(got):.4f}",
+            raise Mismatch(f"got {fmt(got)}, of norm {np.linalg.norm(got):.4f}",
                            "use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|] and return a unit quaternion")
         if close(np.abs(got), np.abs(quat_product(exp_z, q)), 1e-9):
             raise Mismatch("got Exp_q(δ) ⊗ q", "the right perturbation multiplies on the right: q ⊗ Exp_q(δ)")
-        raise Mismatch(f"got {_fmt(got)}, expected {_fmt(expected)}")
-    same = _require_shape(quat_boxplus(q, np.zeros(3)), (4,))
+        raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}")
+    same = require_shape(quat_boxplus(q, np.zeros(3)), (4,))
     if not (close(same, q, 1e-12) or close(same, -q, 1e-12)):
-        raise Mismatch(f"quat_boxplus(q, 0) returned {_fmt(same)}",
+        raise Mismatch(f"quat_boxplus(q, 0) returned {fmt(same)}",
                        "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle")
 
 
@@ -187,17 +171,17 @@ def _(numerical_jacobian):
     if np.shape(got) == (3, 2):
         raise Mismatch("returned shape 3×2 for f: R³ → R²: the Jacobian is transposed",
                        "row i is output f_i, column j is input x_j: shape (len(f(x)), n)")
-    got = _require_shape(got, (2, 3))
+    got = require_shape(got, (2, 3))
     expected = np.array([[2.0, 1.0, 0.0], [0.0, 0.0, 6.0]])
     if not close(got, expected, 1e-3):
-        raise Mismatch(f"got {_fmt(got)}, expected about {_fmt(expected)}",
+        raise Mismatch(f"got {fmt(got)}, expected about {fmt(expected)}",
                        "column j: (f(x + δ_j e_j) - f(x)) / δ_j with δ_j = max(|1e-4 x_j|, 1e-6)")
 
 
 @public_check("numerical_jacobian", "uses the lecture's forward steps: for f(x) = x², column j is 2x_j + δ_j")
 def _(numerical_jacobian):
     x = np.array([1.0, 2.0, 0.0])
-    got = _require_shape(numerical_jacobian(np.square, x), (3, 3))
+    got = require_shape(numerical_jacobian(np.square, x), (3, 3))
     steps = np.array([1e-4, 2e-4, 1e-6])                 # max(|1e-4 x_j|, 1e-6)
     expected = np.diag(2.0 * x + steps)
     if close(got, expected, 1e-8):
@@ -212,9 +196,9 @@ def _(numerical_jacobian):
 
 @public_check("numerical_jacobian", "works where x_j = 0 (the floor 1e-6 of the step rule)")
 def _(numerical_jacobian):
-    got = _require_shape(numerical_jacobian(np.sin, np.zeros(3)), (3, 3))
+    got = require_shape(numerical_jacobian(np.sin, np.zeros(3)), (3, 3))
     if not close(got, E, 1e-5):
-        raise Mismatch(f"the Jacobian of sin at 0 came out as {_fmt(got)}, expected the identity",
+        raise Mismatch(f"the Jacobian of sin at 0 came out as {fmt(got)}, expected the identity",
                        "at x_j = 0 the relative step 1e-4·|x_j| is 0: keep the floor, max(..., 1e-6)")
 
 
@@ -230,29 +214,29 @@ def _(numerical_jacobian):
     if shape_problem(got, (3, 3)) and np.asarray(got).shape == (3, 9):
         raise Mismatch("got 9 columns: the 9 entries of the matrix were perturbed",
                        "with a boxplus, perturb the 3-vector δ in boxplus(x, δ), starting from δ = 0")
-    got = _require_shape(got, (3, 3))
+    got = require_shape(got, (3, 3))
     # Turning about z moves x towards y, about y towards -z, about x not at all.
     expected = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
     if not close(got, expected, 1e-4):
-        raise Mismatch(f"got {_fmt(got)}, expected about {_fmt(expected)}",
+        raise Mismatch(f"got {fmt(got)}, expected about {fmt(expected)}",
                        "column j: (f(boxplus(x, h e_j)) - f(x)) / h with h = 1e-6")
 
 
 # ---------------------------------------------------------------- jacobian_rotate_point
 @public_check("jacobian_rotate_point", "R = I, p = x: turning about z moves x towards y, about y towards -z")
 def _(jacobian_rotate_point):
-    got = _require_shape(jacobian_rotate_point(np.eye(3), [1.0, 0.0, 0.0]), (3, 3))
+    got = require_shape(jacobian_rotate_point(np.eye(3), [1.0, 0.0, 0.0]), (3, 3))
     expected = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
     if close(got, -expected, 1e-12):
         raise Mismatch("every entry has the wrong sign", "R Exp(δ) p ≈ R p + R [δ]× p = R p - R [p]× δ")
     if not close(got, expected, 1e-12):
-        raise Mismatch(f"got {_fmt(got)}, expected {_fmt(expected)}")
+        raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}")
 
 
 @public_check("jacobian_rotate_point", "first order: R Exp(δ) p - R p - J δ shrinks like |δ|²")
 def _(jacobian_rotate_point):
     p = np.array([0.5, -1.0, 2.0])
-    J = _require_shape(jacobian_rotate_point(R_SAMPLE, p), (3, 3))
+    J = require_shape(jacobian_rotate_point(R_SAMPLE, p), (3, 3))
     direction = np.array([2.0, -1.0, 2.0]) / 3.0
     for size in (1e-3, 1e-4):
         d = size * direction
@@ -273,13 +257,13 @@ def _(right_jacobian_so3):
         raise Mismatch(f"right_jacobian_so3(0) {problem}",
                        "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle")
     if not close(got, E, 1e-12):
-        raise Mismatch(f"right_jacobian_so3(0) returned {_fmt(got)}")
+        raise Mismatch(f"right_jacobian_so3(0) returned {fmt(got)}")
 
 
 @public_check("right_jacobian_so3", "tiny angle |w| = 1e-9: Jr ≈ I - [w]×/2 to full precision")
 def _(right_jacobian_so3):
     w = 1e-9 * np.array([0.6, 0.0, 0.8])
-    got = _require_shape(right_jacobian_so3(w), (3, 3))
+    got = require_shape(right_jacobian_so3(w), (3, 3))
     expected = E - 0.5 * skew(w)
     if close(got, E + 0.5 * skew(w), 1e-14):
         raise Mismatch("got I + [w]×/2: the sign of the [w]× term is flipped",
@@ -292,7 +276,7 @@ def _(right_jacobian_so3):
 @public_check("right_jacobian_so3", "first order: Exp(w + dw) ≈ Exp(w) Exp(Jr dw) with an error of order |dw|²")
 def _(right_jacobian_so3):
     w = np.array([0.9, -1.2, 0.6])
-    J = _require_shape(right_jacobian_so3(w), (3, 3))
+    J = require_shape(right_jacobian_so3(w), (3, 3))
     dw = 1e-4 * np.array([0.48, 0.6, -0.64])
     leftover = np.linalg.norm(Log((Exp(w) @ Exp(J @ dw)).T @ Exp(w + dw)))
     if leftover > 1e-8:
@@ -311,13 +295,13 @@ def _(right_jacobian_inv_so3):
         raise Mismatch(f"right_jacobian_inv_so3(0) {problem}",
                        "the closed form is 0/0 at θ = 0: use the series 1/12 + θ²/720 below a small angle")
     if not close(got, E, 1e-12):
-        raise Mismatch(f"right_jacobian_inv_so3(0) returned {_fmt(got)}")
+        raise Mismatch(f"right_jacobian_inv_so3(0) returned {fmt(got)}")
 
 
 @public_check("right_jacobian_inv_so3", "first order: Log(Exp(w) Exp(v)) ≈ w + Jr⁻¹(w) v")
 def _(right_jacobian_inv_so3):
     w = np.array([0.9, -1.2, 0.6])
-    J = _require_shape(right_jacobian_inv_so3(w), (3, 3))
+    J = require_shape(right_jacobian_inv_so3(w), (3, 3))
     v = 1e-4 * np.array([0.48, 0.6, -0.64])
     error = np.linalg.norm(Log(Exp(w) @ Exp(v)) - w - J @ v)
     if error > 1e-8:
@@ -330,7 +314,7 @@ def _(right_jacobian_inv_so3):
 @public_check("right_jacobian_inv_so3", "tiny angle |w| = 1e-9: Jr⁻¹ ≈ I + [w]×/2, finite")
 def _(right_jacobian_inv_so3):
     w = 1e-9 * np.array([0.0, 0.6, 0.8])
-    got = _require_shape(right_jacobian_inv_so3(w), (3, 3))
+    got = require_shape(right_jacobian_inv_so3(w), (3, 3))
     if not close(got, E + 0.5 * skew(w), 1e-14):
         raise Mismatch(f"off by {np.max(np.abs(got - E - 0.5 * skew(w))):.1e} at θ = 1e-9",
                        "use the series of the [w]×² coefficient (1/12 + θ²/720) below a small angle")

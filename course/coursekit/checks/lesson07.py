@@ -10,7 +10,8 @@ import numpy as np
 from scipy.linalg import expm
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, pose_problem, shape_problem
+from ..diagnose import close
+from .common import fmt, require_pose, require_shape
 
 # A quarter turn about z (x goes to y) followed by a shift of (1, 2, 3) m, written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -26,23 +27,6 @@ T_QUARTER_X = np.array([[1.0, 0.0, 0.0, 0.0],
                         [0.0, 0.0, 0.0, 1.0]])
 
 
-def _require_shape(value, shape):
-    problem = shape_problem(value, shape)
-    if problem:
-        raise Mismatch(problem)
-    return np.asarray(value, dtype=float)
-
-
-def _require_pose(T):
-    problem = pose_problem(T)
-    if problem:
-        raise Mismatch(problem)
-
-
-def _fmt(v):
-    return np.array2string(np.round(np.asarray(v, dtype=float), 3) + 0.0, separator=", ")
-
-
 def _twist_matrix(xi):
     rho, phi = np.asarray(xi[:3], dtype=float), np.asarray(xi[3:], dtype=float)
     return np.array([[0.0, -phi[2], phi[1], rho[0]],
@@ -54,21 +38,21 @@ def _twist_matrix(xi):
 # ---------------------------------------------------------------- make_pose
 @public_check("make_pose", "puts R top-left, t in the last column and [0, 0, 0, 1] below")
 def _(make_pose):
-    T = _require_shape(make_pose(QUARTER_TURN_Z, SHIFT), (4, 4))
+    T = require_shape(make_pose(QUARTER_TURN_Z, SHIFT), (4, 4))
     if close(T, T_QUARTER.T, 1e-12):
         raise Mismatch("got the transpose of the pose matrix",
                        "t goes in the last column (T[:3, 3]), not in the bottom row")
     if not close(T[:3, 3], SHIFT, 1e-12):
-        raise Mismatch(f"the last column holds {_fmt(T[:3, 3])}, expected t = [1, 2, 3]")
+        raise Mismatch(f"the last column holds {fmt(T[:3, 3])}, expected t = [1, 2, 3]")
     if not close(T[:3, :3], QUARTER_TURN_Z, 1e-12):
         raise Mismatch("the top-left 3×3 block is not R", "copy R itself, not its transpose")
     if not close(T[3], [0.0, 0.0, 0.0, 1.0], 1e-12):
-        raise Mismatch(f"the bottom row is {_fmt(T[3])}, expected [0, 0, 0, 1]")
+        raise Mismatch(f"the bottom row is {fmt(T[3])}, expected [0, 0, 0, 1]")
 
 
 @public_check("make_pose", "accepts plain lists")
 def _(make_pose):
-    T = _require_shape(make_pose(QUARTER_TURN_Z.tolist(), [1, 2, 3]), (4, 4))
+    T = require_shape(make_pose(QUARTER_TURN_Z.tolist(), [1, 2, 3]), (4, 4))
     if not close(T, T_QUARTER, 1e-12):
         raise Mismatch("make_pose with lists differs from make_pose with arrays",
                        "convert the inputs with np.asarray(..., dtype=float)")
@@ -77,11 +61,11 @@ def _(make_pose):
 # ---------------------------------------------------------------- to_homogeneous / from_homogeneous
 @public_check("to_homogeneous", "appends a 1 to one point: shape (3,) → (4,)")
 def _(to_homogeneous):
-    got = _require_shape(to_homogeneous([1.0, 2.0, 3.0]), (4,))
+    got = require_shape(to_homogeneous([1.0, 2.0, 3.0]), (4,))
     if close(got, [1.0, 2.0, 3.0, 0.0], 1e-12):
         raise Mismatch("appended a 0", "a 0 marks a direction; points get a 1")
     if not close(got, [1.0, 2.0, 3.0, 1.0], 1e-12):
-        raise Mismatch(f"got {_fmt(got)}, expected [1, 2, 3, 1]")
+        raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3, 1]")
 
 
 @public_check("to_homogeneous", "appends a 1 to every row: shape (N, 3) → (N, 4)")
@@ -91,28 +75,28 @@ def _(to_homogeneous):
     if np.shape(got) == (3, 3):
         raise Mismatch("returned shape 3×3: a row of ones was added below the points",
                        "append a column: the new coordinate belongs to every point (axis=-1)")
-    got = _require_shape(got, (2, 4))
+    got = require_shape(got, (2, 4))
     if not close(got, np.column_stack([P, np.ones(2)]), 1e-12):
-        raise Mismatch(f"got {_fmt(got)}", "each row should be the point followed by a 1")
+        raise Mismatch(f"got {fmt(got)}", "each row should be the point followed by a 1")
 
 
 @public_check("from_homogeneous", "divides by the last coordinate: [2, 4, 6, 2] → [1, 2, 3]")
 def _(from_homogeneous):
-    got = _require_shape(from_homogeneous([2.0, 4.0, 6.0, 2.0]), (3,))
+    got = require_shape(from_homogeneous([2.0, 4.0, 6.0, 2.0]), (3,))
     if close(got, [2.0, 4.0, 6.0], 1e-12):
         raise Mismatch("got [2, 4, 6]: the last coordinate was dropped without dividing",
                        "[x, y, z, w] is the point [x/w, y/w, z/w]")
     if not close(got, [1.0, 2.0, 3.0], 1e-12):
-        raise Mismatch(f"got {_fmt(got)}, expected [1, 2, 3]")
+        raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3]")
 
 
 @public_check("from_homogeneous", "works on rows: shape (N, 4) → (N, 3)")
 def _(from_homogeneous):
     P_h = np.array([[2.0, 4.0, 6.0, 2.0], [1.0, -1.0, 0.5, 0.5], [3.0, 0.0, 0.0, 1.0]])
-    got = _require_shape(from_homogeneous(P_h), (3, 3))
+    got = require_shape(from_homogeneous(P_h), (3, 3))
     expected = np.array([[1.0, 2.0, 3.0], [2.0, -2.0, 1.0], [3.0, 0.0, 0.0]])
     if not close(got, expected, 1e-12):
-        raise Mismatch(f"got {_fmt(got)}, expected {_fmt(expected)}",
+        raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}",
                        "divide each row by its own last coordinate (P_h[..., -1:] keeps the shape)")
 
 
@@ -120,7 +104,7 @@ def _(from_homogeneous):
 @public_check("transform_points", "turns and shifts N points (shape (N, 3)): p_a = R p_b + t")
 def _(transform_points):
     P = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 2.0, -1.0]])
-    got = _require_shape(transform_points(T_QUARTER, P), (3, 3))
+    got = require_shape(transform_points(T_QUARTER, P), (3, 3))
     expected = np.array([[1.0, 3.0, 3.0], [1.0, 2.0, 3.0], [-1.0, 2.0, 2.0]])
     if close(got, expected, 1e-12):
         return
@@ -131,20 +115,20 @@ def _(transform_points):
                        "for rows use P @ R.T (or P_h @ T.T), not P @ R")
     if close(got, (P + SHIFT) @ QUARTER_TURN_Z.T, 1e-12):
         raise Mismatch("the points were shifted, then turned", "rotate first, then shift: R p + t")
-    raise Mismatch(f"got {_fmt(got)}, expected {_fmt(expected)}")
+    raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}")
 
 
 @public_check("transform_points", "accepts a single point of shape (3,)")
 def _(transform_points):
-    got = _require_shape(transform_points(T_QUARTER, [1.0, 0.0, 0.0]), (3,))
+    got = require_shape(transform_points(T_QUARTER, [1.0, 0.0, 0.0]), (3,))
     if not close(got, [1.0, 3.0, 3.0], 1e-12):
-        raise Mismatch(f"got {_fmt(got)} for the point [1, 0, 0], expected [1, 3, 3]")
+        raise Mismatch(f"got {fmt(got)} for the point [1, 0, 0], expected [1, 3, 3]")
 
 
 # ---------------------------------------------------------------- pose_compose
 @public_check("pose_compose", "T_ac = T_ab T_bc: one step equals two steps for a point of c")
 def _(pose_compose):
-    T_ac = _require_shape(pose_compose(T_QUARTER, T_QUARTER_X), (4, 4))
+    T_ac = require_shape(pose_compose(T_QUARTER, T_QUARTER_X), (4, 4))
     p_c = np.array([0.3, -1.2, 2.0, 1.0])
     if close(T_ac @ p_c, T_QUARTER @ (T_QUARTER_X @ p_c), 1e-12):
         return
@@ -157,13 +141,13 @@ def _(pose_compose):
 # ---------------------------------------------------------------- pose_inverse
 @public_check("pose_inverse", "a pose times its inverse is the identity")
 def _(pose_inverse):
-    got = _require_shape(pose_inverse(T_QUARTER), (4, 4))
+    got = require_shape(pose_inverse(T_QUARTER), (4, 4))
     if close(got, T_QUARTER.T, 1e-12):
         raise Mismatch("returned the transpose of T",
                        "a pose is not orthogonal: transpose the rotation block and use -Rᵀ t")
-    _require_pose(got)
+    require_pose(got)
     if close(got[:3, 3], -SHIFT, 1e-12):
-        raise Mismatch(f"the translation of the inverse is -t = {_fmt(-SHIFT)}",
+        raise Mismatch(f"the translation of the inverse is -t = {fmt(-SHIFT)}",
                        "turn it too: the inverse translation is -Rᵀ t")
     if not close(T_QUARTER @ got, np.eye(4), 1e-12):
         raise Mismatch("T @ pose_inverse(T) is not the identity")
@@ -171,10 +155,10 @@ def _(pose_inverse):
 
 @public_check("pose_inverse", "takes a point back: T_ba (T_ab p) = p")
 def _(pose_inverse):
-    got = _require_shape(pose_inverse(T_QUARTER_X), (4, 4))
+    got = require_shape(pose_inverse(T_QUARTER_X), (4, 4))
     p = np.array([0.7, 0.1, -2.0, 1.0])
     if not close(got @ (T_QUARTER_X @ p), p, 1e-12):
-        raise Mismatch(f"got {_fmt((got @ (T_QUARTER_X @ p))[:3])} back instead of {_fmt(p[:3])}")
+        raise Mismatch(f"got {fmt((got @ (T_QUARTER_X @ p))[:3])} back instead of {fmt(p[:3])}")
 
 
 # ---------------------------------------------------------------- exp_se3
@@ -183,36 +167,36 @@ def _(exp_se3):
     T = exp_se3([1.0, 2.0, 3.0, 0.0, 0.0, 0.0])
     if np.shape(T) == (4, 4) and not np.all(np.isfinite(np.asarray(T, dtype=float))):
         raise Mismatch("returned NaN or inf at phi = 0", "below θ = 1e-2 use the series for V: no 0/0")
-    T = _require_shape(T, (4, 4))
+    T = require_shape(T, (4, 4))
     if close(T[:3, :3], expm(_twist_matrix([0.0, 0.0, 0.0, 1.0, 2.0, 3.0]))[:3, :3], 1e-9):
         raise Mismatch("rho was used as the rotation vector",
                        "xi = [rho, phi]: translation part first (xi[:3]), rotation part last (xi[3:])")
     expected = np.eye(4)
     expected[:3, 3] = [1.0, 2.0, 3.0]
     if not close(T, expected, 1e-12):
-        raise Mismatch(f"got translation {_fmt(T[:3, 3])} and a non-identity rotation block")
+        raise Mismatch(f"got translation {fmt(T[:3, 3])} and a non-identity rotation block")
 
 
 @public_check("exp_se3", "xi = [0, 0, 0, 0, 0, π/2] is a quarter turn about z")
 def _(exp_se3):
-    T = _require_shape(exp_se3([0.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2]), (4, 4))
+    T = require_shape(exp_se3([0.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2]), (4, 4))
     expected = np.eye(4)
     expected[:3, :3] = QUARTER_TURN_Z
     if not close(T, expected, 1e-12):
-        raise Mismatch(f"got {_fmt(T)}", "the rotation block is Exp(phi) with phi = xi[3:]")
+        raise Mismatch(f"got {fmt(T)}", "the rotation block is Exp(phi) with phi = xi[3:]")
 
 
 @public_check("exp_se3", "agrees with scipy's matrix exponential (expm) of the 4×4 twist matrix")
 def _(exp_se3):
     xi = np.array([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
-    T = _require_shape(exp_se3(xi), (4, 4))
+    T = require_shape(exp_se3(xi), (4, 4))
     expected = expm(_twist_matrix(xi))
     if close(T, expected, 1e-9):
         return
     if close(T[:3, 3], xi[:3], 1e-9):
-        raise Mismatch(f"the translation equals rho = {_fmt(xi[:3])}, expected {_fmt(expected[:3, 3])}",
+        raise Mismatch(f"the translation equals rho = {fmt(xi[:3])}, expected {fmt(expected[:3, 3])}",
                        "the translation of exp(xi) is V(phi) @ rho, not rho")
-    raise Mismatch(f"got translation {_fmt(T[:3, 3])}, expected {_fmt(expected[:3, 3])}")
+    raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])}")
 
 
 # ---------------------------------------------------------------- log_se3
@@ -222,30 +206,30 @@ def _(log_se3):
     if np.shape(xi) == (6,) and not np.all(np.isfinite(np.asarray(xi, dtype=float))):
         raise Mismatch("returned NaN or inf for the identity",
                        "below θ = 1e-2 use the series for c(θ): 1/12 + θ²/720 + θ⁴/30240")
-    xi = _require_shape(xi, (6,))
+    xi = require_shape(xi, (6,))
     if not close(xi, np.zeros(6), 1e-12):
-        raise Mismatch(f"got {_fmt(xi)}")
+        raise Mismatch(f"got {fmt(xi)}")
 
 
 @public_check("log_se3", "a pure translation gives xi = [t, 0, 0, 0]")
 def _(log_se3):
     T = np.eye(4)
     T[:3, 3] = SHIFT
-    xi = _require_shape(log_se3(T), (6,))
+    xi = require_shape(log_se3(T), (6,))
     if close(xi, [0.0, 0.0, 0.0, 1.0, 2.0, 3.0], 1e-12):
         raise Mismatch("got [0, 0, 0, 1, 2, 3]", "xi = [rho, phi]: translation part first")
     if not close(xi, [1.0, 2.0, 3.0, 0.0, 0.0, 0.0], 1e-9):
-        raise Mismatch(f"got {_fmt(xi)}, expected [1, 2, 3, 0, 0, 0]")
+        raise Mismatch(f"got {fmt(xi)}, expected [1, 2, 3, 0, 0, 0]")
 
 
 @public_check("log_se3", "round trip: expm of the twist matrix of log_se3(T) gives T back")
 def _(log_se3):
     for T in (T_QUARTER, T_QUARTER_X):
-        xi = _require_shape(log_se3(T), (6,))
+        xi = require_shape(log_se3(T), (6,))
         if close(xi[:3], T[:3, 3], 1e-9):
-            raise Mismatch(f"rho equals t = {_fmt(T[:3, 3])} although T rotates",
+            raise Mismatch(f"rho equals t = {fmt(T[:3, 3])} although T rotates",
                            "rho = V(phi)⁻¹ t: the translation must be undone through V")
         if close(expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), T, 1e-9):
             raise Mismatch("rho and phi are swapped", "xi = [rho, phi]: translation part first")
         if not close(expm(_twist_matrix(xi)), T, 1e-9):
-            raise Mismatch(f"expm(twist(log_se3(T))) differs from T for T = {_fmt(T)}")
+            raise Mismatch(f"expm(twist(log_se3(T))) differs from T for T = {fmt(T)}")

@@ -10,8 +10,9 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, rotation_problem, shape_problem
+from ..diagnose import close, shape_problem
 from ..lie import Exp, Log
+from .common import require_rotation, require_shape
 
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 # Four points that are not coplanar, and their images under the quarter turn (rows: q_i = R p_i).
@@ -19,15 +20,8 @@ POINTS = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 1.5], [1.0, -1.0
 TURNED = POINTS @ QUARTER_TURN_Z.T
 
 
-def _require_rotation_shape(value, what):
-    problem = shape_problem(value, (3, 3))
-    if problem:
-        raise Mismatch(f"{what} {problem}")
-    R = np.asarray(value, dtype=float)
-    problem = rotation_problem(R)
-    if problem:
-        raise Mismatch(f"{what} is not a rotation: {problem}")
-    return R
+def _rotation_of(value, what):
+    return require_rotation(require_shape(value, (3, 3), what), what)
 
 
 def _cost(R, P, Q):
@@ -41,7 +35,7 @@ def _(align_svd):
     if shape_problem(got, (3, 3)) is None and close(got, QUARTER_TURN_Z.T, 1e-9):
         raise Mismatch("got the inverse rotation (the transpose)",
                        "use M = Qᵀ P = Σ q_i p_iᵀ; Pᵀ Q gives Rᵀ")
-    R = _require_rotation_shape(got, "align_svd(P, Q)")
+    R = _rotation_of(got, "align_svd(P, Q)")
     if not close(R, QUARTER_TURN_Z, 1e-9):
         raise Mismatch(f"got {np.round(R, 3).tolist()}, expected the quarter turn about z")
 
@@ -57,13 +51,13 @@ def _(align_svd):
     if det < 0:
         raise Mismatch(f"det = {det:.3f}: a reflection",
                        "U Vᵀ can be a reflection: use U diag(1, 1, det(U Vᵀ)) Vᵀ")
-    _require_rotation_shape(got, "align_svd(P, Q)")
+    _rotation_of(got, "align_svd(P, Q)")
 
 
 # ---------------------------------------------------------------- align_gauss_newton
 @public_check("align_gauss_newton", "finds a quarter turn about z from R0 = I with exact data")
 def _(align_gauss_newton):
-    R = _require_rotation_shape(align_gauss_newton(POINTS, TURNED, np.eye(3), iters=10),
+    R = _rotation_of(align_gauss_newton(POINTS, TURNED, np.eye(3), iters=10),
                                 "align_gauss_newton(P, Q, I, iters=10)")
     if close(R, QUARTER_TURN_Z.T, 1e-6):
         raise Mismatch("converged to the inverse rotation", "the residual is r_i = R p_i - q_i")
@@ -75,7 +69,7 @@ def _(align_gauss_newton):
 @public_check("align_gauss_newton", "one iteration lowers the cost and stays a rotation")
 def _(align_gauss_newton):
     R0 = QUARTER_TURN_Z @ Exp([0.3, -0.2, 0.4])
-    R1 = _require_rotation_shape(align_gauss_newton(POINTS, TURNED, R0, iters=1),
+    R1 = _rotation_of(align_gauss_newton(POINTS, TURNED, R0, iters=1),
                                  "align_gauss_newton(..., iters=1)")
     before, after = _cost(R0, POINTS, TURNED), _cost(R1, POINTS, TURNED)
     if close(R1, R0, 1e-12):
@@ -89,7 +83,7 @@ def _(align_gauss_newton):
 @public_check("rotation_mean", "the mean of one rotation repeated is that rotation")
 def _(rotation_mean):
     R = Exp([0.4, -1.1, 0.7])
-    got = _require_rotation_shape(rotation_mean([R, R, R]), "rotation_mean([R, R, R])")
+    got = _rotation_of(rotation_mean([R, R, R]), "rotation_mean([R, R, R])")
     if not close(got, R, 1e-9):
         raise Mismatch("the mean of three copies of R is not R")
 
@@ -98,7 +92,7 @@ def _(rotation_mean):
 def _(rotation_mean):
     A = Exp([0.2, 0.1, -0.3])
     B = A @ Exp([0.0, 1.2, 0.0])
-    got = _require_rotation_shape(rotation_mean(np.array([A, B])), "rotation_mean([A, B])")
+    got = _rotation_of(rotation_mean(np.array([A, B])), "rotation_mean([A, B])")
     midpoint = A @ Exp([0.0, 0.6, 0.0])
     if not close(got, midpoint, 1e-8):
         raise Mismatch(f"it is {np.rad2deg(np.linalg.norm(Log(midpoint.T @ got))):.3f}° away from the midpoint",
@@ -110,7 +104,7 @@ def _(rotation_mean):
     rng = np.random.default_rng(0)
     centre = Exp([0.5, -0.2, 0.9])
     Rs = np.array([centre @ Exp(0.5 * rng.normal(size=3)) for _ in range(12)])
-    M = _require_rotation_shape(rotation_mean(Rs), "rotation_mean(Rs)")
+    M = _rotation_of(rotation_mean(Rs), "rotation_mean(Rs)")
     imbalance = np.linalg.norm(sum(Log(M.T @ R) for R in Rs)) / len(Rs)
     if imbalance > 1e-7:
         chordal = Rotation.from_matrix(Rs).mean().as_matrix()  # scipy's mean is the chordal one

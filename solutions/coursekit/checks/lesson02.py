@@ -1,0 +1,157 @@
+"""Public checks for lesson 02: groups and SO(3).
+
+The checks hand the student's functions small, fully known structures —
+quarter turns, numbers, cross products — whose verdicts are facts of the
+lesson, and name the usual slip when a verdict is wrong.
+"""
+
+import numpy as np
+
+from ..checking import Mismatch, public_check
+from ..lie import Exp
+
+QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+QUARTER_TURN_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
+KEYS = ("closure", "identity", "inverse", "associativity")
+
+
+def _matmul(a, b):
+    return np.asarray(a, dtype=float) @ np.asarray(b, dtype=float)
+
+
+def _add(a, b):
+    return np.asarray(a, dtype=float) + np.asarray(b, dtype=float)
+
+
+def _multiply(a, b):
+    return a * b
+
+
+def _reciprocal(a):
+    with np.errstate(divide="ignore"):
+        return 1.0 / np.float64(a)
+
+
+def _is_real(x):
+    return bool(np.all(np.isfinite(x)))
+
+
+def _is_rotation(M):
+    M = np.asarray(M, dtype=float)
+    if M.shape != (3, 3) or not np.all(np.isfinite(M)):
+        return False
+    return bool(np.max(np.abs(M.T @ M - np.eye(3))) <= 1e-9 and np.linalg.det(M) > 0)
+
+
+def _verdict(result):
+    """The dict returned by check_group_axioms, validated."""
+    if not isinstance(result, dict):
+        raise Mismatch(f"returned {type(result).__name__}, expected a dict",
+                       'return {"closure": ..., "identity": ..., "inverse": ..., "associativity": ...}')
+    missing = [k for k in KEYS if k not in result]
+    if missing:
+        raise Mismatch(f"the dict has no key {missing[0]!r} (keys: {sorted(map(str, result))})",
+                       "use exactly the keys closure, identity, inverse, associativity")
+    for key in KEYS:
+        if not isinstance(result[key], (bool, np.bool_)):
+            raise Mismatch(f"result[{key!r}] is {result[key]!r}, not True or False", "wrap it in bool(...)")
+    return {k: bool(result[k]) for k in KEYS}
+
+
+def _expect(got, expected, name, hints):
+    for key in KEYS:
+        if got[key] != expected[key]:
+            raise Mismatch(f"{name}: {key} came out {got[key]}, expected {expected[key]}", hints.get(key))
+
+
+# ---------------------------------------------------------------- check_group_axioms
+@public_check("check_group_axioms", "returns a dict of four booleans; nonzero reals under * pass every axiom")
+def _(check_group_axioms):
+    got = _verdict(check_group_axioms([2.0, -0.5, 4.0, 0.25], _multiply, 1.0, _reciprocal,
+                                      lambda x: bool(np.isfinite(x) and x != 0)))
+    _expect(got, dict.fromkeys(KEYS, True), "nonzero reals", {
+        "associativity": "(2·(-0.5))·4 and 2·((-0.5)·4) differ only by rounding: compare with tol"})
+
+
+@public_check("check_group_axioms", "quarter turns under the matrix product pass every axiom")
+def _(check_group_axioms):
+    samples = [np.eye(3), QUARTER_TURN_Z, QUARTER_TURN_Z @ QUARTER_TURN_Z, QUARTER_TURN_X]
+    got = _verdict(check_group_axioms(samples, _matmul, np.eye(3), lambda a: np.asarray(a).T, _is_rotation))
+    _expect(got, dict.fromkeys(KEYS, True), "rotations under @", {})
+
+
+@public_check("check_group_axioms", "rotations under addition fail closure, identity and inverse")
+def _(check_group_axioms):
+    got = _verdict(check_group_axioms([QUARTER_TURN_Z, QUARTER_TURN_X], _add, np.zeros((3, 3)),
+                                      lambda a: -np.asarray(a), _is_rotation))
+    _expect(got, {"closure": False, "identity": False, "inverse": False, "associativity": True},
+            "rotations under +", {
+                "closure": "closure must test is_member(op(a, b)) with the op you are given (here +)",
+                "identity": "the identity must belong to the set: also check is_member(identity)",
+                "inverse": "each inverse must belong to the set: also check is_member(inverse(a)) (-R has det -1)",
+                "associativity": "compare op(op(a, b), c) with op(a, op(b, c)) using op"})
+
+
+@public_check("check_group_axioms", "all reals under * (0 included): only the inverse fails")
+def _(check_group_axioms):
+    got = _verdict(check_group_axioms([2.0, 0.0, -3.0], _multiply, 1.0, _reciprocal, _is_real))
+    _expect(got, {"closure": True, "identity": True, "inverse": False, "associativity": True},
+            "reals with 0", {
+                "inverse": "1/0 is inf: is_member(inf) is False, and 0·inf is NaN, which must not count as equal",
+                "closure": "closure asks is_member(op(a, b)) for every ordered pair"})
+
+
+@public_check("check_group_axioms", "catches a one-sided identity (a ∘ b = b) and a non-associative ×")
+def _(check_group_axioms):
+    got = _verdict(check_group_axioms([1.0, 2.0, 3.0], lambda a, b: b, 1.0, lambda a: 1.0, _is_real))
+    if got["identity"]:
+        raise Mismatch("with a ∘ b = b, 1 is only a left identity (2 ∘ 1 = 1), yet identity came out True",
+                       "check both op(identity, a) and op(a, identity)")
+    if got["inverse"]:
+        raise Mismatch("with a ∘ b = b and inverse(a) = 1, inverse(2) ∘ 2 = 2 ≠ 1, yet inverse came out True",
+                       "check both op(a, inverse(a)) and op(inverse(a), a)")
+    vectors = [np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), np.array([0.0, 1.0, 1.0])]
+    got = _verdict(check_group_axioms(vectors, np.cross, np.zeros(3), lambda a: -np.asarray(a), _is_real))
+    if got["associativity"]:
+        raise Mismatch("the cross product is not associative, yet associativity came out True",
+                       "loop over every ordered triple (a, b, c), repeats included")
+
+
+# ---------------------------------------------------------------- commutes
+@public_check("commutes", "rotations about one axis commute, even though rounding differs")
+def _(commutes):
+    axis = np.array([2.0, -1.0, 2.0]) / 3.0
+    verdict = commutes(Exp(0.4 * axis), Exp(1.3 * axis), _matmul)
+    if not isinstance(verdict, (bool, np.bool_)):
+        raise Mismatch(f"returned {verdict!r} ({type(verdict).__name__}), not True or False",
+                       "return bool(...) of one comparison, not an array")
+    if not verdict:
+        raise Mismatch("said two rotations about the same axis do not commute",
+                       "the two products differ by ~1e-16: compare with tol, never with ==")
+
+
+@public_check("commutes", "quarter turns about x and z do not commute")
+def _(commutes):
+    if commutes(QUARTER_TURN_X, QUARTER_TURN_Z, _matmul):
+        raise Mismatch("said the quarter turns about x and z commute",
+                       "compare op(a, b) with op(b, a) — swap the arguments in the second product")
+
+
+@public_check("commutes", "uses the op it is given (numbers under *, vectors under ×)")
+def _(commutes):
+    if not commutes(2.0, -3.5, _multiply):
+        raise Mismatch("said 2 and -3.5 do not commute under multiplication", "call op(a, b) and op(b, a)")
+    e_x, e_y = np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])
+    if commutes(e_x, e_y, np.cross):
+        raise Mismatch("said e_x and e_y commute under the cross product (e_x × e_y = -(e_y × e_x))",
+                       "use the op argument, not the matrix product")
+
+
+@public_check("commutes", "uses the tol argument")
+def _(commutes):
+    A, B = Exp([0.0, 0.0, 0.3]), Exp([1e-7, 0.0, 0.5])   # their products differ by about 3e-8
+    if not commutes(A, B, _matmul, tol=1e-5):
+        raise Mismatch("with tol=1e-5, a difference of 3e-8 was not accepted", "compare with the tol argument")
+    if commutes(A, B, _matmul, tol=1e-9):
+        raise Mismatch("with tol=1e-9, a difference of 3e-8 was accepted",
+                       "compare with the tol argument (np.allclose adds rtol=1e-5 unless rtol=0)")
