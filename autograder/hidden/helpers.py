@@ -41,11 +41,19 @@ def exercise(name, weight=1.0):
 
 
 def fmt(value, digits=4):
-    """Short text for a value in a failure message."""
-    array = np.asarray(value, dtype=float) if not isinstance(value, (str, dict)) else None
-    if array is None:
+    """Short text for a value in a failure message; tiny numbers keep their significant digits.
+
+    Examples
+    --------
+    >>> fmt([1.0, 2.5e-9, -0.0])
+    '[1, 2.5e-09, 0]'
+    """
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
         return repr(value)[:120]
-    text = np.array2string(np.round(array, digits) + 0.0, separator=", ", threshold=20, max_line_width=1000)
+    text = np.array2string(array + 0.0, separator=", ", threshold=20, max_line_width=1000,
+                           formatter={"float_kind": lambda x: f"{x:.{digits}g}"})
     return " ".join(text.split())
 
 
