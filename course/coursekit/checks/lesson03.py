@@ -9,8 +9,9 @@ exp of a rotation vector fixes its axis, log undoes exp.
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, rotation_problem, rotation_vector_hint, shape_problem
+from ..diagnose import close, rotation_problem, rotation_vector_hint
 from ..lie import Exp
+from .common import fmt, require_shape
 
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 HALF_TURN_Z = np.diag([-1.0, -1.0, 1.0])
@@ -21,54 +22,42 @@ V_SAMPLE = np.array([2.0, 0.1, -0.7])
 SKEW_SAMPLE = np.array([[0.0, -0.5, -1.2], [0.5, 0.0, -0.3], [1.2, 0.3, 0.0]])   # hat of (0.3, -1.2, 0.5)
 
 
-def _require_shape(value, shape):
-    problem = shape_problem(value, shape)
-    if problem:
-        raise Mismatch(problem)
-    return np.asarray(value, dtype=float)
-
-
-def _fmt(v):
-    return np.array2string(np.round(np.asarray(v, dtype=float), 4) + 0.0, separator=", ")
-
-
 def _rot_z(angle):
-    c, s = np.cos(angle), np.sin(angle)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    return Exp([0.0, 0.0, angle])
 
 
 # ---------------------------------------------------------------- hat, vee
 @public_check("hat", "hat(w) @ v equals the cross product w × v")
 def _(hat):
-    W = _require_shape(hat(W_SAMPLE), (3, 3))
+    W = require_shape(hat(W_SAMPLE), (3, 3))
     got, want = W @ V_SAMPLE, np.cross(W_SAMPLE, V_SAMPLE)
     if close(got, -want, 1e-12):
-        raise Mismatch(f"hat(w) @ v = {_fmt(got)} is -(w × v)",
+        raise Mismatch(f"hat(w) @ v = {fmt(got)} is -(w × v)",
                        "the signs are swapped (the transpose): the top row is [0, -w3, w2]")
     if not close(got, want, 1e-12):
-        raise Mismatch(f"hat(w) @ v = {_fmt(got)}, but w × v = {_fmt(want)}")
+        raise Mismatch(f"hat(w) @ v = {fmt(got)}, but w × v = {fmt(want)}")
 
 
 @public_check("hat", "returns a skew-symmetric matrix (Wᵀ = -W)")
 def _(hat):
-    W = _require_shape(hat(W_SAMPLE), (3, 3))
+    W = require_shape(hat(W_SAMPLE), (3, 3))
     if not close(W, -W.T, 1e-15):
         raise Mismatch("hat(w) + hat(w)ᵀ is not zero", "the diagonal is zero and W[j, i] = -W[i, j]")
 
 
 @public_check("vee", "vee undoes hat: vee([w]×) = w")
 def _(vee):
-    got = _require_shape(vee(SKEW_SAMPLE), (3,))
+    got = require_shape(vee(SKEW_SAMPLE), (3,))
     if close(got, -W_SAMPLE, 1e-12):
-        raise Mismatch(f"vee returned {_fmt(got)}, the negative of w = {_fmt(W_SAMPLE)}",
+        raise Mismatch(f"vee returned {fmt(got)}, the negative of w = {fmt(W_SAMPLE)}",
                        "read w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0] (the entries with a plus sign)")
     if not close(got, W_SAMPLE, 1e-12):
-        raise Mismatch(f"vee returned {_fmt(got)}, expected {_fmt(W_SAMPLE)}")
+        raise Mismatch(f"vee returned {fmt(got)}, expected {fmt(W_SAMPLE)}")
 
 
 @public_check("vee", "accepts a nested list")
 def _(vee):
-    got = _require_shape(vee(SKEW_SAMPLE.tolist()), (3,))
+    got = require_shape(vee(SKEW_SAMPLE.tolist()), (3,))
     if not close(got, W_SAMPLE, 1e-12):
         raise Mismatch("vee of the same matrix as a list gives a different answer", "convert with np.asarray")
 
@@ -79,7 +68,7 @@ def _(bracket):
     X = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
     Y = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 0.0], [-1.0, 0.0, 0.0]])
     Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
-    got = _require_shape(bracket(X, Y), (3, 3))
+    got = require_shape(bracket(X, Y), (3, 3))
     if close(got, Z, 1e-12):
         return
     if close(got, np.zeros((3, 3)), 1e-12):
@@ -95,9 +84,9 @@ def _(bracket):
 def _(bracket):
     A = np.array([[1.0, 2.0], [0.0, -1.0]])
     B = np.array([[0.0, 1.0], [3.0, 0.5]])
-    got = _require_shape(bracket(A, B), (2, 2))
+    got = require_shape(bracket(A, B), (2, 2))
     if not close(got, A @ B - B @ A, 1e-12):
-        raise Mismatch(f"bracket of two 2×2 matrices returned {_fmt(got)}")
+        raise Mismatch(f"bracket of two 2×2 matrices returned {fmt(got)}")
 
 
 # ---------------------------------------------------------------- exp_series
@@ -106,7 +95,7 @@ def _(exp_series):
     W = SKEW_SAMPLE
     partial = [np.eye(3), np.eye(3) + W, np.eye(3) + W + W @ W / 2]
     for n, expected in zip((1, 2, 3), partial):
-        got = _require_shape(exp_series(W, n), (3, 3))
+        got = require_shape(exp_series(W, n), (3, 3))
         if close(got, expected, 1e-12):
             continue
         if n == 1 and close(got, np.zeros((3, 3)), 1e-12):
@@ -121,26 +110,26 @@ def _(exp_series):
 @public_check("exp_series", "many terms sum to a rotation: the quarter turn about z")
 def _(exp_series):
     W = np.array([[0.0, -np.pi / 2, 0.0], [np.pi / 2, 0.0, 0.0], [0.0, 0.0, 0.0]])
-    got = _require_shape(exp_series(W, 30), (3, 3))
+    got = require_shape(exp_series(W, 30), (3, 3))
     if not close(got, QUARTER_TURN_Z, 1e-12):
         hint = "W ** k raises entries to a power; use term = term @ W / k" \
             if close(got[2, 2], 1.0, 1e-9) and not close(got[0, 0], 0.0, 1e-3) else None
-        raise Mismatch(f"30 terms of exp([π/2 e_z]×) give x → {_fmt(got[:, 0])}, expected [0, 1, 0]", hint)
+        raise Mismatch(f"30 terms of exp([π/2 e_z]×) give x → {fmt(got[:, 0])}, expected [0, 1, 0]", hint)
 
 
 # ---------------------------------------------------------------- exp_so3
 @public_check("exp_so3", "a quarter turn about z sends x to y")
 def _(exp_so3):
-    R = _require_shape(exp_so3([0.0, 0.0, np.pi / 2]), (3, 3))
+    R = require_shape(exp_so3([0.0, 0.0, np.pi / 2]), (3, 3))
     if close(R, QUARTER_TURN_Z.T, 1e-9):
         raise Mismatch("got the inverse rotation (x → -y)", "check the sign of the sin θ term: R = I + sin θ K + ...")
     if not close(R, QUARTER_TURN_Z, 1e-12):
-        raise Mismatch(f"exp_so3([0, 0, π/2]) sends x to {_fmt(R[:, 0])}, expected [0, 1, 0]")
+        raise Mismatch(f"exp_so3([0, 0, π/2]) sends x to {fmt(R[:, 0])}, expected [0, 1, 0]")
 
 
 @public_check("exp_so3", "returns a rotation that leaves its axis fixed")
 def _(exp_so3):
-    R = _require_shape(exp_so3(W_SAMPLE), (3, 3))
+    R = require_shape(exp_so3(W_SAMPLE), (3, 3))
     problem = rotation_problem(R, 1e-12)
     if problem:
         raise Mismatch(f"exp_so3(w) is not a rotation: {problem}")
@@ -150,10 +139,10 @@ def _(exp_so3):
 
 @public_check("exp_so3", "w = 0 gives I, and a tiny turn (1e-8 rad) is not lost")
 def _(exp_so3):
-    got = _require_shape(exp_so3([0.0, 0.0, 0.0]), (3, 3))
+    got = require_shape(exp_so3([0.0, 0.0, 0.0]), (3, 3))
     if not close(got, np.eye(3), 1e-15):
         raise Mismatch("exp_so3(0) is not the identity", "at θ = 0 use the limits sin θ/θ → 1, (1 - cos θ)/θ² → 1/2")
-    got = _require_shape(exp_so3([0.0, 0.0, 1e-8]), (3, 3))
+    got = require_shape(exp_so3([0.0, 0.0, 1e-8]), (3, 3))
     if close(got, np.eye(3), 1e-12):
         raise Mismatch("exp_so3([0, 0, 1e-8]) returned exactly I: the turn of 1e-8 rad was dropped",
                        "for small θ use the Taylor coefficients, never return I")
@@ -164,19 +153,19 @@ def _(exp_so3):
 # ---------------------------------------------------------------- log_so3
 @public_check("log_so3", "undoes a quarter turn about z: [0, 0, π/2]")
 def _(log_so3):
-    got = _require_shape(log_so3(QUARTER_TURN_Z), (3,))
+    got = require_shape(log_so3(QUARTER_TURN_Z), (3,))
     want = np.array([0.0, 0.0, np.pi / 2])
     if not close(got, want, 1e-12):
-        raise Mismatch(f"log_so3 of the quarter turn returned {_fmt(got)}, expected {_fmt(want)}",
+        raise Mismatch(f"log_so3 of the quarter turn returned {fmt(got)}, expected {fmt(want)}",
                        rotation_vector_hint(got, want))
 
 
 @public_check("log_so3", "the identity gives 0, and a tiny turn keeps its relative accuracy")
 def _(log_so3):
-    got = _require_shape(log_so3(np.eye(3)), (3,))
+    got = require_shape(log_so3(np.eye(3)), (3,))
     if not close(got, np.zeros(3), 1e-15):
-        raise Mismatch(f"log_so3(I) returned {_fmt(got)}", rotation_vector_hint(got, np.zeros(3)))
-    got = _require_shape(log_so3(_rot_z(1e-8)), (3,))
+        raise Mismatch(f"log_so3(I) returned {fmt(got)}", rotation_vector_hint(got, np.zeros(3)))
+    got = require_shape(log_so3(_rot_z(1e-8)), (3,))
     want = np.array([0.0, 0.0, 1e-8])
     if not close(got, want, 1e-14):
         raise Mismatch(f"log_so3 of a 1e-8 rad turn about z returned {got}", rotation_vector_hint(got, want))
@@ -186,10 +175,10 @@ def _(log_so3):
 def _(log_so3):
     for name, R, axis in [("the half turn about z", HALF_TURN_Z, np.array([0.0, 0.0, 1.0])),
                           ("the half turn about (1, 1, 1)/√3", HALF_TURN_DIAGONAL, DIAGONAL)]:
-        got = _require_shape(log_so3(R), (3,))
+        got = require_shape(log_so3(R), (3,))
         want = np.pi * axis
         if not (close(got, want, 1e-10) or close(got, -want, 1e-10)):
-            raise Mismatch(f"log_so3 of {name} returned {_fmt(got)}, expected ±{_fmt(want)}",
+            raise Mismatch(f"log_so3 of {name} returned {fmt(got)}, expected ±{fmt(want)}",
                            rotation_vector_hint(got, want))
 
 
@@ -198,10 +187,10 @@ def _(log_so3):
     angle = np.pi - 1e-6
     axis = np.array([0.0, -0.6, -0.8])            # its largest component is negative
     R = Exp(angle * axis)
-    got = _require_shape(log_so3(R), (3,))
+    got = require_shape(log_so3(R), (3,))
     want = angle * axis
     if not close(got, want, 1e-8):
-        raise Mismatch(f"log_so3 of a turn by π - 1e-6 about {_fmt(axis)} returned {_fmt(got)}",
+        raise Mismatch(f"log_so3 of a turn by π - 1e-6 about {fmt(axis)} returned {fmt(got)}",
                        rotation_vector_hint(got, want))
 
 
@@ -209,8 +198,8 @@ def _(log_so3):
 def _pair(value):
     if not isinstance(value, (tuple, list)) or len(value) != 2:
         raise Mismatch(f"returned {type(value).__name__}, expected a pair (u, theta)", "return u, theta")
-    u = _require_shape(value[0], (3,))
-    theta = _require_shape(value[1], ())
+    u = require_shape(value[0], (3,))
+    theta = require_shape(value[1], ())
     return u, float(theta)
 
 
@@ -220,14 +209,14 @@ def _(axis_angle):
     if close(theta, 90.0, 1e-6):
         raise Mismatch("θ = 90", "the angle must be in radians")
     if not (close(u, [0.0, 0.0, 1.0], 1e-12) and close(theta, np.pi / 2, 1e-12)):
-        raise Mismatch(f"got u = {_fmt(u)}, θ = {theta:.6g}; expected u = [0, 0, 1], θ = π/2")
+        raise Mismatch(f"got u = {fmt(u)}, θ = {theta:.6g}; expected u = [0, 0, 1], θ = π/2")
 
 
 @public_check("axis_angle", "the identity: θ = 0 with a unit axis (no NaN)")
 def _(axis_angle):
     u, theta = _pair(axis_angle(np.eye(3)))
     if not (close(theta, 0.0, 1e-15) and close(np.linalg.norm(u), 1.0, 1e-12)):
-        raise Mismatch(f"got u = {_fmt(u)}, θ = {theta:.3g}",
+        raise Mismatch(f"got u = {fmt(u)}, θ = {theta:.3g}",
                        "at θ = 0 the axis is arbitrary: return the unit vector [1, 0, 0]")
 
 
@@ -235,7 +224,7 @@ def _(axis_angle):
 def _(axis_angle):
     u, theta = _pair(axis_angle(HALF_TURN_DIAGONAL))
     if not close(theta, np.pi, 1e-12) or not (close(u, DIAGONAL, 1e-10) or close(u, -DIAGONAL, 1e-10)):
-        raise Mismatch(f"got u = {_fmt(u)}, θ = {theta:.6g}",
+        raise Mismatch(f"got u = {fmt(u)}, θ = {theta:.6g}",
                        "near π take the axis from the symmetric part (R + Rᵀ)/2")
 
 
@@ -248,16 +237,16 @@ def _(axis_from_eigen):
     value = axis_from_eigen(R)
     if np.iscomplexobj(np.asarray(value)):
         raise Mismatch("returned a complex array", "return np.real(...) of the eigenvector")
-    u = _require_shape(value, (3,))
+    u = require_shape(value, (3,))
     if not close(np.linalg.norm(u), 1.0, 1e-12):
         raise Mismatch(f"|u| = {np.linalg.norm(u):.6g}", "normalise the eigenvector")
     if not close(R @ u, u, 1e-10):
-        raise Mismatch(f"R u ≠ u for u = {_fmt(u)}",
+        raise Mismatch(f"R u ≠ u for u = {fmt(u)}",
                        "eigenvectors are the columns vectors[:, k], for the eigenvalue closest to 1")
 
 
 @public_check("axis_from_eigen", "a half turn about z: u = ±e_z")
 def _(axis_from_eigen):
-    u = _require_shape(np.real(axis_from_eigen(HALF_TURN_Z)), (3,))
+    u = require_shape(np.real(axis_from_eigen(HALF_TURN_Z)), (3,))
     if not (close(u, [0.0, 0.0, 1.0], 1e-12) or close(u, [0.0, 0.0, -1.0], 1e-12)):
-        raise Mismatch(f"got {_fmt(u)}", "pick the eigenvalue closest to 1 (the others are -1 here)")
+        raise Mismatch(f"got {fmt(u)}", "pick the eigenvalue closest to 1 (the others are -1 here)")
