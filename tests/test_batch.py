@@ -132,3 +132,14 @@ def test_progress_draws_on_a_terminal_only():
         progress.finish()
     assert "2/4 students" in terminal.getvalue() and "/min" in terminal.getvalue() and "left" in terminal.getvalue()
     assert log.getvalue() == ""
+
+
+def test_nbgrader_submitted_layout(tmp_path):
+    """PATH may be an nbgrader course: submitted/<student>/<assignment>/<notebook>."""
+    lesson = load_catalog().graded_lessons[0]
+    for student, default in (("ana", "reference"), ("bo", STUB)):
+        folder = tmp_path / "course" / "submitted" / student / f"lesson{lesson.number}"
+        build_submission(folder, default=default, lessons=(lesson.number,))
+    summary = grade_class(tmp_path / "course", tmp_path / "out", jobs=2, options=FAST)
+    scores = {r.student_id: (r.score, r.max_score) for r in summary.results}
+    assert scores == {"ana": (lesson.points, lesson.points), "bo": (0.0, lesson.points)}
