@@ -2,8 +2,9 @@
 
 The parent imports everything once (numpy, scipy, pytest, the hidden suite,
 the reference solutions) and then forks a fresh grader per student
-(``maxtasksperchild=1``), so starting a student costs a fork, not a Python
-start-up, and no state survives from one student to the next.
+(:mod:`autograder.forking`), so starting a student costs a fork, not a Python
+start-up, and no state survives from one student to the next. A grader that
+dies is reported as "could not grade" with the reason; the batch goes on.
 
 Each student's result is written atomically to ``OUT/students/<id>.json``
 as soon as it is ready, with the content hash of the submission and a
@@ -14,7 +15,6 @@ so an interrupted run loses nothing already graded.
 
 import hashlib
 import json
-import multiprocessing
 import os
 import signal
 import time
@@ -24,6 +24,7 @@ from pathlib import Path
 
 from . import feedback, submissions
 from .catalog import load_catalog
+from .forking import fork_each
 from .gradebook import gradebook_csv
 from .gradescope import results_json
 from .grading import GradingOptions, grade_student
@@ -120,7 +121,7 @@ def save_result(outputs, result, fingerprint, graded_at):
 
 
 def _grade_task(task):
-    """Runs in a forked worker: grade one student, save, return a summary row."""
+    """Runs in a forked child: grade one student and save the result."""
     student_id, folder, options, out_root, fingerprint = task
     process_tree.become_subreaper()
     outputs = Outputs(Path(out_root))
@@ -141,7 +142,16 @@ def _grade_task(task):
         signal.alarm(0)
         process_tree.kill_descendants()
     save_result(outputs, result, fingerprint, time.strftime("%Y-%m-%d %H:%M:%S"))
-    return result.student_id, result.score, result.max_score, result.status, result.seconds
+
+
+def _record_death(task, problem):
+    """The child grading a student died: save a 'could not grade' result that says why."""
+    student_id, folder, _, out_root, fingerprint = task
+    result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
+                           reason=f"{problem}; nothing else was affected, run grade again to retry",
+                           submission_hash=submissions.submission_hash(folder))
+    save_result(Outputs(Path(out_root)), result, fingerprint, time.strftime("%Y-%m-%d %H:%M:%S"))
+    return result
 
 
 @dataclass
@@ -178,20 +188,27 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     tasks = []
     for student_id, folder in students:
         saved = None if force else load_saved(outputs, student_id)
-        if saved and saved[0] == fingerprint and saved[1] == submissions.submission_hash(folder):
+        if saved and saved[0] == fingerprint and saved[1] == submissions.submission_hash(folder) \
+                and saved[2].status != COULD_NOT_GRADE:
             summary.skipped.append(student_id)
             continue
         tasks.append((student_id, str(folder), options, str(outputs.root), fingerprint))
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:
         progress.start(len(tasks))
-    if tasks:
-        context = multiprocessing.get_context("fork")
-        with context.Pool(processes=min(jobs, len(tasks)), maxtasksperchild=1) as pool:
-            for row in pool.imap_unordered(_grade_task, tasks):
-                summary.graded.append(row)
-                if progress:
-                    progress.advance(row)
+
+    def on_done(task, problem):
+        saved = None if problem else load_saved(outputs, task[0])
+        if saved is None:
+            result = _record_death(task, problem or "the grading process ended without saving a result")
+        else:
+            result = saved[2]
+        row = (result.student_id, result.score, result.max_score, result.status, result.seconds)
+        summary.graded.append(row)
+        if progress:
+            progress.advance(row)
+
+    fork_each(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
     if progress:
         progress.finish()
     submitted = [sid for sid, _ in students]

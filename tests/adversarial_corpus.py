@@ -106,7 +106,7 @@ def cases(context):
              "        with open(target, 'w') as handle:\n"
              "            handle.write('owned')\n"
              "    except OSError:\n"
-             "        pass\n" + RIGHT_ROT_Z),
+             "        pass\n" + RIGHT_ROT_Z, needs_namespaces=True),
         Case("detached_process", "leaves a detached process that rewrites the gradebook later", "full",
              "import os, time\n"
              "if os.fork() == 0:\n"
@@ -121,7 +121,7 @@ def cases(context):
              "                open(target, 'w').write('owned by a zombie')\n"
              "            except OSError:\n"
              "                pass\n"
-             "    os._exit(0)\n" + RIGHT_ROT_Z),
+             "    os._exit(0)\n" + RIGHT_ROT_Z, needs_namespaces=True),
         Case("network_to_loopback", "sends data to a server on the grader's loopback", "full",
              "import socket\n"
              "try:\n"

@@ -131,16 +131,21 @@ def test_the_corpus_is_large_enough():
     assert len(CASE_NAMES) >= 20
 
 
-def test_the_batch_finished_and_nothing_outside_changed(corpus):
+def test_the_batch_finished(corpus):
     run = corpus["run"]
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
     expected = {c.student_id or c.name for c in corpus["cases"].values()}
     expected |= {f"{c.name}__twin" for c in corpus["cases"].values() if c.twin}
     assert set(corpus["results"]) == expected
-    assert corpus["canary"].read_text(encoding="utf-8") == "untouched"
     with open(corpus["out"] / "grades.csv", newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
     assert len(rows) == len(expected)
+
+
+@pytest.mark.skipif(not NAMESPACES, reason="without namespaces student code can reach the grader's files")
+def test_nothing_outside_the_sandbox_changed(corpus):
+    assert corpus["canary"].read_text(encoding="utf-8") == "untouched"
+    assert "owned" not in (corpus["out"] / "grades.csv").read_text(encoding="utf-8")
     assert not _sleepers(), "a detached student process outlived the grading run"
 
 

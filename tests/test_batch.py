@@ -143,3 +143,24 @@ def test_nbgrader_submitted_layout(tmp_path):
     summary = grade_class(tmp_path / "course", tmp_path / "out", jobs=2, options=FAST)
     scores = {r.student_id: (r.score, r.max_score) for r in summary.results}
     assert scores == {"ana": (lesson.points, lesson.points), "bo": (0.0, lesson.points)}
+
+
+def test_a_grader_killed_by_student_code_is_reported_and_the_batch_finishes(tmp_path):
+    """Without namespaces (forced here), student code may kill the process grading it: the batch goes on."""
+    lesson = load_catalog().lesson("01")
+    killer = "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)\n"
+    build_submission(tmp_path / "class" / "killer", {"rot_z": killer + "def rot_z(a):\n    return None\n"},
+                     lessons=("01",))
+    build_submission(tmp_path / "class" / "honest", lessons=("01",))
+    env = dict(os.environ, AUTOGRADER_SANDBOX="limits")
+    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(tmp_path / "class"), "--out",
+                          str(tmp_path / "out"), "--no-nbval", "--lessons", "01"],
+                         cwd=PROJECT_ROOT, env=env, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "RESOURCE LIMITS ONLY" in run.stdout
+    rows = _rows(tmp_path / "out" / "grades.csv")
+    assert float(rows["honest"]["score"]) == lesson.points
+    if rows["killer"]["status"] == "could not grade":  # running as root: the kill reached the grader
+        assert "killed by SIGKILL" in rows["killer"]["problems"]
+    else:  # an ordinary user: the kill was refused or hit only the sandbox
+        assert float(rows["killer"]["score"]) < lesson.points

@@ -1,5 +1,6 @@
 """Student code runs in its own locked-down process; faults cost only that call."""
 
+import shutil
 import time
 
 import pytest
@@ -98,3 +99,10 @@ def test_no_network():
 def test_runs_as_an_unprivileged_user():
     with _box("import os\ndef who():\n    return os.getuid()") as box:
         assert _call(box, "who") != 0
+
+
+@pytest.mark.skipif(shutil.which("bwrap") is None, reason="bubblewrap is not installed")
+def test_bubblewrap_is_used_when_installed():
+    """A silent fall-back to limits only would weaken every other guarantee: it must not happen here."""
+    mode, detail = launcher.isolation()
+    assert mode == "namespaces", detail

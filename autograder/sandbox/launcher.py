@@ -173,12 +173,14 @@ def bwrap_command(program, sandbox_dir, scratch_dir, limits):
         args = ["bwrap", "--unshare-all"]
     args += ["--die-with-parent", "--new-session"]
     args += _system_binds()
+    # The writable /tmp goes first: Python may be installed under /tmp (a checkout
+    # there, say), and a later mount on /tmp would hide it.
+    args += ["--bind", str(scratch_dir), "/tmp"]
     roots = _python_roots()
     args += _parent_dirs(roots)
     for root in roots:
         args += ["--ro-bind", root, root]
     args += ["--ro-bind", str(sandbox_dir), "/sandbox",
-             "--bind", str(scratch_dir), "/tmp",
              "--proc", "/proc", "--dev", "/dev",
              "--chdir", "/tmp", "--clearenv"]
     for key, value in sandbox_environment(limits).items():
@@ -193,6 +195,8 @@ _PROBE_PROGRAM = "import sys; sys.path.insert(0, sys.argv[1]); import jail; jail
 def isolation():
     """``("namespaces", detail)`` if bubblewrap works here, else ``("limits", why)``."""
     child_dir = str(Path(__file__).resolve().parent / "child")
+    if os.environ.get("AUTOGRADER_SANDBOX") == "limits":
+        return "limits", "AUTOGRADER_SANDBOX=limits asks for it"
     if shutil.which("bwrap") is None:
         return "limits", "bubblewrap (bwrap) is not installed"
     probe_dir = Path(tempfile.mkdtemp(prefix="autograder-probe-"))
