@@ -56,6 +56,7 @@ def pass_rate_chart(names, shares):
     colors = ["tab:green" if s >= 0.8 else "tab:orange" if s >= 0.5 else "tab:red" for s in shares]
     ax.barh(positions, [100 * s for s in shares], color=colors)
     ax.set_yticks(positions, names, fontsize=8)
+    ax.set_ylim(-0.6, len(names) - 0.4)
     ax.set_xlim(0, 100)
     ax.set_xlabel("students with full marks [%]")
     ax.set_title("Which exercises the class got right")
