@@ -6,29 +6,35 @@ the reference solutions) and then forks a fresh grader per student
 start-up, and no state survives from one student to the next. A grader that
 dies is reported as "could not grade" with the reason; the batch goes on.
 
+Before any student, the canary (:mod:`autograder.canary`) grades the
+reference solutions through the same pipeline; if they do not get full marks
+the batch stops and nothing is written.
+
 Each student's result is written atomically to ``OUT/students/<id>.json``
-as soon as it is ready, with the content hash of the submission and a
-fingerprint of the grader (masters, hidden suite, options). A re-run skips
-students whose submission and grader did not change (``force`` re-grades),
-so an interrupted run loses nothing already graded.
+as soon as it is ready, with the content hash of the submission and the
+grader's fingerprint (:mod:`autograder.fingerprint`: its code, the masters,
+the hidden suite, coursekit, the options, the isolation mode, the library
+versions). A re-run skips students whose submission and fingerprint did not
+change (``force`` re-grades) and records why it re-graded the others, so an
+interrupted run loses nothing already graded.
 """
 
-import hashlib
 import json
 import os
 import signal
 import time
 import traceback
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from . import feedback, submissions
+from .canary import ensure_reference_passes
 from .catalog import load_catalog
+from .fingerprint import fingerprint, fingerprint_parts, what_changed
 from .forking import fork_each
 from .gradebook import gradebook_csv
 from .gradescope import results_json
 from .grading import GradingOptions, grade_student
-from .paths import HIDDEN_SUITE, SOLUTIONS
 from .reference import load_reference
 from .results import COULD_NOT_GRADE, MISSING, StudentResult
 from .sandbox import launcher, process_tree
@@ -53,17 +59,6 @@ def safe_name(student_id):
             out.append("".join(f"%{b:02X}" for b in char.encode("utf-8")))
     name = "".join(out)
     return name if name not in ("", ".", "..") else f"%{name}"
-
-
-def grader_fingerprint(options, solutions_dir=SOLUTIONS):
-    """A hash of everything that decides a grade besides the submission."""
-    digest = hashlib.sha256()
-    files = sorted(Path(solutions_dir).glob("[0-9][0-9]_*.ipynb")) + sorted(HIDDEN_SUITE.glob("*.py"))
-    files += sorted((Path(solutions_dir) / "coursekit").rglob("*.py"))
-    for path in files:
-        digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
-    digest.update(repr((options.nbval, options.notebook_points, options.limits, options.lessons)).encode())
-    return digest.hexdigest()[:16]
 
 
 def write_atomically(path, text):
@@ -101,19 +96,51 @@ class Outputs:
         return self.root / "report.html"
 
 
+@dataclass(frozen=True)
+class Stamp:
+    """What a saved result says about how it was graded: the grader's fingerprint and why it was graded."""
+
+    fingerprint: str
+    parts: dict
+    because: str = ""
+
+
+@dataclass
+class Saved:
+    stamp: Stamp
+    result: StudentResult
+
+
 def load_saved(outputs, student_id):
-    """(fingerprint, submission hash, StudentResult) saved for a student, or None."""
+    """The :class:`Saved` result of a student, or None."""
     path = outputs.student_json(student_id)
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
-        return data["fingerprint"], data["result"]["submission_hash"], StudentResult.from_json(
-            json.dumps(data["result"]))
+        stamp = Stamp(data["fingerprint"], data.get("fingerprint_parts") or {}, data.get("graded_because", ""))
+        return Saved(stamp, StudentResult.from_json(json.dumps(data["result"])))
     except (OSError, ValueError, KeyError, TypeError):
         return None
 
 
-def save_result(outputs, result, fingerprint, graded_at):
-    payload = {"fingerprint": fingerprint, "graded_at": graded_at, "result": json.loads(result.to_json())}
+def regrade_reason(saved, stamp, submission_hash, force=False):
+    """Why a student must be graded now, or ``None`` when the saved result can be reused."""
+    if force:
+        return "re-graded on request (--force)"
+    if saved is None:
+        return "first grading"
+    if saved.result.status == COULD_NOT_GRADE:
+        return "the last attempt could not grade"
+    if saved.result.submission_hash != submission_hash:
+        return "the submission changed"
+    if saved.stamp.fingerprint != stamp.fingerprint:
+        changed = what_changed(saved.stamp.parts, stamp.parts) if saved.stamp.parts else []
+        return "changed since the last grading: " + (", ".join(changed) or "the grader (an older version)")
+    return None
+
+
+def save_result(outputs, result, stamp, graded_at):
+    payload = {"fingerprint": stamp.fingerprint, "fingerprint_parts": stamp.parts,
+               "graded_because": stamp.because, "graded_at": graded_at, "result": json.loads(result.to_json())}
     write_atomically(outputs.feedback_html(result.student_id), feedback.feedback_html(result))
     write_atomically(outputs.gradescope_json(result.student_id),
                      json.dumps(results_json(result, seconds=result.seconds), indent=1, ensure_ascii=False))
@@ -122,7 +149,7 @@ def save_result(outputs, result, fingerprint, graded_at):
 
 def _grade_task(task):
     """Runs in a forked child: grade one student and save the result."""
-    student_id, folder, options, out_root, fingerprint = task
+    student_id, folder, options, out_root, stamp = task
     process_tree.become_subreaper()
     outputs = Outputs(Path(out_root))
 
@@ -141,16 +168,16 @@ def _grade_task(task):
     finally:
         signal.alarm(0)
         process_tree.kill_descendants()
-    save_result(outputs, result, fingerprint, time.strftime("%Y-%m-%d %H:%M:%S"))
+    save_result(outputs, result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
 
 
 def _record_death(task, problem):
     """The child grading a student died: save a 'could not grade' result that says why."""
-    student_id, folder, _, out_root, fingerprint = task
+    student_id, folder, _, out_root, stamp = task
     result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                            reason=f"{problem}; nothing else was affected, run grade again to retry",
                            submission_hash=submissions.submission_hash(folder))
-    save_result(Outputs(Path(out_root)), result, fingerprint, time.strftime("%Y-%m-%d %H:%M:%S"))
+    save_result(Outputs(Path(out_root)), result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
     return result
 
 
@@ -159,6 +186,8 @@ class RunSummary:
     graded: list = field(default_factory=list)  # (student_id, score, max, status, seconds)
     skipped: list = field(default_factory=list)  # student ids whose saved result was reused
     results: list = field(default_factory=list)  # StudentResult of everyone in the gradebook
+    reasons: dict = field(default_factory=dict)  # student id -> why it was (re-)graded
+    canary: object = None  # CanaryResult
     seconds: float = 0.0
 
 
@@ -175,24 +204,31 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
+
+    Raises
+    ------
+    CanaryFailed
+        The reference solutions did not get full marks on this machine; nothing was written.
     """
     started = time.monotonic()
     outputs = Outputs(Path(out_dir))
+    _prewarm()
+    parts = fingerprint_parts(options)
+    summary = RunSummary()
+    summary.canary = ensure_reference_passes(options, parts)
     outputs.root.mkdir(parents=True, exist_ok=True)
     for stale in outputs.root.glob("*/.*.tmp"):  # left by a run that was killed mid-write
         stale.unlink(missing_ok=True)
-    _prewarm()
-    fingerprint = grader_fingerprint(options)
+    stamp = Stamp(fingerprint(parts), parts)
     students = submissions.student_folders(path)
-    summary = RunSummary()
     tasks = []
     for student_id, folder in students:
-        saved = None if force else load_saved(outputs, student_id)
-        if saved and saved[0] == fingerprint and saved[1] == submissions.submission_hash(folder) \
-                and saved[2].status != COULD_NOT_GRADE:
+        because = regrade_reason(load_saved(outputs, student_id), stamp, submissions.submission_hash(folder), force)
+        if because is None:
             summary.skipped.append(student_id)
             continue
-        tasks.append((student_id, str(folder), options, str(outputs.root), fingerprint))
+        summary.reasons[student_id] = because
+        tasks.append((student_id, str(folder), options, str(outputs.root), replace(stamp, because=because)))
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:
         progress.start(len(tasks))
@@ -202,7 +238,7 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
         if saved is None:
             result = _record_death(task, problem or "the grading process ended without saving a result")
         else:
-            result = saved[2]
+            result = saved.result
         row = (result.student_id, result.score, result.max_score, result.status, result.seconds)
         summary.graded.append(row)
         if progress:

@@ -9,8 +9,13 @@ record [--only NN ...]
 grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE]
       [--nbgrader-db PATH] [--force]
     Grade every student folder in PATH (or the bundled sample class).
+    Exit status 3 when the canary fails (nothing is written).
 status --out DIR [--roster FILE]
-    Who is graded, who could not be graded and why, who is missing.
+    Who is graded, who could not be graded and why, who is missing; why a
+    student was re-graded; a warning when student code ran with limits only.
+canary [--lessons NN ...] [--no-nbval]
+    Grade the reference solutions through the whole pipeline; exit 3 unless
+    they get full marks. ``grade`` runs it first (cached per grader fingerprint).
 gradescope --out autograder.zip [--lessons NN ...] [--visibility V]
     Build a Gradescope autograder bundle (setup.sh, run_autograder, the grader).
 preview NOTEBOOK [--figures DIR]
@@ -19,7 +24,9 @@ preview NOTEBOOK [--figures DIR]
 """
 
 import argparse
+import json
 import sys
+from collections import Counter
 from pathlib import Path
 
 
@@ -72,8 +79,34 @@ def _read_roster(path):
     return tuple(line.strip() for line in lines if line.strip() and not line.startswith("#"))
 
 
+def _canary_line(canary):
+    if canary.cached:
+        return "canary: the reference solutions got full marks with this grader before (cached)"
+    return (f"canary: the reference solutions got full marks ({canary.score:g}/{canary.max_score:g}) "
+            f"in {canary.seconds:.1f} s")
+
+
+def _cmd_canary(args):
+    from .batch import _prewarm
+    from .canary import CanaryFailed, ensure_reference_passes
+    from .fingerprint import fingerprint_parts
+    from .grading import GradingOptions
+    from .sandbox import launcher
+
+    print(launcher.describe_isolation())
+    options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
+    _prewarm()
+    try:
+        print(_canary_line(ensure_reference_passes(options, fingerprint_parts(options))))
+    except CanaryFailed as error:
+        print(f"error: canary failed: {error}", file=sys.stderr)
+        return 3
+    return 0
+
+
 def _cmd_grade(args):
     from .batch import grade_class
+    from .canary import CanaryFailed
     from .grading import GradingOptions
     from .progress import Progress
     from .sandbox import launcher
@@ -92,13 +125,21 @@ def _cmd_grade(args):
         return 2
     print(launcher.describe_isolation())
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
-    summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
-                          progress=Progress(sys.stderr), roster=_read_roster(args.roster))
+    try:
+        summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
+                              progress=Progress(sys.stderr), roster=_read_roster(args.roster))
+    except CanaryFailed as error:
+        print(f"error: canary failed: {error}", file=sys.stderr)
+        return 3
+    print(_canary_line(summary.canary))
     print()
     _print_table(summary.results)
     print()
     reused = f", {len(summary.skipped)} unchanged and reused" if summary.skipped else ""
     print(f"graded {len(summary.graded)} student(s){reused} in {summary.seconds:.1f} s")
+    for because, count in Counter(summary.reasons.values()).most_common():
+        if because != "first grading":
+            print(f"  {count} re-graded: {because}")
     if args.nbgrader_db:
         from .nbgrader_export import export_to_gradebook
 
@@ -112,10 +153,8 @@ def _cmd_grade(args):
 
 
 def _cmd_status(args):
-    import json
-    from collections import Counter
-
-    from .batch import Outputs, collect_results
+    from .batch import Outputs, collect_results, load_saved
+    from .sandbox.launcher import LIMITS_ONLY_WARNING
 
     outputs = Outputs(Path(args.out))
     ids = []
@@ -129,7 +168,20 @@ def _cmd_status(args):
     if not results:
         print(f"no results in {outputs.root}")
         return 1
+    limited = [r.student_id for r in results if r.isolation == "limits"]
+    if limited:
+        print(f"WARNING: {len(limited)} of {len(results)} students were graded with resource limits only. "
+              f"{LIMITS_ONLY_WARNING}\n")
     _print_table(results)
+    because = {}
+    for student_id in ids:
+        saved = load_saved(outputs, student_id)
+        if saved and saved.stamp.because and saved.stamp.because != "first grading":
+            because[student_id] = saved.stamp.because
+    if because:
+        print("\nwhy the last grading of a student was a re-grade:")
+        for student_id, reason in sorted(because.items()):
+            print(f"  {student_id}: {reason}")
     counts = Counter(r.status for r in results)
     print()
     print(", ".join(f"{count} {status}" for status, count in sorted(counts.items())))
@@ -202,6 +254,11 @@ def build_parser():
                        help="also write the scores into this nbgrader gradebook (e.g. course/gradebook.db)")
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
     grade.set_defaults(run=_cmd_grade)
+
+    canary = commands.add_parser("canary", help="grade the reference solutions: does every stage work here?")
+    canary.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="only these lessons")
+    canary.add_argument("--no-nbval", action="store_true", help="skip the notebook stage")
+    canary.set_defaults(run=_cmd_canary)
 
     status = commands.add_parser("status", help="show the saved results of a grading run")
     status.add_argument("--out", required=True)

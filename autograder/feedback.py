@@ -9,6 +9,8 @@ sentence that describes each check. Everything that came from a student
 
 from html import escape
 
+from .sandbox.launcher import LIMITS_ONLY_WARNING
+
 STYLE = """
 body { font-family: system-ui, -apple-system, Segoe UI, Roboto, sans-serif; max-width: 60rem;
        margin: 2rem auto; padding: 0 1rem; color: #1d1d1f; line-height: 1.45; }
@@ -103,6 +105,7 @@ def feedback_html(result):
         items = "".join(f"<li>{_e(p)}</li>" for p in ([result.reason] if result.reason else []) + result.problems)
         problems = f"<h2>Worth a look</h2><ul>{items}</ul>"
     lessons = "\n".join(_lesson_html(lesson) for lesson in result.lessons)
+    isolation = f'<p class="note">{_e(LIMITS_ONLY_WARNING)}</p>' if result.isolation == "limits" else ""
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
@@ -111,6 +114,7 @@ def feedback_html(result):
 <h1>Feedback for {_e(result.student_id)}</h1>
 <p class="score">Score: <strong>{_points(result.score, result.max_score)}</strong>
 <span class="muted">— status: {_e(result.status)}</span></p>
+{isolation}
 <table><tr><th>lesson</th><th>title</th><th>points</th></tr>{rows}</table>
 {problems}
 {lessons}

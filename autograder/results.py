@@ -82,7 +82,7 @@ class StudentResult:
     lessons: list = field(default_factory=list)  # LessonResult
     problems: list = field(default_factory=list)
     seconds: float = 0.0
-    isolation: str = ""
+    isolation: str = ""  # "namespaces" or "limits": how the student's code was isolated (sandbox.launcher)
 
     @property
     def score(self):

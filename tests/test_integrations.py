@@ -17,6 +17,7 @@ from autograder.nbgrader_course import assignment_name, build_course, run_nbgrad
 from autograder.notebook_files import canonical_text, read_master
 from autograder.paths import COURSE, PROJECT_ROOT
 from autograder.reference import answer_sources
+from autograder.sandbox import launcher
 from support import STUB, build_submission
 
 LESSONS = load_catalog().graded_lessons
@@ -99,12 +100,18 @@ def gradescope_root(tmp_path_factory):
     return root
 
 
-def _run_gradescope(root, folder):
+NAMESPACES = launcher.isolation()[0] == "namespaces"
+
+
+def _run_gradescope(root, folder, sandbox=None):
     submission = root / "submission"
     if submission.exists():
         subprocess.run(["rm", "-rf", str(submission), str(root / "results")], check=True)
     subprocess.run(["cp", "-r", str(folder), str(submission)], check=True)
     env = dict(os.environ, AUTOGRADER_ROOT=str(root), AUTOGRADER_PYTHON=sys.executable)
+    env.pop("AUTOGRADER_SANDBOX", None)
+    if sandbox:
+        env["AUTOGRADER_SANDBOX"] = sandbox
     run = subprocess.run([str(root / "source" / "run_autograder")], env=env, capture_output=True, text=True,
                          timeout=600)
     assert run.returncode == 0, run.stderr[-2000:]
@@ -118,12 +125,21 @@ def _check_schema(data):
         assert test["visibility"] == "after_due_date" and test["status"] in ("passed", "failed")
 
 
-def test_gradescope_reference_full_marks(gradescope_root, tmp_path):
+@pytest.mark.parametrize("sandbox", [None, "limits"])
+def test_gradescope_reference_full_marks(gradescope_root, tmp_path, sandbox):
+    """Full marks, notebook point included, in either isolation mode (Gradescope's containers often
+    forbid namespaces); limits mode says so in the output students and staff see."""
     lesson = LESSONS[0]
-    data = _run_gradescope(gradescope_root, build_submission(tmp_path / "s", lessons=(lesson.number,)))
+    data = _run_gradescope(gradescope_root, build_submission(tmp_path / "s", lessons=(lesson.number,)), sandbox)
     _check_schema(data)
     assert data["score"] == sum(t["max_score"] for t in data["tests"]) == lesson.points + 1
     assert all(t["status"] == "passed" for t in data["tests"])
+    assert ("resource limits only" in data["output"]) == (sandbox == "limits" or not NAMESPACES)
+
+
+def test_gradescope_setup_runs_the_canary(gradescope_root):
+    setup = (gradescope_root / "source" / "setup.sh").read_text(encoding="utf-8")
+    assert setup.rstrip().endswith("-m autograder canary --lessons " + LESSONS[0].number)
 
 
 def test_gradescope_stubs_zero(gradescope_root, tmp_path):

