@@ -28,7 +28,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from . import feedback, submissions
-from .canary import ensure_reference_passes
+from .canary import describe_canary, ensure_reference_passes
 from .catalog import load_catalog
 from .fingerprint import fingerprint, fingerprint_parts, what_changed
 from .forking import fork_each
@@ -125,7 +125,7 @@ def load_saved(outputs, student_id):
 def regrade_reason(saved, stamp, submission_hash, force=False):
     """Why a student must be graded now, or ``None`` when the saved result can be reused."""
     if force:
-        return "re-graded on request (--force)"
+        return "re-graded on request (--force or --student)"
     if saved is None:
         return "first grading"
     if saved.result.status == COULD_NOT_GRADE:
@@ -187,6 +187,7 @@ class RunSummary:
     skipped: list = field(default_factory=list)  # student ids whose saved result was reused
     results: list = field(default_factory=list)  # StudentResult of everyone in the gradebook
     reasons: dict = field(default_factory=dict)  # student id -> why it was (re-)graded
+    kept: list = field(default_factory=list)  # graded earlier, not under this run's path: kept as saved
     canary: object = None  # CanaryResult
     seconds: float = 0.0
 
@@ -200,30 +201,63 @@ def _prewarm():
     launcher.limits_mode_can_drop_root()
 
 
-def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=()):
+class UnknownStudents(ValueError):
+    """``only`` named students who have no folder under the submissions path."""
+
+
+def saved_student_ids(outputs):
+    """Ids of every student with a saved result in ``outputs``."""
+    ids = []
+    for path in sorted((outputs.root / "students").glob("*.json")):
+        try:
+            ids.append(json.loads(path.read_text(encoding="utf-8"))["result"]["student_id"])
+        except (OSError, ValueError, KeyError, TypeError):
+            continue
+    return ids
+
+
+def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=(),
+                only=(), announce=None):
     """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
+    ``only``: grade just these students (always re-graded); everyone else keeps their saved result.
+    ``announce``: called with a line of text when a step worth telling starts or ends (the canary).
+    The gradebook never shrinks: students graded earlier into ``out_dir`` stay in it, with their
+    saved results, even when ``path`` no longer holds their folder (``RunSummary.kept`` names them).
 
     Raises
     ------
     CanaryFailed
         The reference solutions did not get full marks on this machine; nothing was written.
+    UnknownStudents
+        A student of ``only`` has no folder under ``path``; nothing was written.
     """
     started = time.monotonic()
     outputs = Outputs(Path(out_dir))
+    students = submissions.student_folders(path)
+    unknown = sorted(set(only) - {student_id for student_id, _ in students})
+    if unknown:
+        raise UnknownStudents(f"no submission folder under {path} for: {', '.join(unknown)}")
     _prewarm()
     parts = fingerprint_parts(options)
     summary = RunSummary()
+    if announce:
+        announce("canary: grading the reference solutions first (once per grader version)...")
     summary.canary = ensure_reference_passes(options, parts)
+    if announce:
+        announce(describe_canary(summary.canary))
     outputs.root.mkdir(parents=True, exist_ok=True)
     for stale in outputs.root.glob("*/.*.tmp"):  # left by a run that was killed mid-write
         stale.unlink(missing_ok=True)
     stamp = Stamp(fingerprint(parts), parts)
-    students = submissions.student_folders(path)
     tasks = []
     for student_id, folder in students:
-        because = regrade_reason(load_saved(outputs, student_id), stamp, submissions.submission_hash(folder), force)
+        if only and student_id not in only:
+            summary.skipped.append(student_id)
+            continue
+        because = regrade_reason(load_saved(outputs, student_id), stamp, submissions.submission_hash(folder),
+                                 force or bool(only))
         if because is None:
             summary.skipped.append(student_id)
             continue
@@ -247,8 +281,11 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     fork_each(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
     if progress:
         progress.finish()
-    submitted = [sid for sid, _ in students]
-    summary.results = write_reports(outputs, sorted(set(submitted) | set(roster)), set(submitted))
+    submitted = {sid for sid, _ in students}
+    earlier = set(saved_student_ids(outputs))
+    summary.kept = sorted(earlier - submitted)
+    everyone = submitted | earlier
+    summary.results = write_reports(outputs, sorted(everyone | set(roster)), everyone)
     summary.seconds = time.monotonic() - started
     return summary
 

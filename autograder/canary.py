@@ -40,6 +40,14 @@ class CanaryResult:
     max_score: float = 0.0
 
 
+def describe_canary(canary):
+    """One line for the run's output."""
+    if canary.cached:
+        return "canary: the reference solutions got full marks with this grader before (cached)"
+    return (f"canary: the reference solutions got full marks ({canary.score:g}/{canary.max_score:g}) "
+            f"in {canary.seconds:.1f} s")
+
+
 def cache_dir():
     """Where passing canaries are remembered: ``$AUTOGRADER_CACHE``, else the user's cache folder."""
     explicit = os.environ.get("AUTOGRADER_CACHE")

@@ -7,8 +7,9 @@ release [--check]
 record [--only NN ...]
     Re-record the demonstration outputs stored in the masters.
 grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE]
-      [--nbgrader-db PATH] [--force]
-    Grade every student folder in PATH (or the bundled sample class).
+      [--nbgrader-db PATH] [--force] [--student ID ...]
+    Grade every student folder in PATH (or the bundled sample class); with
+    --student, re-grade only those. The gradebook never loses a student.
     Exit status 3 when the canary fails (nothing is written).
 status --out DIR [--roster FILE]
     Who is graded, who could not be graded and why, who is missing; why a
@@ -24,7 +25,6 @@ preview NOTEBOOK [--figures DIR]
 """
 
 import argparse
-import json
 import sys
 from collections import Counter
 from pathlib import Path
@@ -63,13 +63,19 @@ def _cmd_record(args):
     return 0
 
 
-def _print_table(results):
+def _print_table(results, problems_shown=3):
+    """The gradebook as a table; under a student graded with problems, the problems themselves."""
     width = max([len("student")] + [len(r.student_id) for r in results])
     print(f"{'student':<{width}}  {'score':>13}  status")
     for r in results:
         score = f"{r.score:g} / {r.max_score:g}" if r.max_score else "—"
         status = r.status + (f": {r.reason}" if r.reason else "")
         print(f"{r.student_id:<{width}}  {score:>13}  {status}")
+        for problem in r.problems[:problems_shown]:
+            print(f"{'':<{width}}  {'':>13}    - {problem[:160]}")
+        if len(r.problems) > problems_shown:
+            print(f"{'':<{width}}  {'':>13}    - and {len(r.problems) - problems_shown} more "
+                  "(see the student's feedback page)")
 
 
 def _read_roster(path):
@@ -79,16 +85,9 @@ def _read_roster(path):
     return tuple(line.strip() for line in lines if line.strip() and not line.startswith("#"))
 
 
-def _canary_line(canary):
-    if canary.cached:
-        return "canary: the reference solutions got full marks with this grader before (cached)"
-    return (f"canary: the reference solutions got full marks ({canary.score:g}/{canary.max_score:g}) "
-            f"in {canary.seconds:.1f} s")
-
-
 def _cmd_canary(args):
     from .batch import _prewarm
-    from .canary import CanaryFailed, ensure_reference_passes
+    from .canary import CanaryFailed, describe_canary, ensure_reference_passes
     from .fingerprint import fingerprint_parts
     from .grading import GradingOptions
     from .sandbox import launcher
@@ -97,7 +96,7 @@ def _cmd_canary(args):
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     _prewarm()
     try:
-        print(_canary_line(ensure_reference_passes(options, fingerprint_parts(options))))
+        print(describe_canary(ensure_reference_passes(options, fingerprint_parts(options))))
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
         return 3
@@ -105,7 +104,7 @@ def _cmd_canary(args):
 
 
 def _cmd_grade(args):
-    from .batch import grade_class
+    from .batch import UnknownStudents, grade_class
     from .canary import CanaryFailed
     from .grading import GradingOptions
     from .progress import Progress
@@ -127,11 +126,14 @@ def _cmd_grade(args):
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     try:
         summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
-                              progress=Progress(sys.stderr), roster=_read_roster(args.roster))
+                              progress=Progress(sys.stderr), roster=_read_roster(args.roster),
+                              only=tuple(args.student), announce=lambda line: print(line, flush=True))
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
         return 3
-    print(_canary_line(summary.canary))
+    except UnknownStudents as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
     print()
     _print_table(summary.results)
     print()
@@ -140,6 +142,9 @@ def _cmd_grade(args):
     for because, count in Counter(summary.reasons.values()).most_common():
         if because != "first grading":
             print(f"  {count} re-graded: {because}")
+    if summary.kept:
+        print(f"  {len(summary.kept)} graded earlier and not under {path}, kept as they were: "
+              + ", ".join(summary.kept[:10]) + (" ..." if len(summary.kept) > 10 else ""))
     if args.nbgrader_db:
         from .nbgrader_export import export_to_gradebook
 
@@ -153,16 +158,11 @@ def _cmd_grade(args):
 
 
 def _cmd_status(args):
-    from .batch import Outputs, collect_results, load_saved
+    from .batch import Outputs, collect_results, load_saved, saved_student_ids
     from .sandbox.launcher import LIMITS_ONLY_WARNING
 
     outputs = Outputs(Path(args.out))
-    ids = []
-    for path in sorted((outputs.root / "students").glob("*.json")):
-        try:
-            ids.append(json.loads(path.read_text(encoding="utf-8"))["result"]["student_id"])
-        except (OSError, ValueError, KeyError):
-            continue
+    ids = saved_student_ids(outputs)
     roster = _read_roster(args.roster)
     results, _ = collect_results(outputs, sorted(set(ids) | set(roster)), submitted=set(ids))
     if not results:
@@ -253,6 +253,8 @@ def build_parser():
     grade.add_argument("--nbgrader-db", metavar="PATH",
                        help="also write the scores into this nbgrader gradebook (e.g. course/gradebook.db)")
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
+    grade.add_argument("--student", nargs="+", default=(), metavar="ID",
+                       help="re-grade only these students; everyone else keeps their saved grade")
     grade.set_defaults(run=_cmd_grade)
 
     canary = commands.add_parser("canary", help="grade the reference solutions: does every stage work here?")

@@ -65,14 +65,18 @@ def _note_failed_prerequisites(shell, program):
 
 
 def _read_lessons(folder, catalog, only=()):
-    """For each graded lesson: (LessonResult shell, notebook path, program or None)."""
-    notebooks = submissions.notebooks_in(folder)
+    """For each graded lesson: (LessonResult shell, notebook path, program or None); and notes on the files
+    (which of several notebooks was graded, notebooks that belong to no lesson)."""
+    files = submissions.match_lessons(folder, catalog)
+    notes = [files.notes[number] for number in sorted(files.notes) if not only or number in only]
+    notes += [f"{path.relative_to(folder)} was not graded: it holds no exercise of the course "
+              "(no answer cell and no exercise function)" for path in files.unmatched]
     found = []
     for lesson in catalog.graded_lessons:
         if only and lesson.number not in only:
             continue
         shell = LessonResult(number=lesson.number, title=lesson.title, notebook=lesson.filename, status="graded")
-        path = submissions.find_notebook(folder, lesson, notebooks)
+        path = files.chosen.get(lesson.number)
         if path is None:
             shell.status, shell.reason = "missing", f"no notebook {lesson.filename} in the submission"
             found.append((shell, None, None))
@@ -85,7 +89,7 @@ def _read_lessons(folder, catalog, only=()):
             found.append((shell, path, None))
             continue
         found.append((shell, path, extract.lesson_program(nb, lesson)))
-    return found
+    return found, notes
 
 
 def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=None):
@@ -96,7 +100,8 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
     result = StudentResult(student_id=student_id, status=GRADED,
                            submission_hash=submissions.submission_hash(folder),
                            isolation=launcher.isolation()[0])
-    lessons = _read_lessons(folder, catalog, options.lessons)
+    lessons, file_notes = _read_lessons(folder, catalog, options.lessons)
+    result.problems.extend(file_notes)
     programs = {shell.number: program for shell, _, program in lessons if program is not None}
     unavailable = {shell.number: f"{shell.notebook}: {shell.reason}" for shell, _, program in lessons
                    if program is None}

@@ -1,7 +1,8 @@
 """A progress line for long grading runs: count, rate, time left.
 
-It draws only on a terminal (``stream.isatty()``) and stays quiet otherwise,
-so logs and CI output are not filled with carriage returns.
+It draws as soon as the run starts (0 of N, time left estimated once the
+first student is done), only on a terminal (``stream.isatty()``), and stays
+quiet otherwise, so logs and CI output are not filled with carriage returns.
 """
 
 import time
@@ -10,16 +11,22 @@ import time
 class Progress:
     """``start(total)``, then ``advance(row)`` per finished student, then ``finish()``."""
 
-    def __init__(self, stream, min_seconds=2.0):
+    def __init__(self, stream):
         self.stream = stream
         self.enabled = hasattr(stream, "isatty") and stream.isatty()
-        self.min_seconds = min_seconds
         self.total = self.done = 0
         self.started = time.monotonic()
         self.drawn = False
 
     def start(self, total):
         self.total, self.done, self.started = total, 0, time.monotonic()
+        self._draw()
+
+    def _draw(self):
+        if self.enabled and self.total:
+            self.stream.write(self.line())
+            self.stream.flush()
+            self.drawn = True
 
     def line(self):
         elapsed = time.monotonic() - self.started
@@ -28,15 +35,12 @@ class Progress:
         width = 24
         filled = int(width * self.done / self.total) if self.total else width
         bar = "█" * filled + "·" * (width - filled)
-        eta = f"{left:4.0f} s left" if left == left else "  … s left"
+        eta = f"{left:4.0f} s left" if left == left else "time left: estimated after the first student"
         return f"\r{bar} {self.done}/{self.total} students  {rate * 60:5.1f}/min  {eta}"
 
     def advance(self, row=None):
         self.done += 1
-        if self.enabled and time.monotonic() - self.started >= self.min_seconds:
-            self.stream.write(self.line())
-            self.stream.flush()
-            self.drawn = True
+        self._draw()
 
     def finish(self):
         if self.enabled and self.drawn:

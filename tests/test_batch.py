@@ -118,15 +118,17 @@ def test_class_report_contents():
     assert "dee" in html and "no submission folder" in html
 
 
-def test_progress_draws_on_a_terminal_only():
+def test_progress_draws_at_once_and_on_a_terminal_only():
     class Terminal(io.StringIO):
         def isatty(self):
             return True
 
     terminal, log = Terminal(), io.StringIO()
     for stream in (terminal, log):
-        progress = Progress(stream, min_seconds=0.0)
+        progress = Progress(stream)
         progress.start(4)
+        if stream is terminal:
+            assert "0/4 students" in terminal.getvalue() and "estimated after the first student" in terminal.getvalue()
         progress.advance()
         progress.advance()
         progress.finish()
