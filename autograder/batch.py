@@ -19,6 +19,7 @@ change (``force`` re-grades) and records why it re-graded the others, so an
 interrupted run loses nothing already graded.
 """
 
+import hashlib
 import json
 import os
 import signal
@@ -35,6 +36,7 @@ from .forking import fork_each
 from .gradebook import gradebook_csv
 from .gradescope import results_json
 from .grading import GradingOptions, grade_student
+from .lateness import apply_late_policy
 from .reference import load_reference
 from .results import COULD_NOT_GRADE, MISSING, StudentResult
 from .sandbox import launcher, process_tree
@@ -149,7 +151,7 @@ def save_result(outputs, result, stamp, graded_at):
 
 def _grade_task(task):
     """Runs in a forked child: grade one student and save the result."""
-    student_id, folder, options, out_root, stamp = task
+    student_id, folder, options, out_root, stamp, config = task
     process_tree.become_subreaper()
     outputs = Outputs(Path(out_root))
 
@@ -159,7 +161,7 @@ def _grade_task(task):
     signal.signal(signal.SIGALRM, on_alarm)
     signal.alarm(STUDENT_TIMEOUT)
     try:
-        result = grade_student(student_id, Path(folder), options)
+        result = apply_late_policy(grade_student(student_id, Path(folder), options), folder, config)
     except Exception as error:  # our fault, not the student's: report, keep the batch going
         result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                                reason=f"{type(error).__name__}: {error}",
@@ -173,7 +175,7 @@ def _grade_task(task):
 
 def _record_death(task, problem):
     """The child grading a student died: save a 'could not grade' result that says why."""
-    student_id, folder, _, out_root, stamp = task
+    student_id, folder, _, out_root, stamp, _ = task
     result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                            reason=f"{problem}; nothing else was affected, run grade again to retry",
                            submission_hash=submissions.submission_hash(folder))
@@ -217,12 +219,13 @@ def saved_student_ids(outputs):
 
 
 def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=(),
-                only=(), announce=None):
+                only=(), announce=None, config=None):
     """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
     ``only``: grade just these students (always re-graded); everyone else keeps their saved result.
     ``announce``: called with a line of text when a step worth telling starts or ends (the canary).
+    ``config``: a :class:`~autograder.lateness.CourseConfig` with due dates and the late policy.
     The gradebook never shrinks: students graded earlier into ``out_dir`` stay in it, with their
     saved results, even when ``path`` no longer holds their folder (``RunSummary.kept`` names them).
 
@@ -250,6 +253,8 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     outputs.root.mkdir(parents=True, exist_ok=True)
     for stale in outputs.root.glob("*/.*.tmp"):  # left by a run that was killed mid-write
         stale.unlink(missing_ok=True)
+    if config is not None:
+        parts["course config"] = hashlib.sha256(config.source.encode()).hexdigest()[:16]
     stamp = Stamp(fingerprint(parts), parts)
     tasks = []
     for student_id, folder in students:
@@ -262,7 +267,7 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
             summary.skipped.append(student_id)
             continue
         summary.reasons[student_id] = because
-        tasks.append((student_id, str(folder), options, str(outputs.root), replace(stamp, because=because)))
+        tasks.append((student_id, str(folder), options, str(outputs.root), replace(stamp, because=because), config))
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:
         progress.start(len(tasks))
@@ -292,13 +297,13 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
 
 def collect_results(outputs, student_ids, submitted=None):
     """Saved results for ``student_ids``; a student without one is missing or not finished."""
-    results, timestamps = [], {}
+    results, graded_at = [], {}
     for student_id in student_ids:
         path = outputs.student_json(student_id)
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
             results.append(StudentResult.from_json(json.dumps(data["result"])))
-            timestamps[student_id] = data.get("graded_at", "")
+            graded_at[student_id] = data.get("graded_at", "")
         except (OSError, ValueError, KeyError, TypeError):
             if submitted is not None and student_id not in submitted:
                 results.append(StudentResult(student_id=student_id, status=MISSING,
@@ -307,15 +312,15 @@ def collect_results(outputs, student_ids, submitted=None):
                 results.append(StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                                              reason="no saved result: the run was interrupted before "
                                                     "this student was graded; run grade again"))
-    return results, timestamps
+    return results, graded_at
 
 
 def write_reports(outputs, student_ids, submitted=None):
     """Write grades.csv and report.html for ``student_ids``; return their results."""
     from .report import class_report_html
 
-    results, timestamps = collect_results(outputs, student_ids, submitted)
+    results, graded_at = collect_results(outputs, student_ids, submitted)
     catalog = load_catalog()
-    write_atomically(outputs.gradebook, gradebook_csv(results, catalog, timestamps))
+    write_atomically(outputs.gradebook, gradebook_csv(results, catalog, graded_at))
     write_atomically(outputs.report, class_report_html(results, catalog))
     return results

@@ -7,13 +7,15 @@ release [--check]
 record [--only NN ...]
     Re-record the demonstration outputs stored in the masters.
 grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE]
-      [--nbgrader-db PATH] [--force] [--student ID ...]
+      [--nbgrader-db PATH] [--force] [--student ID ...] [--config course.toml]
     Grade every student folder in PATH (or the bundled sample class); with
     --student, re-grade only those. The gradebook never loses a student.
     Exit status 3 when the canary fails (nothing is written).
 status --out DIR [--roster FILE]
     Who is graded, who could not be graded and why, who is missing; why a
     student was re-graded; a warning when student code ran with limits only.
+export --out DIR --to canvas [--roster roster.csv] [--file PATH]
+    Write the saved grades as an LMS import file (Canvas; see autograder/exports/).
 canary [--lessons NN ...] [--no-nbval]
     Grade the reference solutions through the whole pipeline; exit 3 unless
     they get full marks. ``grade`` runs it first (cached per grader fingerprint).
@@ -28,6 +30,8 @@ import argparse
 import sys
 from collections import Counter
 from pathlib import Path
+
+from .exports import EXPORTERS
 
 
 def _cmd_release(args):
@@ -79,10 +83,10 @@ def _print_table(results, problems_shown=3):
 
 
 def _read_roster(path):
-    if not path:
-        return ()
-    lines = Path(path).read_text(encoding="utf-8").splitlines()
-    return tuple(line.strip() for line in lines if line.strip() and not line.startswith("#"))
+    """Roster ids from ``path`` (plain ids or a CSV; see autograder/roster.py)."""
+    from .roster import read_roster
+
+    return tuple(entry.student_id for entry in read_roster(path))
 
 
 def _cmd_canary(args):
@@ -106,6 +110,7 @@ def _cmd_canary(args):
 def _cmd_grade(args):
     from .batch import UnknownStudents, grade_class
     from .canary import CanaryFailed
+    from .lateness import ConfigError, load_config
     from .grading import GradingOptions
     from .progress import Progress
     from .sandbox import launcher
@@ -125,9 +130,15 @@ def _cmd_grade(args):
     print(launcher.describe_isolation())
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     try:
+        config = load_config(args.config) if args.config else None
+    except ConfigError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    try:
         summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
                               progress=Progress(sys.stderr), roster=_read_roster(args.roster),
-                              only=tuple(args.student), announce=lambda line: print(line, flush=True))
+                              only=tuple(args.student), announce=lambda line: print(line, flush=True),
+                              config=config)
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
         return 3
@@ -230,6 +241,31 @@ def _cmd_gradescope_run(args):
     return 0
 
 
+def _cmd_export(args):
+    from .batch import Outputs, collect_results, saved_student_ids
+    from .catalog import load_catalog
+    from .roster import RosterError, read_roster
+
+    try:
+        roster = read_roster(args.roster)
+    except RosterError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    outputs = Outputs(Path(args.out))
+    ids = saved_student_ids(outputs)
+    if not ids:
+        print(f"error: no results in {outputs.root}", file=sys.stderr)
+        return 1
+    expected = sorted(set(ids) | {entry.student_id for entry in roster})
+    results, _ = collect_results(outputs, expected, submitted=set(ids))
+    target = Path(args.file) if args.file else outputs.root / f"{args.to}.csv"
+    from .batch import write_atomically
+
+    write_atomically(target, EXPORTERS[args.to](results, load_catalog(), roster))
+    print(f"wrote {target}: {len(results)} students, {args.to} gradebook import format")
+    return 0
+
+
 def build_parser():
     parser = argparse.ArgumentParser(prog="python -m autograder", description=__doc__.split("\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
@@ -253,6 +289,8 @@ def build_parser():
     grade.add_argument("--nbgrader-db", metavar="PATH",
                        help="also write the scores into this nbgrader gradebook (e.g. course/gradebook.db)")
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
+    grade.add_argument("--config", metavar="TOML",
+                       help="course config with due dates and the late policy (see autograder/lateness.py)")
     grade.add_argument("--student", nargs="+", default=(), metavar="ID",
                        help="re-grade only these students; everyone else keeps their saved grade")
     grade.set_defaults(run=_cmd_grade)
@@ -261,6 +299,13 @@ def build_parser():
     canary.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="only these lessons")
     canary.add_argument("--no-nbval", action="store_true", help="skip the notebook stage")
     canary.set_defaults(run=_cmd_canary)
+
+    export = commands.add_parser("export", help="write the saved grades in a learning-management system's format")
+    export.add_argument("--out", required=True, help="the results folder of `grade`")
+    export.add_argument("--to", required=True, choices=sorted(EXPORTERS), help="the format")
+    export.add_argument("--roster", help="CSV roster with names, sections, SIS ids (see autograder/roster.py)")
+    export.add_argument("--file", help="where to write (default: OUT/<format>.csv)")
+    export.set_defaults(run=_cmd_export)
 
     status = commands.add_parser("status", help="show the saved results of a grading run")
     status.add_argument("--out", required=True)

@@ -78,6 +78,12 @@ def _lesson_html(lesson):
              f'<span class="{_css_class(lesson.points, lesson.max_points)}">'
              f'{_points(lesson.points, lesson.max_points)}</span></h2>',
              f'<p class="muted">notebook: <code>{_e(lesson.notebook)}</code></p>']
+    if lesson.late_penalty:
+        parts.append(f'<p class="note">Late: {_e(lesson.late_note)}. Points before the penalty: '
+                     f'{_points(lesson.raw_points, lesson.max_points)}.</p>')
+    if lesson.status == "missing":
+        return "\n".join(parts[:1] + [f'<p class="note">{_e(lesson.reason)}: its {len(lesson.exercises)} '
+                                      "exercises were not graded.</p>"])
     if lesson.status != "graded":
         parts.append(f'<p class="note">This notebook could not be graded: {_e(lesson.reason)}</p>')
     for exercise in lesson.exercises:
@@ -106,13 +112,15 @@ def feedback_html(result):
         problems = f"<h2>Worth a look</h2><ul>{items}</ul>"
     lessons = "\n".join(_lesson_html(lesson) for lesson in result.lessons)
     isolation = f'<p class="note">{_e(LIMITS_ONLY_WARNING)}</p>' if result.isolation == "limits" else ""
+    raw = (f' <span class="muted">({_points(result.raw_score, result.max_score)} before late penalties)</span>'
+           if result.raw_score != result.score else "")
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>Feedback — {_e(result.student_id)}</title><style>{STYLE}</style></head>
 <body>
 <h1>Feedback for {_e(result.student_id)}</h1>
-<p class="score">Score: <strong>{_points(result.score, result.max_score)}</strong>
+<p class="score">Score: <strong>{_points(result.score, result.max_score)}</strong>{raw}
 <span class="muted">— status: {_e(result.status)}</span></p>
 {isolation}
 <table><tr><th>lesson</th><th>title</th><th>points</th></tr>{rows}</table>

@@ -79,8 +79,11 @@ def results_json(result, visibility=DEFAULT_VISIBILITY, seconds=None):
     for lesson in result.lessons:
         for exercise in lesson.exercises:
             lines = [f"{exercise.name}: {exercise.points:g} of {exercise.max_points:g} points"]
-            lines += exercise.notes
-            lines += [_check_output(c) for c in exercise.checks]
+            if lesson.status == "missing":
+                lines.append(lesson.reason)  # one line, not one per hidden check
+            else:
+                lines += exercise.notes
+                lines += [_check_output(c) for c in exercise.checks]
             tests.append({
                 "name": f"Lesson {lesson.number} · {exercise.name}",
                 "score": exercise.points, "max_score": exercise.max_points,
@@ -99,6 +102,12 @@ def results_json(result, visibility=DEFAULT_VISIBILITY, seconds=None):
     for lesson in result.lessons:
         if lesson.status != "graded":
             summary.append(f"Lesson {lesson.number}: {lesson.reason}")
+        if lesson.late_penalty:
+            summary.append(f"Lesson {lesson.number} late: {lesson.late_note} "
+                           f"({lesson.raw_points:g} → {lesson.points:g} points)")
+    if result.raw_score != result.score:
+        summary.append(f"Score {result.score:g} of {result.max_score:g} after late penalties "
+                       f"({result.raw_score:g} before).")
     if result.reason:
         summary.append(result.reason)
     if result.isolation == "limits":

@@ -63,10 +63,19 @@ class LessonResult:
     reason: str = ""
     exercises: list = field(default_factory=list)  # ExerciseResult
     run: NotebookRun = None
+    submitted_at: str = ""  # ISO 8601, UTC: when this notebook was handed in (autograder.lateness)
+    late_penalty: float = 0.0  # fraction of the points taken for lateness, 0..1
+    late_note: str = ""  # one sentence: when it was due, how late, how much
+
+    @property
+    def raw_points(self):
+        """Points earned, before any late penalty."""
+        return sum(e.points for e in self.exercises) + (self.run.points if self.run else 0.0)
 
     @property
     def points(self):
-        return sum(e.points for e in self.exercises) + (self.run.points if self.run else 0.0)
+        """Points that count: the raw points less the late penalty."""
+        return round(self.raw_points * (1.0 - self.late_penalty), 2)
 
     @property
     def max_points(self):
@@ -86,7 +95,18 @@ class StudentResult:
 
     @property
     def score(self):
+        """The score that counts (late penalties applied)."""
         return round(sum(lesson.points for lesson in self.lessons), 2)
+
+    @property
+    def raw_score(self):
+        """The score before late penalties."""
+        return round(sum(lesson.raw_points for lesson in self.lessons), 2)
+
+    @property
+    def submitted_at(self):
+        """When the newest of the student's notebooks was handed in (ISO 8601, UTC), or ""."""
+        return max((lesson.submitted_at for lesson in self.lessons), default="")
 
     @property
     def max_score(self):
@@ -98,14 +118,14 @@ class StudentResult:
 
     def to_json(self):
         data = asdict(self)
-        data["score"], data["max_score"] = self.score, self.max_score
+        data["score"], data["max_score"], data["raw_score"] = self.score, self.max_score, self.raw_score
         return json.dumps(data, indent=1, sort_keys=True, ensure_ascii=False)
 
     @classmethod
     def from_json(cls, text):
         data = json.loads(text)
-        data.pop("score", None)
-        data.pop("max_score", None)
+        for derived in ("score", "max_score", "raw_score"):
+            data.pop(derived, None)
         lessons = []
         for lesson in data.pop("lessons", []):
             exercises = []

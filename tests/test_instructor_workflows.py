@@ -88,3 +88,59 @@ def test_regrade_a_few_students_and_never_shrink_the_gradebook(class_folder, tmp
                    "--student", "nobody")
     assert unknown.returncode == 2 and "no submission folder" in unknown.stderr and "nobody" in unknown.stderr
     assert (out / "grades.csv").read_bytes() == before
+
+
+def test_due_dates_late_penalties_and_submission_times(tmp_path):
+    """nbgrader's timestamp.txt decides when a lesson was handed in; the raw score stays beside the penalised one."""
+    submitted = tmp_path / "course" / "submitted"
+    for student, stamp in (("early", "2026-11-30 13:00:00.000000 UTC"), ("late", "2026-12-02 13:00:00.000000 UTC")):
+        folder = build_submission(submitted / student / f"lesson{LESSON.number}", lessons=(LESSON.number,))
+        (folder / "timestamp.txt").write_text(stamp, encoding="utf-8")
+    config = tmp_path / "course.toml"
+    config.write_text(f'[late_policy]\npenalty_per_day = 0.1\ngrace_minutes = 30\n'
+                      f'[lessons."{LESSON.number}"]\ndue = 2026-12-01T12:00:00Z\n', encoding="utf-8")
+    out = tmp_path / "out"
+    _grade(tmp_path / "course", out, "--config", str(config))
+    rows = _rows(out)
+    assert float(rows["early"]["score"]) == LESSON.points and rows["early"]["late"] == ""
+    assert rows["early"]["timestamp"] == "2026-11-30T13:00:00+00:00"
+    penalised = round(LESSON.points * 0.8, 2)  # 1 day 1 h late: 2 started days, 10% each
+    assert float(rows["late"]["score"]) == penalised == float(rows["late"][f"lesson_{LESSON.number}"])
+    assert float(rows["late"]["raw_score"]) == LESSON.points and rows["late"]["late"] == f"{LESSON.number}: −20%"
+    page = (out / "feedback" / "late.html").read_text(encoding="utf-8")
+    assert "2 days late, −20%" in page and "before late penalties" in page
+    gradescope = json.loads((out / "results" / "late.json").read_text(encoding="utf-8"))
+    assert gradescope["score"] == penalised and "2 days late" in gradescope["output"]
+
+    config.write_text(config.read_text(encoding="utf-8").replace("0.1", "0.25"), encoding="utf-8")
+    stdout = _grade(tmp_path / "course", out, "--config", str(config))
+    assert "re-graded: changed since the last grading: course config" in stdout
+    assert float(_rows(out)["late"]["score"]) == round(LESSON.points * 0.5, 2)
+
+    config.write_text("[late_policy]\npenalty_per_day = -1\n", encoding="utf-8")
+    bad = _run("grade", str(tmp_path / "course"), "--out", str(out), "--config", str(config))
+    assert bad.returncode == 2 and "penalty_per_day must be a number ≥ 0" in bad.stderr
+
+
+def test_per_lesson_totals_and_canvas_export(class_folder, tmp_path):
+    out = tmp_path / "out"
+    _grade(class_folder, out)
+    header = (out / "grades.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    lessons = [f"lesson_{lesson.number}" for lesson in load_catalog().graded_lessons]
+    assert header[4:4 + len(lessons)] == lessons
+    assert float(_rows(out)["ana"][f"lesson_{LESSON.number}"]) == LESSON.points
+
+    roster = tmp_path / "roster.csv"
+    roster.write_text("ID,Name,Section,SIS User ID\nana,Ana Lima,A,S001\nbo,Bo Chen,B,S002\n"
+                      "cy,Cy Park,B,S003\n", encoding="utf-8")
+    run = _run("export", "--out", str(out), "--to", "canvas", "--roster", str(roster))
+    assert run.returncode == 0, run.stderr
+    with open(out / "canvas.csv", newline="", encoding="utf-8") as handle:
+        table = list(csv.reader(handle))
+    assert table[0][:5] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
+    column = table[0].index(f"Lesson {LESSON.number}: {LESSON.title}")
+    assert table[1][0] == "Points Possible" and float(table[1][column]) == LESSON.points
+    people = {row[3]: row for row in table[2:]}
+    assert people["ana"][:5] == ["Ana Lima", "", "S001", "ana", "A"] and float(people["ana"][column]) == LESSON.points
+    assert float(people["bo"][column]) == 0 and people["cy"][column] == ""  # on the roster, nothing handed in
+    assert people["dan"][2] == "dan"  # not on the roster: matched by the grader's id

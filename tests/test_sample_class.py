@@ -58,7 +58,10 @@ def test_gradebook_columns(run):
     out, _, rows = run
     header = (out / "grades.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     assert header[:4] == ["student_id", "score", "max_score", "status"]
-    assert header[4:4 + len(_maximum())] == list(_maximum())
+    lessons = [f"lesson_{lesson.number}" for lesson in load_catalog().graded_lessons]
+    assert header[4:4 + len(lessons)] == lessons
+    start = 4 + len(lessons)
+    assert header[start:start + len(_maximum())] == list(_maximum())
     assert len(rows) >= 8
 
 
@@ -136,7 +139,7 @@ def test_summary_is_printed(run):
 
 def _verdicts(row):
     """Everything that is a grade in a gradebook row (not when it was graded)."""
-    return {key: value for key, value in row.items() if key not in ("timestamp", "problems")}
+    return {key: value for key, value in row.items() if key not in ("timestamp", "graded_at", "problems")}
 
 
 def test_limits_mode_gives_every_student_the_same_grade(run, limits_run):
