@@ -219,13 +219,16 @@ def saved_student_ids(outputs):
 
 
 def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=(),
-                only=(), announce=None, config=None):
+                only=(), announce=None, config=None, runner=None):
     """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
     ``only``: grade just these students (always re-graded); everyone else keeps their saved result.
     ``announce``: called with a line of text when a step worth telling starts or ends (the canary).
     ``config``: a :class:`~autograder.lateness.CourseConfig` with due dates and the late policy.
+    ``runner``: how the students' tasks run, with the signature of
+    :func:`~autograder.forking.fork_each` (default: forks of this process, ``jobs`` at a time); a
+    runner calls ``_grade_task(task)`` somewhere and ``on_done(task, problem)`` here, as each ends.
     The gradebook never shrinks: students graded earlier into ``out_dir`` stay in it, with their
     saved results, even when ``path`` no longer holds their folder (``RunSummary.kept`` names them).
 
@@ -283,7 +286,7 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
         if progress:
             progress.advance(row)
 
-    fork_each(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
+    (runner or fork_each)(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
     if progress:
         progress.finish()
     submitted = {sid for sid, _ in students}
