@@ -14,6 +14,9 @@ grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE
 status --out DIR [--roster FILE]
     Who is graded, who could not be graded and why, who is missing; why a
     student was re-graded; a warning when student code ran with limits only.
+handout --out course.zip
+    Pack what students get: the released notebooks, coursekit, their install
+    list (no instructor tools) and a README.
 export --out DIR --to canvas [--roster roster.csv] [--file PATH]
     Write the saved grades as an LMS import file (Canvas; see autograder/exports/).
 canary [--lessons NN ...] [--no-nbval]
@@ -241,6 +244,15 @@ def _cmd_gradescope_run(args):
     return 0
 
 
+def _cmd_handout(args):
+    from .handout import build_handout
+
+    path = build_handout(args.out)
+    print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): the course notebooks, coursekit, a student "
+          "requirements.txt and a README. Run `python -m autograder release --check` first.")
+    return 0
+
+
 def _cmd_export(args):
     from .batch import Outputs, collect_results, saved_student_ids
     from .catalog import load_catalog
@@ -299,6 +311,10 @@ def build_parser():
     canary.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="only these lessons")
     canary.add_argument("--no-nbval", action="store_true", help="skip the notebook stage")
     canary.set_defaults(run=_cmd_canary)
+
+    handout = commands.add_parser("handout", help="pack the students' hand-out (notebooks, coursekit, install list)")
+    handout.add_argument("--out", required=True, help="the zip to write, e.g. course.zip")
+    handout.set_defaults(run=_cmd_handout)
 
     export = commands.add_parser("export", help="write the saved grades in a learning-management system's format")
     export.add_argument("--out", required=True, help="the results folder of `grade`")

@@ -12,16 +12,21 @@ your work are more thorough and run only when your notebook is graded, so a
 clean run here is encouraging, not a guarantee.
 
 When a check fails the cell raises :class:`CheckFailed`, and an exercise that
-is not written yet re-raises its ``NotImplementedError``: that is how the
-course's notebooks also work as ordinary nbgrader assignments.
+is not written yet raises :class:`NotWrittenYet` (a ``NotImplementedError``):
+that is how the course's notebooks also work as ordinary nbgrader
+assignments. Both errors show as one red line in Jupyter, not a traceback
+(IPython prints what ``_render_traceback_`` returns): the lines printed just
+above already say what is wrong.
 """
 
 import time
 import traceback
 
-__all__ = ["check", "public_check", "Mismatch", "CheckFailed", "registered_exercises"]
+__all__ = ["check", "public_check", "Mismatch", "CheckFailed", "NotWrittenYet", "registered_exercises",
+           "checks_of_lesson"]
 
 _REGISTRY = {}
+_LESSON_OF = {}  # exercise -> lesson number ("01"), from the checks module that registered it
 
 
 class Mismatch(Exception):
@@ -41,8 +46,22 @@ class Mismatch(Exception):
         self.hint = hint
 
 
-class CheckFailed(AssertionError):
+RED, RESET = "\x1b[0;31m", "\x1b[0m"
+
+
+class _OneLine:
+    """Shown by IPython as one red line instead of a traceback into coursekit."""
+
+    def _render_traceback_(self):
+        return [f"{RED}{type(self).__name__}{RESET}: {self}"]
+
+
+class CheckFailed(_OneLine, AssertionError):
     """Raised by :func:`check` when at least one public check failed."""
+
+
+class NotWrittenYet(_OneLine, NotImplementedError):
+    """Raised by :func:`check` for an exercise that still raises ``NotImplementedError``."""
 
 
 def public_check(exercise, description):
@@ -61,6 +80,7 @@ def public_check(exercise, description):
 
     def register(function):
         _REGISTRY.setdefault(exercise, []).append((description, function))
+        _LESSON_OF[exercise] = function.__module__.rpartition(".")[2].removeprefix("lesson")
         return function
 
     return register
@@ -70,6 +90,31 @@ def registered_exercises():
     """Names of the exercises that have public checks, sorted."""
     _load_check_modules()
     return sorted(_REGISTRY)
+
+
+def checks_of_lesson(lesson):
+    """Names of the exercises of ``lesson`` (``"01"``) that have public checks, in the order registered."""
+    _load_check_modules()
+    return [name for name in _REGISTRY if _LESSON_OF.get(name) == lesson]
+
+
+def run_quietly(exercise, function):
+    """``(passed, total, first problem or "")`` for ``exercise``'s public checks, printing nothing."""
+    _load_check_modules()
+    checks = _REGISTRY.get(exercise, [])
+    passed, problem = 0, ""
+    for description, run in checks:
+        try:
+            run(function)
+        except NotImplementedError:
+            return 0, len(checks), "not written yet"
+        except Mismatch as mismatch:
+            problem = problem or f"{description}: {_one_line(mismatch.reason, 90)}"
+        except Exception as error:
+            problem = problem or f"{description}: raised {type(error).__name__}"
+        else:
+            passed += 1
+    return passed, len(checks), problem
 
 
 def _load_check_modules():
@@ -91,7 +136,7 @@ def _where_in_student_code(error):
 
 
 def _stop_the_cell(error):
-    # The check cell ends with an error so that nbgrader counts the check as failed.
+    # The check cell ends with an error so that nbgrader counts the check as failed; Run All stops here.
     raise error from None
 
 
@@ -132,7 +177,8 @@ def check(exercise, function):
                 f"{exercise}: not written yet. Replace the line "
                 "`raise NotImplementedError(...)` with your code, then run this cell again."
             )
-            _stop_the_cell(NotImplementedError(f"{exercise} is not written yet"))
+            _stop_the_cell(NotWrittenYet(
+                f"{exercise} is not written yet, so Run All stopped here: write {exercise} next"))
         except Mismatch as mismatch:
             failed += 1
             line = f"  ✗ {description}: {_one_line(mismatch.reason)}"
@@ -154,6 +200,7 @@ def check(exercise, function):
     total = passed + failed
     if failed:
         print(f"{passed} of {total} public checks passed. Fix the ✗ lines above and run this cell again.")
-        _stop_the_cell(CheckFailed(f"{failed} of {total} public checks failed for {exercise}"))
+        _stop_the_cell(CheckFailed(f"{failed} of {total} public checks failed for {exercise}: "
+                                   "fix the ✗ lines above (Run All stopped here)"))
     passed_text = "The public check passed" if total == 1 else f"All {total} public checks passed"
     print(f"{passed_text} ({elapsed:.2f} s). The hidden checks run when your notebook is graded.")

@@ -1,6 +1,7 @@
 """Support code for the course "Rotations, hands on".
 
 - :func:`check` runs the public checks of an exercise (the check cells).
+- :func:`ready_to_hand_in` runs a whole lesson's public checks at once (its last cell).
 - :func:`show` prints values the same way on every machine.
 - :mod:`coursekit.plotting` draws frames, points and axes (imports matplotlib).
 - :mod:`coursekit.diagnose` names likely mistakes; the grader uses it too.
@@ -8,5 +9,6 @@
 
 from .checking import check
 from .display import show
+from .handin import ready_to_hand_in
 
-__all__ = ["check", "show"]
+__all__ = ["check", "show", "ready_to_hand_in"]

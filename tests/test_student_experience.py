@@ -1,0 +1,63 @@
+"""What a student sees in a real kernel: one friendly line where a check stops, and a hand-in summary.
+
+Run in Jupyter's kernel (nbclient), lesson 01 as released (stubs) and as solved:
+- every check cell that fails ends in an error (nbgrader counts it as failed) shown as ONE red line
+  that names the exercise, not a traceback into coursekit;
+- the lesson's last exercise cell, "Ready to hand in?", lists every unwritten exercise for the
+  stubs and says "ready to hand in" for the reference; it never raises.
+"""
+
+import nbformat
+import pytest
+from nbclient import NotebookClient
+
+from autograder import cells
+from autograder.catalog import load_catalog
+from autograder.paths import COURSE, SOLUTIONS
+
+LESSON = "01_frames_and_rotations.ipynb"
+EXERCISES = [e.name for e in load_catalog().lesson("01").exercises]
+
+
+def _execute(folder):
+    nb = nbformat.read(str(folder / LESSON), as_version=4)
+    NotebookClient(nb, timeout=120, allow_errors=True, kernel_name="python3",
+                   resources={"metadata": {"path": str(folder)}}).execute()
+    return nb
+
+
+@pytest.fixture(scope="module")
+def released():
+    return _execute(COURSE)
+
+
+@pytest.fixture(scope="module")
+def solved():
+    return _execute(SOLUTIONS)
+
+
+def _errors(cell):
+    return [o for o in cell.get("outputs", []) if o.get("output_type") == "error"]
+
+
+def _hand_in_text(nb):
+    cell = next(c for c in nb.cells if c.get("id") == "ready-to-hand-in")
+    assert not _errors(cell)
+    return "".join(o.get("text", "") for o in cell.outputs)
+
+
+def test_a_failing_check_is_one_line_that_names_the_exercise(released):
+    checks = [c for c in released.cells if cells.is_check_cell(c)]
+    assert checks
+    for cell in checks:
+        name = cells.grade_id(cell)[len(cells.CHECK_PREFIX):]
+        (error,) = _errors(cell)
+        assert error["ename"] == "NotWrittenYet" and len(error["traceback"]) == 1, error["traceback"][:3]
+        assert f"write {name} next" in error["traceback"][0]
+
+
+def test_the_hand_in_cell_lists_what_is_left(released, solved):
+    left = _hand_in_text(released)
+    assert f"0 of {len(EXERCISES)} exercises pass" in left and f"Still to do: {', '.join(EXERCISES)}." in left
+    done = _hand_in_text(solved)
+    assert f"All {len(EXERCISES)} exercises pass their public checks: ready to hand in" in done and "✗" not in done
