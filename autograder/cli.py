@@ -14,6 +14,8 @@ grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE
 status --out DIR [--roster FILE]
     Who is graded, who could not be graded and why, who is missing; why a
     student was re-graded; a warning when student code ran with limits only.
+nbgrader-course --out DIR [--lessons NN ...]
+    Write a stock nbgrader course from the masters (one assignment per lesson).
 handout --out course.zip
     Pack what students get: the released notebooks, coursekit, their install
     list (no instructor tools) and a README.
@@ -244,6 +246,16 @@ def _cmd_gradescope_run(args):
     return 0
 
 
+def _cmd_nbgrader_course(args):
+    from .nbgrader_course import build_course
+
+    root = build_course(args.out, lessons=tuple(args.lessons))
+    print(f"wrote the nbgrader course {root}: source/lessonNN/ for each lesson, with coursekit beside it.\n"
+          f"Next, with the environment active (source .venv/bin/activate): cd {root} && "
+          "nbgrader generate_assignment lesson01")
+    return 0
+
+
 def _cmd_handout(args):
     from .handout import build_handout
 
@@ -299,7 +311,7 @@ def build_parser():
                        help="grade only these lessons, e.g. --lessons 01 03 (default: all)")
     grade.add_argument("--roster", help="a file with one student id per line; absent ones are 'missing'")
     grade.add_argument("--nbgrader-db", metavar="PATH",
-                       help="also write the scores into this nbgrader gradebook (e.g. course/gradebook.db)")
+                       help="also write the scores into this nbgrader gradebook (e.g. nbgrader-course/gradebook.db)")
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
     grade.add_argument("--config", metavar="TOML",
                        help="course config with due dates and the late policy (see autograder/lateness.py)")
@@ -311,6 +323,11 @@ def build_parser():
     canary.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="only these lessons")
     canary.add_argument("--no-nbval", action="store_true", help="skip the notebook stage")
     canary.set_defaults(run=_cmd_canary)
+
+    course = commands.add_parser("nbgrader-course", help="write an nbgrader course (source/lessonNN/) from solutions/")
+    course.add_argument("--out", required=True, help="the course root to create or update")
+    course.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="only these lessons")
+    course.set_defaults(run=_cmd_nbgrader_course)
 
     handout = commands.add_parser("handout", help="pack the students' hand-out (notebooks, coursekit, install list)")
     handout.add_argument("--out", required=True, help="the zip to write, e.g. course.zip")

@@ -69,24 +69,58 @@ def test_stock_nbgrader_grades_reference_full_and_release_zero(nbgrader_course, 
         assert untouched.score == 0
 
 
-def test_grade_writes_into_an_nbgrader_gradebook(tmp_path):
-    lesson = LESSONS[0]
-    build_submission(tmp_path / "class" / "ada", lessons=(lesson.number,))
-    build_submission(tmp_path / "class" / "ben", default=STUB, lessons=(lesson.number,))
-    mistake = {"rot_z": "def rot_z(a):\n    return np.eye(3)\n"} if lesson.number == "01" else {}
-    build_submission(tmp_path / "class" / "cy", mistake, lessons=(lesson.number,))
-    database = tmp_path / "gradebook.db"
-    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(tmp_path / "class"), "--out",
-                          str(tmp_path / "out"), "--no-nbval", "--lessons", lesson.number,
-                          "--nbgrader-db", str(database)], cwd=PROJECT_ROOT, capture_output=True, text=True)
-    assert run.returncode == 0, run.stderr[-2000:]
-    with open(tmp_path / "out" / "grades.csv", newline="", encoding="utf-8") as handle:
-        ours = {row["student_id"]: float(row["score"]) for row in csv.DictReader(handle)}
-    with _gradebook(tmp_path) as gradebook:
-        for student, score in ours.items():
-            submission = gradebook.find_submission(assignment_name(lesson), student)
-            assert submission.score == pytest.approx(score) and submission.max_score == lesson.points
-    assert ours["ada"] == lesson.points and ours["ben"] == 0
+def _grade_into(course_root, *extra):
+    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(course_root), "--out",
+                          str(course_root.parent / "out"), "--no-nbval", "--nbgrader-db",
+                          str(course_root / "gradebook.db"), *extra], cwd=PROJECT_ROOT, capture_output=True,
+                         text=True, timeout=600)
+    assert run.returncode == 0, run.stdout[-1500:] + run.stderr[-2000:]
+    with open(course_root.parent / "out" / "grades.csv", newline="", encoding="utf-8") as handle:
+        return {row["student_id"]: float(row["score"]) for row in csv.DictReader(handle)}
+
+
+def _scores(root, lesson):
+    with _gradebook(root) as gradebook:
+        return {s.student.id: s.score for s in gradebook.assignment_submissions(assignment_name(lesson))}
+
+
+CHEAT = "check = lambda *args, **kwargs: None  # every later check cell passes in nbgrader's kernel\n"
+
+
+def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
+    """Our export and stock nbgrader share one gradebook: only lessons handed in get submissions,
+    generate_assignment still works afterwards, and whichever of autograde and our export ran last
+    owns the automatic scores (the rule in autograder/nbgrader_export.py)."""
+    first, second = LESSONS[0], LESSONS[1]
+    root = build_course(tmp_path / "course", lessons=(first.number, second.number))
+    run_nbgrader(root, "generate_assignment", assignment_name(first), "--force")
+    released = root / "release" / assignment_name(first) / first.filename
+    answers = {"ada": "reference", "ben": STUB, "gina": "reference"}
+    for student, default in answers.items():
+        folder = build_submission(tmp_path / "work" / student, default=default, lessons=(first.number,))
+        notebook = folder / first.filename
+        if student == "gina":  # wrong answers, and the kernel's check function replaced by one that passes
+            nb = read_master(released)
+            for cell in nb.cells:
+                if cells.is_answer_cell(cell):
+                    cell.source = (CHEAT if cells.grade_id(cell) == first.exercises[0].name else "") \
+                        + cells.source_text(cell).replace("raise NotImplementedError", "return None  #")
+            notebook.write_text(canonical_text(nb), encoding="utf-8")
+        submit(root, student, first, notebook)
+
+    ours = _grade_into(root)
+    assert ours == {"ada": first.points, "ben": 0.0, "gina": 0.0}
+    assert _scores(root, first) == ours
+    assert _scores(root, second) == {}, "a lesson nobody handed in got submissions"
+
+    run_nbgrader(root, "generate_assignment", assignment_name(second))  # never generated before: works
+    run_nbgrader(root, "generate_assignment", assignment_name(first), "--force")  # regenerated: works
+
+    run_nbgrader(root, "autograde", assignment_name(first), "--force")
+    theirs = _scores(root, first)
+    assert theirs["ada"] == first.points and theirs["gina"] == first.points  # the cheat fooled the kernel
+    again = _grade_into(root)  # unchanged students are reused; the export runs again
+    assert _scores(root, first) == again == ours
 
 
 @pytest.fixture(scope="module")
