@@ -5,7 +5,9 @@ For each exercise of a lesson we look for the answer cell by its nbgrader
 function in a new cell, we fall back to the source: the last top-level
 ``def <name>`` anywhere in the notebook (with the imports of its cell). Check
 cells, demonstrations and anything else the student typed are never run, so
-editing or deleting a check cell cannot change a grade.
+editing or deleting a check cell cannot change a grade; it is noted all the
+same ("worth a look" in the class report), since nobody does it by accident
+in a locked cell.
 
 Examples
 --------
@@ -41,6 +43,20 @@ def _fallback_source(source, tree, name):
     start = (node.decorator_list[0].lineno if node.decorator_list else node.lineno) - 1
     pieces.append("\n".join(lines[start:node.end_lineno]))
     return "\n".join(p for p in pieces if p)
+
+
+def _edited_check_cells(nb, lesson):
+    """One note for the check cells that are not as released (edited), one for those removed."""
+    found = {cells.grade_id(c): cells.source_text(c).strip() for c in nb.cells if cells.is_check_cell(c)}
+    edited, removed = [], []
+    for exercise in lesson.exercises:
+        source = found.get(f"{cells.CHECK_PREFIX}{exercise.name}")
+        if source is None:
+            removed.append(exercise.name)
+        elif source != f'check("{exercise.name}", {exercise.name})':
+            edited.append(exercise.name)
+    return [f"the check cell was {what} for {', '.join(names)} (check cells are never run by the grader, "
+            "so this changes no points)" for what, names in (("edited", edited), ("removed", removed)) if names]
 
 
 def lesson_program(nb, lesson):
@@ -85,5 +101,6 @@ def lesson_program(nb, lesson):
         else:
             problems.append(f"{name}: no answer cell and no definition of {name} found in the notebook")
     chosen.sort()
+    problems += _edited_check_cells(nb, lesson)
     return LessonProgram(setup=lesson.setup_source, cells=[(name, source) for _, name, source in chosen],
                          problems=problems)

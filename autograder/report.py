@@ -18,6 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from .results import COULD_NOT_GRADE, MISSING  # noqa: E402
+from .attention import stage_warnings, worth_a_look  # noqa: E402
 from .sandbox.launcher import LIMITS_ONLY_WARNING  # noqa: E402
 
 STYLE = """
@@ -97,6 +98,16 @@ def _kind(reason):
     return ""
 
 
+def _worth_a_look_html(concerns):
+    if not concerns:
+        return "<h2>Worth a look</h2><p class='muted'>No attempted tampering, timeout or crash in this run.</p>"
+    rows = "".join(f"<tr><td><code>{escape(c.student_id)}</code></td><td>{escape(c.kind)}</td>"
+                   f'<td class="num">{c.count}</td><td>{escape(c.example)}</td></tr>' for c in concerns)
+    return ("<h2>Worth a look</h2><p>Attempted tampering, timeouts and crashes: each cost only its own "
+            "points, but deserves a look at the student's feedback page.</p><table><tr><th>student</th>"
+            f'<th>what</th><th class="num">times</th><th>for example</th></tr>{rows}</table>')
+
+
 def class_report_html(results, catalog, title="Class report"):
     """The report page for a list of StudentResult."""
     graded = [r for r in results if r.status not in (MISSING, COULD_NOT_GRADE)]
@@ -109,6 +120,9 @@ def class_report_html(results, catalog, title="Class report"):
     if limited:
         parts.append(f'<p class="warning"><strong>{len(limited)} of {len(results)} students were graded with '
                      f'resource limits only.</strong> {escape(LIMITS_ONLY_WARNING)}</p>')
+    parts += [f'<p class="warning"><strong>Check the grader:</strong> {escape(w.text)}</p>'
+              for w in stage_warnings(results)]
+    parts.append(_worth_a_look_html(worth_a_look(results)))
     if graded:
         percentages = [100 * r.score / r.max_score if r.max_score else 0.0 for r in graded]
         mean = sum(percentages) / len(percentages)
@@ -136,17 +150,22 @@ def class_report_html(results, catalog, title="Class report"):
                     f'<td class="num">{mean_points:.2f} / {exercise.points:g}</td>'
                     f"<td><ol>{reasons}</ol></td></tr>")
             parts.append("</table>")
-        runs = {}
+        runs = {}  # lesson -> statuses of its notebook runs ("passed", "failed", "skipped")
         for r in graded:
             for lesson in r.lessons:
                 if lesson.run is not None:
-                    runs.setdefault(lesson.number, []).append(lesson.run.status == "passed")
+                    runs.setdefault(lesson.number, []).append(lesson.run.status)
         if runs:
-            parts.append("<h2>Notebook stage (nbval)</h2><table><tr><th>lesson</th>"
-                         '<th class="num">notebooks that ran and reproduced the reference</th></tr>')
-            for number, passed in sorted(runs.items()):
+            parts.append("<h2>Notebook stage (nbval)</h2>"
+                         '<p class="muted">nbval runs only the notebooks whose lesson has full marks on the '
+                         "hidden checks: the point needs them, so the others are not run.</p>"
+                         '<table><tr><th>lesson</th><th class="num">ran and reproduced the reference</th>'
+                         '<th class="num">ran</th><th class="num">not run (hidden points lost)</th></tr>')
+            for number, statuses in sorted(runs.items()):
+                ran = [s for s in statuses if s != "skipped"]
                 parts.append(f'<tr><td>{escape(number)}</td><td class="num">'
-                             f"{sum(passed)} / {len(passed)}</td></tr>")
+                             f'{ran.count("passed")} / {len(ran)}</td><td class="num">{len(ran)}</td>'
+                             f'<td class="num">{len(statuses) - len(ran)}</td></tr>')
             parts.append("</table>")
     if failed or missing:
         parts.append("<h2>Not graded</h2><ul>")

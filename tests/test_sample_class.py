@@ -175,3 +175,17 @@ def test_full_isolation_is_quiet(run):
         pytest.skip("this machine cannot create namespaces: limits mode, checked above")
     assert "isolated by resource limits only" not in (out / "feedback" / "ada.html").read_text(encoding="utf-8")
     assert "resource limits only" not in (out / "report.html").read_text(encoding="utf-8")
+
+
+def test_class_report_says_what_is_worth_a_look(run):
+    out, _, _ = run
+    report = (out / "report.html").read_text(encoding="utf-8")
+    look = report[report.index("<h2>Worth a look</h2>"):]
+    look = look[:look.index("</table>")]
+    assert "<code>hugo</code></td><td>tampering" in look and "check cell was edited" in look
+    assert "<code>ivy</code></td><td>timeout" in look and "<code>ivy</code></td><td>crash" in look
+    assert "<code>ada</code>" not in look and "<code>ben</code>" not in look
+    assert "Check the grader" not in report  # every stage worked for the class
+    status = subprocess.run([sys.executable, "-m", "autograder", "status", "--out", str(out)], cwd=PROJECT_ROOT,
+                            capture_output=True, text=True, timeout=120).stdout
+    assert "not valid JSON" in status  # kim's problem itself, under her row
