@@ -61,3 +61,14 @@ def test_the_hand_in_cell_lists_what_is_left(released, solved):
     assert f"0 of {len(EXERCISES)} exercises pass" in left and f"Still to do: {', '.join(EXERCISES)}." in left
     done = _hand_in_text(solved)
     assert f"All {len(EXERCISES)} exercises pass their public checks: ready to hand in" in done and "✗" not in done
+
+
+def test_every_lesson_ends_with_its_hand_in_cell():
+    for lesson in load_catalog().graded_lessons:
+        nb = nbformat.read(str(SOLUTIONS / lesson.filename), as_version=4)
+        ids = [c.get("id") for c in nb.cells]
+        assert "ready-to-hand-in" in ids, lesson.filename
+        cell = nb.cells[ids.index("ready-to-hand-in")]
+        assert f'ready_to_hand_in("{lesson.number}")' in cells.source_text(cell)
+        later = [c for c in nb.cells[ids.index("ready-to-hand-in") + 1:] if c.cell_type == "code"]
+        assert not later, f"{lesson.filename}: code after the hand-in cell"
