@@ -23,7 +23,9 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child.wire import Probe  # noqa: F401  (callable arguments, by name)
-from coursekit.diagnose import rotation_hint, rotation_problem, shape_problem  # noqa: F401
+from autograder.sandbox.session import StudentError
+from coursekit.diagnose import (ALLCLOSE_HINT, LISTS_HINT, rotation_hint, rotation_problem,  # noqa: F401
+                                shape_problem)
 
 
 class Wrong(AssertionError):
@@ -71,22 +73,46 @@ def expect_array(value, shape, what):
     return np.asarray(value, dtype=float)
 
 
-def expect_close(got, expected, tol, what, hint=""):
-    """Raise :class:`Wrong` unless ``got`` matches ``expected`` entrywise within ``tol``."""
+def expect_close(got, expected, tol, what, hint="", scale=1.0):
+    """Raise :class:`Wrong` unless ``got`` matches ``expected`` entrywise within ``tol · max(1, scale)``.
+
+    ``scale`` is the size of the inputs (e.g. |ρ| of a pose), so the tolerance
+    is relative to them; the message gives the size of the error.
+    """
     got = np.asarray(got, dtype=float)
     expected = np.asarray(expected, dtype=float)
     if got.shape != expected.shape:
         raise Wrong(f"{what}: shape {got.shape}, expected {expected.shape}", hint)
+    tol = tol * max(1.0, float(scale))
     error = float(np.max(np.abs(got - expected))) if got.size else 0.0
     if not error <= tol:
-        raise Wrong(f"{what} is off by {error:.2g} (tolerance {tol:g}): got {fmt(got)}, expected {fmt(expected)}",
-                    hint)
+        raise Wrong(f"{what} is off by {error:.2g} (tolerance {tol:.2g}): got {fmt(got, 6)}, "
+                    f"expected {fmt(expected, 6)}", hint)
+
+
+def expect_same_with_lists(function, args, shape, what, lists=None, **kwargs):
+    """``function`` gives the same answer for plain lists as for arrays (whether or not it is right).
+
+    The hint blames lists only when lists are the difference: a wrong answer
+    that is wrong either way loses its points in the checks of its values.
+    ``lists`` replaces the default plain-list form of ``args`` (e.g. integers).
+    """
+    arrays = [np.array(a, dtype=float) for a in args]
+    with_arrays = expect_array(function(*arrays, **kwargs), shape, f"{what} with arrays")
+    try:
+        with_lists = function(*(lists if lists is not None else [a.tolist() for a in arrays]), **kwargs)
+    except StudentError as error:
+        if error.kind != "exception":
+            raise
+        raise Wrong(f"{what} with lists: {error}", LISTS_HINT) from None
+    with_lists = expect_array(with_lists, shape, f"{what} with lists")
+    expect_close(with_lists, with_arrays, 1e-12, f"{what} with lists, compared with arrays", LISTS_HINT)
 
 
 def expect_bool(value, what):
     """``value`` as a Python bool, or :class:`Wrong` if it is not a boolean."""
-    if isinstance(value, bool):
-        return value
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
     raise Wrong(f"{what} returned {value!r} ({type(value).__name__}), not True or False",
                 "return a bool: wrap numpy's result in bool(...)")
 

@@ -3,6 +3,9 @@
 The student's functions receive callables as named probes (``Probe("matmul")``)
 that the sandbox rebuilds from ``autograder/sandbox/child/probes.py``. Each
 structure below has a verdict that follows from the lesson's definitions:
+(tolerances are absolute: data where np.allclose's rtol=1e-5 would swamp
+tol, dense matrices and an identity off by 1e-7, are part of the suite;
+floating-point products are never exactly associative, so == fails),
 rotations under the product (a group), under addition (closure, identity and
 inverse fail), reals with 0 under multiplication (the inverse fails), the
 cross product (no identity, not associative), "keep the second" (one-sided
@@ -13,7 +16,7 @@ calls the student's functions of its own exercise only.
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .helpers import Probe, Wrong, exercise, expect, expect_bool, random_rotations
+from .helpers import ALLCLOSE_HINT, Probe, Wrong, exercise, expect, expect_bool, random_rotations
 
 KEYS = ("closure", "identity", "inverse", "associativity")
 MIRROR = np.diag([1.0, 1.0, -1.0])
@@ -66,7 +69,8 @@ def test_check_group_axioms_so3_under_addition(student):
                         "identity": "the identity must belong to the set: check is_member(identity)",
                         "inverse": "each inverse must belong to the set: check is_member(inverse(a)) "
                                    "(-R has det -1)",
-                        "associativity": "use op for both groupings: op(op(a, b), c) vs op(a, op(b, c))"})
+                        "associativity": "(A + B) + C and A + (B + C) differ by rounding (~1e-16): compare "
+                                         "op(op(a, b), c) with op(a, op(b, c)) within tol"})
 
 
 @exercise("check_group_axioms", weight=2)
@@ -144,7 +148,7 @@ def test_check_group_axioms_uses_tol(student):
     strict = _verdict(student.check_group_axioms(*args, tol=1e-9), "check_group_axioms(..., tol=1e-9)")
     expect(strict["inverse"] is False, "noisy rotations with tol=1e-9: inverse came out True, but "
            "R @ Rᵀ differs from I by ~1e-7 > tol",
-           "compare the largest absolute difference with tol (np.allclose adds rtol=1e-5 unless rtol=0)")
+           ALLCLOSE_HINT)
 
 
 @exercise("check_group_axioms", weight=1)
@@ -157,8 +161,7 @@ def test_check_group_axioms_absolute_tolerance(student):
     strict = _verdict(student.check_group_axioms(*args, tol=1e-9), "check_group_axioms(..., tol=1e-9)")
     expect(not strict["identity"], "with identity 1 + 1e-7 and tol=1e-9, identity came out True "
            "although (1 + 1e-7)·4 differs from 4 by 4e-7",
-           "np.allclose(x, y, atol=tol) also allows a relative error of 1e-5: compare "
-           "np.max(np.abs(x - y)) <= tol, or pass rtol=0")
+           ALLCLOSE_HINT)
 
 
 @exercise("check_group_axioms", weight=1)
@@ -246,5 +249,17 @@ def test_commutes_uses_tol(student):
     expect(_commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-5)", tol=1e-5),
            "with tol=1e-5 a difference of ~3e-8 was not accepted", "compare with the tol argument")
     expect(not _commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-9)", tol=1e-9),
-           "with tol=1e-9 a difference of ~3e-8 was accepted",
-           "compare the largest absolute difference with tol (np.allclose adds rtol=1e-5 unless rtol=0)")
+           "with tol=1e-9 a difference of ~3e-8 was accepted", ALLCLOSE_HINT)
+
+
+@exercise("commutes", weight=2)
+def test_commutes_tol_is_absolute(student):
+    """tol is absolute: dense matrices whose products (entries ~5) differ by ~1e-6 do not commute at tol=1e-9"""
+    rng = np.random.default_rng(217)
+    for index in range(3):
+        M, N = rng.uniform(1.0, 2.0, (3, 3)), rng.normal(size=(3, 3))
+        A, B = M, M + 1e-6 * N
+        gap = np.max(np.abs(A @ B - B @ A))
+        expect(not _commutes(student, A, B, Probe("matmul"), "commutes(A, B, tol=1e-9)"),
+               f"with tol=1e-9 said dense matrices commute whose products differ by {gap:.2g} (pair #{index})",
+               ALLCLOSE_HINT)

@@ -1,6 +1,6 @@
 """Typical mistakes for lesson 02: groups and SO(3)."""
 
-from . import Mistake
+from . import Alternative, Mistake
 
 MISTAKES = [
     Mistake("group_closure_with_matmul", "check_group_axioms",
@@ -56,7 +56,8 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
             "associativity": True}
 '''),
     Mistake("group_allclose_rtol", "check_group_axioms",
-            "compares with np.allclose(atol=tol), whose default rtol=1e-5 swamps tol", '''
+            "compares with np.allclose(atol=tol), whose default rtol=1e-5 swamps tol",
+            hint="rtol=1e-5", public_hint="rtol=1e-5", source='''
 def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
     def equal(x, y):
         return bool(np.allclose(x, y, atol=tol))
@@ -69,9 +70,30 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
     return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
             "associativity": associative}
 '''),
+    Mistake("group_exact_equality", "check_group_axioms", "compares with == instead of within tol", '''
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        return bool(np.all(np.asarray(x) == np.asarray(y)))
+    closure = all(is_member(op(a, b)) for a in samples for b in samples)
+    has_identity = bool(is_member(identity)) and all(
+        equal(op(identity, a), a) and equal(op(a, identity), a) for a in samples)
+    has_inverses = all(is_member(inverse(a)) and equal(op(a, inverse(a)), identity)
+                       and equal(op(inverse(a), a), identity) for a in samples)
+    associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
+    return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
+            "associativity": associative}
+''', hint="differ by rounding", public_hint="never with ==", classic=True),
     Mistake("commutes_exact_equality", "commutes", "compares the two products with exact equality", '''
 def commutes(a, b, op, tol=1e-9):
     return bool(np.array_equal(op(a, b), op(b, a)))
+''', classic=True),
+    Mistake("commutes_allclose_rtol", "commutes", "np.allclose(op(a, b), op(b, a), atol=tol): rtol hides 1e-6", '''
+def commutes(a, b, op, tol=1e-9):
+    return bool(np.allclose(op(a, b), op(b, a), atol=tol))
+''', hint="rtol=1e-5", public_hint="rtol=1e-5"),
+    Mistake("commutes_fixed_tol", "commutes", "ignores tol and uses 1e-6", '''
+def commutes(a, b, op, tol=1e-9):
+    return bool(np.max(np.abs(np.asarray(op(a, b)) - np.asarray(op(b, a)))) <= 1e-6)
 '''),
     Mistake("commutes_ignores_op", "commutes", "always uses the matrix product instead of op", '''
 def commutes(a, b, op, tol=1e-9):
@@ -81,6 +103,29 @@ def commutes(a, b, op, tol=1e-9):
     Mistake("commutes_same_order", "commutes", "compares op(a, b) with itself (arguments never swapped)", '''
 def commutes(a, b, op, tol=1e-9):
     return bool(np.max(np.abs(np.asarray(op(a, b)) - np.asarray(op(a, b)))) <= tol)
+'''),
+]
+
+ALTERNATIVES = [
+    Alternative("group_axioms_itertools", "check_group_axioms", "itertools.product and allclose with rtol=0", '''
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    from itertools import product
+
+    def same(x, y):
+        x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+        return bool(np.all(np.isfinite(x)) and np.allclose(x, y, rtol=0.0, atol=tol))
+
+    result = {"closure": all(bool(is_member(op(a, b))) for a, b in product(samples, repeat=2))}
+    result["identity"] = bool(is_member(identity)) and all(
+        same(op(identity, a), a) and same(op(a, identity), a) for a in samples)
+    result["inverse"] = all(bool(is_member(inverse(a))) and same(op(a, inverse(a)), identity)
+                            and same(op(inverse(a), a), identity) for a in samples)
+    result["associativity"] = all(same(op(op(a, b), c), op(a, op(b, c))) for a, b, c in product(samples, repeat=3))
+    return result
+'''),
+    Alternative("commutes_allclose_rtol0", "commutes", "np.allclose with rtol=0, returns a numpy bool", '''
+def commutes(a, b, op, tol=1e-9):
+    return np.allclose(op(a, b), op(b, a), rtol=0.0, atol=tol)
 '''),
 ]
 

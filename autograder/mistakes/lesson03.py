@@ -1,6 +1,6 @@
 """Typical mistakes for lesson 03: the Lie algebra so(3), exp and log."""
 
-from . import Mistake
+from . import Alternative, Mistake
 
 MISTAKES = [
     Mistake("hat_transposed", "hat", "the signs of [w]× swapped (the transpose, -[w]×)", '''
@@ -38,7 +38,7 @@ def exp_series(W, n_terms):
     from math import factorial
     W = np.asarray(W, dtype=float)
     return sum(W ** k / factorial(k) for k in range(n_terms))
-'''),
+''', classic=True),
     Mistake("exp_so3_identity_below_threshold", "exp_so3", "returns I when the angle is small", '''
 def exp_so3(w):
     w = np.asarray(w, dtype=float)
@@ -71,7 +71,7 @@ def log_so3(R):
         return np.zeros(3)
     W = theta / (2.0 * np.sin(theta)) * (R - R.T)
     return np.array([W[2, 1], W[0, 2], W[1, 0]])
-'''),
+''', classic=True),
     Mistake("log_so3_axis_sign_not_fixed", "log_so3",
             "near π takes the axis from (R + Rᵀ)/2 but never fixes its sign", '''
 def log_so3(R):
@@ -140,6 +140,236 @@ def axis_from_eigen(R):
 def axis_from_eigen(R):
     values, vectors = np.linalg.eig(np.asarray(R, dtype=float))
     u = np.real(vectors[:, 0])
+    return u / np.linalg.norm(u)
+'''),
+    Mistake("hat_symmetric", "hat", "no minus signs: a symmetric matrix", '''
+def hat(w):
+    x, y, z = np.asarray(w, dtype=float)
+    return np.array([[0.0, z, y], [z, 0.0, x], [y, x, 0.0]])
+'''),
+    Mistake("hat_swapped_components", "hat", "w1 and w3 swapped", '''
+def hat(w):
+    x, y, z = np.asarray(w, dtype=float)
+    return np.array([[0.0, -x, y], [x, 0.0, -z], [-y, z, 0.0]])
+'''),
+    Mistake("hat_diagonal", "hat", "puts w on the diagonal", '''
+def hat(w):
+    return np.diag(np.asarray(w, dtype=float))
+'''),
+    Mistake("vee_upper_entries", "vee", "reads W[0, 1], W[0, 2], W[1, 2]", '''
+def vee(W):
+    W = np.asarray(W, dtype=float)
+    return np.array([W[0, 1], W[0, 2], W[1, 2]])
+'''),
+    Mistake("vee_no_half", "vee", "vee of W - Wᵀ without the 1/2 (returns 2w)", '''
+def vee(W):
+    W = np.asarray(W, dtype=float)
+    D = W - W.T
+    return np.array([D[2, 1], D[0, 2], D[1, 0]])
+'''),
+    Mistake("vee_diagonal", "vee", "returns the diagonal", '''
+def vee(W):
+    return np.diag(np.asarray(W, dtype=float)).copy()
+'''),
+    Mistake("bracket_reversed", "bracket", "BA - AB", '''
+def bracket(A, B):
+    A, B = np.asarray(A, dtype=float), np.asarray(B, dtype=float)
+    return B @ A - A @ B
+''', hint="order is reversed", public_hint="not BA - AB"),
+    Mistake("bracket_product_only", "bracket", "only AB", '''
+def bracket(A, B):
+    return np.asarray(A, dtype=float) @ np.asarray(B, dtype=float)
+'''),
+    Mistake("exp_series_one_extra", "exp_series", "sums k = 0 … n_terms (one term too many)", '''
+def exp_series(W, n_terms):
+    W = np.asarray(W, dtype=float)
+    term, total = np.eye(len(W)), np.zeros((len(W), len(W)))
+    for k in range(n_terms + 1):
+        total = total + term
+        term = term @ W / (k + 1)
+    return total
+''', hint="one term too many", public_hint="n_terms terms means"),
+    Mistake("exp_series_no_factorial", "exp_series", "forgets the 1/k! (sums W^k)", '''
+def exp_series(W, n_terms):
+    W = np.asarray(W, dtype=float)
+    term, total = np.eye(len(W)), np.zeros((len(W), len(W)))
+    for k in range(n_terms):
+        total = total + term
+        term = term @ W
+    return total
+'''),
+    Mistake("exp_so3_unnormalised_axis", "exp_so3", "uses [w]× instead of the unit axis's [u]× in Rodrigues", '''
+def exp_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    return np.eye(3) + np.sin(theta) * W + (1 - np.cos(theta)) * W @ W
+'''),
+    Mistake("exp_so3_sin_cos_swapped", "exp_so3", "(1 - cos θ) on K and sin θ on K²", '''
+def exp_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    if theta == 0:
+        return np.eye(3)
+    k = w / theta
+    K = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
+    return np.eye(3) + (1 - np.cos(theta)) * K + np.sin(theta) * K @ K
+'''),
+    Mistake("log_so3_nan_at_identity", "log_so3", "θ/(2 sin θ) with no θ = 0 case: NaN for the identity", '''
+def log_so3(R):
+    R = np.asarray(R, dtype=float)
+    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    s = np.linalg.norm(a)
+    c = 0.5 * (np.trace(R) - 1.0)
+    theta = np.arctan2(s, c)
+    if c > 0.0:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return (theta / s) * a
+    B = 0.5 * (R + R.T) - c * np.eye(3)
+    j = int(np.argmax(np.diag(B)))
+    u = B[:, j] / np.linalg.norm(B[:, j])
+    return theta * (u if u @ a >= 0.0 else -u)
+''', hint="tiny angle", public_hint="tiny angle"),
+    Mistake("log_so3_arccos_tiny", "log_so3", "θ = arccos((tr R - 1)/2): tiny angles round to 0", '''
+def log_so3(R):
+    R = np.asarray(R, dtype=float)
+    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    s = np.linalg.norm(a)
+    c = 0.5 * (np.trace(R) - 1.0)
+    theta = np.arctan2(s, c)
+    theta = np.arccos(np.clip(c, -1.0, 1.0))
+    if c > 0.0:
+        return np.zeros(3) if theta == 0.0 else (theta / np.sin(theta)) * a
+    B = 0.5 * (R + R.T) - c * np.eye(3)
+    j = int(np.argmax(np.diag(B)))
+    u = B[:, j] / np.linalg.norm(B[:, j])
+    return theta * (u if u @ a >= 0.0 else -u)
+''', hint="arccos rounds tiny angles", public_hint="arccos rounds tiny angles"),
+    Mistake("log_so3_no_half", "log_so3", "θ/sin θ · vee(R - Rᵀ) without the 1/2 (twice the vector)", '''
+def log_so3(R):
+    R = np.asarray(R, dtype=float)
+    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    s = np.linalg.norm(a)
+    c = 0.5 * (np.trace(R) - 1.0)
+    theta = np.arctan2(s, c)
+    if c > 0.0:
+        return np.zeros(3) if s == 0.0 else (2.0 * theta / s) * a
+    B = 0.5 * (R + R.T) - c * np.eye(3)
+    j = int(np.argmax(np.diag(B)))
+    u = B[:, j] / np.linalg.norm(B[:, j])
+    return theta * (u if u @ a >= 0.0 else -u)
+'''),
+    Mistake("log_so3_first_order_small", "log_so3", "below θ = 1e-2 returns vee(R - Rᵀ)/2, dropping the θ²/6 term", '''
+def log_so3(R):
+    R = np.asarray(R, dtype=float)
+    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    s = np.linalg.norm(a)
+    c = 0.5 * (np.trace(R) - 1.0)
+    theta = np.arctan2(s, c)
+    if c > 0.0:
+        return a if theta < 1e-2 else (theta / s) * a
+    B = 0.5 * (R + R.T) - c * np.eye(3)
+    j = int(np.argmax(np.diag(B)))
+    u = B[:, j] / np.linalg.norm(B[:, j])
+    return theta * (u if u @ a >= 0.0 else -u)
+'''),
+    Mistake("axis_angle_no_pi_branch", "axis_angle", "u = vee(R - Rᵀ)/(2 sin θ) at every angle (lost at π)", '''
+def axis_angle(R):
+    R = np.asarray(R, dtype=float)
+    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    s = np.linalg.norm(a)
+    c = 0.5 * (np.trace(R) - 1.0)
+    theta = np.arctan2(s, c)
+    if s < 1e-300:
+        return np.array([1.0, 0.0, 0.0]), float(theta)
+    return a / s, float(theta)
+'''),
+    Mistake("axis_from_eigen_null_space_of_R", "axis_from_eigen", "the SVD null space of R instead of R - I", '''
+def axis_from_eigen(R):
+    return np.linalg.svd(np.asarray(R, dtype=float))[2][-1]
+'''),
+    Mistake("axis_from_eigen_eigh", "axis_from_eigen", "np.linalg.eigh, which assumes a symmetric matrix", '''
+def axis_from_eigen(R):
+    values, vectors = np.linalg.eigh(np.asarray(R, dtype=float))
+    return vectors[:, int(np.argmin(np.abs(values - 1.0)))]
+'''),
+]
+
+ALTERNATIVES = [
+    Alternative("hat_from_cross", "hat", "columns are w × e_j", '''
+def hat(w):
+    return np.cross(np.asarray(w, dtype=float), np.eye(3)).T
+'''),
+    Alternative("vee_antisymmetric_part", "vee", "from the antisymmetric part, as a list", '''
+def vee(W):
+    A = 0.5 * (np.asarray(W, dtype=float) - np.asarray(W, dtype=float).T)
+    return [A[2][1], A[0][2], A[1][0]]
+'''),
+    Alternative("bracket_lists", "bracket", "np.dot, returned as nested lists", '''
+def bracket(A, B):
+    return (np.dot(A, B) - np.dot(B, A)).tolist()
+'''),
+    Alternative("exp_series_matrix_power", "exp_series", "matrix_power and math.factorial", '''
+def exp_series(W, n_terms):
+    import math
+    W = np.asarray(W, dtype=float)
+    return sum((np.linalg.matrix_power(W, k) / math.factorial(k) for k in range(n_terms)), np.zeros(W.shape))
+'''),
+    Alternative("exp_so3_quaternion", "exp_so3", "through the unit quaternion (cos θ/2, sin θ/2 u)", '''
+def exp_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    half = 0.5 * np.sinc(theta / (2 * np.pi))                     # sin(θ/2)/θ, exact at 0
+    x, y, z = half * w
+    s = np.cos(theta / 2)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - s * z), 2 * (x * z + s * y)],
+                     [2 * (x * y + s * z), 1 - 2 * (x * x + z * z), 2 * (y * z - s * x)],
+                     [2 * (x * z - s * y), 2 * (y * z + s * x), 1 - 2 * (x * x + y * y)]])
+'''),
+    Alternative("log_so3_quaternion", "log_so3", "through Shepperd's quaternion: 2 atan2(|v|, w) v/|v|", '''
+def log_so3(R):
+    R = np.asarray(R, dtype=float)
+    t = np.trace(R)
+    k = int(np.argmax([t, R[0, 0], R[1, 1], R[2, 2]]))
+    if k == 0:
+        q = np.array([1 + t, R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    elif k == 1:
+        q = np.array([R[2, 1] - R[1, 2], 1 + 2 * R[0, 0] - t, R[0, 1] + R[1, 0], R[0, 2] + R[2, 0]])
+    elif k == 2:
+        q = np.array([R[0, 2] - R[2, 0], R[0, 1] + R[1, 0], 1 + 2 * R[1, 1] - t, R[1, 2] + R[2, 1]])
+    else:
+        q = np.array([R[1, 0] - R[0, 1], R[0, 2] + R[2, 0], R[1, 2] + R[2, 1], 1 + 2 * R[2, 2] - t])
+    q = q / np.linalg.norm(q)
+    if q[0] < 0:
+        q = -q
+    n = np.linalg.norm(q[1:])
+    if n == 0.0:
+        return np.zeros(3)
+    return 2.0 * np.arctan2(n, q[0]) * q[1:] / n
+'''),
+    Alternative("axis_angle_list", "axis_angle", "returns [u, θ] as a list, axis from the symmetric part near π", '''
+def axis_angle(R):
+    R = np.asarray(R, dtype=float)
+    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    c = 0.5 * (np.trace(R) - 1.0)
+    theta = float(np.arctan2(np.linalg.norm(a), c))
+    if theta == 0.0:
+        return [np.array([1.0, 0.0, 0.0]), theta]
+    if c > 0.0:
+        return [a / np.linalg.norm(a), theta]
+    B = 0.5 * (R + R.T) - c * np.eye(3)
+    u = B[:, int(np.argmax(np.diag(B)))]
+    u = u / np.linalg.norm(u)
+    return [-u if u @ a < 0 else u, theta]
+'''),
+    Alternative("axis_from_eigen_svd", "axis_from_eigen", "the SVD null space of R - I", '''
+def axis_from_eigen(R):
+    return np.linalg.svd(np.asarray(R, dtype=float) - np.eye(3))[2][-1]
+'''),
+    Alternative("axis_from_eigen_complex", "axis_from_eigen", "np.linalg.eig's complex eigenvector as it comes", '''
+def axis_from_eigen(R):
+    values, vectors = np.linalg.eig(np.asarray(R, dtype=float))
+    u = vectors[:, int(np.argmin(np.abs(values - 1.0)))]
     return u / np.linalg.norm(u)
 '''),
 ]

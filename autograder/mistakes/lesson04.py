@@ -1,6 +1,6 @@
 """Typical mistakes for lesson 04: quaternions."""
 
-from . import Mistake
+from . import Alternative, Mistake
 
 MISTAKES = [
     Mistake("quat_multiply_cross_flipped", "quat_multiply",
@@ -11,7 +11,7 @@ def quat_multiply(p, q):
     w = p[0] * q[0] - p[1:] @ q[1:]
     v = p[0] * q[1:] + q[0] * p[1:] - np.cross(p[1:], q[1:])
     return np.concatenate([[w], v])
-'''),
+''', classic=True),
     Mistake("quat_left_transposed", "quat_left", "typed [q]_L with rows and columns swapped", '''
 def quat_left(q):
     w, x, y, z = np.asarray(q, dtype=float)
@@ -44,7 +44,7 @@ def quat_from_axis_angle(u, theta):
     u = np.asarray(u, dtype=float)
     u = u / np.linalg.norm(u)
     return np.concatenate([[np.cos(theta)], np.sin(theta) * u])
-'''),
+''', classic=True),
     Mistake("quat_from_axis_angle_degrees", "quat_from_axis_angle", "treats the angle as degrees", '''
 def quat_from_axis_angle(u, theta):
     u = np.asarray(u, dtype=float)
@@ -102,7 +102,7 @@ def matrix_to_quat(R):
         z = 0.5 * np.sqrt(1.0 + 2 * R[2, 2] - t)
         q = np.array([(R[1, 0] - R[0, 1]) / (4 * z), (R[0, 2] + R[2, 0]) / (4 * z), (R[1, 2] + R[2, 1]) / (4 * z), z])
     return q / np.linalg.norm(q)
-'''),
+''', classic=True),
     Mistake("wxyz_to_xyzw_reversed", "wxyz_to_xyzw", "reverses the array ([z, y, x, w])", '''
 def wxyz_to_xyzw(q):
     return np.asarray(q, dtype=float)[..., ::-1]
@@ -128,9 +128,279 @@ def quat_slerp(q0, q1, t):
         q1 = -q1
     return (1 - t) * q0 + t * q1
 '''),
+    Mistake("quat_multiply_no_cross", "quat_multiply", "drops the cross product p_v × q_v", '''
+def quat_multiply(p, q):
+    p, q = np.asarray(p, dtype=float), np.asarray(q, dtype=float)
+    return np.concatenate([[p[0] * q[0] - p[1:] @ q[1:]], p[0] * q[1:] + q[0] * p[1:]])
+'''),
+    Mistake("quat_multiply_dot_plus", "quat_multiply", "w = p_w q_w + p_v · q_v (wrong sign of the dot product)", '''
+def quat_multiply(p, q):
+    p, q = np.asarray(p, dtype=float), np.asarray(q, dtype=float)
+    return np.concatenate([[p[0] * q[0] + p[1:] @ q[1:]], p[0] * q[1:] + q[0] * p[1:] + np.cross(p[1:], q[1:])])
+'''),
+    Mistake("quat_multiply_elementwise", "quat_multiply", "p * q entry by entry", '''
+def quat_multiply(p, q):
+    return np.asarray(p, dtype=float) * np.asarray(q, dtype=float)
+'''),
+    Mistake("quat_left_is_right", "quat_left", "returns the right-product matrix [q]_R", '''
+def quat_left(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    return np.array([[w, -x, -y, -z], [x, w, z, -y], [y, -z, w, x], [z, y, -x, w]])
+''', hint="this is [p]_R"),
+    Mistake("quat_left_no_minus_row", "quat_left", "first row [w, x, y, z] without the minus signs", '''
+def quat_left(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    return np.array([[w, x, y, z], [x, w, -z, y], [y, z, w, -x], [z, -y, x, w]])
+'''),
+    Mistake("quat_left_scalar_last", "quat_left", "reads q as [x, y, z, w]", '''
+def quat_left(q):
+    x, y, z, w = np.asarray(q, dtype=float)
+    return np.array([[w, -x, -y, -z], [x, w, -z, y], [y, z, w, -x], [z, -y, x, w]])
+'''),
+    Mistake("quat_right_is_left", "quat_right", "returns the left-product matrix [q]_L", '''
+def quat_right(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    return np.array([[w, -x, -y, -z], [x, w, -z, y], [y, z, w, -x], [z, -y, x, w]])
+''', hint="this is [q]_L"),
+    Mistake("quat_right_transposed", "quat_right", "[q]_R with rows and columns swapped", '''
+def quat_right(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    return np.array([[w, -x, -y, -z], [x, w, z, -y], [y, -z, w, x], [z, y, -x, w]]).T
+'''),
+    Mistake("quat_right_scalar_last", "quat_right", "reads q as [x, y, z, w]", '''
+def quat_right(q):
+    x, y, z, w = np.asarray(q, dtype=float)
+    return np.array([[w, -x, -y, -z], [x, w, z, -y], [y, -z, w, x], [z, y, -x, w]])
+'''),
+    Mistake("quat_conjugate_unchanged", "quat_conjugate", "returns q itself", '''
+def quat_conjugate(q):
+    return np.array(q, dtype=float)
+''', hint="returned q unchanged"),
+    Mistake("quat_conjugate_negates_all", "quat_conjugate", "returns -q", '''
+def quat_conjugate(q):
+    return -np.asarray(q, dtype=float)
+'''),
+    Mistake("quat_conjugate_no_asarray", "quat_conjugate", "q * [1, -1, -1, -1] on a list fails", '''
+def quat_conjugate(q):
+    return np.concatenate([q[:1], -q[1:]])
+''', hint="np.asarray", public_hint="np.asarray"),
+    Mistake("quat_inverse_divides_by_norm", "quat_inverse", "divides the conjugate by |q| instead of |q|²", '''
+def quat_inverse(q):
+    q = np.asarray(q, dtype=float)
+    return q * [1.0, -1.0, -1.0, -1.0] / np.linalg.norm(q)
+''', hint="not by |q|²"),
+    Mistake("quat_inverse_negates", "quat_inverse", "returns -q / |q|²", '''
+def quat_inverse(q):
+    q = np.asarray(q, dtype=float)
+    return -q / (q @ q)
+'''),
+    Mistake("quat_inverse_reciprocal", "quat_inverse", "1/q entry by entry", '''
+def quat_inverse(q):
+    q = np.asarray(q, dtype=float)
+    with np.errstate(divide="ignore"):
+        return 1.0 / q
+'''),
+    Mistake("quat_from_axis_angle_unnormalised", "quat_from_axis_angle", "does not normalise the axis", '''
+def quat_from_axis_angle(u, theta):
+    u = np.asarray(u, dtype=float)
+    return np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
+''', hint="divide u by its norm"),
+    Mistake("quat_from_axis_angle_sin_cos", "quat_from_axis_angle", "sin for the scalar, cos for the vector", '''
+def quat_from_axis_angle(u, theta):
+    u = np.asarray(u, dtype=float) / np.linalg.norm(u)
+    return np.concatenate([[np.sin(theta / 2)], np.cos(theta / 2) * u])
+'''),
+    Mistake("quat_rotate_no_conjugate", "quat_rotate", "q ⊗ v ⊗ q (no conjugate)", '''
+def quat_rotate(q, v):
+    def mul(a, b):
+        return np.concatenate([[a[0] * b[0] - a[1:] @ b[1:]], a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:])])
+    q = np.asarray(q, dtype=float)
+    return mul(mul(q, np.concatenate([[0.0], v])), q)[1:]
+'''),
+    Mistake("quat_rotate_scalar_last", "quat_rotate", "reads q as [x, y, z, w]", '''
+def quat_rotate(q, v):
+    def mul(a, b):
+        return np.concatenate([[a[0] * b[0] - a[1:] @ b[1:]], a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:])])
+    q = np.roll(np.asarray(q, dtype=float), 1)
+    return mul(mul(q, np.concatenate([[0.0], v])), q * [1, -1, -1, -1])[1:]
+''', hint="scalar last"),
+    Mistake("quat_rotate_half_formula", "quat_rotate", "v + 2w (u × v) only: drops the u × (u × v) term", '''
+def quat_rotate(q, v):
+    q, v = np.asarray(q, dtype=float), np.asarray(v, dtype=float)
+    return v + 2.0 * q[0] * np.cross(q[1:], v)
+'''),
+    Mistake("quat_to_matrix_no_factor_two", "quat_to_matrix", "forgets the factor 2", '''
+def quat_to_matrix(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    return np.array([[1 - (y * y + z * z), x * y - w * z, x * z + w * y],
+                     [x * y + w * z, 1 - (x * x + z * z), y * z - w * x],
+                     [x * z - w * y, y * z + w * x, 1 - (x * x + y * y)]])
+'''),
+    Mistake("quat_to_matrix_unnormalised", "quat_to_matrix", "uses the half angle as if q were the axis-angle", '''
+def quat_to_matrix(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    K = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+    return np.eye(3) + w * K + K @ K
+'''),
+    Mistake("matrix_to_quat_scalar_last", "matrix_to_quat", "returns [x, y, z, w]", '''
+def matrix_to_quat(R):
+    R = np.asarray(R, dtype=float)
+    t = np.trace(R)
+    k = int(np.argmax([t, R[0, 0], R[1, 1], R[2, 2]]))
+    q = [np.array([1 + t, R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]]),
+         np.array([R[2, 1] - R[1, 2], 1 + 2 * R[0, 0] - t, R[0, 1] + R[1, 0], R[0, 2] + R[2, 0]]),
+         np.array([R[0, 2] - R[2, 0], R[0, 1] + R[1, 0], 1 + 2 * R[1, 1] - t, R[1, 2] + R[2, 1]]),
+         np.array([R[1, 0] - R[0, 1], R[0, 2] + R[2, 0], R[1, 2] + R[2, 1], 1 + 2 * R[2, 2] - t])][k]
+    q = q / np.linalg.norm(q) * (1.0 if q[0] >= 0 else -1.0)
+    return np.roll(q, -1)
+''', hint="scalar-last"),
+    Mistake("matrix_to_quat_transposed", "matrix_to_quat", "R - Rᵀ read the wrong way round (the conjugate)", '''
+def matrix_to_quat(R):
+    R = np.asarray(R, dtype=float).T
+    t = np.trace(R)
+    k = int(np.argmax([t, R[0, 0], R[1, 1], R[2, 2]]))
+    q = [np.array([1 + t, R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]]),
+         np.array([R[2, 1] - R[1, 2], 1 + 2 * R[0, 0] - t, R[0, 1] + R[1, 0], R[0, 2] + R[2, 0]]),
+         np.array([R[0, 2] - R[2, 0], R[0, 1] + R[1, 0], 1 + 2 * R[1, 1] - t, R[1, 2] + R[2, 1]]),
+         np.array([R[1, 0] - R[0, 1], R[0, 2] + R[2, 0], R[1, 2] + R[2, 1], 1 + 2 * R[2, 2] - t])][k]
+    return q / np.linalg.norm(q) * (1.0 if q[0] >= 0 else -1.0)
+''', hint="conjugate"),
+    Mistake("wxyz_to_xyzw_no_move", "wxyz_to_xyzw", "returns q unchanged", '''
+def wxyz_to_xyzw(q):
+    return np.array(q, dtype=float)
+'''),
+    Mistake("wxyz_to_xyzw_wrong_roll", "wxyz_to_xyzw", "rolls the wrong way ([z, w, x, y])", '''
+def wxyz_to_xyzw(q):
+    return np.roll(np.asarray(q, dtype=float), 1, axis=-1)
+'''),
+    Mistake("wxyz_to_xyzw_single_only", "wxyz_to_xyzw", "np.roll without axis: wrong for a stack", '''
+def wxyz_to_xyzw(q):
+    q = np.asarray(q, dtype=float)
+    return np.roll(q.ravel(), -1).reshape(q.shape)
+'''),
+    Mistake("xyzw_to_wxyz_reversed", "xyzw_to_wxyz", "reverses the array", '''
+def xyzw_to_wxyz(q):
+    return np.asarray(q, dtype=float)[..., ::-1].copy()
+''', hint="reversed"),
+    Mistake("xyzw_to_wxyz_no_move", "xyzw_to_wxyz", "returns q unchanged", '''
+def xyzw_to_wxyz(q):
+    return np.array(q, dtype=float)
+'''),
+    Mistake("xyzw_to_wxyz_single_only", "xyzw_to_wxyz", "np.roll without axis: wrong for a stack", '''
+def xyzw_to_wxyz(q):
+    q = np.asarray(q, dtype=float)
+    return np.roll(q.ravel(), 1).reshape(q.shape)
+'''),
+    Mistake("quat_slerp_nlerp", "quat_slerp", "normalised linear interpolation (with the sign flip) instead of slerp", '''
+def quat_slerp(q0, q1, t):
+    q0, q1 = np.asarray(q0, dtype=float), np.asarray(q1, dtype=float)
+    if q0 @ q1 < 0:
+        q1 = -q1
+    q = (1 - t) * q0 + t * q1
+    return q / np.linalg.norm(q)
+''', hint="nlerp", public_hint="nlerp", classic=True),
+    Mistake("quat_slerp_no_small_branch", "quat_slerp", "divides by sin Ω even when the inputs are equal", '''
+def quat_slerp(q0, q1, t):
+    q0, q1 = np.asarray(q0, dtype=float), np.asarray(q1, dtype=float)
+    if q0 @ q1 < 0:
+        q1 = -q1
+    omega = np.arccos(np.clip(q0 @ q1, -1.0, 1.0))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return (np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega)
+'''),
+]
+
+ALTERNATIVES = [
+    Alternative("quat_multiply_matrix_list", "quat_multiply", "through the left-product matrix, returned as a list", '''
+def quat_multiply(p, q):
+    w, x, y, z = np.asarray(p, dtype=float)
+    L = np.array([[w, -x, -y, -z], [x, w, -z, y], [y, z, w, -x], [z, -y, x, w]])
+    return (L @ np.asarray(q, dtype=float)).tolist()
+'''),
+    Alternative("quat_left_blocks", "quat_left", "from blocks w I + [[0, -vᵀ], [v, [v]×]]", '''
+def quat_left(q):
+    q = np.asarray(q, dtype=float)
+    w, v = q[0], q[1:]
+    M = w * np.eye(4)
+    M[0, 1:], M[1:, 0] = -v, v
+    M[1:, 1:] += np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+    return M
+'''),
+    Alternative("quat_right_columns", "quat_right", "columns are q ⊗ e_k", '''
+def quat_right(q):
+    q = np.asarray(q, dtype=float)
+    def mul(a, b):
+        return np.concatenate([[a[0] * b[0] - a[1:] @ b[1:]], a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:])])
+    return np.column_stack([mul(e, q) for e in np.eye(4)])
+'''),
+    Alternative("quat_conjugate_in_place", "quat_conjugate", "negates the vector part of its argument in place", '''
+def quat_conjugate(q):
+    q = np.asarray(q, dtype=float)
+    q[1:] *= -1.0
+    return q
+'''),
+    Alternative("quat_inverse_solve", "quat_inverse", "solves [q]_L x = 1", '''
+def quat_inverse(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    L = np.array([[w, -x, -y, -z], [x, w, -z, y], [y, z, w, -x], [z, -y, x, w]])
+    return np.linalg.solve(L, [1.0, 0.0, 0.0, 0.0])
+'''),
+    Alternative("quat_from_axis_angle_list", "quat_from_axis_angle", "a plain list", '''
+def quat_from_axis_angle(u, theta):
+    u = np.asarray(u, dtype=float) / np.linalg.norm(u)
+    s = np.sin(theta / 2)
+    return [np.cos(theta / 2), s * u[0], s * u[1], s * u[2]]
+'''),
+    Alternative("quat_rotate_cross_form", "quat_rotate", "v + 2w (u × v) + 2 u × (u × v)", '''
+def quat_rotate(q, v):
+    q, v = np.asarray(q, dtype=float), np.asarray(v, dtype=float)
+    t = 2.0 * np.cross(q[1:], v)
+    return v + q[0] * t + np.cross(q[1:], t)
+'''),
+    Alternative("quat_to_matrix_products", "quat_to_matrix", "[q]_L [q*]_R restricted to the vector block", '''
+def quat_to_matrix(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    L = np.array([[w, -x, -y, -z], [x, w, -z, y], [y, z, w, -x], [z, -y, x, w]])
+    Rc = np.array([[w, x, y, z], [-x, w, -z, y], [-y, z, w, -x], [-z, -y, x, w]])
+    return (L @ Rc)[1:, 1:]
+'''),
+    Alternative("matrix_to_quat_davenport", "matrix_to_quat", "Davenport's q-method: the top eigenvector of K", '''
+def matrix_to_quat(R):
+    R = np.asarray(R, dtype=float)
+    t = np.trace(R)
+    K = np.array([[t, R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]],
+                  [R[2, 1] - R[1, 2], 2 * R[0, 0] - t, R[0, 1] + R[1, 0], R[0, 2] + R[2, 0]],
+                  [R[0, 2] - R[2, 0], R[0, 1] + R[1, 0], 2 * R[1, 1] - t, R[1, 2] + R[2, 1]],
+                  [R[1, 0] - R[0, 1], R[0, 2] + R[2, 0], R[1, 2] + R[2, 1], 2 * R[2, 2] - t]]) / 3.0
+    values, vectors = np.linalg.eigh(K)
+    q = vectors[:, -1]
+    return -q if q[0] < 0 else q
+'''),
+    Alternative("wxyz_to_xyzw_roll", "wxyz_to_xyzw", "np.roll along the last axis", '''
+def wxyz_to_xyzw(q):
+    return np.roll(np.asarray(q, dtype=float), -1, axis=-1)
+'''),
+    Alternative("xyzw_to_wxyz_index", "xyzw_to_wxyz", "fancy indexing [3, 0, 1, 2]", '''
+def xyzw_to_wxyz(q):
+    return np.asarray(q, dtype=float)[..., [3, 0, 1, 2]]
+'''),
+    Alternative("quat_slerp_power", "quat_slerp", "power form q0 ⊗ (q0* ⊗ q1)^t through the log", '''
+def quat_slerp(q0, q1, t):
+    def mul(a, b):
+        return np.concatenate([[a[0] * b[0] - a[1:] @ b[1:]], a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:])])
+    q0, q1 = np.asarray(q0, dtype=float), np.asarray(q1, dtype=float)
+    d = mul(q0 * [1, -1, -1, -1], q1)
+    if d[0] < 0:
+        d = -d
+    n = np.linalg.norm(d[1:])
+    half = np.arctan2(n, d[0])
+    axis = d[1:] / n if n > 0 else np.zeros(3)
+    return mul(q0, np.concatenate([[np.cos(t * half)], np.sin(t * half) * axis]))
+'''),
 ]
 
 SAMPLE = {
+
     "chloe": ["quat_multiply_cross_flipped"],
     "dev": ["quat_to_matrix_transposed", "quat_rotate_conjugate_left"],
     "emma": ["quat_from_axis_angle_degrees"],

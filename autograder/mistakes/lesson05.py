@@ -1,6 +1,6 @@
 """Typical mistakes for lesson 05: Euler angles and their singularities."""
 
-from . import Mistake
+from . import Alternative, Mistake
 
 MISTAKES = [
     Mistake("euler_matrix_xyz_order", "euler_zyx_to_matrix",
@@ -135,9 +135,98 @@ def euler_rates_matrix(pitch, roll):
     cr, sr = np.cos(roll), np.sin(roll)
     return np.array([[1.0, 0.0, -sp], [0.0, cr, cp * sr], [0.0, -sr, cp * cr]])
 '''),
+    Mistake("euler_matrix_transposed", "euler_zyx_to_matrix", "returns Rᵀ (the inverse attitude)", '''
+def euler_zyx_to_matrix(yaw, pitch, roll):
+    cy, sy, cp, sp, cr, sr = np.cos(yaw), np.sin(yaw), np.cos(pitch), np.sin(pitch), np.cos(roll), np.sin(roll)
+    return np.array([[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+                     [-sp, cp * sr, cp * cr]]).T
+'''),
+    Mistake("euler_matrix_pitch_sign", "euler_zyx_to_matrix", "Ry written with the minus sign top-right", '''
+def euler_zyx_to_matrix(yaw, pitch, roll):
+    cy, sy, cp, sp, cr, sr = np.cos(yaw), np.sin(yaw), np.cos(pitch), np.sin(pitch), np.cos(roll), np.sin(roll)
+    Rz = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
+    Ry = np.array([[cp, 0.0, -sp], [0.0, 1.0, 0.0], [sp, 0.0, cp]])
+    Rx = np.array([[1.0, 0.0, 0.0], [0.0, cr, -sr], [0.0, sr, cr]])
+    return Rz @ Ry @ Rx
+'''),
+    Mistake("euler_to_quat_wrong_sign", "euler_zyx_to_quat", "all plus signs in the mixed products", '''
+def euler_zyx_to_quat(yaw, pitch, roll):
+    cy, sy = np.cos(yaw / 2), np.sin(yaw / 2)
+    cp, sp = np.cos(pitch / 2), np.sin(pitch / 2)
+    cr, sr = np.cos(roll / 2), np.sin(roll / 2)
+    return np.array([cy * cp * cr + sy * sp * sr, cy * cp * sr + sy * sp * cr,
+                     cy * sp * cr + sy * cp * sr, sy * cp * cr + cy * sp * sr])
+'''),
+    Mistake("euler_to_quat_scalar_last", "euler_zyx_to_quat", "returns [x, y, z, w]", '''
+def euler_zyx_to_quat(yaw, pitch, roll):
+    cy, sy = np.cos(yaw / 2), np.sin(yaw / 2)
+    cp, sp = np.cos(pitch / 2), np.sin(pitch / 2)
+    cr, sr = np.cos(roll / 2), np.sin(roll / 2)
+    return np.array([cy * cp * sr - sy * sp * cr, cy * sp * cr + sy * cp * sr,
+                     sy * cp * cr - cy * sp * sr, cy * cp * cr + sy * sp * sr])
+'''),
+    Mistake("quat_to_euler_swapped_yaw_roll", "quat_to_euler_zyx", "returns (roll, pitch, yaw)", '''
+def quat_to_euler_zyx(q):
+    w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    roll = np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))
+    pitch = np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0))
+    yaw = np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+    return float(roll), float(pitch), float(yaw)
+'''),
+    Mistake("euler_rates_transposed", "euler_rates_matrix", "returns Eᵀ", '''
+def euler_rates_matrix(pitch, roll):
+    cp, sp, cr, sr = np.cos(pitch), np.sin(pitch), np.cos(roll), np.sin(roll)
+    return np.array([[-sp, 0.0, 1.0], [sr * cp, cr, 0.0], [cr * cp, -sr, 0.0]]).T
+''', hint="transpose of E"),
+    Mistake("euler_rates_identity", "euler_rates_matrix", "body rates = Euler-angle rates (E = I)", '''
+def euler_rates_matrix(pitch, roll):
+    return np.eye(3)
+'''),
+]
+
+ALTERNATIVES = [
+    Alternative("matrix_to_euler_undo_yaw", "matrix_to_euler_zyx", "pitch and roll from Rz(yaw)ᵀ R, returned as a list", '''
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+    fold = lambda a: float(np.pi if a <= -np.pi else a)
+    if np.hypot(R[0, 0], R[1, 0]) < 1e-12 and np.hypot(R[2, 1], R[2, 2]) < 1e-12:
+        return [fold(np.arctan2(-R[0, 1], R[1, 1])), float(np.arctan2(-R[2, 0], 0.0)), 0.0]
+    yaw = np.arctan2(R[1, 0], R[0, 0])
+    c, s = np.cos(yaw), np.sin(yaw)
+    A = np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]]) @ R          # Ry(pitch) Rx(roll)
+    return [fold(yaw), float(np.arctan2(-A[2, 0], A[0, 0])), fold(np.arctan2(-A[1, 2], A[1, 1]))]
+'''),
+    Alternative("euler_matrix_product_list", "euler_zyx_to_matrix", "Rz @ Ry @ Rx, returned as nested lists", '''
+def euler_zyx_to_matrix(yaw, pitch, roll):
+    def rot(axis, a):
+        c, s = np.cos(a), np.sin(a)
+        i, j = [k for k in range(3) if k != axis]
+        M = np.eye(3)
+        M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
+        return M.T if axis == 1 else M
+    return (rot(2, yaw) @ rot(1, pitch) @ rot(0, roll)).tolist()
+'''),
+    Alternative("euler_to_quat_products", "euler_zyx_to_quat", "q_z ⊗ q_y ⊗ q_x", '''
+def euler_zyx_to_quat(yaw, pitch, roll):
+    def mul(a, b):
+        return np.concatenate([[a[0] * b[0] - a[1:] @ b[1:]], a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:])])
+    qz = np.array([np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)])
+    qy = np.array([np.cos(pitch / 2), 0.0, np.sin(pitch / 2), 0.0])
+    qx = np.array([np.cos(roll / 2), np.sin(roll / 2), 0.0, 0.0])
+    return mul(mul(qz, qy), qx)
+'''),
+    Alternative("euler_rates_columns", "euler_rates_matrix", "columns are the axes e_z, e_y, e_x seen in the body", '''
+def euler_rates_matrix(pitch, roll):
+    cp, sp, cr, sr = np.cos(pitch), np.sin(pitch), np.cos(roll), np.sin(roll)
+    Rx = np.array([[1.0, 0.0, 0.0], [0.0, cr, -sr], [0.0, sr, cr]])
+    Ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
+    return np.column_stack([Rx.T @ Ry.T @ [0.0, 0.0, 1.0], Rx.T @ [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])
+'''),
 ]
 
 SAMPLE = {
+
     "dev": ["euler_rates_rx_not_transposed"],
     "emma": ["euler_matrix_degrees"],
     "farid": ["matrix_to_euler_roll_not_zeroed"],

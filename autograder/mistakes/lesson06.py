@@ -1,12 +1,12 @@
 """Typical mistakes for lesson 06: perturbations and Jacobians."""
 
-from . import Mistake
+from . import Alternative, Mistake
 
 MISTAKES = [
     Mistake("boxplus_right_on_the_left", "boxplus_right", "multiplies Exp(δ) on the left (the left perturbation)", '''
 def boxplus_right(R, d):
     return Exp(d) @ np.asarray(R, dtype=float)
-'''),
+''', classic=True),
     Mistake("boxplus_right_first_order", "boxplus_right", "R (I + [δ]×): the first-order step, not a rotation", '''
 def boxplus_right(R, d):
     return np.asarray(R, dtype=float) @ (np.eye(3) + skew(d))
@@ -70,30 +70,10 @@ def numerical_jacobian(f, x, boxplus=None):
         columns.append((np.asarray(f(moved.reshape(x.shape)), dtype=float) - f0) / step)
     return np.column_stack(columns)
 '''),
-    Mistake("numerical_jacobian_central", "numerical_jacobian",
-            "central differences with the lecture's steps, not the forward differences asked for", '''
-def numerical_jacobian(f, x, boxplus=None):
-    if boxplus is None:
-        x = np.asarray(x, dtype=float)
-        columns = []
-        for j in range(x.size):
-            step = max(abs(1e-4 * x[j]), 1e-6)
-            ahead, behind = x.copy(), x.copy()
-            ahead[j] += step
-            behind[j] -= step
-            columns.append((np.asarray(f(ahead), dtype=float) - np.asarray(f(behind), dtype=float)) / (2 * step))
-        return np.column_stack(columns)
-    columns = []
-    for j in range(3):
-        d = np.zeros(3)
-        d[j] = 1e-6
-        columns.append((np.asarray(f(boxplus(x, d)), dtype=float) - np.asarray(f(boxplus(x, -d)), dtype=float)) / 2e-6)
-    return np.column_stack(columns)
-'''),
     Mistake("jacobian_rotate_point_left", "jacobian_rotate_point", "-[R p]×: the Jacobian of the left perturbation", '''
 def jacobian_rotate_point(R, p):
     return -skew(np.asarray(R, dtype=float) @ np.asarray(p, dtype=float))
-'''),
+''', classic=True),
     Mistake("jacobian_rotate_point_sign", "jacobian_rotate_point", "R [p]×: the sign lost in [δ]× p = -[p]× δ", '''
 def jacobian_rotate_point(R, p):
     return np.asarray(R, dtype=float) @ skew(p)
@@ -136,9 +116,223 @@ def right_jacobian_inv_so3(w):
         a, b = (1 - np.cos(theta)) / theta**2, (theta - np.sin(theta)) / theta**3
     return (np.eye(3) - a * W + b * W @ W).T
 '''),
+    Mistake("boxplus_right_adds", "boxplus_right", "R + [δ]×: adds in the algebra", '''
+def boxplus_right(R, d):
+    return np.asarray(R, dtype=float) + skew(d)
+'''),
+    Mistake("boxplus_right_minus", "boxplus_right", "R Exp(-δ)", '''
+def boxplus_right(R, d):
+    return np.asarray(R, dtype=float) @ Exp(-np.asarray(d, dtype=float))
+'''),
+    Mistake("boxplus_left_first_order", "boxplus_left", "(I + [δ]×) R: first order, not a rotation", '''
+def boxplus_left(R, d):
+    return (np.eye(3) + skew(d)) @ np.asarray(R, dtype=float)
+'''),
+    Mistake("boxplus_left_minus", "boxplus_left", "Exp(-δ) R", '''
+def boxplus_left(R, d):
+    return Exp(-np.asarray(d, dtype=float)) @ np.asarray(R, dtype=float)
+'''),
+    Mistake("boxplus_left_transposed", "boxplus_left", "Exp(δ) Rᵀ", '''
+def boxplus_left(R, d):
+    return Exp(d) @ np.asarray(R, dtype=float).T
+'''),
+    Mistake("boxminus_difference", "boxminus", "Log(R_a) - Log(R_b): subtracts rotation vectors", '''
+def boxminus(R_a, R_b):
+    return Log(R_a) - Log(R_b)
+'''),
+    Mistake("boxminus_vee_of_difference", "boxminus", "vee(R_bᵀ R_a - I): first order only", '''
+def boxminus(R_a, R_b):
+    D = np.asarray(R_b, dtype=float).T @ np.asarray(R_a, dtype=float)
+    return 0.5 * np.array([D[2, 1] - D[1, 2], D[0, 2] - D[2, 0], D[1, 0] - D[0, 1]])
+'''),
+    Mistake("quat_boxplus_left", "quat_boxplus", "Exp_q(δ) ⊗ q: the left perturbation", '''
+def quat_boxplus(q, d):
+    d = np.asarray(d, dtype=float)
+    angle = np.linalg.norm(d)
+    dq = np.concatenate([[np.cos(angle / 2)], np.sinc(angle / (2 * np.pi)) / 2 * d])
+    return quat_product(dq, q)
+''', hint="left perturbation"),
+    Mistake("quat_boxplus_first_order_normalised", "quat_boxplus", "normalise(q ⊗ [1, δ/2]) for every δ", '''
+def quat_boxplus(q, d):
+    dq = np.concatenate([[1.0], 0.5 * np.asarray(d, dtype=float)])
+    out = quat_product(q, dq)
+    return out / np.linalg.norm(out)
+'''),
+    Mistake("numerical_jacobian_big_step", "numerical_jacobian", "a fixed forward step of 1e-2: biased", '''
+def numerical_jacobian(f, x, boxplus=None):
+    h = 1e-2
+    f0 = np.asarray(f(x), dtype=float)
+    if boxplus is None:
+        x = np.asarray(x, dtype=float)
+        columns = []
+        for j in range(x.size):
+            moved = x.copy()
+            moved[j] += h
+            columns.append((np.asarray(f(moved), dtype=float) - f0) / h)
+        return np.column_stack(columns)
+    return np.column_stack([(np.asarray(f(boxplus(x, h * e)), dtype=float) - f0) / h for e in np.eye(3)])
+''', hint="V-curve", public_hint="V-curve"),
+    Mistake("numerical_jacobian_transposed", "numerical_jacobian", "one row per input: the transpose", '''
+def numerical_jacobian(f, x, boxplus=None):
+    h = 1e-6
+    f0 = np.asarray(f(x), dtype=float)
+    if boxplus is None:
+        x = np.asarray(x, dtype=float)
+        rows = []
+        for j in range(x.size):
+            moved = x.copy()
+            moved[j] += h
+            rows.append((np.asarray(f(moved), dtype=float) - f0) / h)
+        return np.array(rows)
+    return np.array([(np.asarray(f(boxplus(x, h * e)), dtype=float) - f0) / h for e in np.eye(3)])
+''', hint="row i is output", public_hint="row i is output"),
+    Mistake("numerical_jacobian_no_floor", "numerical_jacobian", "δ_j = 1e-4 |x_j| without the floor: 0/0 at x_j = 0", '''
+def numerical_jacobian(f, x, boxplus=None):
+    f0 = np.asarray(f(x), dtype=float)
+    if boxplus is None:
+        x = np.asarray(x, dtype=float)
+        columns = []
+        for j in range(x.size):
+            step = abs(1e-4 * x[j])
+            moved = x.copy()
+            moved[j] += step
+            with np.errstate(invalid="ignore", divide="ignore"):
+                columns.append((np.asarray(f(moved), dtype=float) - f0) / step)
+        return np.column_stack(columns)
+    return np.column_stack([(np.asarray(f(boxplus(x, 1e-6 * e)), dtype=float) - f0) / 1e-6 for e in np.eye(3)])
+'''),
+    Mistake("jacobian_rotate_point_transposed", "jacobian_rotate_point", "(-R [p]×)ᵀ: the transpose", '''
+def jacobian_rotate_point(R, p):
+    return (-np.asarray(R, dtype=float) @ skew(p)).T
+''', hint="transpose of -R [p]×", public_hint="transpose of -R [p]×"),
+    Mistake("jacobian_rotate_point_no_R", "jacobian_rotate_point", "-[p]×: forgets R", '''
+def jacobian_rotate_point(R, p):
+    return -skew(p)
+''', hint="R is missing"),
+    Mistake("right_jacobian_guard_only_at_zero_series", "right_jacobian_so3", "below 1e-2 uses I only (drops -[w]×/2)", '''
+def right_jacobian_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-2:
+        return np.eye(3)
+    return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+'''),
+    Mistake("right_jacobian_swapped_coefficients", "right_jacobian_so3", "the two coefficients swapped", '''
+def right_jacobian_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-4:
+        return np.eye(3) - W / 6 + W @ W / 2
+    return np.eye(3) - (theta - np.sin(theta)) / theta**3 * W + (1 - np.cos(theta)) / theta**2 * W @ W
+'''),
+    Mistake("right_jacobian_inv_is_jr", "right_jacobian_inv_so3", "returns Jr itself", '''
+def right_jacobian_inv_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-3:
+        a, b = 0.5 - theta**2 / 24, 1 / 6 - theta**2 / 120
+    else:
+        a, b = (1 - np.cos(theta)) / theta**2, (theta - np.sin(theta)) / theta**3
+    return np.eye(3) - a * W + b * W @ W
+'''),
+    Mistake("right_jacobian_inv_first_order", "right_jacobian_inv_so3", "I + [w]×/2 at every angle", '''
+def right_jacobian_inv_so3(w):
+    return np.eye(3) + 0.5 * skew(w)
+'''),
+]
+
+ALTERNATIVES = [
+    Alternative("boxplus_left_rodrigues", "boxplus_left", "Rodrigues written out for Exp(δ)", '''
+def boxplus_left(R, d):
+    d = np.asarray(d, dtype=float)
+    theta = np.linalg.norm(d)
+    K = skew(d)
+    a = np.sinc(theta / np.pi)                                    # sin θ / θ
+    b = 0.5 * np.sinc(theta / (2 * np.pi)) ** 2                   # (1 - cos θ) / θ²
+    return (np.eye(3) + a * K + b * K @ K) @ np.asarray(R, dtype=float)
+'''),
+    Alternative("quat_boxplus_sinc", "quat_boxplus", "Exp_q(δ) with np.sinc, no branch; returned as a list", '''
+def quat_boxplus(q, d):
+    d = np.asarray(d, dtype=float)
+    theta = np.linalg.norm(d)
+    dq = np.concatenate([[np.cos(theta / 2)], 0.5 * np.sinc(theta / (2 * np.pi)) * d])
+    return list(quat_product(np.asarray(q, dtype=float), dq))
+'''),
+    Alternative("boxplus_right_quaternion", "boxplus_right", "through quaternions, returned as a list", '''
+def boxplus_right(R, d):
+    return (np.asarray(R, dtype=float) @ Exp(d)).tolist()
+'''),
+    Alternative("boxminus_quaternion", "boxminus", "the log of R_bᵀ R_a written out with atan2", '''
+def boxminus(R_a, R_b):
+    return Log(np.asarray(R_b, dtype=float).T @ np.asarray(R_a, dtype=float))
+'''),
+    Alternative("numerical_jacobian_central", "numerical_jacobian", "central differences with the lecture's steps", '''
+def numerical_jacobian(f, x, boxplus=None):
+    if boxplus is None:
+        x = np.asarray(x, dtype=float)
+        columns = []
+        for j in range(x.size):
+            step = max(abs(1e-4 * x[j]), 1e-6)
+            ahead, behind = x.copy(), x.copy()
+            ahead[j] += step
+            behind[j] -= step
+            columns.append((np.asarray(f(ahead), dtype=float) - np.asarray(f(behind), dtype=float)) / (2 * step))
+        return np.column_stack(columns)
+    columns = []
+    for j in range(3):
+        d = np.zeros(3)
+        d[j] = 1e-6
+        columns.append((np.asarray(f(boxplus(x, d)), dtype=float) - np.asarray(f(boxplus(x, -d)), dtype=float)) / 2e-6)
+    return np.column_stack(columns)
+'''),
+    Alternative("numerical_jacobian_sqrt_eps", "numerical_jacobian", "forward steps √ε·max(1, |x_j|) (the V-curve's bottom)", '''
+def numerical_jacobian(f, x, boxplus=None):
+    f0 = np.asarray(f(x), dtype=float)
+    if boxplus is not None:
+        h = np.sqrt(np.finfo(float).eps)
+        return np.column_stack([(np.asarray(f(boxplus(x, h * e)), dtype=float) - f0) / h for e in np.eye(3)])
+    x = np.asarray(x, dtype=float)
+    columns = []
+    for j in range(x.size):
+        moved = x.copy()
+        moved[j] += np.sqrt(np.finfo(float).eps) * max(1.0, abs(x[j]))
+        columns.append((np.asarray(f(moved), dtype=float) - f0) / (moved[j] - x[j]))
+    return np.column_stack(columns)
+'''),
+    Alternative("jacobian_rotate_point_cross", "jacobian_rotate_point", "R [p]×ᵀ built from cross products", '''
+def jacobian_rotate_point(R, p):
+    p = np.asarray(p, dtype=float)
+    return np.asarray(R, dtype=float) @ np.column_stack([np.cross(e, p) for e in np.eye(3)])
+'''),
+    Alternative("right_jacobian_left_of_minus", "right_jacobian_so3", "Jr(w) = Jl(-w) with the half-angle form", '''
+def right_jacobian_so3(w):
+    w = -np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-4:
+        return np.eye(3) + W / 2 + W @ W / 6
+    a = 2.0 * np.sin(theta / 2) ** 2 / theta**2
+    b = (theta - np.sin(theta)) / theta**3
+    return np.eye(3) + a * W + b * W @ W
+'''),
+    Alternative("right_jacobian_inv_solve", "right_jacobian_inv_so3", "inverts the series-accurate Jr with solve", '''
+def right_jacobian_inv_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-4:
+        return np.eye(3) + W / 2 + W @ W / 12
+    a = 2.0 * np.sin(theta / 2) ** 2 / theta**2
+    b = (theta - np.sin(theta)) / theta**3
+    return np.linalg.solve(np.eye(3) - a * W + b * W @ W, np.eye(3))
+'''),
 ]
 
 SAMPLE = {
+
     "dev": ["boxplus_right_on_the_left", "jacobian_rotate_point_left", "right_jacobian_is_left"],
     "emma": ["quat_boxplus_full_angle"],
     "farid": ["boxplus_right_first_order", "quat_boxplus_not_normalised"],

@@ -1,6 +1,6 @@
 """Typical mistakes for lesson 07: poses and rigid-body transformations."""
 
-from . import Mistake
+from . import Alternative, Mistake
 
 MISTAKES = [
     Mistake("make_pose_t_in_bottom_row", "make_pose", "puts t in the bottom row (the transposed layout)", '''
@@ -13,7 +13,7 @@ def make_pose(R, t):
     Mistake("pose_inverse_transpose", "pose_inverse", "inverts a pose with the plain transpose of T", '''
 def pose_inverse(T):
     return np.asarray(T, dtype=float).T.copy()
-'''),
+''', classic=True),
     Mistake("pose_inverse_negates_t", "pose_inverse", "transposes R but negates t without turning it", '''
 def pose_inverse(T):
     T = np.asarray(T, dtype=float)
@@ -55,7 +55,7 @@ def exp_se3(xi):
     T[:3, :3] = Exp(xi[3:])
     T[:3, 3] = xi[:3]
     return T
-'''),
+''', classic=True),
     Mistake("exp_se3_phi_first", "exp_se3", "reads xi as [phi, rho] (rotation part first)", '''
 def exp_se3(xi):
     xi = np.asarray(xi, dtype=float)
@@ -111,9 +111,185 @@ def log_se3(T):
     rho = (np.eye(3) - 0.5 * W + c * W @ W) @ T[:3, 3]
     return np.concatenate([rho, phi])
 '''),
+    Mistake("make_pose_R_transposed", "make_pose", "puts Rᵀ in the top-left block", '''
+def make_pose(R, t):
+    T = np.eye(4)
+    T[:3, :3] = np.asarray(R, dtype=float).T
+    T[:3, 3] = t
+    return T
+'''),
+    Mistake("make_pose_bottom_zero", "make_pose", "a zero matrix with R and t, bottom-right 0", '''
+def make_pose(R, t):
+    T = np.zeros((4, 4))
+    T[:3, :3] = R
+    T[:3, 3] = t
+    return T
+'''),
+    Mistake("make_pose_integer_lists", "make_pose", "np.hstack of lists without dtype: fails on a list t", '''
+def make_pose(R, t):
+    return np.vstack([np.hstack([R, t.reshape(3, 1)]), [0.0, 0.0, 0.0, 1.0]])
+''', hint="np.asarray", public_hint="np.asarray"),
+    Mistake("pose_inverse_t_unchanged", "pose_inverse", "transposes R and keeps t", '''
+def pose_inverse(T):
+    T = np.asarray(T, dtype=float)
+    out = np.eye(4)
+    out[:3, :3] = T[:3, :3].T
+    out[:3, 3] = T[:3, 3]
+    return out
+'''),
+    Mistake("pose_inverse_R_not_transposed", "pose_inverse", "keeps R, uses -R t", '''
+def pose_inverse(T):
+    T = np.asarray(T, dtype=float)
+    out = np.eye(4)
+    out[:3, :3] = T[:3, :3]
+    out[:3, 3] = -T[:3, :3] @ T[:3, 3]
+    return out
+'''),
+    Mistake("pose_compose_elementwise", "pose_compose", "T_ab * T_bc entry by entry", '''
+def pose_compose(T_ab, T_bc):
+    return np.asarray(T_ab, dtype=float) * np.asarray(T_bc, dtype=float)
+'''),
+    Mistake("pose_compose_adds_translations", "pose_compose", "R_ab R_bc and t_ab + t_bc (forgets to turn t_bc)", '''
+def pose_compose(T_ab, T_bc):
+    A, B = np.asarray(T_ab, dtype=float), np.asarray(T_bc, dtype=float)
+    out = np.eye(4)
+    out[:3, :3] = A[:3, :3] @ B[:3, :3]
+    out[:3, 3] = A[:3, 3] + B[:3, 3]
+    return out
+'''),
+    Mistake("pose_compose_inverts_first", "pose_compose", "T_abᵀ T_bc", '''
+def pose_compose(T_ab, T_bc):
+    return np.asarray(T_ab, dtype=float).T @ np.asarray(T_bc, dtype=float)
+'''),
+    Mistake("to_homogeneous_prepends", "to_homogeneous", "puts the 1 first", '''
+def to_homogeneous(P):
+    P = np.asarray(P, dtype=float)
+    return np.concatenate([np.ones(P.shape[:-1] + (1,)), P], axis=-1)
+'''),
+    Mistake("to_homogeneous_rows_only", "to_homogeneous", "np.column_stack: a single point becomes a column", '''
+def to_homogeneous(P):
+    P = np.atleast_2d(np.asarray(P, dtype=float))
+    return np.column_stack([P, np.ones(len(P))])
+'''),
+    Mistake("to_homogeneous_appends_row", "to_homogeneous", "appends a row of ones instead of a column", '''
+def to_homogeneous(P):
+    P = np.asarray(P, dtype=float)
+    if P.ndim == 1:
+        return np.append(P, 1.0)
+    return np.vstack([P, np.ones(P.shape[1])])
+'''),
+    Mistake("from_homogeneous_divides_all", "from_homogeneous", "divides by the first coordinate", '''
+def from_homogeneous(P_h):
+    P_h = np.asarray(P_h, dtype=float)
+    return P_h[..., 1:] / P_h[..., :1]
+'''),
+    Mistake("from_homogeneous_multiplies", "from_homogeneous", "multiplies by the last coordinate", '''
+def from_homogeneous(P_h):
+    P_h = np.asarray(P_h, dtype=float)
+    return P_h[..., :-1] * P_h[..., -1:]
+'''),
+    Mistake("from_homogeneous_single_only", "from_homogeneous", "P_h[:3] / P_h[3]: right for one point only", '''
+def from_homogeneous(P_h):
+    P_h = np.asarray(P_h, dtype=float)
+    return P_h[:3] / P_h[3]
+'''),
+    Mistake("transform_points_translation_first", "transform_points", "R (p + t): shifts before turning", '''
+def transform_points(T, P):
+    T, P = np.asarray(T, dtype=float), np.asarray(P, dtype=float)
+    return (P + T[:3, 3]) @ T[:3, :3].T
+'''),
+    Mistake("transform_points_no_asarray", "transform_points", "T[:3, :3] on a list fails", '''
+def transform_points(T, P):
+    return np.asarray(P, dtype=float) @ T[:3, :3].T + T[:3, 3]
+''', hint="np.asarray"),
+    Mistake("exp_se3_guarded_only_at_zero", "exp_se3", "V's closed form everywhere except θ = 0 (W coefficient 0 at tiny θ)", '''
+def exp_se3(xi):
+    xi = np.asarray(xi, dtype=float)
+    rho, phi = xi[:3], xi[3:]
+    theta = np.linalg.norm(phi)
+    W = skew(phi)
+    if theta == 0.0:
+        V = np.eye(3)
+    else:
+        V = np.eye(3) + (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+    T = np.eye(4)
+    T[:3, :3] = Exp(phi)
+    T[:3, 3] = V @ rho
+    return T
+''', hint="below θ = 1e-2", public_hint="below θ = 1e-2"),
+    Mistake("log_se3_c_constant", "log_se3", "c = 1/12 at every angle", '''
+def log_se3(T):
+    T = np.asarray(T, dtype=float)
+    phi = Log(T[:3, :3])
+    W = skew(phi)
+    return np.concatenate([(np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3], phi])
+'''),
+]
+
+ALTERNATIVES = [
+    Alternative("to_homogeneous_pad", "to_homogeneous", "np.pad with a constant 1", '''
+def to_homogeneous(P):
+    P = np.asarray(P, dtype=float)
+    return np.pad(P, [(0, 0)] * (P.ndim - 1) + [(0, 1)], constant_values=1.0)
+'''),
+    Alternative("from_homogeneous_list", "from_homogeneous", "divides everything, then drops the 1; a list", '''
+def from_homogeneous(P_h):
+    P_h = np.asarray(P_h, dtype=float)
+    return (P_h / P_h[..., -1:])[..., :3].tolist()
+'''),
+    Alternative("pose_compose_blocks", "pose_compose", "blocks: R_ab R_bc and R_ab t_bc + t_ab", '''
+def pose_compose(T_ab, T_bc):
+    A, B = np.asarray(T_ab, dtype=float), np.asarray(T_bc, dtype=float)
+    out = np.eye(4)
+    out[:3, :3] = A[:3, :3] @ B[:3, :3]
+    out[:3, 3] = A[:3, :3] @ B[:3, 3] + A[:3, 3]
+    return out
+'''),
+    Alternative("make_pose_block_list", "make_pose", "np.block, returned as nested lists", '''
+def make_pose(R, t):
+    R = np.asarray(R, dtype=float)
+    t = np.asarray(t, dtype=float).reshape(3, 1)
+    return np.block([[R, t], [np.zeros((1, 3)), np.ones((1, 1))]]).tolist()
+'''),
+    Alternative("pose_inverse_solve", "pose_inverse", "np.linalg.inv of the 4×4 matrix", '''
+def pose_inverse(T):
+    return np.linalg.inv(np.asarray(T, dtype=float))
+'''),
+    Alternative("transform_points_homogeneous", "transform_points", "through homogeneous coordinates", '''
+def transform_points(T, P):
+    P = np.asarray(P, dtype=float)
+    P_h = np.concatenate([P, np.ones(P.shape[:-1] + (1,))], axis=-1)
+    return (P_h @ np.asarray(T, dtype=float).T)[..., :3]
+'''),
+    Alternative("exp_se3_expm_free_sinc", "exp_se3", "V from the half-angle forms with np.sinc (no branch)", '''
+def exp_se3(xi):
+    xi = np.asarray(xi, dtype=float)
+    rho, phi = xi[:3], xi[3:]
+    theta = np.linalg.norm(phi)
+    W = skew(phi)
+    a = 0.5 * np.sinc(theta / (2 * np.pi)) ** 2                     # (1 - cos θ)/θ² = sin²(θ/2)/(θ²/2)
+    b = 1 / 6 - theta**2 / 120 + theta**4 / 5040 if theta < 1e-2 else (theta - np.sin(theta)) / theta**3
+    T = np.eye(4)
+    T[:3, :3] = Exp(phi)
+    T[:3, 3] = (np.eye(3) + a * W + b * W @ W) @ rho
+    return T
+'''),
+    Alternative("log_se3_solve", "log_se3", "rho = solve(V, t) with V's series below 1e-2", '''
+def log_se3(T):
+    T = np.asarray(T, dtype=float)
+    phi = Log(T[:3, :3])
+    theta = np.linalg.norm(phi)
+    W = skew(phi)
+    if theta < 1e-2:
+        a, b = 0.5 - theta**2 / 24 + theta**4 / 720, 1 / 6 - theta**2 / 120 + theta**4 / 5040
+    else:
+        a, b = (1 - np.cos(theta)) / theta**2, (theta - np.sin(theta)) / theta**3
+    return np.concatenate([np.linalg.solve(np.eye(3) + a * W + b * W @ W, T[:3, 3]), phi])
+'''),
 ]
 
 SAMPLE = {
+
     "dev": ["pose_inverse_transpose", "transform_points_T_transposed"],
     "chloe": ["from_homogeneous_no_divide"],
 }

@@ -18,7 +18,19 @@ __all__ = [
     "close",
     "same_rotation_quat",
     "quaternion_hint",
+    "ALLCLOSE_HINT",
+    "LISTS_HINT",
+    "lecture_forward_jacobian",
+    "jacobian_error_allowed",
+    "JACOBIAN_STEP_HINT",
 ]
+
+# Said only when an answer differs between lists and arrays (the function compared with itself).
+LISTS_HINT = "convert the inputs with np.asarray(..., dtype=float) (lists have no .T and @ does not work on them)"
+
+# np.allclose(x, y, atol=tol) passes when |x - y| <= atol + rtol·|y| with rtol = 1e-5 by default.
+ALLCLOSE_HINT = ("np.allclose(x, y, atol=tol) keeps its default rtol=1e-5, which swamps tol: "
+                 "compare np.max(np.abs(x - y)) <= tol (or pass rtol=0)")
 
 
 def close(a, b, tol=1e-9):
@@ -202,10 +214,14 @@ def rotation_vector_hint(got, expected):
     expected = as_float_array(expected)
     if got is None or expected is None or got.shape != (3,) or expected.shape != (3,):
         return None
-    if not np.all(np.isfinite(got)):
-        return ("NaN or inf: a division by sin θ (zero at θ = 0 and θ = π), "
-                "or arccos of a trace that rounding pushed just outside [-1, 1]?")
     angle = float(np.linalg.norm(expected))
+    if not np.all(np.isfinite(got)):
+        if angle > 3.0:
+            return ("NaN or inf near θ = π: sin θ → 0 there, or rounding pushed (tr R - 1)/2 below -1 "
+                    "(clip it before arccos, and take the axis from (R + Rᵀ)/2)")
+        if angle < 1e-3:
+            return "NaN or inf at a tiny angle: a division by sin θ ≈ 0; treat θ ≈ 0 with the series θ/sin θ ≈ 1"
+        return "NaN or inf: arccos of a trace that rounding pushed just outside [-1, 1]? clip it first"
     if angle == 0.0:
         return None
     if np.linalg.norm(got) <= 1e-3 * angle:
@@ -218,3 +234,35 @@ def rotation_vector_hint(got, expected):
     if np.linalg.norm(got - np.rad2deg(expected)) <= 1e-3 * np.rad2deg(angle):
         return "looks like the angle is in degrees: the course works in radians"
     return None
+
+
+# ---------------------------------------------------------------- numerical Jacobians
+JACOBIAN_STEP_HINT = ("any forward or central scheme at least as accurate as the lecture's rule is right: forward "
+                      "steps near √ε·max(1, |x_j|) ≈ 1e-8 (the bottom of the V-curve), the lecture's "
+                      "δ_j = max(|1e-4 x_j|, 1e-6), or central differences; much larger steps are biased and much "
+                      "smaller ones drown in rounding")
+
+
+def lecture_forward_jacobian(f, x):
+    """Forward differences with the lecture's steps δ_j = max(|1e-4 x_j|, 1e-6): the accuracy to match."""
+    x = np.asarray(x, dtype=float)
+    f0 = np.asarray(f(x), dtype=float)
+    columns = []
+    for j in range(x.size):
+        step = max(abs(1e-4 * x[j]), 1e-6)
+        moved = x.copy()
+        moved[j] += step
+        columns.append((np.asarray(f(moved), dtype=float) - f0) / step)
+    return np.column_stack(columns)
+
+
+def jacobian_error_allowed(f, x, exact):
+    """The largest error a numerical Jacobian of ``f`` at ``x`` may have: the rule of the course.
+
+    Twice the error of the lecture's forward rule, plus 1e-8·(1 + max|J|) for
+    rounding: a √ε forward step and central differences pass, a step far from
+    the V-curve's bottom (1e-2, or 1e-13) does not.
+    """
+    exact = np.asarray(exact, dtype=float)
+    lecture_error = float(np.max(np.abs(lecture_forward_jacobian(f, x) - exact)))
+    return 2.0 * lecture_error + 1e-8 * (1.0 + float(np.max(np.abs(exact))))

@@ -22,5 +22,9 @@ def _(unit_vector):
 @public_check("unit_vector", "keeps the direction of the input")
 def _(unit_vector):
     got = np.asarray(unit_vector([0.0, -2.0, 0.0]), dtype=float)
-    if not close(got, [0.0, -1.0, 0.0], 1e-12):
-        raise Mismatch(f"unit_vector([0, -2, 0]) returned {np.round(got, 4)}", "divide by the length, keep the sign")
+    if got.shape != (3,) or not np.all(np.isfinite(got)):
+        return  # the first check names the shape problem
+    along = float(got @ [0.0, -1.0, 0.0])
+    if along <= 0 or not close(got, [0.0, -along, 0.0], 1e-12 * max(along, 1.0)):
+        raise Mismatch(f"unit_vector([0, -2, 0]) returned {np.round(got, 4)}, which does not point along -y",
+                       "divide by the length, keep the sign")

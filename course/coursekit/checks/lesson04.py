@@ -17,7 +17,7 @@ from ..diagnose import (
     same_rotation_quat,
     shape_problem,
 )
-from .common import fmt, require_shape
+from .common import fmt, off_by, require_same_with_lists, require_shape
 
 ONE = np.array([1.0, 0.0, 0.0, 0.0])
 I_ = np.array([0.0, 1.0, 0.0, 0.0])
@@ -114,8 +114,11 @@ def _(quat_conjugate):
                        "q* = [w, -x, -y, -z]; the result is -q*, the same rotation but not the conjugate")
     if not close(got, [1.0, -2.0, -3.0, -4.0], 1e-12):
         raise Mismatch(f"got {fmt(got)}, expected [1, -2, -3, -4]")
-    if not close(q, [1.0, 2.0, 3.0, 4.0], 0.0):
-        raise Mismatch("the input array was changed", "build a new array instead of negating in place")
+
+
+@public_check("quat_conjugate", "accepts a plain list")
+def _(quat_conjugate):
+    require_same_with_lists(quat_conjugate, (GENERIC,), (4,), "quat_conjugate")
 
 
 # ---------------------------------------------------------------- quat_inverse
@@ -146,7 +149,8 @@ def _(quat_from_axis_angle):
                        "the quaternion uses half the angle: [cos(θ/2), u sin(θ/2)]")
     if close(got, [0.0, 0.0, HALF, HALF], 1e-9):
         raise Mismatch(f"got {fmt(got)}", "scalar last? this course stores [w, x, y, z]")
-    if close(got, [np.cos(np.pi / 720), 0.0, 0.0, np.sin(np.pi / 720)], 1e-6):
+    half_degrees = np.deg2rad(np.pi / 2) / 2       # what np.cos(θ/2) gives when θ = π/2 is read as degrees
+    if close(got, [np.cos(half_degrees), 0.0, 0.0, np.sin(half_degrees)], 1e-9):
         raise Mismatch(f"got {fmt(got)}, barely a turn", "looks like degrees: angles in this course are radians")
     if not close(got, QUARTER_Z, 1e-9):
         raise Mismatch(f"got {fmt(got)}, expected [0.7071, 0, 0, 0.7071]")
@@ -259,6 +263,20 @@ def _(matrix_to_quat):
         raise Mismatch(f"got {fmt(got)}, expected {fmt(-expected)}", quaternion_hint(got, -expected))
 
 
+@public_check("matrix_to_quat", "the canonical sign holds in every branch (a turn by 3 rad about (-0.8, 0.6, 0))")
+def _(matrix_to_quat):
+    u = np.array([-0.8, 0.6, 0.0])
+    K = np.array([[0.0, -u[2], u[1]], [u[2], 0.0, -u[0]], [-u[1], u[0], 0.0]])
+    R = np.eye(3) + np.sin(3.0) * K + (1 - np.cos(3.0)) * K @ K      # R[0, 0] is the largest diagonal entry
+    got = require_shape(matrix_to_quat(R), (4,))
+    expected = np.concatenate([[np.cos(1.5)], np.sin(1.5) * u])      # w = cos 1.5 > 0
+    if close(got, -expected, 1e-9):
+        raise Mismatch(f"got w = {got[0]:.4f} < 0 from the x branch",
+                       "negate the whole quaternion when w < 0 (canonical sign), in every branch")
+    if not close(got, expected, 1e-9):
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)}", quaternion_hint(got, expected))
+
+
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz
 @public_check("wxyz_to_xyzw", "[w, x, y, z] = [1, 2, 3, 4] becomes [x, y, z, w] = [2, 3, 4, 1]")
 def _(wxyz_to_xyzw):
@@ -324,6 +342,20 @@ def _(quat_slerp):
     if not same_rotation_quat(got, eighth, 1e-9):
         raise Mismatch(f"with q1 = -(quarter turn) the midpoint is {fmt(got)}, not an eighth turn",
                        "q1 and -q1 are one rotation: if q0 · q1 < 0, use -q1 (the shorter arc)")
+
+
+@public_check("quat_slerp", "turns at constant speed: at t = 0.25 of a 2.5 rad turn it has turned 0.625 rad")
+def _(quat_slerp):
+    u = np.array([2.0, -1.0, 2.0]) / 3.0
+    q1 = np.concatenate([[np.cos(1.25)], np.sin(1.25) * u])
+    got = require_shape(quat_slerp(ONE, q1, 0.25), (4,))
+    if abs(np.linalg.norm(got) - 1.0) > 1e-9:
+        raise Mismatch(f"|q| = {np.linalg.norm(got):.4f}", "slerp stays on the unit sphere; plain averaging does not")
+    turned = 2.0 * np.arccos(min(abs(got[0]), 1.0))
+    if abs(turned - 0.625) > 1e-9:
+        raise Mismatch(f"at t = 0.25 it has turned {turned:.6f} rad, off by {abs(turned - 0.625):.2g}",
+                       "not at constant speed: a normalised linear blend (nlerp) runs fast in the middle; use the "
+                       "weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
 
 
 @public_check("quat_slerp", "nearly identical inputs do not divide by zero")

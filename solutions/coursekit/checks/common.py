@@ -10,20 +10,25 @@ Examples
 import numpy as np
 
 from ..checking import Mismatch
-from ..diagnose import pose_problem, rotation_problem, shape_problem
+from ..diagnose import LISTS_HINT, pose_problem, rotation_problem, shape_problem
 
-__all__ = ["require_shape", "require_rotation", "require_pose", "fmt"]
+__all__ = ["require_shape", "require_rotation", "require_pose", "require_same_with_lists", "fmt", "off_by"]
 
 
 def _prefixed(what, problem):
     return f"{what} {problem}" if what else problem
 
 
-def require_shape(value, shape, what=""):
-    """``value`` as a float array of ``shape``, or :class:`Mismatch` saying why not."""
+def require_shape(value, shape, what="", nan_hint=None):
+    """``value`` as a float array of ``shape``, or :class:`Mismatch` saying why not.
+
+    ``nan_hint(array)`` names the likely cause when the right shape holds NaN or inf.
+    """
     problem = shape_problem(value, shape)
     if problem:
-        raise Mismatch(_prefixed(what, problem))
+        hint = nan_hint(np.asarray(value, dtype=float)) if nan_hint and problem == "returned NaN or inf values" \
+            else None
+        raise Mismatch(_prefixed(what, problem), hint)
     return np.asarray(value, dtype=float)
 
 
@@ -46,3 +51,28 @@ def require_pose(T, what=""):
 def fmt(value, digits=3):
     """A short, stable text for a number or array in a check's message."""
     return np.array2string(np.round(np.asarray(value, dtype=float), digits) + 0.0, separator=", ")
+
+
+def off_by(got, expected):
+    """The largest entrywise difference, as text: ``"off by 3.2e-07"``."""
+    error = np.max(np.abs(np.asarray(got, dtype=float) - np.asarray(expected, dtype=float)))
+    return f"off by {error:.2g}"
+
+
+def require_same_with_lists(function, args, shape, what):
+    """``function`` answers the same for plain lists as for arrays, else :class:`Mismatch`.
+
+    Compares the function with itself, so it blames lists only when lists are
+    the difference (a wrong answer is wrong either way, and other checks say so).
+    """
+    arrays = [np.array(a, dtype=float) for a in args]          # copies: an answer may change its input
+    with_arrays = require_shape(function(*[a.copy() for a in arrays]), shape, f"{what} with arrays")
+    try:
+        with_lists = function(*[a.tolist() for a in arrays])
+    except Exception as error:
+        raise Mismatch(f"{what} with lists raised {type(error).__name__}: {error}",
+                       LISTS_HINT) from None
+    with_lists = require_shape(with_lists, shape, f"{what} with lists")
+    if np.max(np.abs(with_lists - with_arrays), initial=0.0) > 1e-12:
+        raise Mismatch(f"{what} with lists differs from {what} with arrays ({off_by(with_lists, with_arrays)})",
+                       LISTS_HINT)

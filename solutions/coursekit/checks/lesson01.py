@@ -7,8 +7,8 @@ entries are 0 and ±1) and properties that any correct answer has.
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close
-from .common import fmt, require_rotation, require_shape
+from ..diagnose import ALLCLOSE_HINT, close
+from .common import fmt, require_rotation, require_same_with_lists, require_shape
 
 # A quarter turn about z, written out: x goes to y, y goes to -x.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -32,7 +32,7 @@ def _(rot2d):
     if close(image, [0.0, -1.0], 1e-9):
         raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}",
                        "looks like the transpose (a clockwise turn): check the sign of the sines")
-    if close(image, [np.cos(np.pi / 360), np.sin(np.pi / 360)], 1e-3):
+    if close(image, [np.cos(np.deg2rad(np.pi / 2)), np.sin(np.deg2rad(np.pi / 2))], 1e-9):
         raise Mismatch(f"rot2d(pi/2) barely moves x: {fmt(image)}",
                        "looks like degrees: angles in this course are radians")
     raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}, expected [0, 1]")
@@ -63,7 +63,8 @@ def _elementary_checks(name, axis, quarter_from, quarter_to):
             raise Mismatch(f"{name}(pi/2) sends {src} to {fmt(image)}",
                            "looks like the transpose: the minus sign is on the wrong sine"
                            + (" (for rot_y it sits in the bottom-left)" if name == "rot_y" else ""))
-        if close(image, E[quarter_from], 0.01):
+        degrees = np.deg2rad(np.pi / 2)
+        if close(image, np.cos(degrees) * E[quarter_from] + np.sin(degrees) * E[quarter_to], 1e-9):
             raise Mismatch(f"{name}(pi/2) barely moves {src}: {fmt(image)}",
                            "looks like degrees: angles in this course are radians")
         raise Mismatch(f"{name}(pi/2) sends {src} to {fmt(image)}, expected e_{dst}")
@@ -78,9 +79,10 @@ _elementary_checks("rot_z", 2, 0, 1)
 @public_check("is_rotation_matrix", "accepts rotations (identity, a quarter turn)")
 def _(is_rotation_matrix):
     for M in (np.eye(3), QUARTER_TURN_Z):
-        if is_rotation_matrix(M) is not True and not isinstance(is_rotation_matrix(M), np.bool_):
-            raise Mismatch(f"returned {is_rotation_matrix(M)!r}; return a bool (True or False)")
-        if not is_rotation_matrix(M):
+        verdict = is_rotation_matrix(M)
+        if not isinstance(verdict, (bool, np.bool_)):
+            raise Mismatch(f"returned {verdict!r}; return a bool (True or False)", "wrap the test in bool(...)")
+        if not verdict:
             raise Mismatch(f"rejected the rotation\n{M}")
 
 
@@ -91,6 +93,15 @@ def _(is_rotation_matrix):
                        "orthogonal is not enough: a rotation also needs det = +1")
     if is_rotation_matrix(2.0 * np.eye(3)):
         raise Mismatch("accepted 2·I", "check RᵀR = I, not only that the columns are orthogonal")
+    if is_rotation_matrix(QUARTER_TURN_Z @ np.diag([1.0, 1.0, 1.0 + 1e-6])):
+        raise Mismatch("accepted a quarter turn with its last column stretched by 1e-6 (tol is 1e-9)",
+                       ALLCLOSE_HINT)
+    if is_rotation_matrix(np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])):
+        raise Mismatch("accepted a shear (det = 1, but the columns are not orthogonal)",
+                       "det = +1 is not enough: also check MᵀM = I")
+    if not is_rotation_matrix(QUARTER_TURN_Z + 1e-6, tol=1e-4) or is_rotation_matrix(QUARTER_TURN_X + 1e-6):
+        raise Mismatch("ignores tol: R + 1e-6 must pass with tol=1e-4 and fail with the default tol=1e-9",
+                       "compare with the tol argument, not a fixed number")
 
 
 @public_check("is_rotation_matrix", "rejects a matrix of the wrong shape without crashing")
@@ -120,6 +131,11 @@ def _(rotate_point):
                        "for rows, use P @ R.T (each row p becomes (R p)ᵀ = pᵀ Rᵀ)")
 
 
+@public_check("rotate_point", "accepts plain lists")
+def _(rotate_point):
+    require_same_with_lists(rotate_point, (QUARTER_TURN_X, [0.5, -1.0, 2.0]), (3,), "rotate_point")
+
+
 # ---------------------------------------------------------------- compose
 @public_check("compose", "R_ac = compose(R_ab, R_bc) maps points of c to a in one step")
 def _(compose):
@@ -134,6 +150,11 @@ def _(compose):
     raise Mismatch("compose(R_ab, R_bc) @ p_c differs from R_ab @ (R_bc @ p_c)")
 
 
+@public_check("compose", "accepts plain lists")
+def _(compose):
+    require_same_with_lists(compose, (QUARTER_TURN_Z, QUARTER_TURN_X), (3, 3), "compose")
+
+
 # ---------------------------------------------------------------- invert_rotation
 @public_check("invert_rotation", "R_ab composed with its inverse is the identity")
 def _(invert_rotation):
@@ -142,6 +163,11 @@ def _(invert_rotation):
         raise Mismatch("returned the same rotation", "the inverse of a rotation is its transpose")
     if not close(QUARTER_TURN_Z @ R_ba, E, 1e-9):
         raise Mismatch("R_ab @ invert_rotation(R_ab) is not the identity")
+
+
+@public_check("invert_rotation", "accepts plain lists")
+def _(invert_rotation):
+    require_same_with_lists(invert_rotation, (QUARTER_TURN_X @ QUARTER_TURN_Z,), (3, 3), "invert_rotation")
 
 
 # ---------------------------------------------------------------- nearest_rotation
@@ -159,6 +185,10 @@ def _(nearest_rotation):
     require_rotation(got)
     if np.max(np.abs(got - noisy)) > 0.02:
         raise Mismatch("the result is a rotation, but far from the input")
+    asymmetry = np.max(np.abs(got.T @ noisy - noisy.T @ got))
+    if asymmetry > 1e-9:
+        raise Mismatch(f"the result is a rotation near the input, but not the nearest: Rᵀ M is not symmetric "
+                       f"(off by {asymmetry:.2g})", "the nearest rotation comes from the SVD M = U Σ Vᵀ: R = U Vᵀ")
 
 
 @public_check("nearest_rotation", "never returns a mirror, even for a mirror-like input")

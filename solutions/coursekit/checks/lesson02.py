@@ -8,6 +8,7 @@ lesson, and name the usual slip when a verdict is wrong.
 import numpy as np
 
 from ..checking import Mismatch, public_check
+from ..diagnose import ALLCLOSE_HINT
 from ..lie import Exp
 
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -117,6 +118,25 @@ def _(check_group_axioms):
                        "loop over every ordered triple (a, b, c), repeats included")
 
 
+@public_check("check_group_axioms", "compares with tol: generic rotations under @ pass every axiom")
+def _(check_group_axioms):
+    samples = [Exp([0.3, -0.2, 0.9]), Exp([1.1, 0.4, -0.7]), Exp([-0.5, 2.0, 0.1])]
+    got = _verdict(check_group_axioms(samples, _matmul, np.eye(3), lambda a: np.asarray(a).T, _is_rotation))
+    _expect(got, dict.fromkeys(KEYS, True), "generic rotations under @",
+            dict.fromkeys(KEYS, "products of generic rotations differ by rounding (~1e-16): compare with tol, "
+                                "never with =="))
+
+
+@public_check("check_group_axioms", "tol is an absolute tolerance: an identity off by 2e-7 fails at tol=1e-9")
+def _(check_group_axioms):
+    args = ([3.0, -0.25, 8.0], _multiply, 1.0 + 2e-7, _reciprocal, lambda x: bool(np.isfinite(x) and x != 0))
+    if not _verdict(check_group_axioms(*args, tol=1e-5))["identity"]:
+        raise Mismatch("with identity 1 + 2e-7 and tol=1e-5, identity came out False", "compare with the tol argument")
+    if _verdict(check_group_axioms(*args, tol=1e-9))["identity"]:
+        raise Mismatch("with identity 1 + 2e-7 and tol=1e-9, identity came out True although 8·(1 + 2e-7) "
+                       "differs from 8 by 1.6e-6", ALLCLOSE_HINT)
+
+
 # ---------------------------------------------------------------- commutes
 @public_check("commutes", "rotations about one axis commute, even though rounding differs")
 def _(commutes):
@@ -153,5 +173,14 @@ def _(commutes):
     if not commutes(A, B, _matmul, tol=1e-5):
         raise Mismatch("with tol=1e-5, a difference of 3e-8 was not accepted", "compare with the tol argument")
     if commutes(A, B, _matmul, tol=1e-9):
-        raise Mismatch("with tol=1e-9, a difference of 3e-8 was accepted",
-                       "compare with the tol argument (np.allclose adds rtol=1e-5 unless rtol=0)")
+        raise Mismatch("with tol=1e-9, a difference of 3e-8 was accepted", "compare with the tol argument")
+
+
+@public_check("commutes", "tol is an absolute tolerance, also for large entries")
+def _(commutes):
+    M = np.ones((3, 3)) + np.diag([1.0, 2.0, 3.0])
+    B = M + 1e-6 * np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    gap = np.max(np.abs(M @ B - B @ M))
+    if commutes(M, B, _matmul, tol=1e-9):
+        raise Mismatch(f"with tol=1e-9, said two matrices commute whose products differ by {gap:.2g}",
+                       ALLCLOSE_HINT)

@@ -9,9 +9,9 @@ like the square of the step.
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, rotation_problem, shape_problem
+from ..diagnose import JACOBIAN_STEP_HINT, close, jacobian_error_allowed, rotation_problem, shape_problem
 from ..lie import Exp, Log, quat_product, skew
-from .common import fmt, require_shape
+from .common import fmt, off_by, require_shape
 
 # A quarter turn about z (x goes to y) and about x (y goes to z), written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -174,24 +174,28 @@ def _(numerical_jacobian):
     got = require_shape(got, (2, 3))
     expected = np.array([[2.0, 1.0, 0.0], [0.0, 0.0, 6.0]])
     if not close(got, expected, 1e-3):
-        raise Mismatch(f"got {fmt(got)}, expected about {fmt(expected)}",
-                       "column j: (f(x + δ_j e_j) - f(x)) / δ_j with δ_j = max(|1e-4 x_j|, 1e-6)")
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from the slopes",
+                       "column j: (f(x + δ_j e_j) - f(x)) / δ_j, e.g. with δ_j = max(|1e-4 x_j|, 1e-6)")
 
 
-@public_check("numerical_jacobian", "uses the lecture's forward steps: for f(x) = x², column j is 2x_j + δ_j")
+def _wavy(x):
+    return np.array([np.sin(x[0]) * x[1], np.exp(0.5 * x[2]) + x[0] * x[1]])
+
+
+def _wavy_jacobian(x):
+    return np.array([[np.cos(x[0]) * x[1], np.sin(x[0]), 0.0], [x[1], x[0], 0.5 * np.exp(0.5 * x[2])]])
+
+
+@public_check("numerical_jacobian", "at least as accurate as the lecture's forward steps δ_j = max(|1e-4 x_j|, 1e-6)")
 def _(numerical_jacobian):
-    x = np.array([1.0, 2.0, 0.0])
-    got = require_shape(numerical_jacobian(np.square, x), (3, 3))
-    steps = np.array([1e-4, 2e-4, 1e-6])                 # max(|1e-4 x_j|, 1e-6)
-    expected = np.diag(2.0 * x + steps)
-    if close(got, expected, 1e-8):
-        return
-    if close(got, np.diag(2.0 * x), 1e-8):
-        raise Mismatch("got exactly 2x: no trace of the step",
-                       "central differences? This exercise asks for forward differences, (f(x + δ_j e_j) - f(x)) / δ_j")
-    shown = ", ".join(f"{value:.7g}" for value in np.diag(got))
-    raise Mismatch(f"the diagonal is [{shown}], expected 2x_j + δ_j = [2.0001, 4.0002, 1e-06]",
-                   "use δ_j = max(|1e-4 x_j|, 1e-6): a much smaller step drowns in rounding noise")
+    for x in (np.array([1.2, -3.0, 2.5]), np.array([0.0, 0.5, -1.0])):
+        got = require_shape(numerical_jacobian(_wavy, x), (2, 3))
+        exact = _wavy_jacobian(x)
+        allowed = jacobian_error_allowed(_wavy, x, exact)
+        error = np.max(np.abs(got - exact))
+        if error > allowed:
+            raise Mismatch(f"at x = {fmt(x)} the Jacobian is off by {error:.2g}, more than the {allowed:.2g} allowed "
+                           "(twice the error of the lecture's forward steps)", JACOBIAN_STEP_HINT)
 
 
 @public_check("numerical_jacobian", "works where x_j = 0 (the floor 1e-6 of the step rule)")
@@ -218,8 +222,8 @@ def _(numerical_jacobian):
     # Turning about z moves x towards y, about y towards -z, about x not at all.
     expected = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
     if not close(got, expected, 1e-4):
-        raise Mismatch(f"got {fmt(got)}, expected about {fmt(expected)}",
-                       "column j: (f(boxplus(x, h e_j)) - f(x)) / h with h = 1e-6")
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from the turning directions",
+                       "column j: (f(boxplus(x, h e_j)) - f(x)) / h with a small h (e.g. 1e-6)")
 
 
 # ---------------------------------------------------------------- jacobian_rotate_point
@@ -227,10 +231,8 @@ def _(numerical_jacobian):
 def _(jacobian_rotate_point):
     got = require_shape(jacobian_rotate_point(np.eye(3), [1.0, 0.0, 0.0]), (3, 3))
     expected = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
-    if close(got, -expected, 1e-12):
-        raise Mismatch("every entry has the wrong sign", "R Exp(δ) p ≈ R p + R [δ]× p = R p - R [p]× δ")
-    if not close(got, expected, 1e-12):
-        raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}")
+    if not close(got, expected, 1e-12):     # antisymmetric here: a sign slip and a transpose look alike
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)}; expected {fmt(expected)}")
 
 
 @public_check("jacobian_rotate_point", "first order: R Exp(δ) p - R p - J δ shrinks like |δ|²")
@@ -245,6 +247,10 @@ def _(jacobian_rotate_point):
             hint = "d(R Exp(δ) p)/dδ = -R [p]×"
             if close(J, -skew(R_SAMPLE @ p), 1e-9):
                 hint = "that is -[R p]×, the Jacobian of the left perturbation; the right one is -R [p]×"
+            elif close(J, R_SAMPLE @ skew(p), 1e-9):
+                hint = "the sign is flipped: R [δ]× p = -R [p]× δ"
+            elif close(J, (-R_SAMPLE @ skew(p)).T, 1e-9):
+                hint = "that is the transpose of -R [p]×: row i is output i, column j is δ_j"
             raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²", hint)
 
 

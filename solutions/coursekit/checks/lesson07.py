@@ -11,7 +11,7 @@ from scipy.linalg import expm
 
 from ..checking import Mismatch, public_check
 from ..diagnose import close
-from .common import fmt, require_pose, require_shape
+from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape
 
 # A quarter turn about z (x goes to y) followed by a shift of (1, 2, 3) m, written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -52,10 +52,7 @@ def _(make_pose):
 
 @public_check("make_pose", "accepts plain lists")
 def _(make_pose):
-    T = require_shape(make_pose(QUARTER_TURN_Z.tolist(), [1, 2, 3]), (4, 4))
-    if not close(T, T_QUARTER, 1e-12):
-        raise Mismatch("make_pose with lists differs from make_pose with arrays",
-                       "convert the inputs with np.asarray(..., dtype=float)")
+    require_same_with_lists(make_pose, (QUARTER_TURN_Z, SHIFT), (4, 4), "make_pose")
 
 
 # ---------------------------------------------------------------- to_homogeneous / from_homogeneous
@@ -126,6 +123,12 @@ def _(transform_points):
 
 
 # ---------------------------------------------------------------- pose_compose
+@public_check("transform_points", "accepts plain lists")
+def _(transform_points):
+    require_same_with_lists(transform_points, (T_QUARTER_X, [[0.5, -1.0, 2.0], [1.0, 0.0, 0.0]]), (2, 3),
+                            "transform_points")
+
+
 @public_check("pose_compose", "T_ac = T_ab T_bc: one step equals two steps for a point of c")
 def _(pose_compose):
     T_ac = require_shape(pose_compose(T_QUARTER, T_QUARTER_X), (4, 4))
@@ -199,6 +202,24 @@ def _(exp_se3):
     raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])}")
 
 
+def _tiny_twist(angle):
+    """rho of length 50 and a rotation part of length ``angle``."""
+    return np.array([30.0, -40.0, 0.0]), angle * np.array([2.0, -1.0, 2.0]) / 3.0
+
+
+@public_check("exp_se3", "tiny rotation parts keep their accuracy: |phi| = 1e-9 and 1e-6 with |rho| = 50")
+def _(exp_se3):
+    for angle in (1e-9, 1e-6):
+        rho, phi = _tiny_twist(angle)
+        xi = np.concatenate([rho, phi])
+        T = require_shape(exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {angle:g}")
+        expected = expm(_twist_matrix(xi))
+        if not close(T, expected, 1e-12 * 50.0):
+            raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the pose is {off_by(T, expected)} (allowed 5e-11)",
+                           "below θ = 1e-2 use the series of V's coefficients (1/2 - θ²/24, 1/6 - θ²/120): "
+                           "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2")
+
+
 # ---------------------------------------------------------------- log_se3
 @public_check("log_se3", "log_se3(I) = 0 (no NaN at zero angle)")
 def _(log_se3):
@@ -220,6 +241,18 @@ def _(log_se3):
         raise Mismatch("got [0, 0, 0, 1, 2, 3]", "xi = [rho, phi]: translation part first")
     if not close(xi, [1.0, 2.0, 3.0, 0.0, 0.0, 0.0], 1e-9):
         raise Mismatch(f"got {fmt(xi)}, expected [1, 2, 3, 0, 0, 0]")
+
+
+@public_check("log_se3", "tiny rotation parts keep their accuracy: |phi| = 1e-9 and 1e-6 with |rho| = 50")
+def _(log_se3):
+    for angle in (1e-9, 1e-6):
+        rho, phi = _tiny_twist(angle)
+        xi = np.concatenate([rho, phi])
+        got = require_shape(log_se3(expm(_twist_matrix(xi))), (6,), f"log_se3 at |phi| = {angle:g}")
+        if not close(got, xi, 1e-11 * 50.0):
+            raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the twist is {off_by(got, xi)} (allowed 5e-10)",
+                           "below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: "
+                           "the closed form cancels catastrophically there")
 
 
 @public_check("log_se3", "round trip: expm of the twist matrix of log_se3(T) gives T back")
