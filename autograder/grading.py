@@ -1,5 +1,10 @@
 """Grade one student: notebooks → answers → sandbox → hidden suite (→ nbval) → result.
 
+nbval runs after the hidden suite, and only on the lessons whose exercises all
+got full hidden marks: the notebook point needs them (:func:`nbval_stage.award`),
+so for any other lesson nbval could not change the grade; its run is
+``skipped``, worth 0, with the reason.
+
 This is GUIDE's "Grading, end to end" for a single student. Each lesson and
 each exercise is graded on its own: a notebook that cannot be read costs that
 lesson's points (with the reason), a function that crashes or hangs costs
@@ -14,7 +19,7 @@ from . import extract, submissions
 from .catalog import load_catalog
 from .notebook_files import UnreadableNotebook, read_submission
 from .reference import load_reference
-from .nbval_stage import award, run_notebooks
+from .nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
 from .results import (GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult, LessonResult, NotebookRun,
                       StudentResult)
 from .sandbox import launcher
@@ -116,10 +121,6 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
             result.problems.append(f"grading stopped early: {error.message}")
         outcomes = {(o.lesson, o.label): o for o in sandbox.outcomes}
 
-    runs = {}
-    if options.nbval and programs:
-        runs = run_notebooks(folder, lessons, options, catalog)
-
     for shell, path, program in lessons:
         lesson = catalog.lesson(shell.number)
         if program is not None:
@@ -140,12 +141,22 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
                 entry.notes.append(shell.reason)
             shell.exercises.append(entry)
         _note_failed_prerequisites(shell, program)
-        if options.nbval:
-            shell.run = runs.get(shell.number) or NotebookRun(
-                status="failed", max_points=options.notebook_points,
-                failures=[shell.reason or "the notebook stage did not run"])
-            award(shell)
         result.lessons.append(shell)
+
+    if options.nbval:
+        # The notebook point needs full hidden marks on the lesson (nbval_stage.award), so nbval
+        # runs only where it can still change the grade; the other lessons say why it did not run.
+        worth_running = [(shell, path, program) for shell, path, program in lessons
+                         if program is not None and full_hidden_marks(shell)]
+        runs = run_notebooks(folder, worth_running, options, catalog) if worth_running else {}
+        for shell, _, program in lessons:
+            if program is not None and not full_hidden_marks(shell):
+                shell.run = not_run_for_lost_points(options.notebook_points)
+            else:
+                shell.run = runs.get(shell.number) or NotebookRun(
+                    status="failed", max_points=options.notebook_points,
+                    failures=[shell.reason or "the notebook stage did not run"])
+            award(shell)
 
     result.problems.extend(suite_problems)
     if all(shell.status == "missing" for shell, _, _ in lessons):

@@ -10,7 +10,10 @@ sandbox. A lesson passes when every cell runs and every cell tagged
 The verdict comes from inside the sandbox, so it is not trusted: a lesson's
 "notebook" point is awarded only when nbval passed **and** the hidden suite
 gave every exercise of the lesson full marks. nbval can take that point away;
-it can never add to what honest answers earn.
+it can never add to what honest answers earn. So the grader runs the hidden
+suite first and gives nbval only the lessons with full hidden marks: for the
+others the point is 0 whatever nbval would say, and their run is ``skipped``
+with that reason (:func:`not_run_for_lost_points`).
 """
 
 import json
@@ -124,16 +127,29 @@ def _run(names, sandbox_dir, scratch_dir, limits, timeout):
     return notebooks, ""
 
 
+NEEDS_FULL_MARKS = "the point needs every exercise of the lesson to pass its hidden checks"
+
+
+def full_hidden_marks(lesson_result):
+    """Did every exercise of the lesson earn full marks in the hidden suite?"""
+    return all(e.points >= e.max_points for e in lesson_result.exercises)
+
+
+def not_run_for_lost_points(max_points):
+    """The run of a lesson that lost hidden points: nbval is not started, the point is 0 whatever it says."""
+    return NotebookRun(status="skipped", max_points=max_points,
+                       failures=[f"not run: {NEEDS_FULL_MARKS}"])
+
+
 def award(lesson_result):
     """Give the notebook point only if nbval passed and every exercise earned full marks."""
     run = lesson_result.run
     if run is None:
         return
-    full = all(e.points >= e.max_points for e in lesson_result.exercises)
+    full = full_hidden_marks(lesson_result)
     if run.status == "passed" and full:
         run.points = run.max_points
     else:
         run.points = 0.0
         if run.status == "passed" and not full:
-            run.failures = ["the notebook ran, but the point needs every exercise of the lesson "
-                            "to pass its hidden checks"]
+            run.failures = [f"the notebook ran, but {NEEDS_FULL_MARKS}"]

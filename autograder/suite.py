@@ -8,6 +8,13 @@ code, on data the student's code cannot tamper with.
 
 :func:`run_hidden_suite` returns one :class:`~autograder.results.CheckResult`
 per test item, with the one-line reason and hint of each failure.
+
+Speed (the ``--no-nbval`` path is this module plus the sandbox's round trips):
+pytest's traceback formatting of failures is replaced by one line (nobody reads
+it; it re-parsed the test module for every failing check, ~60 ms each), the
+plugins that end each session with repeated ``gc.collect()`` are off, the
+preloaded heap is frozen out of the collector, and OpenBLAS runs one thread
+(its pool made a 4×4 ``expm`` 50× slower).
 """
 
 import os
@@ -102,6 +109,14 @@ def _explain(error):
             "is the return value of the documented type and shape?")
 
 
+def _short_repr(excinfo, style=None):
+    """A failure's report text without pytest's source-parsing traceback formatter."""
+    try:
+        return f"{excinfo.typename}: {_first_line(excinfo.value)}"
+    except Exception:  # an exception whose str() fails
+        return excinfo.typename
+
+
 class _Collector:
     """pytest plugin: turns each test item into a CheckResult."""
 
@@ -114,6 +129,11 @@ class _Collector:
         for item in items:
             if item.get_closest_marker("exercise") is None:
                 self.problems.append(f"hidden test {item.nodeid} names no exercise")
+            # Speed: pytest formats every failure's traceback (re-parsing the test module's source
+            # for each frame, ~60 ms a failure); nobody reads it, the verdict comes from
+            # call.excinfo below. A one-line text keeps report.failed and everything else as it was.
+            item.repr_failure = _short_repr
+            item._repr_failure_py = _short_repr
 
     @pytest.hookimpl(hookwrapper=True)
     def pytest_runtest_makereport(self, item, call):
@@ -143,13 +163,53 @@ class _Collector:
             passed=report.passed, reason=reason, hint=hint, printed=printed))
 
 
+_BLAS_THREAD_SETTERS = ("scipy_openblas_set_num_threads64_", "scipy_openblas_set_num_threads",
+                        "openblas_set_num_threads64_", "openblas_set_num_threads")
+
+
+def single_threaded_blas():
+    """Make every OpenBLAS loaded in this process (numpy's and scipy's) use one thread.
+
+    The hidden suite works on 3×3 and 4×4 matrices, where OpenBLAS's thread pool costs far
+    more than it saves (``scipy.linalg.expm`` of a 4×4: 0.4 ms with the pool, 0.01 ms
+    without; 5 ms on a busy machine), and the pool's threads compete with the other graders.
+    Forked graders inherit the setting. Returns how many libraries were set.
+    """
+    import ctypes
+
+    try:
+        with open("/proc/self/maps", encoding="utf-8") as maps:
+            paths = {line.split()[-1] for line in maps if "openblas" in line.lower() and "/" in line}
+    except OSError:
+        return 0
+    done = 0
+    for path in sorted(paths):
+        try:
+            library = ctypes.CDLL(path)
+        except OSError:
+            continue
+        for name in _BLAS_THREAD_SETTERS:
+            setter = getattr(library, name, None)
+            if setter is not None:
+                setter(ctypes.c_int(1))
+                done += 1
+                break
+    return done
+
+
 def preload_hidden_suite():
     """Import the hidden test modules once, so forked graders reuse them (speed)."""
+    import gc
     import importlib
 
     os.environ.setdefault("PYTEST_DISABLE_PLUGIN_AUTOLOAD", "1")
     for path in sorted(HIDDEN_SUITE.glob("test_*.py")):
         importlib.import_module(f"autograder.hidden.{path.stem}")
+    single_threaded_blas()
+    # Everything imported so far lives as long as the process: keep it out of the garbage
+    # collector's scans (each forked grader would otherwise walk, and copy, the whole heap).
+    gc.collect()
+    gc.freeze()
 
 
 def run_hidden_suite(proxy, reference, lessons=None):
@@ -167,7 +227,10 @@ def run_hidden_suite(proxy, reference, lessons=None):
     os.environ["PYTEST_DISABLE_PLUGIN_AUTOLOAD"] = "1"
     args = [str(f) for f in files] + [
         "-c", str(HIDDEN_SUITE / "pytest.ini"), "--rootdir", str(HIDDEN_SUITE.parent.parent),
-        "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings"]
+        "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings",
+        # these two end every session with gc.collect() several times (~0.2 s a student) to find
+        # exceptions nobody reads here
+        "-p", "no:unraisableexception", "-p", "no:threadexception"]
     code = pytest.main(args, plugins=[collector])
     if code not in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) or not collector.results:
         raise SuiteError(f"the hidden suite did not run (pytest exit status {int(code)}, "

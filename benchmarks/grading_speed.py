@@ -12,8 +12,11 @@ Usage::
     .venv/bin/python benchmarks/grading_speed.py                 # N = 20 and 100 (about 30 min on 2 cores)
     .venv/bin/python benchmarks/grading_speed.py --students 6 --large 12   # a quick look
 
-Targets (2 cores, N = 20): full grading ≤ 0.5 × nbgrader; ``--no-nbval`` ≤ 0.1 ×;
-seconds per student about the same at N = 20 and N = 100.
+Targets (issue 17; N = 20): full grading ≤ 0.25 × nbgrader's wall time;
+``--no-nbval`` ≤ 0.04 ×; seconds per student about the same at N = 20 and
+N = 100; peak memory stated. The canary (graded once per grader version and
+options, then cached) is warmed before the timed runs, as nbgrader's
+``generate_assignment`` is left out of its time.
 """
 
 import argparse
@@ -134,6 +137,14 @@ def run_ours(class_dir, out, extra=()):
     return timed(command, ROOT, measure_memory=True)
 
 
+def warm_canary(work):
+    """Grade a one-student class in both modes, untimed: the canary is cached from then on."""
+    build_class(work / "class_warm", 1)
+    for extra in ((), ("--no-nbval",)):
+        timed([sys.executable, "-m", "autograder", "grade", str(work / "class_warm"),
+               "--out", str(work / "ours_warm"), "--force", *extra], ROOT)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--students", type=int, default=20, help="class size compared with nbgrader")
@@ -149,6 +160,7 @@ def main():
     students = build_class(work / "class_small", args.students)
     print(f"built {len(students)} students × {len(lessons)} notebooks")
     nbgrader_seconds = run_nbgrader_baseline(students, work)
+    warm_canary(work)
     print(f"stock nbgrader autograde:       {nbgrader_seconds:8.1f} s")
     full_seconds, full_memory = run_ours(work / "class_small", work / "ours_full")
     print(f"ours, full (suite + nbval):     {full_seconds:8.1f} s   peak memory {full_memory / 2**20:6.0f} MiB")
@@ -157,18 +169,21 @@ def main():
 
     large = build_class(work / "class_large", args.large)
     large_full, large_full_memory = run_ours(work / "class_large", work / "ours_large_full")
-    large_fast, _ = run_ours(work / "class_large", work / "ours_large_fast", ["--no-nbval"])
+    large_fast, large_fast_memory = run_ours(work / "class_large", work / "ours_large_fast", ["--no-nbval"])
 
     print()
-    print(f"ratio full / nbgrader:          {full_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.5)")
-    print(f"ratio --no-nbval / nbgrader:    {fast_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.1)")
+    print(f"ratio full / nbgrader:          {full_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.25)")
+    print(f"ratio --no-nbval / nbgrader:    {fast_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.04)")
     print()
     print("seconds per student             "
           f"N = {len(students):<4d}  N = {len(large):<4d}")
     print(f"  nbgrader                      {nbgrader_seconds / len(students):7.2f}")
     print(f"  ours, full                    {full_seconds / len(students):7.2f}  {large_full / len(large):7.2f}")
     print(f"  ours, --no-nbval              {fast_seconds / len(students):7.2f}  {large_fast / len(large):7.2f}")
-    print(f"peak memory of the grader (N = {len(large)}, full): {large_full_memory / 2**20:.0f} MiB")
+    print(f"peak memory of the grader, whole process tree: N = {len(students)} full {full_memory / 2**20:.0f} MiB, "
+          f"--no-nbval {fast_memory / 2**20:.0f} MiB; N = {len(large)} full {large_full_memory / 2**20:.0f} MiB, "
+          f"--no-nbval {large_fast_memory / 2**20:.0f} MiB")
+    print(f"machine: {os.cpu_count()} cores")
 
 
 if __name__ == "__main__":

@@ -189,3 +189,14 @@ def test_class_report_says_what_is_worth_a_look(run):
     status = subprocess.run([sys.executable, "-m", "autograder", "status", "--out", str(out)], cwd=PROJECT_ROOT,
                             capture_output=True, text=True, timeout=120).stdout
     assert "not valid JSON" in status  # kim's problem itself, under her row
+
+
+def test_verdicts_match_the_golden_gradebook(run):
+    """Speed work never moves a verdict: every exercise and notebook point as recorded in
+    tests/golden/sample_class_grades.csv (``python -m tests.record_golden`` re-records it)."""
+    import record_golden
+
+    out, _, _ = run
+    changed = record_golden.differences(record_golden.read_golden(), record_golden.verdicts(out / "grades.csv"))
+    assert not changed, ("verdicts moved:\n" + "\n".join(changed[:40]) +
+                         "\n(re-record with `python -m tests.record_golden` only if the change is intended)")

@@ -5,6 +5,11 @@ notebooks. The kernels nbval starts inherit ``/dev/null`` as their output;
 the summary goes out on the original stdout as one JSON line:
 ``{"notebooks": {name: {"cells": n, "failures": ["cell 7: ...", ...]}}}``.
 
+Speed: the kernels use matplotlib's non-interactive ``agg`` backend (no figure
+is rasterised; the outputs nbval compares are display text), and the runner
+does not import ``rfc3987_syntax`` (a grammar built at import time that only
+checks a string format no notebook uses).
+
 Nothing here is trusted by the grader: a student's kernel shares this
 sandbox, so the summary can only lower a grade, never raise it.
 """
@@ -14,7 +19,12 @@ import os
 import re
 import sys
 
-import pytest
+# Speed: nbval -> nbformat -> jsonschema imports rfc3987_syntax when it is installed, which builds
+# a grammar at import time (~1.2 s per run). It only checks the "iri" string format, which no
+# notebook schema uses; without it jsonschema simply does not register that check.
+sys.modules.setdefault("rfc3987_syntax", None)
+
+import pytest  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -82,6 +92,11 @@ class Summary:
 
 
 def main(notebooks):
+    # No rasterising: figures are never compared, so the kernels draw nothing. With a
+    # non-interactive backend plt.show() is a no-op, where ipykernel's default (inline) would
+    # render every figure to PNG (about 1 CPU-second per lesson). The launcher's environment
+    # sets it too; saying it here keeps it true whoever starts this runner.
+    os.environ["MPLBACKEND"] = "agg"
     out = os.fdopen(os.dup(1), "w")
     devnull = os.open(os.devnull, os.O_RDWR)
     for fd in (0, 1, 2):

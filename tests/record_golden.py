@@ -1,0 +1,100 @@
+"""Record the golden gradebook of the bundled sample class: the verdicts that speed work must not move.
+
+Usage, from the project root::
+
+    .venv/bin/python -m tests.record_golden       # grades the sample class, writes tests/golden/sample_class_grades.csv
+
+The file holds, per student, the points of every exercise and the notebook
+point of every lesson (nothing else: timing, problems and wording may change).
+``tests/test_speed_verdicts.py`` grades the sample class with the current
+grader and requires exactly these points. Re-record only when verdicts are
+*meant* to change (a new hidden check, a changed mistake or master), and look
+at the diff of the file when you do; never re-record to make a speed change pass.
+"""
+
+import csv
+import io
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+GOLDEN = ROOT / "tests" / "golden" / "sample_class_grades.csv"
+
+
+def grade_sample_class(out):
+    """Grade the sample class (full pipeline, nbval included) into ``out``; return grades.csv's path."""
+    result = subprocess.run([sys.executable, "-m", "autograder", "grade", "--out", str(out), "--force"],
+                            cwd=ROOT, capture_output=True, text=True, timeout=1800)
+    if result.returncode != 0:
+        raise RuntimeError("grading the sample class failed:\n" + result.stdout[-2000:] + result.stderr[-2000:])
+    return Path(out) / "grades.csv"
+
+
+def verdict_columns():
+    """The gradebook columns that hold verdicts: one per exercise, then ``notebook_NN`` per lesson."""
+    sys.path.insert(0, str(ROOT))
+    from autograder.catalog import load_catalog
+
+    catalog = load_catalog()
+    return [e.name for e in catalog.exercises] + [f"notebook_{l.number}" for l in catalog.graded_lessons]
+
+
+def verdicts(grades_csv):
+    """``(columns, {student_id: {column: points}})``: the exercise and notebook columns of a gradebook."""
+    with open(grades_csv, newline="", encoding="utf-8") as handle:
+        reader = csv.DictReader(handle)
+        header = list(reader.fieldnames)
+        rows = list(reader)
+    columns = [c for c in verdict_columns() if c in header]  # the gradebook has notebook_NN only with nbval
+    return columns, {row["student_id"]: {c: row[c] for c in columns} for row in rows}
+
+
+def golden_text(columns, table):
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(["student_id"] + columns)
+    for student in sorted(table):
+        writer.writerow([student] + [table[student][c] for c in columns])
+    return buffer.getvalue()
+
+
+def read_golden(path=GOLDEN):
+    with open(path, newline="", encoding="utf-8") as handle:
+        reader = csv.DictReader(handle)
+        columns = reader.fieldnames[1:]
+        return columns, {row["student_id"]: {c: row[c] for c in columns} for row in reader}
+
+
+def differences(expected, actual):
+    """Lines saying where two ``verdicts`` tables differ (points compared as numbers)."""
+    (want_columns, want), (got_columns, got) = expected, actual
+    lines = []
+    if want_columns != got_columns:
+        lines.append(f"columns differ: {want_columns} != {got_columns}")
+    for student in sorted(set(want) | set(got)):
+        if student not in got or student not in want:
+            lines.append(f"{student}: only in the {'golden file' if student in want else 'new gradebook'}")
+            continue
+        for column in want_columns:
+            a, b = want[student].get(column, ""), got[student].get(column, "")
+            try:
+                same = float(a or "nan") == float(b or "nan") or a == b
+            except ValueError:
+                same = a == b
+            if not same:
+                lines.append(f"{student}, {column}: golden {a!r}, now {b!r}")
+    return lines
+
+
+def main():
+    with tempfile.TemporaryDirectory(prefix="golden-") as out:
+        columns, table = verdicts(grade_sample_class(out))
+    GOLDEN.parent.mkdir(parents=True, exist_ok=True)
+    GOLDEN.write_text(golden_text(columns, table), encoding="utf-8")
+    print(f"wrote {GOLDEN.relative_to(ROOT)}: {len(table)} students, {len(columns)} columns")
+
+
+if __name__ == "__main__":
+    main()
