@@ -9,7 +9,6 @@
 - The class report counts the notebooks that ran and those that were not run.
 """
 
-from pathlib import Path
 
 from autograder import grading, nbval_stage
 from autograder.catalog import load_catalog
