@@ -9,7 +9,6 @@
 - The class report counts the notebooks that ran and those that were not run.
 """
 
-
 from autograder import grading, nbval_stage
 from autograder.catalog import load_catalog
 from autograder.report import class_report_html
