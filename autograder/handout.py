@@ -30,7 +30,7 @@ from .paths import COURSE, PROJECT_ROOT, SUPPORT_PACKAGE
 
 FOLDER = "rotations-course"
 # What the notebooks import or run in; everything they pull in is added from the pins.
-STUDENT_ROOTS = ("jupyterlab", "ipykernel", "ipywidgets", "numpy", "scipy", "matplotlib")
+STUDENT_ROOTS = ("jupyterlab", "ipykernel", "ipywidgets", "ipympl", "numpy", "scipy", "matplotlib")
 
 README = """# Rotations, hands on — your copy of the course
 

@@ -1,144 +1,180 @@
 """The course as students and readers meet it: JupyterLab in a real browser.
 
-Starts JupyterLab from this environment on loopback, opens notebooks in
-headless Chromium (Debian's ``chromium`` driven by Playwright), runs all cells
-from the Run menu, and checks what a person sees: rendered math, figures, and
-the check cells' messages. Screenshots go to ``test-artifacts/browser/``.
+One JupyterLab (this environment, default settings, loopback) serves copies
+of course/ and solutions/; headless Chromium (Debian's ``chromium`` through
+Playwright) opens each lesson, runs all cells from the Run menu, and checks
+what a person sees with ``browser_support.page_problems``: no raw TeX, no
+MathJax error, no JavaScript error, every image and figure canvas drawn, and
+(in the solved lessons) nothing on stderr. A student's typed answer turns a
+check from ✗ to ✓, and a slider of an explorer changes its figure. Last, a
+copy of a lesson is broken three ways and the same check must report each.
+Screenshots go to ``test-artifacts/browser/``.
 """
 
-import json
-import os
-import secrets
+import re
 import shutil
-import socket
-import subprocess
-import sys
 import time
-import urllib.request
-from pathlib import Path
 
+import nbformat
 import pytest
 
-from autograder import cells
-from autograder.notebook_files import read_master
 from autograder.paths import COURSE, PROJECT_ROOT, SOLUTIONS
+from browser_support import (LAB_SELECTORS, Browser, JupyterLab, changed_figures, figure_pictures, open_and_run_all,
+                             page_problems, require_chromium)
 
-CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 ARTIFACTS = PROJECT_ROOT / "test-artifacts" / "browser"
-playwright = pytest.importorskip("playwright.sync_api")
-pytestmark = pytest.mark.skipif(not Path(CHROMIUM).exists(), reason="Debian's chromium is not installed")
-
-SETTINGS = {
-    "@jupyterlab/notebook-extension/tracker.jupyterlab-settings": {"windowingMode": "none"},
-    "@jupyterlab/apputils-extension/notification.jupyterlab-settings": {"fetchNews": "false",
-                                                                        "checkForUpdates": False},
-}
-
-
-def _free_port():
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        return probe.getsockname()[1]
+LESSONS = sorted(p.name for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
+TIMINGS = {}
+PICTURES = {}  # the figures of each solved lesson as drawn in the browser, the reference for the breakage test
 
 
 @pytest.fixture(scope="module")
-def lab(tmp_path_factory):
-    """A JupyterLab serving copies of course/ and solutions/, and a browser page factory."""
+def session(tmp_path_factory):
+    sync_api = require_chromium()
     root = tmp_path_factory.mktemp("lab")
-    shutil.copytree(COURSE, root / "course", ignore=shutil.ignore_patterns("__pycache__"))
-    shutil.copytree(SOLUTIONS, root / "solutions", ignore=shutil.ignore_patterns("__pycache__"))
-    settings = root / ".settings"
-    for name, values in SETTINGS.items():
-        path = settings / name
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(json.dumps(values), encoding="utf-8")
-    port, token = _free_port(), secrets.token_hex(16)
-    env = dict(os.environ, JUPYTERLAB_SETTINGS_DIR=str(settings), JUPYTER_RUNTIME_DIR=str(root / ".runtime"),
-               IPYTHONDIR=str(root / ".ipython"), MPLBACKEND="module://matplotlib_inline.backend_inline")
-    env.pop("PYTEST_DISABLE_PLUGIN_AUTOLOAD", None)
-    server = subprocess.Popen(
-        [sys.executable, "-m", "jupyterlab", "--no-browser", "--allow-root", "--ip=127.0.0.1", f"--port={port}",
-         f"--IdentityProvider.token={token}", f"--ServerApp.root_dir={root}"],
-        env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
-    base = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 90
-    while True:
-        try:
-            urllib.request.urlopen(f"{base}/api/status?token={token}", timeout=2)
-            break
-        except OSError:
-            if time.monotonic() > deadline or server.poll() is not None:
-                server.kill()
-                raise RuntimeError("JupyterLab did not start")
-            time.sleep(0.5)
+    for folder in (COURSE, SOLUTIONS):
+        shutil.copytree(folder, root / folder.name, ignore=shutil.ignore_patterns("__pycache__"))
     ARTIFACTS.mkdir(parents=True, exist_ok=True)
-    with playwright.sync_playwright() as driver:
-        browser = driver.chromium.launch(executable_path=CHROMIUM, args=[
-            "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
-            "--disable-component-update", "--disable-sync"])
-        yield {"browser": browser, "base": base, "token": token}
-        browser.close()
-    server.terminate()
-    try:
-        server.wait(timeout=20)
-    except subprocess.TimeoutExpired:
-        server.kill()
+    lab = JupyterLab(root)
+    browser = Browser(sync_api)
+    yield {"lab": lab, "browser": browser, "root": root}
+    browser.close()
+    lab.stop()
+    for name, seconds in TIMINGS.items():
+        print(f"browser: {name} {seconds:.1f} s")
 
 
-def _run_all(lab, relative, shot_prefix):
-    """Open a notebook, run all cells from the Run menu, wait until done; return the page."""
-    page = lab["browser"].new_page(viewport={"width": 1400, "height": 1000})
-    page.goto(f"{lab['base']}/lab/tree/{relative}?token={lab['token']}")
-    page.wait_for_selector(".jp-NotebookPanel .jp-Cell", timeout=90_000)
-    page.wait_for_function("() => document.querySelector('.jp-Notebook-ExecutionIndicator') !== null"
-                           " && document.body.innerText.includes('Idle')", timeout=90_000)
-    page.get_by_role("menuitem", name="Run", exact=True).click()
-    page.get_by_role("menuitem", name="Run All Cells", exact=True).click()
-    # Run All stops at the first error (a stub's check cell in course/): wait until nothing runs.
-    settled = ("() => { const prompts = [...document.querySelectorAll('.jp-InputPrompt')].map(p => p.innerText);"
-               " return prompts.some(t => /\\[\\d+\\]/.test(t)) && !prompts.some(t => t.includes('*')); }")
-    page.wait_for_function(settled, timeout=240_000)
-    page.wait_for_timeout(2000)
-    page.wait_for_function(settled, timeout=240_000)  # still settled: the run is over
-    page.wait_for_timeout(1500)  # let MathJax and images settle
-    page.screenshot(path=str(ARTIFACTS / f"{shot_prefix}_top.png"))
+def _run(session, relative):
+    page = session["browser"].page()
+    started = time.monotonic()
+    open_and_run_all(session["lab"], page, relative)
+    TIMINGS[relative] = time.monotonic() - started
     return page
 
 
-def _outputs(page):
-    return page.locator(".jp-OutputArea-output").all_inner_texts()
-
-
-def test_course_notebook_as_a_student_sees_it(lab):
-    name = sorted(p.name for p in COURSE.glob("01_*.ipynb"))[0]
-    page = _run_all(lab, f"course/{name}", "course_01")
-    assert page.locator(".jp-RenderedMarkdown mjx-container").count() > 5, "math is not rendered"
-    figures = page.locator(".jp-OutputArea-output img")
-    assert figures.count() >= 1, "no figure rendered"
-    figures.first.scroll_into_view_if_needed()
-    figures.first.screenshot(path=str(ARTIFACTS / "course_01_figure.png"))
-    texts = _outputs(page)
-    stub_message = [t for t in texts if "not written yet" in t and "raise NotImplementedError" in t]
-    assert stub_message, "the check cell under an untouched stub did not say what to do"
-    check_output = page.locator(".jp-OutputArea-output", has_text="not written yet").first
-    check_output.scroll_into_view_if_needed()
-    page.screenshot(path=str(ARTIFACTS / "course_01_check_cell.png"))
+@pytest.mark.parametrize("name", LESSONS)
+def test_solved_lesson_reads_cleanly(session, name):
+    """A reader's run of the solved lesson: math, figures, every check ✓, no stderr, no JS error."""
+    page = _run(session, f"solutions/{name}")
+    page.screenshot(path=str(ARTIFACTS / f"solutions_{name[:2]}.png"))
+    PICTURES[name] = figure_pictures(page)
+    problems = page_problems(page, LAB_SELECTORS, min_math=0 if name.startswith("00_") else 1)
+    cells = page.evaluate("""() => [...document.querySelectorAll('.jp-Notebook .jp-CodeCell')].map(c => [
+        (c.querySelector('.cm-content') || {}).textContent || '',
+        [...c.querySelectorAll('.jp-OutputArea-output')].map(o => o.textContent).join('\\n')])""")
+    # Start here shows on purpose what a failed check looks like, in a cell that catches CheckFailed.
+    failed = [out[:120] for source, out in cells if "except CheckFailed" not in source
+              and ("✗" in out or "NotWrittenYet" in out or "CheckFailed" in out)]
+    demonstrations = [out for source, out in cells if "except CheckFailed" in source]
+    errors = page.locator(".jp-OutputArea-output[data-mime-type='application/vnd.jupyter.error']").count()
+    nb = nbformat.read(SOLUTIONS / name, as_version=4)
+    figure_cells = sum(1 for c in nb.cells if c.cell_type == "code" and
+                       (re.search(r"plt\.show\(\)", c.source) or "explore_" in c.source))
+    figures = (page.locator(".jp-OutputArea-output img").count()
+               + page.locator(LAB_SELECTORS["canvases"]).count())
     page.close()
+    assert not problems, problems
+    assert not failed and not errors, (failed, errors)
+    assert all("✗" in out for out in demonstrations), "the demonstration of a failed check shows no ✗"
+    assert figures >= figure_cells, f"{figures} figures drawn for {figure_cells} figure cells"
 
 
-def test_solved_notebook_as_a_reader_sees_it(lab):
-    path = sorted(SOLUTIONS.glob("01_*.ipynb"))[0]
-    master = read_master(path)
-    check_cells = sum(1 for c in master.cells if cells.is_check_cell(c))
-    figure_cells = sum(1 for c in master.cells if c.cell_type == "code" and "plt.show()" in c.source)
-    page = _run_all(lab, f"solutions/{path.name}", "solutions_01")
-    assert page.locator(".jp-RenderedMarkdown mjx-container").count() > 5
-    texts = _outputs(page)
-    passed = [t for t in texts if "public check" in t and "passed" in t and "✗" not in t]
-    assert len(passed) == check_cells, f"{len(passed)} of {check_cells} check cells passed"
-    assert not any("✗" in t for t in texts)
-    assert page.locator(".jp-OutputArea-output[data-mime-type='application/vnd.jupyter.stderr']").count() == 0
-    assert page.locator(".jp-OutputArea-output img").count() == figure_cells
-    page.locator(".jp-OutputArea-output img").last.scroll_into_view_if_needed()
-    page.screenshot(path=str(ARTIFACTS / "solutions_01_last_figure.png"))
+@pytest.mark.parametrize("name", LESSONS)
+def test_course_lesson_opens_and_runs(session, name):
+    """A student's first Run All: math renders, no JS error, and (for a lesson with exercises) the
+    first check cell stops the run with its one-line NotWrittenYet message."""
+    page = _run(session, f"course/{name}")
+    problems = page_problems(page, LAB_SELECTORS, min_math=0 if name.startswith("00_") else 1, check_stderr=False)
+    nb = nbformat.read(COURSE / name, as_version=4)
+    has_exercises = any("check(" in c.source for c in nb.cells if c.cell_type == "code")
+    stopped = page.locator(".jp-OutputArea-output", has_text="NotWrittenYet").count()
     page.close()
+    assert not problems, problems
+    if has_exercises and not name.startswith("00_"):
+        assert stopped >= 1, "the first check cell under a stub did not say NotWrittenYet"
+
+
+def _cell(page, text):
+    return page.locator(".jp-Notebook .jp-Cell", has=page.locator(".jp-InputArea", has_text=text)).first
+
+
+def test_typed_answer_turns_a_check_green(session):
+    """Type rot2d's answer into lesson 01's answer cell, run it and its check: ✗ becomes ✓."""
+    name = next(n for n in LESSONS if n.startswith("01_"))
+    page = _run(session, f"course/{name}")
+    check = _cell(page, 'check("rot2d", rot2d)')
+    check.scroll_into_view_if_needed()
+    assert "NotWrittenYet" in check.locator(".jp-OutputArea").text_content()
+    answer = _cell(page, "def rot2d(theta)")
+    answer.locator(".cm-content").click()
+    page.keyboard.press("Control+a")
+    page.keyboard.insert_text("import numpy as np\n\ndef rot2d(theta):\n"
+                              "    c, s = np.cos(theta), np.sin(theta)\n"
+                              "    return np.array([[c, -s], [s, c]])\n")
+    page.keyboard.press("Shift+Enter")                       # run the answer, move to its check
+    page.keyboard.press("Shift+Enter")                       # run the check
+    page.wait_for_function("() => [...document.querySelectorAll('.jp-OutputArea-output')]"
+                           ".some(e => e.textContent.includes('rot2d: public checks') && e.textContent.includes('passed'))",
+                           timeout=30_000)
+    text = check.locator(".jp-OutputArea").text_content()
+    page.screenshot(path=str(ARTIFACTS / "course_01_check_turned_green.png"))
+    page.close()
+    assert "✓" in text and "✗" not in text and "NotWrittenYet" not in text, text
+
+
+def test_gimbal_slider_changes_the_figure(session):
+    """Lesson 05's explorer: pressing End on the pitch slider redraws the gimbal (the canvas changes)."""
+    name = next(n for n in LESSONS if n.startswith("05_"))
+    page = _run(session, f"solutions/{name}")
+    explorer = page.locator(".coursekit-explorer").first
+    explorer.scroll_into_view_if_needed()
+    canvas = explorer.locator(LAB_SELECTORS["canvases"]).first
+    page.wait_for_timeout(500)
+    before = canvas.evaluate("c => c.toDataURL()")
+    handle = explorer.locator(".widget-slider", has_text="pitch").locator(".noUi-handle").first
+    handle.focus()
+    page.keyboard.press("End")                             # pitch to +90°: the lock
+    page.wait_for_function("([c, b]) => c.toDataURL() !== b", arg=[canvas.element_handle(), before],
+                           timeout=20_000)
+    explorer.screenshot(path=str(ARTIFACTS / "solutions_05_gimbal_locked.png"))
+    readout = explorer.locator(".widget-slider", has_text="pitch").locator(".widget-readout").text_content()
+    page.close()
+    assert readout.strip().startswith("90"), readout
+
+
+def _broken_copy(root, name):
+    """Lesson ``name`` broken five ways: two bad formulas, a warning on stderr, a missing image and a
+    frame removed from Figure 1."""
+    nb = nbformat.read(SOLUTIONS / name, as_version=4)
+    figure = next(c for c in nb.cells if c.cell_type == "code" and "Figure 1." in c.source)
+    frame = next(line for line in figure.source.splitlines() if line.startswith("draw_frame("))
+    figure.source = figure.source.replace(frame + "\n", "", 1)
+    nb.cells.insert(1, nbformat.v4.new_markdown_cell(r"A broken formula: $\frac{1}{2$ and $x^{1}^{2}$."))
+    nb.cells.insert(2, nbformat.v4.new_code_cell("import warnings\nwarnings.warn('a RuntimeWarning on stderr', "
+                                                 "RuntimeWarning)"))
+    nb.cells.insert(3, nbformat.v4.new_markdown_cell("![a figure that is not there](missing_figure.png)"))
+    path = root / "solutions" / f"broken_{name}"
+    nbformat.write(nb, path)
+    return path.name
+
+
+def test_the_browser_check_catches_each_breakage(session):
+    """The check that passes the real lessons reports a bad formula, stderr output, a missing image and a
+    figure drawn without one of its frames (against the figures of the real lesson, drawn in this session)."""
+    name = next(n for n in LESSONS if n.startswith("01_"))
+    if name not in PICTURES:                                  # the real lesson's figures, for reference
+        page = _run(session, f"solutions/{name}")
+        PICTURES[name] = figure_pictures(page)
+        page.close()
+    broken = _broken_copy(session["root"], name)
+    page = _run(session, f"solutions/{broken}")
+    page.screenshot(path=str(ARTIFACTS / "solutions_01_broken.png"))
+    problems = page_problems(page, LAB_SELECTORS, min_math=1)
+    problems += changed_figures(figure_pictures(page), PICTURES[name])
+    page.close()
+    joined = "\n".join(problems)
+    assert "MathJax error" in joined or "raw TeX" in joined, problems
+    assert "stderr output" in joined and "RuntimeWarning" in joined, problems
+    assert "broken or empty image" in joined, problems
+    assert "figure 1 differs from the lesson's" in joined, problems
+    assert "figure 2 differs" not in joined, problems        # the other figures are drawn as in the lesson

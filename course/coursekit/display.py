@@ -12,13 +12,20 @@ import numpy as np
 __all__ = ["show", "format_value"]
 
 
+def _is_vector(items):
+    """A tuple of floats is a vector written differently: it prints like the array it stands for."""
+    return bool(items) and all(isinstance(v, (float, np.floating)) for v in items)
+
+
 def format_value(value, digits=4):
     """Return a stable text form of a number, array, tuple or dict.
 
     Parameters
     ----------
     value : float, int, bool, array_like, tuple, list or dict
-        What to format. Arrays of any shape are accepted.
+        What to format. Arrays of any shape are accepted; a list or a tuple of
+        floats prints exactly like the array it stands for, so a correct answer
+        returned as a list or a tuple shows what the reference shows.
     digits : int
         Decimals kept after rounding.
 
@@ -30,13 +37,15 @@ def format_value(value, digits=4):
     --------
     >>> format_value(np.array([1e-17, -0.0, 0.5]))
     '[0.0000 0.0000 0.5000]'
-    >>> format_value((1.0, -2e-20))
-    '(1.0, 0.0)'
+    >>> format_value((1.0, -2e-20))          # a vector returned as a tuple prints as the array would
+    '[1.0000 0.0000]'
+    >>> format_value((np.array([0.0, 0.0, 1.0]), 0.5))
+    '([0.0000 0.0000 1.0000], 0.5)'
     """
     if isinstance(value, dict):
         inner = ", ".join(f"{k!r}: {format_value(v, digits)}" for k, v in value.items())
         return "{" + inner + "}"
-    if isinstance(value, tuple):
+    if isinstance(value, tuple) and not _is_vector(value):
         return "(" + ", ".join(format_value(v, digits) for v in value) + ")"
     if isinstance(value, (bool, np.bool_, str)) or value is None:
         return str(value)

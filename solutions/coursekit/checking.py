@@ -19,7 +19,6 @@ assignments. Both errors show as one red line in Jupyter, not a traceback
 above already say what is wrong.
 """
 
-import time
 import traceback
 
 __all__ = ["check", "public_check", "Mismatch", "CheckFailed", "NotWrittenYet", "registered_exercises",
@@ -168,7 +167,6 @@ def check(exercise, function):
                        + (f" (a checks module failed to import: {broken})" if broken else ""))
     passed, failed = 0, 0
     lines = []
-    started = time.perf_counter()
     for description, run in checks:
         try:
             run(function)
@@ -194,7 +192,6 @@ def check(exercise, function):
         else:
             passed += 1
             lines.append(f"  ✓ {description}")
-    elapsed = time.perf_counter() - started
     print(f"{exercise}: public checks")
     print("\n".join(lines))
     total = passed + failed
@@ -203,4 +200,4 @@ def check(exercise, function):
         _stop_the_cell(CheckFailed(f"{failed} of {total} public checks failed for {exercise}: "
                                    "fix the ✗ lines above (Run All stopped here)"))
     passed_text = "The public check passed" if total == 1 else f"All {total} public checks passed"
-    print(f"{passed_text} ({elapsed:.2f} s). The hidden checks run when your notebook is graded.")
+    print(f"{passed_text}. The hidden checks run when your notebook is graded.")

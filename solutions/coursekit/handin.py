@@ -45,7 +45,7 @@ def ready_to_hand_in(lesson, namespace=None):
     names = checks_of_lesson(lesson)
     width = max([len(name) for name in names] + [8])
     print(f"Lesson {lesson}: ready to hand in?")
-    todo = []
+    unfinished = []
     for name in names:
         function = namespace.get(name)
         if not callable(function):
@@ -53,14 +53,14 @@ def ready_to_hand_in(lesson, namespace=None):
         else:
             passed, total, problem = run_quietly(name, function)
         if problem:
-            todo.append(name)
+            unfinished.append(name)
             print(f"  ✗ {name:<{width}}  {problem}")
         else:
             print(f"  ✓ {name:<{width}}  {passed} of {total} public checks pass")
-    if todo:
-        print(f"{len(names) - len(todo)} of {len(names)} exercises pass their public checks. "
-              f"Still to do: {', '.join(todo)}. Each one's check cell says more.")
+    if unfinished:
+        print(f"{len(names) - len(unfinished)} of {len(names)} exercises pass their public checks. "
+              f"Still to do: {', '.join(unfinished)}. Each one's check cell says more.")
     else:
         print(f"All {len(names)} exercises pass their public checks: ready to hand in. "
               "Save the notebook (Ctrl+S) and hand in this file; the hidden checks run when it is graded.")
-    return todo
+    return unfinished

@@ -1,12 +1,22 @@
 """Plotting helpers shared by the lessons: frames as arrow triads, points, axes.
 
 A frame is drawn as three arrows from its origin: x red, y green, z blue
-(the usual "RGB = xyz" mnemonic). The arrows are the columns of the frame's
-rotation matrix, which is exactly what a rotation matrix *is*.
+(the usual "RGB = xyz" mnemonic), in shades that stay apart for colour-blind
+readers (Okabe and Ito's palette), and with a line style each (x solid,
+y dashed, z dotted) so that the triad reads even in black and white. The
+arrows are the columns of the frame's rotation matrix, which is exactly what
+a rotation matrix *is*.
+
+In a live JupyterLab, ``interactive_figures()`` switches to ipympl's widget
+backend, so that every 3D figure can be turned with the mouse; everywhere
+else (grading, recording, the book) figures stay static pictures.
 """
+
+import os
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 __all__ = [
     "AXIS_COLORS",
@@ -17,9 +27,73 @@ __all__ = [
     "finish_3d_axes",
     "draw_slope",
     "draw_circle",
+    "AXIS_STYLES",
+    "interactive_figures",
+    "live_front_end",
+    "widgets_live",
+    "hide_figure_header",
 ]
 
-AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")
+# Okabe-Ito vermillion, bluish green and blue: red, green and blue that colour-blind readers tell apart.
+AXIS_COLORS = ("#D55E00", "#009E73", "#0072B2")
+# ... and a line style per axis, for readers (and printers) without colour.
+AXIS_STYLES = ("solid", "dashed", "dotted")
+
+
+def live_front_end():
+    """True in a kernel that a running Jupyter server started for a notebook (JupyterLab, Notebook 7).
+
+    Such kernels carry ``JPY_SESSION_NAME``; kernels started by nbclient (the
+    grader's notebook stage, ``record``, ``preview``, the book) do not, and
+    the grader's kernels also force matplotlib's ``agg`` backend.
+    """
+    if not os.environ.get("JPY_SESSION_NAME"):
+        return False
+    if os.environ.get("MPLBACKEND", "").lower() in ("agg", "pdf", "svg", "ps", "cairo", "template"):
+        return False
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return False
+    shell = get_ipython()
+    return shell is not None and hasattr(shell, "kernel")
+
+
+def interactive_figures():
+    """In a live JupyterLab, draw figures with ipympl's widget backend (``%matplotlib widget``).
+
+    3D figures can then be turned by dragging them with the mouse, and the
+    explorers of ``coursekit.explorers`` update their figure in place.
+    Anywhere else (no front end, or ipympl not installed) this does nothing,
+    so a notebook that calls it still runs under nbval, the grader and the
+    book builder. Returns True when the widget backend is on.
+    """
+    if not live_front_end():
+        return False
+    try:
+        import ipympl  # noqa: F401
+        from IPython import get_ipython
+    except ImportError:
+        return False
+    get_ipython().run_line_magic("matplotlib", "widget")
+    # The figure's own title says which figure it is: no "Figure 1" header above it. The header is a
+    # trait of each canvas, so a pyplot hook (run on every new figure) turns it off figure by figure.
+    hook = f"{__name__}:hide_figure_header"
+    if hook not in plt.rcParams["figure.hooks"]:
+        plt.rcParams["figure.hooks"] = [*plt.rcParams["figure.hooks"], hook]
+    return True
+
+
+def hide_figure_header(fig):
+    """Hide ipympl's "Figure N" header above ``fig`` (a no-op for figures that are pictures)."""
+    if hasattr(fig.canvas, "header_visible"):
+        fig.canvas.header_visible = False
+    return fig
+
+
+def widgets_live():
+    """True when figures are ipympl widgets (``interactive_figures()`` switched them on)."""
+    return "ipympl" in plt.get_backend().lower() or plt.get_backend().lower() == "widget"
 
 
 def new_3d_axes(title, limit=1.5, elev=22, azim=-58, ax=None, figsize=(5.2, 4.6), unit="m", zoom=1.0):
@@ -59,9 +133,12 @@ def new_3d_axes(title, limit=1.5, elev=22, azim=-58, ax=None, figsize=(5.2, 4.6)
     ax.set_ylim(lo, hi)
     ax.set_zlim(lo, hi)
     ax.set_box_aspect((1, 1, 1), zoom=zoom)
-    ax.set_xlabel(f"x [{unit}]")
-    ax.set_ylabel(f"y [{unit}]")
-    ax.set_zlabel(f"z [{unit}]")
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.set_major_locator(MaxNLocator(nbins=4, steps=[1, 2, 2.5, 5, 10]))  # few ticks: no collisions
+    ax.tick_params(pad=1)
+    ax.set_xlabel(f"$x$ [{unit}]", labelpad=2)
+    ax.set_ylabel(f"$y$ [{unit}]", labelpad=2)
+    ax.set_zlabel(f"$z$ [{unit}]", labelpad=2)
     ax.view_init(elev=elev, azim=azim)
     ax.set_title(title)
     return fig, ax
@@ -81,13 +158,16 @@ def draw_frame(ax, R=None, origin=(0.0, 0.0, 0.0), name="", length=1.0, alpha=1.
         Frame name used in the labels, e.g. ``"c"`` gives ``x_c``, ``y_c``, ``z_c``.
     length : float
         Arrow length.
+
+    The x, y and z arrows differ in colour and in line style (solid, dashed,
+    dotted), so that they can be told apart without colour.
     """
     R = np.eye(3) if R is None else np.asarray(R, dtype=float)
     o = np.asarray(origin, dtype=float)
-    for k, (axis_name, color) in enumerate(zip("xyz", AXIS_COLORS)):
+    for k, (axis_name, color, style) in enumerate(zip("xyz", AXIS_COLORS, AXIS_STYLES)):
         direction = R[:, k] * length
         ax.quiver(*o, *direction, color=color, alpha=alpha, linewidth=linewidth,
-                  arrow_length_ratio=0.15)
+                  arrow_length_ratio=0.15, linestyles=style)
         if name:
             tip = o + 1.12 * direction
             ax.text(*tip, f"${axis_name}_{{{name}}}$", color=color, alpha=alpha,
@@ -106,10 +186,10 @@ def draw_frame_2d(ax, R=None, origin=(0.0, 0.0), name="", length=1.0, alpha=1.0)
     """Draw a 2D frame: the two columns of ``R`` (shape (2, 2)) at ``origin``."""
     R = np.eye(2) if R is None else np.asarray(R, dtype=float)
     o = np.asarray(origin, dtype=float)
-    for k, (axis_name, color) in enumerate(zip("xy", AXIS_COLORS)):
+    for k, (axis_name, color, style) in enumerate(zip("xy", AXIS_COLORS, AXIS_STYLES)):
         d = R[:, k] * length
         ax.annotate("", xy=o + d, xytext=o,
-                    arrowprops=dict(arrowstyle="-|>", color=color, lw=2, alpha=alpha))
+                    arrowprops=dict(arrowstyle="-|>", color=color, lw=2, alpha=alpha, linestyle=style))
         if name:
             ax.text(*(o + 1.15 * d), f"${axis_name}_{{{name}}}$", color=color, alpha=alpha,
                     ha="center", va="center")

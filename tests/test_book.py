@@ -1,0 +1,117 @@
+"""The book: the solved lessons as a static website that a reader opens from disk.
+
+Builds it once with ``python -m autograder book`` (offline: no network is
+needed or used), then checks that it holds the solved lessons and nothing of
+the grader, and opens every page from ``file://`` in headless Chromium: the
+page loads, math renders (with the MathJax copy inside the book), images
+load, no JavaScript error, and every link between pages resolves.
+"""
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+from urllib.parse import unquote, urlparse
+
+import pytest
+
+from autograder.paths import PROJECT_ROOT, SOLUTIONS
+from browser_support import BOOK_SELECTORS, Browser, open_book_page, page_problems, require_chromium
+
+LESSONS = sorted(p.stem for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
+
+
+@pytest.fixture(scope="module")
+def book(tmp_path_factory):
+    out = tmp_path_factory.mktemp("book") / "book"
+    run = subprocess.run([sys.executable, "-m", "autograder", "book", "--out", str(out)], cwd=PROJECT_ROOT,
+                         capture_output=True, text=True, timeout=900)
+    assert run.returncode == 0, run.stderr[-3000:]
+    return out
+
+
+def _pages(book):
+    return sorted(book.glob("*.html"))
+
+
+def test_every_lesson_has_a_page_and_the_start_page_is_the_front_page(book):
+    names = {p.stem for p in _pages(book)}
+    assert {name for name in LESSONS if not name.startswith("00_")} <= names
+    front = (book / "index.html").read_text(encoding="utf-8")
+    assert "Start here" in front and "01_frames_and_rotations.html" in front
+
+
+def test_the_book_holds_no_stubs_hidden_tests_or_grader(book):
+    everything = "\n".join(p.read_text(encoding="utf-8", errors="replace") for p in book.rglob("*")
+                           if p.is_file() and p.suffix in (".html", ".js", ".txt", ".ipynb", ".py"))
+    assert not list(book.rglob("*.ipynb")) and not list(book.rglob("*.py")), "notebook or Python sources leaked"
+    for marker in ("raise NotImplementedError", "BEGIN SOLUTION", "END SOLUTION", "autograder/hidden",
+                   "@exercise(", "def test_", "from .helpers import", "public_check("):
+        assert marker not in everything, f"the book contains {marker!r}"
+
+
+def test_the_book_needs_no_network(book):
+    """Scripts and styles are local files (MathJax included), so the book reads offline."""
+    for page in _pages(book):
+        html = page.read_text(encoding="utf-8")
+        remote = re.findall(r'<(?:script|link)[^>]+(?:src|href)="(https?://[^"]+)"', html)
+        assert not remote, f"{page.name} loads {remote[:3]}"
+
+
+def test_every_page_in_a_browser(book):
+    sync_api = require_chromium()
+    browser = Browser(sync_api)
+    problems, broken_links = {}, []
+    try:
+        for path in _pages(book):
+            if path.stem in ("genindex", "search"):
+                continue
+            page = browser.page()
+            formulas = open_book_page(page, path)
+            found = page_problems(page, BOOK_SELECTORS, min_math=1 if formulas else 0)
+            if formulas < 0:
+                found.append("MathJax did not start")
+            if path.stem in LESSONS[1:] and not formulas:
+                found.append("a lesson page without math")
+            if found:
+                problems[path.name] = found
+            for href in page.eval_on_selector_all("a[href]", "els => els.map(e => e.href)"):
+                url = urlparse(href)
+                if url.scheme == "file" and not Path(unquote(url.path)).exists():
+                    broken_links.append(f"{path.name} -> {href}")
+            page.close()
+    finally:
+        browser.close()
+    assert not problems, problems
+    assert not broken_links, broken_links[:10]
+
+
+def test_the_browser_check_catches_a_broken_page(book, tmp_path):
+    """The same check reports a formula MathJax cannot parse and an image that does not load."""
+    sync_api = require_chromium()
+    source = (book / "02_groups_and_so3.html").read_text(encoding="utf-8")
+    article = source.index("<article")
+    heading = source.index("</h1>", article) + len("</h1>")
+    math = '<span class="math notranslate nohighlight">{}</span>'
+    cases = {  # what a bad formula in a lesson becomes in the book, and what the check must say
+        "unclosed brace": (math.format(r"\(\frac{1}{2\)"), "raw TeX"),
+        "double exponent": (math.format(r"\(x^{1}^{2}\)"), "MathJax error"),
+        "undefined macro": (math.format(r"\(\rotmat{R}\)"), "MathJax error: undefined macro"),
+        "missing image": ('<img src="_images/missing.png" alt="a figure that is not there">', "broken or empty image"),
+    }
+    browser = Browser(sync_api)
+    found = {}
+    try:
+        for case, (html, _) in cases.items():
+            target = book / f"broken_{case.replace(' ', '_')}.html"
+            target.write_text(source[:heading] + f"<p>Broken on purpose: {html}.</p>" + source[heading:],
+                              encoding="utf-8")
+            page = browser.page()
+            open_book_page(page, target)
+            found[case] = "\n".join(page_problems(page, BOOK_SELECTORS, min_math=1))
+            page.close()
+            target.unlink()
+    finally:
+        browser.close()
+    for case, (_, expected) in cases.items():
+        assert expected in found[case], (case, found[case])
