@@ -7,7 +7,7 @@ release [--check]
 record [--only NN ...]
     Re-record the demonstration outputs stored in the masters.
 grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE]
-      [--nbgrader-db PATH] [--force] [--student ID ...] [--config course.toml]
+      [--nbgrader-db PATH] [--force] [--student ID ...] [--config course.toml] [--cluster ADDRESS]
     Grade every student folder in PATH (or the bundled sample class); with
     --student, re-grade only those. The gradebook never loses a student.
     Exit status 3 when the canary fails (nothing is written).
@@ -29,6 +29,9 @@ gradescope --out autograder.zip [--lessons NN ...] [--visibility V]
 preview NOTEBOOK [--figures DIR]
     Run a notebook top to bottom; report errors, warnings and check cells;
     save every figure as a PNG to look at (for authors).
+book --out DIR
+    Build the book: the solved lessons, executed, as a static website
+    (open DIR/index.html in a browser; no Python needed to read it).
 """
 
 import argparse
@@ -115,6 +118,7 @@ def _cmd_canary(args):
 def _cmd_grade(args):
     from .batch import UnknownStudents, grade_class
     from .canary import CanaryFailed
+    from .cluster import ClusterError
     from .lateness import ConfigError, load_config
     from .grading import GradingOptions
     from .progress import Progress
@@ -139,17 +143,32 @@ def _cmd_grade(args):
     except ConfigError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
+    runner = None
+    if args.cluster:  # students become Dask tasks (autograder/cluster.py, docs/CLUSTER.md)
+        from .cluster import connect
+
+        try:
+            runner = connect(args.cluster, options, announce=lambda line: print(line, flush=True))
+        except ClusterError as error:
+            print(f"error: {error}", file=sys.stderr)
+            return 2
     try:
         summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
                               progress=Progress(sys.stderr), roster=_read_roster(args.roster),
                               only=tuple(args.student), announce=lambda line: print(line, flush=True),
-                              config=config)
+                              config=config, runner=runner)
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
         return 3
     except UnknownStudents as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
+    except ClusterError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    finally:
+        if runner is not None:
+            runner.close()
     print()
     _print_table(summary.results)
     print()
@@ -227,6 +246,20 @@ def _cmd_preview(args):
         for figure in save_figures(nb, args.figures, path.stem[:2]):
             print(f"figure: {figure}")
     return 1 if errors(nb) else 0
+
+
+def _cmd_book(args):
+    from .book import BookFailed, build_book
+
+    try:
+        out, pages, warnings = build_book(args.out)
+    except BookFailed as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 1
+    if warnings.strip():
+        print(f"{len(warnings.strip().splitlines())} Sphinx warning(s), see {out.parent / 'book-warnings.txt'}")
+    print(f"wrote the book ({len(pages)} pages) to {out}: open {out / 'index.html'} in a browser")
+    return 0
 
 
 def _cmd_gradescope(args):
@@ -317,6 +350,9 @@ def build_parser():
                        help="course config with due dates and the late policy (see autograder/lateness.py)")
     grade.add_argument("--student", nargs="+", default=(), metavar="ID",
                        help="re-grade only these students; everyone else keeps their saved grade")
+    grade.add_argument("--cluster", metavar="ADDRESS",
+                       help="grade on a Dask cluster: tcp://HOST:8786 (a running scheduler), or local:N "
+                            "(N local worker processes); see docs/CLUSTER.md")
     grade.set_defaults(run=_cmd_grade)
 
     canary = commands.add_parser("canary", help="grade the reference solutions: does every stage work here?")
@@ -362,6 +398,10 @@ def build_parser():
     preview.add_argument("notebook")
     preview.add_argument("--figures", help="folder for the PNG files")
     preview.set_defaults(run=_cmd_preview)
+
+    book = commands.add_parser("book", help="build the solved lessons as a static website (open OUT/index.html)")
+    book.add_argument("--out", default="_build/book", help="the folder to write (replaced), e.g. _build/book")
+    book.set_defaults(run=_cmd_book)
     return parser
 
 
