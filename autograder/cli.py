@@ -267,7 +267,7 @@ def _cmd_gradescope(args):
 
     path = build_bundle(args.out, lessons=tuple(args.lessons), visibility=args.visibility, nbval=not args.no_nbval)
     print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): upload it as the autograder of a "
-          "Gradescope programming assignment (Ubuntu base image).")
+          "Gradescope programming assignment (choose the Ubuntu 24.04 base image).")
     return 0
 
 

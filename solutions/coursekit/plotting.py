@@ -66,22 +66,21 @@ def interactive_figures():
     explorers of ``coursekit.explorers`` update their figure in place.
     Anywhere else (no front end, or ipympl not installed) this does nothing,
     so a notebook that calls it still runs under nbval, the grader and the
-    book builder. Returns True when the widget backend is on.
+    book builder. It returns nothing, so the cell that calls it shows nothing.
     """
     if not live_front_end():
-        return False
+        return
     try:
         import ipympl  # noqa: F401
         from IPython import get_ipython
     except ImportError:
-        return False
+        return
     get_ipython().run_line_magic("matplotlib", "widget")
     # The figure's own title says which figure it is: no "Figure 1" header above it. The header is a
     # trait of each canvas, so a pyplot hook (run on every new figure) turns it off figure by figure.
     hook = f"{__name__}:hide_figure_header"
     if hook not in plt.rcParams["figure.hooks"]:
         plt.rcParams["figure.hooks"] = [*plt.rcParams["figure.hooks"], hook]
-    return True
 
 
 def hide_figure_header(fig):
