@@ -62,6 +62,7 @@ the student it was grading with it, never students queued behind it.
 import ctypes
 import os
 import signal
+import stat
 import tempfile
 import threading
 import time
@@ -69,7 +70,7 @@ import uuid
 from collections import deque
 from pathlib import Path
 
-from .submissions import MAX_DEPTH
+from .submissions import files_in, is_notebook_name
 
 STRENGTH = {"limits": 0, "namespaces": 1}  # isolation modes, weakest first
 WORKER_WAIT = 120  # seconds to wait for a first worker (or for one that can grade)
@@ -93,21 +94,19 @@ def pack_submission(folder):
     """
     folder = Path(folder)
     entries = []
-    for root, dirs, files in os.walk(folder, followlinks=False):
-        depth = len(Path(root).relative_to(folder).parts)
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and depth < MAX_DEPTH)
-        for name in sorted(files):
-            path = Path(root) / name
-            relative = str(path.relative_to(folder))
-            info = path.lstat()
-            if path.is_symlink():
-                if name.endswith(".ipynb") and not name.startswith("."):
-                    entries.append((relative, "link", os.readlink(path), info.st_mtime_ns))
-            elif (name.endswith(".ipynb") and not name.startswith(".")) or name == TIMESTAMP:
-                try:
-                    entries.append((relative, "file", path.read_bytes(), info.st_mtime_ns))
-                except OSError:
-                    continue  # unreadable here too: the grader gives the same reason on the worker
+    for path in files_in(folder, lambda name: is_notebook_name(name) or name == TIMESTAMP):
+        relative = str(path.relative_to(folder))
+        info = path.lstat()
+        if path.is_symlink():
+            if is_notebook_name(path.name):
+                entries.append((relative, "link", os.readlink(path), info.st_mtime_ns))
+            continue
+        if not stat.S_ISREG(info.st_mode):
+            continue  # a fifo or a device named like a notebook: never read (the grader says why)
+        try:
+            entries.append((relative, "file", path.read_bytes(), info.st_mtime_ns))
+        except OSError:
+            continue  # unreadable here too: the grader gives the same reason on the worker
     return {"name": folder.name, "entries": entries}
 
 

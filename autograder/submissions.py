@@ -43,17 +43,23 @@ def student_folders(path):
     return found
 
 
-def notebooks_in(folder):
-    """Regular ``.ipynb`` files and links to them up to two levels down, as paths."""
+def is_notebook_name(name):
+    return name.endswith(".ipynb") and not name.startswith(".")
+
+
+def files_in(folder, wanted):
+    """Paths of the files (and links) whose name ``wanted(name)`` accepts, up to two levels down,
+    in sorted order, skipping hidden folders and never following a link."""
     folder = Path(folder)
-    found = []
     for root, dirs, files in os.walk(folder, followlinks=False):
         depth = len(Path(root).relative_to(folder).parts)
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and depth < MAX_DEPTH)
-        for name in sorted(files):
-            if name.endswith(".ipynb") and not name.startswith("."):
-                found.append(Path(root) / name)
-    return found
+        yield from (Path(root) / name for name in sorted(files) if wanted(name))
+
+
+def notebooks_in(folder):
+    """Regular ``.ipynb`` files and links to them up to two levels down, as paths."""
+    return list(files_in(folder, is_notebook_name))
 
 
 @dataclass
