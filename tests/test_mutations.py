@@ -88,3 +88,9 @@ def test_every_exercise_has_typical_mistakes():
     counts = Counter(m.exercise for m in WRONG.values())
     short = {e.name: counts[e.name] for e in load_catalog().exercises if counts[e.name] < MIN_PER_EXERCISE}
     assert not short, f"exercises with fewer than {MIN_PER_EXERCISE} typical mistakes: {short}"
+
+
+def test_every_mistake_declares_the_hints_meant_for_it():
+    """Each typical mistake names the hint it must get, hidden and public, so (c) is checked for all of them."""
+    silent = sorted(name for name, m in WRONG.items() if not (m.hint and m.public_hint))
+    assert not silent, f"{len(silent)} mistakes declare no hidden or no public hint: {silent}"
