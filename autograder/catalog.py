@@ -36,6 +36,7 @@ class Lesson:
     title: str
     exercises: tuple
     setup_source: str
+    hand_in_points: float = 0.0  # the notebook point, as the hand-in grade cell records it for nbgrader
 
     @property
     def points(self):
@@ -84,10 +85,12 @@ def lesson_from_notebook(path, nb):
             if first.startswith("# "):
                 title = re.sub(r"^Lesson\s+\d+\s*[—:-]\s*", "", first[2:].strip())
                 break
-    exercises, setup_source, pending = [], "", None
+    exercises, setup_source, pending, hand_in_points = [], "", None, 0.0
     for cell in nb.cells:
         if cells.is_setup_cell(cell):
             setup_source = cells.source_text(cell)
+        elif cells.is_hand_in_cell(cell):
+            hand_in_points = cells.points(cell)
         elif cells.is_answer_cell(cell):
             if pending:
                 raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")
@@ -101,7 +104,7 @@ def lesson_from_notebook(path, nb):
     if pending:
         raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")
     return Lesson(number=number, filename=Path(path).name, title=title,
-                  exercises=tuple(exercises), setup_source=setup_source)
+                  exercises=tuple(exercises), setup_source=setup_source, hand_in_points=hand_in_points)
 
 
 @lru_cache(maxsize=4)

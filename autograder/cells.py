@@ -11,7 +11,13 @@ A lesson master (``solutions/NN_*.ipynb``) is an nbgrader source notebook:
 - the **setup cell** (tag ``setup``) holds the imports the answers need; the
   grader runs it before a student's answer cells;
 - **demonstration cells** tagged ``nbval-check-output`` print results that
-  nbval compares with the reference outputs.
+  nbval compares with the reference outputs;
+- the **hand-in cell** ends the lesson: ``ready_to_hand_in("NN")`` runs every
+  public check at once. It is a locked grade cell (``grade_id``
+  ``ready-to-hand-in``) worth the notebook point, so the point has a home in
+  nbgrader's gradebook: stock ``nbgrader autograde`` gives it when the cell
+  runs clean (every public check passes), our grader when the notebook
+  reproduces the reference and the hidden suite gives full marks.
 
 The constructors below build such cells for authors; the predicates read them.
 """
@@ -22,6 +28,7 @@ NBGRADER_SCHEMA = 3
 SETUP_TAG = "setup"
 CHECK_OUTPUT_TAG = "nbval-check-output"
 CHECK_PREFIX = "check_"
+HAND_IN_GRADE_ID = "ready-to-hand-in"  # also its cell id
 BEGIN_SOLUTION = "### BEGIN SOLUTION"
 END_SOLUTION = "### END SOLUTION"
 
@@ -46,9 +53,18 @@ def is_answer_cell(cell):
     return cell.get("cell_type") == "code" and bool(meta.get("solution")) and not meta.get("grade")
 
 
-def is_check_cell(cell):
+def is_grade_cell(cell):
+    """Any cell nbgrader scores: a check cell or the hand-in cell."""
     meta = _nbgrader(cell)
     return cell.get("cell_type") == "code" and bool(meta.get("grade")) and not meta.get("solution")
+
+
+def is_check_cell(cell):
+    return is_grade_cell(cell) and not is_hand_in_cell(cell)
+
+
+def is_hand_in_cell(cell):
+    return is_grade_cell(cell) and grade_id(cell) == HAND_IN_GRADE_ID
 
 
 def is_setup_cell(cell):
@@ -109,6 +125,16 @@ def answer(name, source):
     cell = nbformat.v4.new_code_cell(source.strip("\n"))
     cell.metadata.update(_meta(False, True, False, name))
     cell.id = name
+    return cell
+
+
+def hand_in(lesson_number, points_value=1):
+    """The locked last cell of a lesson, worth the notebook point (see the module docstring)."""
+    cell = nbformat.v4.new_code_cell(f'from coursekit import ready_to_hand_in\n\nready_to_hand_in("{lesson_number}")')
+    cell.metadata.update(_meta(True, False, True, HAND_IN_GRADE_ID, points_value))
+    cell.metadata["editable"] = False
+    cell.metadata["deletable"] = False
+    cell.id = HAND_IN_GRADE_ID
     return cell
 
 

@@ -20,8 +20,9 @@ What nbgrader can live with:
   owns them**: after an ``nbgrader autograde``, re-run
   ``python -m autograder grade ... --nbgrader-db PATH`` (unchanged students are
   reused, the export runs again) to put the thorough grades back.
-- The notebook stage's point has no cell in nbgrader's model; it stays in
-  ``grades.csv``, the feedback pages and ``results.json``.
+- **The notebook point** goes to the lesson's hand-in cell (``grade_id``
+  ``ready-to-hand-in``, a grade cell worth the point), when the notebook stage
+  ran; with ``--no-nbval`` that cell is left as it is.
 
 Examples
 --------
@@ -33,6 +34,7 @@ import warnings
 
 from nbgrader.api import Gradebook, MissingEntry
 
+from . import cells
 from .catalog import load_catalog
 from .nbgrader_course import assignment_name, with_environment_tools
 from .notebook_files import read_master
@@ -92,9 +94,11 @@ def export_to_gradebook(results, database):
                     gradebook.find_submission(assignment, result.student_id)
                 except MissingEntry:
                     gradebook.add_submission(assignment, result.student_id)
-                for exercise in lesson.exercises:
-                    grade = gradebook.find_grade(f"check_{exercise.name}", notebook, assignment, result.student_id)
-                    grade.auto_score = exercise.points
+                scores = {f"{cells.CHECK_PREFIX}{exercise.name}": exercise.points for exercise in lesson.exercises}
+                if lesson.run is not None:
+                    scores[cells.HAND_IN_GRADE_ID] = lesson.run.points
+                for cell_id, points in scores.items():
+                    gradebook.find_grade(cell_id, notebook, assignment, result.student_id).auto_score = points
                     written += 1
             gradebook.db.commit()
     return written

@@ -64,14 +64,14 @@ def test_stock_nbgrader_grades_reference_full_and_release_zero(nbgrader_course, 
     with _gradebook(nbgrader_course) as gradebook:
         reference = gradebook.find_submission(assignment_name(lesson), "reference")
         untouched = gradebook.find_submission(assignment_name(lesson), "untouched")
-        assert reference.max_score == lesson.points > 0
+        assert reference.max_score == lesson.points + lesson.hand_in_points > lesson.points
         assert reference.score == reference.max_score
         assert untouched.score == 0
 
 
-def _grade_into(course_root, *extra):
+def _grade_into(course_root, *extra, nbval=False):
     run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(course_root), "--out",
-                          str(course_root.parent / "out"), "--no-nbval", "--nbgrader-db",
+                          str(course_root.parent / "out"), *([] if nbval else ["--no-nbval"]), "--nbgrader-db",
                           str(course_root / "gradebook.db"), *extra], cwd=PROJECT_ROOT, capture_output=True,
                          text=True, timeout=600)
     assert run.returncode == 0, run.stdout[-1500:] + run.stderr[-2000:]
@@ -89,8 +89,9 @@ CHEAT = "check = lambda *args, **kwargs: None  # every later check cell passes i
 
 def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
     """Our export and stock nbgrader share one gradebook: only lessons handed in get submissions,
-    generate_assignment still works afterwards, and whichever of autograde and our export ran last
-    owns the automatic scores (the rule in autograder/nbgrader_export.py)."""
+    generate_assignment still works afterwards, the notebook point lands in the hand-in cell, and
+    whichever of autograde and our export ran last owns the automatic scores (the rule in
+    autograder/nbgrader_export.py)."""
     first, second = LESSONS[0], LESSONS[1]
     root = build_course(tmp_path / "course", lessons=(first.number, second.number))
     run_nbgrader(root, "generate_assignment", assignment_name(first), "--force")
@@ -108,9 +109,13 @@ def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
             notebook.write_text(canonical_text(nb), encoding="utf-8")
         submit(root, student, first, notebook)
 
-    ours = _grade_into(root)
-    assert ours == {"ada": first.points, "ben": 0.0, "gina": 0.0}
+    ours = _grade_into(root, nbval=True)
+    assert ours == {"ada": first.points + first.hand_in_points, "ben": 0.0, "gina": 0.0}
     assert _scores(root, first) == ours
+    with _gradebook(root) as gradebook:
+        point = gradebook.find_grade(cells.HAND_IN_GRADE_ID, first.filename[:-len(".ipynb")],
+                                     assignment_name(first), "ada")
+        assert point.auto_score == point.max_score == first.hand_in_points == 1.0
     assert _scores(root, second) == {}, "a lesson nobody handed in got submissions"
 
     run_nbgrader(root, "generate_assignment", assignment_name(second))  # never generated before: works
@@ -118,8 +123,9 @@ def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
 
     run_nbgrader(root, "autograde", assignment_name(first), "--force")
     theirs = _scores(root, first)
-    assert theirs["ada"] == first.points and theirs["gina"] == first.points  # the cheat fooled the kernel
-    again = _grade_into(root)  # unchanged students are reused; the export runs again
+    assert theirs["ada"] == first.points + first.hand_in_points
+    assert theirs["gina"] == first.points  # the cheat fooled the check cells, not the hand-in cell
+    again = _grade_into(root, nbval=True)  # unchanged students are reused; the export runs again
     assert _scores(root, first) == again == ours
 
 

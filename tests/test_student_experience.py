@@ -3,8 +3,9 @@
 Run in Jupyter's kernel (nbclient), lesson 01 as released (stubs) and as solved:
 - every check cell that fails ends in an error (nbgrader counts it as failed) shown as ONE red line
   that names the exercise, not a traceback into coursekit;
-- the lesson's last exercise cell, "Ready to hand in?", lists every unwritten exercise for the
-  stubs and says "ready to hand in" for the reference; it never raises.
+- the lesson's last cell, "Ready to hand in?", lists every unwritten exercise for the stubs and
+  ends in one red line naming them (the error that scores the notebook point 0 in nbgrader);
+  it says "ready to hand in" for the reference and raises nothing.
 """
 
 import nbformat
@@ -13,6 +14,7 @@ from nbclient import NotebookClient
 
 from autograder import cells
 from autograder.catalog import load_catalog
+from autograder.grading import GradingOptions
 from autograder.paths import COURSE, SOLUTIONS
 
 LESSON = "01_frames_and_rotations.ipynb"
@@ -40,10 +42,10 @@ def _errors(cell):
     return [o for o in cell.get("outputs", []) if o.get("output_type") == "error"]
 
 
-def _hand_in_text(nb):
+def _hand_in(nb):
+    """``(printed text, errors)`` of the hand-in cell."""
     cell = next(c for c in nb.cells if c.get("id") == "ready-to-hand-in")
-    assert not _errors(cell)
-    return "".join(o.get("text", "") for o in cell.outputs)
+    return "".join(o.get("text", "") for o in cell.outputs), _errors(cell)
 
 
 def test_a_failing_check_is_one_line_that_names_the_exercise(released):
@@ -57,10 +59,14 @@ def test_a_failing_check_is_one_line_that_names_the_exercise(released):
 
 
 def test_the_hand_in_cell_lists_what_is_left(released, solved):
-    left = _hand_in_text(released)
+    left, errors = _hand_in(released)
     assert f"0 of {len(EXERCISES)} exercises pass" in left and f"Still to do: {', '.join(EXERCISES)}." in left
-    done = _hand_in_text(solved)
+    (error,) = errors
+    assert error["ename"] == "NotReadyYet" and len(error["traceback"]) == 1, error["traceback"][:3]
+    assert f"still to do in lesson 01: {', '.join(EXERCISES)}" in error["traceback"][0]
+    done, errors = _hand_in(solved)
     assert f"All {len(EXERCISES)} exercises pass their public checks: ready to hand in" in done and "✗" not in done
+    assert not errors
 
 
 def test_every_lesson_ends_with_its_hand_in_cell():
@@ -70,5 +76,8 @@ def test_every_lesson_ends_with_its_hand_in_cell():
         assert "ready-to-hand-in" in ids, lesson.filename
         cell = nb.cells[ids.index("ready-to-hand-in")]
         assert f'ready_to_hand_in("{lesson.number}")' in cells.source_text(cell)
+        assert cells.is_hand_in_cell(cell) and cell.metadata.get("editable") is False, lesson.filename
+        assert lesson.hand_in_points == GradingOptions().notebook_points, \
+            f"{lesson.filename}: the hand-in cell (the notebook point in nbgrader) is not worth the notebook point"
         later = [c for c in nb.cells[ids.index("ready-to-hand-in") + 1:] if c.cell_type == "code"]
         assert not later, f"{lesson.filename}: code after the hand-in cell"

@@ -2,8 +2,10 @@
 
 :func:`ready_to_hand_in` runs the public checks of every exercise of a lesson
 at once, quietly, and prints one line per exercise and what is still to do,
-like nbgrader's *Validate* button but with the course's own messages. It
-never raises, so it is safe at the end of a notebook.
+like nbgrader's *Validate* button but with the course's own messages. When
+something is left it ends with one red line, :class:`NotReadyYet`, naming
+what to finish; that error is also how the cell, a grade cell worth the
+notebook point, scores 0 in stock ``nbgrader autograde``.
 
 Examples
 --------
@@ -12,9 +14,14 @@ Lesson 01: ready to hand in?
   ✓ rot2d               3 of 3 public checks pass
   ✗ rot_x               not written yet
 ...
+NotReadyYet: still to do in lesson 01: rot_x
 """
 
-from .checking import checks_of_lesson, run_quietly
+from .checking import _OneLine, checks_of_lesson, run_quietly
+
+
+class NotReadyYet(_OneLine, AssertionError):
+    """Raised by :func:`ready_to_hand_in` when some exercise does not pass its public checks yet."""
 
 
 def _user_namespace():
@@ -39,7 +46,12 @@ def ready_to_hand_in(lesson, namespace=None):
     Returns
     -------
     list of str
-        The exercises still to finish (empty when everything passes).
+        Empty: every exercise passes its public checks.
+
+    Raises
+    ------
+    NotReadyYet
+        After the summary, when some exercise is still to finish (its message names them).
     """
     namespace = _user_namespace() if namespace is None else namespace
     names = checks_of_lesson(lesson)
@@ -60,6 +72,7 @@ def ready_to_hand_in(lesson, namespace=None):
     if unfinished:
         print(f"{len(names) - len(unfinished)} of {len(names)} exercises pass their public checks. "
               f"Still to do: {', '.join(unfinished)}. Each one's check cell says more.")
+        raise NotReadyYet(f"still to do in lesson {lesson}: {', '.join(unfinished)}")
     else:
         print(f"All {len(names)} exercises pass their public checks: ready to hand in. "
               "Save the notebook (Ctrl+S) and hand in this file; the hidden checks run when it is graded.")
