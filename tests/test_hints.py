@@ -90,3 +90,18 @@ def test_list_check_blames_lists_only_when_they_are_the_difference():
     require_same_with_lists(lambda R, p: -np.asarray(R) @ np.asarray(p), (R, [1.0, 2.0, 3.0]), (3,), "f")  # wrong, not lists
     with pytest.raises(Mismatch, match="lists"):
         require_same_with_lists(lambda R, p: R.T @ p, (R, [1.0, 2.0, 3.0]), (3,), "f")
+
+
+def test_reflection_hint_needs_an_orthogonal_matrix():
+    truth = _rot_z(0.8)
+    mirror = truth @ np.diag([1.0, 1.0, -1.0])
+    assert "reflection" in rotation_hint(mirror, truth)
+    sheared = truth.copy()
+    sheared[0, 1] = -sheared[0, 1]  # both sines positive: det < 0 but not orthogonal, so not a reflection
+    assert np.linalg.det(sheared) < 0 and "reflection" not in (rotation_hint(sheared, truth) or "")
+
+
+def test_arccos_hint_only_where_arccos_rounds_to_zero():
+    assert "arccos rounds tiny angles" in rotation_vector_hint([0.0, 0.0, 0.0], 1e-9 * AXIS)
+    quiet = rotation_vector_hint([0.0, 0.0, 0.0], 0.4 * AXIS)
+    assert quiet and "arccos" not in quiet

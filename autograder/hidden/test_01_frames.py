@@ -17,11 +17,31 @@ from scipy.spatial.transform import Rotation
 
 from coursekit.diagnose import close
 
-from .helpers import (ALLCLOSE_HINT, exercise, expect, expect_array, expect_bool, expect_close, expect_same_with_lists, fmt,
-                      random_angles, random_rotations, rotation_hint, rotation_problem)
+from autograder.sandbox.session import StudentError
+
+from .helpers import (ALLCLOSE_HINT, Wrong, exercise, expect, expect_array, expect_bool, expect_close,
+                      expect_same_with_lists, fmt, random_angles, random_rotations, rotation_problem)
 
 TOL = 1e-9
 SPECIAL_ANGLES = [0.0, np.pi / 2, -np.pi / 2, np.pi, 2 * np.pi, 1e-9, 10 * np.pi + 0.3, -7.0]
+
+
+def _first_match(got, candidates, otherwise=""):
+    """The hint of the first (candidate value, hint) that ``got`` equals (to 1e-6), else ``otherwise``.
+
+    Each candidate is what one typical mistake returns for the same input, so a
+    hint is given only when its diagnosis holds.
+    """
+    got = np.asarray(got, dtype=float)
+    for candidate, hint in candidates:
+        if close(got, candidate, 1e-6):
+            return hint
+    return otherwise
+
+
+DEGREES_HINT = "looks like the angle was taken in degrees: the course works in radians (np.cos takes radians)"
+SAME_SIGN_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
+                  "carries the minus")
 
 
 # ---------------------------------------------------------------- rot2d
@@ -30,14 +50,23 @@ def _rot2d(theta):
     return np.array([[c, -s], [s, c]])
 
 
+def _rot2d_hint(got, theta):
+    c, s = np.cos(theta), np.sin(theta)
+    return _first_match(got, [
+        (_rot2d(theta).T, "looks like the transpose (a clockwise turn): the minus sign belongs on the upper sine"),
+        (_rot2d(np.deg2rad(theta)), DEGREES_HINT),
+        (np.array([[s, -c], [c, s]]), "sine and cosine are swapped: cos θ goes on the diagonal, ±sin θ off it"),
+        (np.array([[c, s], [s, c]]), SAME_SIGN_HINT),
+        (np.array([[c, -s], [-s, c]]), SAME_SIGN_HINT)],
+        "compare entry by entry with [[cos θ, -sin θ], [sin θ, cos θ]]")
+
+
 @exercise("rot2d", weight=3)
 def test_rot2d_values(student):
     """matches cos/sin of the angle for random and special angles"""
     for theta in list(random_angles(12, seed=101)) + SPECIAL_ANGLES:
         got = expect_array(student.rot2d(theta), (2, 2), f"rot2d({theta:.4g})")
-        expected = _rot2d(theta)
-        expect_close(got, expected, TOL, f"rot2d({theta:.4g})",
-                     rotation_hint(got, expected, degrees_version=_rot2d(np.deg2rad(theta))))
+        expect_close(got, _rot2d(theta), TOL, f"rot2d({theta:.4g})", _rot2d_hint(got, theta))
 
 
 @exercise("rot2d", weight=1)
@@ -63,13 +92,36 @@ def _elementary(axis_name, angle):
     return Rotation.from_euler(axis_name, angle).as_matrix()
 
 
+def _elementary_hint(got, axis_name, angle):
+    """Name the typical slip behind a wrong rot_x/rot_y/rot_z(angle), only when its value matches ``got``."""
+    axis = "xyz".index(axis_name)
+    expected = _elementary(axis_name, angle)
+    i, j = [k for k in range(3) if k != axis]
+    s = expected[j, i] if axis != 1 else expected[i, j]         # +sin a, wherever it sits
+    both_plus, both_minus = expected.copy(), expected.copy()
+    both_plus[i, j] = both_plus[j, i] = s
+    both_minus[i, j] = both_minus[j, i] = -s
+    corner_zero = expected.copy()
+    corner_zero[axis, axis] = 0.0
+    candidates = [(expected.T, "looks like the transpose (the inverse rotation): the minus sign is on the wrong sine"
+                   + (" (for rot_y it sits in the bottom-left)" if axis_name == "y" else "")),
+                  (_elementary(axis_name, np.deg2rad(angle)), DEGREES_HINT),
+                  (both_plus, SAME_SIGN_HINT), (both_minus, SAME_SIGN_HINT),
+                  (corner_zero, f"the diagonal entry of the {axis_name} axis is 0: it must be 1 "
+                                "(the axis does not move)")]
+    for other in "xyz".replace(axis_name, ""):
+        candidates.append((_elementary(other, angle), f"this is a rotation about {other}, not {axis_name}: the "
+                           f"cos/sin block of rot_{axis_name} sits in the rows and columns of the other two axes"))
+    return _first_match(got, candidates, f"compare entry by entry with the rotation about {axis_name} by the angle "
+                                         f"(scipy: Rotation.from_euler('{axis_name}', a).as_matrix())")
+
+
 def _check_elementary(student, name, axis_name, seed):
     function = getattr(student, name)
     for angle in list(random_angles(15, seed=seed)) + SPECIAL_ANGLES:
         got = expect_array(function(angle), (3, 3), f"{name}({angle:.4g})")
-        expected = _elementary(axis_name, angle)
-        expect_close(got, expected, TOL, f"{name}({angle:.4g})",
-                     rotation_hint(got, expected, degrees_version=_elementary(axis_name, np.deg2rad(angle))))
+        expect_close(got, _elementary(axis_name, angle), TOL, f"{name}({angle:.4g})",
+                     _elementary_hint(got, axis_name, angle))
 
 
 def _check_axis_fixed(student, name, axis):
@@ -146,12 +198,38 @@ def test_rot_z_adds_angles(student):
 
 
 # ---------------------------------------------------------------- is_rotation_matrix
+SHAPE_HINT = ("check M's shape first (2-D and square, else return False) and compare MᵀM with "
+              "np.eye(M.shape[0]), not np.eye(3)")
+
+
+def _is_rotation_verdict(student, M, what="is_rotation_matrix", **kwargs):
+    """The student's verdict for M; a crash on a matrix that is not 3×3 is named as a missing shape check."""
+    try:
+        value = student.is_rotation_matrix(M, **kwargs)
+    except StudentError as error:
+        if error.kind == "exception" and np.shape(M) != (3, 3):
+            raise Wrong(f"{what} crashed on a {'×'.join(map(str, np.shape(M)))} input: {error}", SHAPE_HINT) from None
+        raise
+    return expect_bool(value, what)
+
+
+def _accepted_hint(M, tol=TOL):
+    """Why a wrong is_rotation_matrix could accept the non-rotation M: the rule it would have to use."""
+    M = np.asarray(M, dtype=float)
+    gram = M.T @ M
+    if np.allclose(gram, np.eye(3), atol=tol) and np.linalg.det(M) > 0:
+        return ALLCLOSE_HINT
+    if abs(np.linalg.det(M) - 1.0) <= tol:
+        return "det = 1 is not enough (a shear has det 1): also check max |MᵀM - I| <= tol"
+    return f"check that MᵀM equals I within tol (here max |MᵀM - I| = {np.max(np.abs(gram - np.eye(3))):.2g})"
+
+
 @exercise("is_rotation_matrix", weight=2)
 def test_is_rotation_matrix_accepts_rotations(student):
     """accepts 20 random rotations, the identity and a 2D rotation"""
     candidates = list(random_rotations(20, seed=121)) + [np.eye(3), _rot2d(0.4)]
     for index, R in enumerate(candidates):
-        verdict = expect_bool(student.is_rotation_matrix(R), "is_rotation_matrix")
+        verdict = _is_rotation_verdict(student, R)
         expect(verdict, f"rejected a valid rotation (#{index}): {fmt(R)}",
                "compare with a tolerance: rounding makes RᵀR differ from I by ~1e-16")
 
@@ -161,7 +239,7 @@ def test_is_rotation_matrix_rejects_reflections(student):
     """rejects reflections (orthogonal with det = -1)"""
     mirror = np.diag([1.0, 1.0, -1.0])
     for index, R in enumerate(random_rotations(10, seed=122)):
-        verdict = expect_bool(student.is_rotation_matrix(R @ mirror), "is_rotation_matrix")
+        verdict = _is_rotation_verdict(student, R @ mirror)
         expect(not verdict, f"accepted a reflection (#{index}, det = -1)",
                "orthogonality is not enough: also require det(M) > 0")
 
@@ -177,9 +255,9 @@ def test_is_rotation_matrix_rejects_non_orthogonal(student):
              "diag(1, 1, 1 + 1e-6)": np.diag([1.0, 1.0, 1.0 + 1e-6]),
              "R with its last column stretched by 1e-6": R @ np.diag([1.0, 1.0, 1.0 + 1e-6])}
     for name, M in cases.items():
-        verdict = expect_bool(student.is_rotation_matrix(M), "is_rotation_matrix")
-        expect(not verdict, f"accepted {name} (max |MᵀM - I| = {np.max(np.abs(M.T @ M - np.eye(3))):.2g})",
-               ALLCLOSE_HINT if "1e-6" in name else "check that MᵀM equals I within tol")
+        verdict = _is_rotation_verdict(student, M)
+        expect(not verdict, f"accepted {name} (max |MᵀM - I| = {np.max(np.abs(M.T @ M - np.eye(3))):.2g}, "
+               f"tol = {TOL:g})", _accepted_hint(M))
 
 
 @exercise("is_rotation_matrix", weight=1)
@@ -187,12 +265,20 @@ def test_is_rotation_matrix_respects_tol(student):
     """uses the tol argument: tiny noise passes, noise above tol fails"""
     R = random_rotations(1, seed=125)[0]
     noise = np.random.default_rng(126).normal(size=(3, 3))
-    expect(expect_bool(student.is_rotation_matrix(R + 1e-13 * noise), "is_rotation_matrix"),
-           "rejected a rotation with 1e-13 rounding noise at the default tol=1e-9")
-    expect(expect_bool(student.is_rotation_matrix(R + 1e-6 * noise, tol=1e-4), "is_rotation_matrix"),
-           "rejected R + 1e-6 noise with tol=1e-4", "use the tol argument instead of a fixed number")
-    expect(not expect_bool(student.is_rotation_matrix(R + 1e-6 * noise, tol=1e-8), "is_rotation_matrix"),
-           "accepted R + 1e-6 noise with tol=1e-8", "use the tol argument instead of a fixed number")
+    M = R + 1e-6 * noise
+    gap = np.max(np.abs(M.T @ M - np.eye(3)))
+    ignores_tol = "the verdict does not follow the tol argument: compare with tol, not a fixed number"
+    expect(_is_rotation_verdict(student, R + 1e-13 * noise),
+           "rejected a rotation with 1e-13 rounding noise at the default tol=1e-9",
+           "compare with a tolerance: rounding makes MᵀM differ from I by ~1e-16")
+    if not _is_rotation_verdict(student, M, tol=1e-4):
+        still = not _is_rotation_verdict(student, M, tol=0.1)
+        raise Wrong(f"rejected R + 1e-6 noise (max |MᵀM - I| = {gap:.2g}) with tol=1e-4",
+                    ignores_tol if still else "")
+    if _is_rotation_verdict(student, M, tol=1e-8):
+        still = _is_rotation_verdict(student, M, tol=1e-15)
+        raise Wrong(f"accepted R + 1e-6 noise (max |MᵀM - I| = {gap:.2g}) with tol=1e-8",
+                    ignores_tol if still else _accepted_hint(M, 1e-8))
 
 
 @exercise("is_rotation_matrix", weight=1)
@@ -201,7 +287,7 @@ def test_is_rotation_matrix_bad_input(student):
     cases = {"a 3×4 matrix": np.eye(4)[:3], "a vector": np.ones(3),
              "a matrix with NaN": np.full((3, 3), np.nan), "a nested list 3×2": [[1.0, 0.0]] * 3}
     for name, M in cases.items():
-        verdict = expect_bool(student.is_rotation_matrix(M), f"is_rotation_matrix({name})")
+        verdict = _is_rotation_verdict(student, M, f"is_rotation_matrix({name})")
         expect(not verdict, f"accepted {name}", "check the shape and that the entries are finite first")
 
 
@@ -212,7 +298,7 @@ def test_rotate_point_single(student):
     points = np.random.default_rng(131).normal(size=(20, 3))
     for R, p in zip(random_rotations(20, seed=132), points):
         got = expect_array(student.rotate_point(R, p), (3,), "rotate_point(R, p) for one point")
-        hint = "looks like you used R.T (the inverse): p_w = R_wb @ p_b" if close(got, R.T @ p, 1e-6) else ""
+        hint = _first_match(got, [(R.T @ p, "looks like you used R.T (the inverse): p_w = R_wb @ p_b")])
         expect_close(got, R @ p, TOL, "rotate_point(R, p)", hint)
 
 
@@ -221,8 +307,22 @@ def test_rotate_point_batch(student):
     """rotates N points given as rows, shape (N, 3)"""
     R = random_rotations(1, seed=133)[0]
     P = np.random.default_rng(134).normal(size=(7, 3))
-    got = expect_array(student.rotate_point(R, P), (7, 3), "rotate_point(R, P) for 7 points")
-    hint = "for rows use P @ R.T" if close(got, P @ R, 1e-6) else ""
+    try:
+        value = student.rotate_point(R, P)
+    except StudentError as error:
+        if error.kind != "exception":
+            raise
+        if "broadcast" in error.message:
+            hint = ("numpy could not broadcast R * P: an elementwise product is not a rotation of the rows; "
+                    "use the matrix product, P @ R.T")
+        elif "matmul" in error.message:
+            hint = "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T"
+        else:
+            hint = "the points are the rows of P: P @ R.T rotates each of them"
+        raise Wrong(f"rotate_point(R, P) for 7 points: {error}", hint) from None
+    got = expect_array(value, (7, 3), "rotate_point(R, P) for 7 points")
+    hint = _first_match(got, [(P @ R, "looks like P @ R, which rotates each row by R.T (the inverse): for rows use "
+                                      "P @ R.T")])
     expect_close(got, (R @ P.T).T, TOL, "rotate_point(R, P) for 7 points", hint)
 
 
@@ -234,22 +334,30 @@ def test_rotate_point_accepts_lists(student):
 
 
 # ---------------------------------------------------------------- compose
+def _compose_hint(got, A, B):
+    return _first_match(got, [
+        (B @ A, "the order is reversed: R_ac = R_ab @ R_bc"),
+        (A * B, "looks like A * B, the elementwise product: compose with the matrix product @"),
+        (A.T @ B, "looks like R_abᵀ R_bc: the first factor is transposed (inverted); multiply them as they are")],
+        "R_ac = R_ab @ R_bc, the matrix product in this order")
+
+
 @exercise("compose", weight=3)
 def test_compose_random(student):
     """R_ac = R_ab R_bc for 20 random pairs"""
     As, Bs = random_rotations(20, seed=141), random_rotations(20, seed=142)
     for A, B in zip(As, Bs):
         got = expect_array(student.compose(A, B), (3, 3), "compose(R_ab, R_bc)")
-        hint = "the order is reversed: R_ac = R_ab @ R_bc" if close(got, B @ A, 1e-6) else ""
-        expect_close(got, A @ B, TOL, "compose(R_ab, R_bc)", hint)
+        expect_close(got, A @ B, TOL, "compose(R_ab, R_bc)", _compose_hint(got, A, B))
 
 
 @exercise("compose", weight=1)
 def test_compose_identity(student):
     """composing with the identity changes nothing"""
     R = random_rotations(1, seed=143)[0]
-    expect_close(expect_array(student.compose(R, np.eye(3)), (3, 3), "compose(R, I)"), R, TOL, "compose(R, I)")
-    expect_close(expect_array(student.compose(np.eye(3), R), (3, 3), "compose(I, R)"), R, TOL, "compose(I, R)")
+    for A, B, what in ((R, np.eye(3), "compose(R, I)"), (np.eye(3), R, "compose(I, R)")):
+        got = expect_array(student.compose(A, B), (3, 3), what)
+        expect_close(got, R, TOL, what, _compose_hint(got, A, B))
 
 
 @exercise("compose", weight=1)
@@ -260,13 +368,20 @@ def test_compose_accepts_lists(student):
 
 
 # ---------------------------------------------------------------- invert_rotation
+def _inverse_hint(got, R):
+    return _first_match(got, [
+        (R, "returned R itself: the inverse is the transpose"),
+        (-R, "returned -R (every entry negated): the inverse of a rotation is its transpose, not its negative"),
+        (R[::-1], "reversed the order of the rows (R[::-1]): the inverse is the transpose R.T (rows become columns)")],
+        "the inverse of a rotation is its transpose: R_ba = R_ab.T")
+
+
 @exercise("invert_rotation", weight=3)
 def test_invert_rotation_random(student):
     """R_ba = R_abᵀ for 20 random rotations"""
     for R in random_rotations(20, seed=151):
         got = expect_array(student.invert_rotation(R), (3, 3), "invert_rotation(R)")
-        hint = "returned R itself: the inverse is the transpose" if close(got, R, 1e-6) else ""
-        expect_close(got, R.T, TOL, "invert_rotation(R)", hint)
+        expect_close(got, R.T, TOL, "invert_rotation(R)", _inverse_hint(got, R))
 
 
 @exercise("invert_rotation", weight=1)
@@ -274,7 +389,7 @@ def test_invert_rotation_undoes(student):
     """R @ invert_rotation(R) is the identity"""
     R = random_rotations(1, seed=152)[0]
     got = expect_array(student.invert_rotation(R), (3, 3), "invert_rotation(R)")
-    expect_close(R @ got, np.eye(3), TOL, "R @ invert_rotation(R)")
+    expect_close(R @ got, np.eye(3), TOL, "R @ invert_rotation(R)", _inverse_hint(got, R))
 
 
 @exercise("invert_rotation", weight=1)
@@ -290,12 +405,28 @@ def _nearest(M):
     return U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt
 
 
+def _nearest_hint(got, M, otherwise="R = U Vᵀ from the SVD M = U Σ Vᵀ (with the determinant fix)"):
+    M = np.asarray(M, dtype=float)
+    U, _, Vt = np.linalg.svd(M)
+    Q, upper = np.linalg.qr(M)
+    Q = Q @ np.diag(np.sign(np.diag(upper)))
+    candidates = [(_nearest(M).T, "looks like V Uᵀ, the transpose of the answer: R = U Vᵀ"),
+                  (M / np.linalg.norm(M, axis=0), "dividing each column by its length does not make the columns "
+                   "orthogonal: project with the SVD M = U Σ Vᵀ, R = U Vᵀ"),
+                  (Q * np.sign(np.linalg.det(Q)), "looks like the Q of a QR decomposition: orthogonal, but it keeps "
+                   "the first column's direction, so it is not the nearest rotation; use the SVD")]
+    if np.linalg.det(U @ Vt) < 0:
+        candidates.insert(0, (U @ Vt, "U Vᵀ is a reflection here (det -1): when det(U Vᵀ) < 0, flip the last column "
+                                      "of U (use diag(1, 1, det(U Vᵀ)))"))
+    return _first_match(got, candidates, otherwise)
+
+
 @exercise("nearest_rotation", weight=1)
 def test_nearest_rotation_keeps_rotations(student):
     """leaves exact rotations unchanged"""
     for R in random_rotations(10, seed=161):
-        expect_close(expect_array(student.nearest_rotation(R), (3, 3), "nearest_rotation(R)"), R, 1e-9,
-                     "nearest_rotation of a rotation")
+        got = expect_array(student.nearest_rotation(R), (3, 3), "nearest_rotation(R)")
+        expect_close(got, R, 1e-9, "nearest_rotation of a rotation", _nearest_hint(got, R))
 
 
 @exercise("nearest_rotation", weight=2)
@@ -306,8 +437,8 @@ def test_nearest_rotation_noisy(student):
         M = R + 0.05 * rng.normal(size=(3, 3))
         got = expect_array(student.nearest_rotation(M), (3, 3), "nearest_rotation(M)")
         problem = rotation_problem(got)
-        expect(problem is None, f"nearest_rotation(M) is not a rotation: {problem}")
-        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M)", "R = U Vᵀ from the SVD M = U Σ Vᵀ")
+        expect(problem is None, f"nearest_rotation(M) is not a rotation: {problem}", _nearest_hint(got, M, ""))
+        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M)", _nearest_hint(got, M))
 
 
 @exercise("nearest_rotation", weight=4)
@@ -316,17 +447,17 @@ def test_nearest_rotation_never_reflects(student):
     rng = np.random.default_rng(164)
     mirror = np.diag([1.0, 1.0, -1.0])
     for R in random_rotations(10, seed=165):
-        M = R @ mirror @ np.diag(rng.uniform(0.5, 2.0, 3))
+        M = R @ mirror @ np.diag(rng.uniform(0.5, 2.0, 3)) + 0.1 * rng.normal(size=(3, 3))   # det(U Vᵀ) = -1
         got = expect_array(student.nearest_rotation(M), (3, 3), "nearest_rotation(M)")
         det = np.linalg.det(got)
-        expect(det > 0, f"returned a reflection (det = {det:.3f}) for a mirror-like M",
-               "when det(U Vᵀ) < 0, flip the last column of U (use diag(1, 1, det(U Vᵀ)))")
-        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M) for a mirror-like M")
+        expect(det > 0, f"returned a matrix with det = {det:.3f} for a mirror-like M",
+               _nearest_hint(got, M, "the result must be a rotation, det = +1"))
+        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M) for a mirror-like M", _nearest_hint(got, M))
 
 
 @exercise("nearest_rotation", weight=1)
 def test_nearest_rotation_scaled(student):
     """removes a uniform scale: nearest_rotation(3 R) = R"""
     R = random_rotations(1, seed=166)[0]
-    expect_close(expect_array(student.nearest_rotation(3.0 * R), (3, 3), "nearest_rotation(3 R)"), R, 1e-9,
-                 "nearest_rotation(3 R)")
+    got = expect_array(student.nearest_rotation(3.0 * R), (3, 3), "nearest_rotation(3 R)")
+    expect_close(got, R, 1e-9, "nearest_rotation(3 R)", _nearest_hint(got, 3.0 * R))

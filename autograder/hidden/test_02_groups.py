@@ -16,6 +16,8 @@ calls the student's functions of its own exercise only.
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from autograder.sandbox.session import StudentError
+
 from .helpers import ALLCLOSE_HINT, Probe, Wrong, exercise, expect, expect_bool, random_rotations
 
 KEYS = ("closure", "identity", "inverse", "associativity")
@@ -45,6 +47,23 @@ ALL_TRUE = dict.fromkeys(KEYS, True)
 
 
 # ---------------------------------------------------------------- check_group_axioms
+def _closure_uses_matmul(student):
+    """True when closure looks computed with @ instead of op: reflections under a ∘ b = b are closed
+    (b is a reflection), but their matrix products are rotations."""
+    reflections = [R @ MIRROR for R in random_rotations(3, seed=208)]
+    try:
+        value = student.check_group_axioms(reflections, Probe("second"), np.eye(3), Probe("transpose"),
+                                           Probe("is_reflection"))
+        return isinstance(value, dict) and value.get("closure") is False
+    except StudentError:
+        return False
+
+
+def _allclose_accepts(pairs, tol):
+    """True when np.allclose(x, y, atol=tol), with its default rtol, calls every pair (x, y) equal."""
+    return all(np.allclose(x, y, atol=tol) for x, y in pairs)
+
+
 @exercise("check_group_axioms", weight=3)
 def test_check_group_axioms_so3_is_a_group(student):
     """random rotations under the matrix product pass all four axioms"""
@@ -63,9 +82,13 @@ def test_check_group_axioms_so3_under_addition(student):
     samples = list(random_rotations(4, seed=202))
     got = _verdict(student.check_group_axioms(samples, Probe("add"), np.zeros((3, 3)), Probe("negate"),
                                               Probe("is_rotation")), "check_group_axioms(SO(3), +)")
+    closure_hint = "closure asks is_member(op(a, b)) for every ordered pair: here R₁ + R₂ is not a rotation"
+    if got["closure"] and _closure_uses_matmul(student):
+        closure_hint = ("closure was tested with @ instead of the op you are given (R₁ @ R₂ is a rotation, "
+                        "R₁ + R₂ is not): use is_member(op(a, b))")
     _expect_verdict(got, {"closure": False, "identity": False, "inverse": False, "associativity": True},
                     "rotations under +", {
-                        "closure": "closure must test is_member(op(a, b)) with the op you are given",
+                        "closure": closure_hint,
                         "identity": "the identity must belong to the set: check is_member(identity)",
                         "inverse": "each inverse must belong to the set: check is_member(inverse(a)) "
                                    "(-R has det -1)",
@@ -146,9 +169,11 @@ def test_check_group_axioms_uses_tol(student):
     _expect_verdict(loose, ALL_TRUE, "noisy rotations with tol=1e-5",
                     dict.fromkeys(KEYS, "compare with the tol argument, not a fixed number"))
     strict = _verdict(student.check_group_axioms(*args, tol=1e-9), "check_group_axioms(..., tol=1e-9)")
-    expect(strict["inverse"] is False, "noisy rotations with tol=1e-9: inverse came out True, but "
-           "R @ Rᵀ differs from I by ~1e-7 > tol",
-           ALLCLOSE_HINT)
+    gaps = [np.max(np.abs(R @ R.T - np.eye(3))) for R in samples]
+    pairs = [(R @ R.T, np.eye(3)) for R in samples] + [(R.T @ R, np.eye(3)) for R in samples]
+    expect(strict["inverse"] is False, f"noisy rotations with tol=1e-9: inverse came out True, but "
+           f"R @ Rᵀ differs from I by up to {max(gaps):.2g} > tol",
+           ALLCLOSE_HINT if _allclose_accepts(pairs, 1e-9) else "compare max |op(a, inverse(a)) - identity| with tol")
 
 
 @exercise("check_group_axioms", weight=1)
@@ -159,9 +184,10 @@ def test_check_group_axioms_absolute_tolerance(student):
     expect(loose["identity"], "with identity 1 + 1e-7 and tol=1e-5, identity came out False",
            "compare with the tol argument, not a fixed number")
     strict = _verdict(student.check_group_axioms(*args, tol=1e-9), "check_group_axioms(..., tol=1e-9)")
+    pairs = [((1.0 + 1e-7) * a, a) for a in args[0]]
     expect(not strict["identity"], "with identity 1 + 1e-7 and tol=1e-9, identity came out True "
            "although (1 + 1e-7)·4 differs from 4 by 4e-7",
-           ALLCLOSE_HINT)
+           ALLCLOSE_HINT if _allclose_accepts(pairs, 1e-9) else "compare max |op(identity, a) - a| with tol")
 
 
 @exercise("check_group_axioms", weight=1)
@@ -182,6 +208,59 @@ def _about_axis(axis, angle):
     return Rotation.from_rotvec(angle * axis / np.linalg.norm(axis)).as_matrix()
 
 
+SAME_ORDER_HINT = "op(a, b) looks compared with itself: swap the arguments in the second product, op(b, a)"
+IGNORES_OP_HINT = "the verdict follows a @ b whatever op is given: compare op(a, b) with op(b, a)"
+EXACT_HINT = "A @ B and B @ A differ by ~1e-16 here: compare with tol, never with =="
+FIXED_TOL_HINT = "the verdict does not change with tol: compare with the tol argument, not a fixed number"
+
+
+def _commutes_slip(student):
+    """Name the typical slip behind a wrong commutes from six more calls whose verdicts each slip gets wrong
+    in its own way, or None when none fits:
+
+    - quarter turns about x and z (do not commute) and e_x, e_y under × (do not commute): every verdict True
+      means the arguments were never swapped; only the × verdict wrong means op was ignored for @;
+    - two rotations about one axis (commute; their products differ by ~1e-16) rejected: ==;
+    - nilpotent matrices whose products differ by 1e-7 where the entries are 0 (rtol cannot help): accepted
+      at tol=1e-9 as well as at tol=1e-5 means tol is ignored;
+    - dense matrices (entries ~5) whose products differ by ~1e-6 accepted at tol=1e-9 while the previous
+      pair is right: np.allclose's rtol.
+    """
+    quarter_x, quarter_z = _about_axis([1.0, 0.0, 0.0], np.pi / 2), _about_axis([0.0, 0.0, 1.0], np.pi / 2)
+    axis = np.array([2.0, -1.0, 2.0])
+    tiny_a, tiny_b = np.zeros((3, 3)), np.zeros((3, 3))
+    tiny_a[0, 1], tiny_b[1, 0] = 1e-3, 1e-4                 # products 1e-7·E₀₀ and 1e-7·E₁₁
+    rng = np.random.default_rng(218)
+    dense = rng.uniform(1.0, 2.0, (3, 3))
+    try:
+        big = _commutes(student, quarter_x, quarter_z, Probe("matmul"), "commutes")
+        cross = _commutes(student, np.eye(3)[0], np.eye(3)[1], Probe("cross"), "commutes")
+        rounding = _commutes(student, _about_axis(axis, 0.4), _about_axis(axis, 1.3), Probe("matmul"), "commutes")
+        loose = _commutes(student, tiny_a, tiny_b, Probe("matmul"), "commutes", tol=1e-5)
+        strict = _commutes(student, tiny_a, tiny_b, Probe("matmul"), "commutes", tol=1e-9)
+        rtol = _commutes(student, dense, dense + 1e-6 * rng.normal(size=(3, 3)), Probe("matmul"), "commutes",
+                         tol=1e-9)
+    except (StudentError, Wrong):
+        return None
+    if big and cross:
+        return SAME_ORDER_HINT
+    if cross:
+        return IGNORES_OP_HINT
+    if not rounding and not loose:
+        return EXACT_HINT
+    if loose and strict:
+        return FIXED_TOL_HINT
+    if loose and not strict and rtol:
+        return ALLCLOSE_HINT
+    return None
+
+
+def _expect_commutes(student, condition, reason, otherwise):
+    """Raise Wrong unless ``condition``, with the slip found by :func:`_commutes_slip` or ``otherwise``."""
+    if not condition:
+        raise Wrong(reason, _commutes_slip(student) or otherwise)
+
+
 @exercise("commutes", weight=3)
 def test_commutes_same_axis(student):
     """rotations about the same axis commute (their products differ only by rounding)"""
@@ -190,9 +269,10 @@ def test_commutes_same_axis(student):
         axis = rng.normal(size=3)
         a, b = rng.uniform(-3.0, 3.0, 2)
         A, B = _about_axis(axis, a), _about_axis(axis, b)
-        expect(_commutes(student, A, B, Probe("matmul"), "commutes(A, B, matmul)"),
-               f"said two rotations about one axis do not commute (pair #{index}, angles {a:.3f}, {b:.3f})",
-               "A @ B and B @ A differ by ~1e-16: compare with tol, never with ==")
+        gap = np.max(np.abs(A @ B - B @ A))
+        _expect_commutes(student, _commutes(student, A, B, Probe("matmul"), "commutes(A, B, matmul)"),
+                         f"said two rotations about one axis do not commute (pair #{index}, angles {a:.3f}, "
+                         f"{b:.3f}: A @ B - B @ A is {gap:.2g})", "compare max |op(a, b) - op(b, a)| with tol")
 
 
 @exercise("commutes", weight=3)
@@ -200,9 +280,9 @@ def test_commutes_random_rotations(student):
     """random pairs of rotations do not commute"""
     As, Bs = random_rotations(10, seed=212), random_rotations(10, seed=213)
     for index, (A, B) in enumerate(zip(As, Bs)):
-        expect(not _commutes(student, A, B, Probe("matmul"), "commutes(A, B, matmul)"),
-               f"said a random pair of rotations commutes (pair #{index})",
-               "compare op(a, b) with op(b, a): the arguments must be swapped in the second product")
+        _expect_commutes(student, not _commutes(student, A, B, Probe("matmul"), "commutes(A, B, matmul)"),
+                         f"said a random pair of rotations commutes (pair #{index}: A @ B - B @ A is "
+                         f"{np.max(np.abs(A @ B - B @ A)):.2g})", "compare max |op(a, b) - op(b, a)| with tol")
 
 
 @exercise("commutes", weight=2)
@@ -210,35 +290,41 @@ def test_commutes_special_pairs(student):
     """half turns about perpendicular axes commute; R commutes with Rᵀ; quarter turns do not"""
     u = np.array([1.0, 2.0, 2.0]) / 3.0
     v = np.array([2.0, -2.0, 1.0]) / 3.0          # perpendicular to u
-    expect(_commutes(student, _about_axis(u, np.pi), _about_axis(v, np.pi), Probe("matmul"), "commutes"),
-           "said two half turns about perpendicular axes do not commute",
-           "their products agree up to rounding (~1e-15): compare with tol")
+    _expect_commutes(student, _commutes(student, _about_axis(u, np.pi), _about_axis(v, np.pi), Probe("matmul"),
+                                        "commutes"), "said two half turns about perpendicular axes do not commute",
+                     "their products agree up to rounding (~1e-15): compare max |op(a, b) - op(b, a)| with tol")
     R = random_rotations(1, seed=214)[0]
-    expect(_commutes(student, R, R.T, Probe("matmul"), "commutes(R, Rᵀ)"), "said R and Rᵀ do not commute",
-           "both products are I up to rounding: compare with tol")
-    expect(not _commutes(student, _about_axis(u, np.pi / 2), _about_axis(v, np.pi / 2), Probe("matmul"),
-                         "commutes"), "said two quarter turns about perpendicular axes commute")
+    _expect_commutes(student, _commutes(student, R, R.T, Probe("matmul"), "commutes(R, Rᵀ)"),
+                     "said R and Rᵀ do not commute", "both products are I up to rounding: compare with tol")
+    _expect_commutes(student, not _commutes(student, _about_axis(u, np.pi / 2), _about_axis(v, np.pi / 2),
+                                            Probe("matmul"), "commutes"),
+                     "said two quarter turns about perpendicular axes commute",
+                     "compare max |op(a, b) - op(b, a)| with tol")
 
 
 @exercise("commutes", weight=2)
 def test_commutes_uses_op(student):
     """uses the op it is given: numbers, cross products, quaternions, addition"""
-    expect(_commutes(student, 2.5, -4.0, Probe("multiply"), "commutes(2.5, -4.0, multiply)"),
-           "said 2.5 and -4.0 do not commute under multiplication")
+    try:
+        numbers = _commutes(student, 2.5, -4.0, Probe("multiply"), "commutes(2.5, -4.0, multiply)")
+    except StudentError as error:
+        if error.kind != "exception":
+            raise
+        raise Wrong(f"commutes(2.5, -4.0, multiply): {error}", _commutes_slip(student) or "") from None
+    general = "call op(a, b) and op(b, a) with the op argument and compare them within tol"
+    _expect_commutes(student, numbers, "said 2.5 and -4.0 do not commute under multiplication", general)
     rng = np.random.default_rng(215)
     a, b = rng.normal(size=3), rng.normal(size=3)
-    expect(not _commutes(student, a, b, Probe("cross"), "commutes(a, b, cross)"),
-           "said two random vectors commute under the cross product (a × b = -(b × a))",
-           "use the op argument rather than a fixed product")
-    expect(_commutes(student, a, -2.0 * a, Probe("cross"), "commutes(a, -2a, cross)"),
-           "said parallel vectors do not commute under the cross product (both products are 0)")
+    _expect_commutes(student, not _commutes(student, a, b, Probe("cross"), "commutes(a, b, cross)"),
+                     "said two random vectors commute under the cross product (a × b = -(b × a))", general)
+    _expect_commutes(student, _commutes(student, a, -2.0 * a, Probe("cross"), "commutes(a, -2a, cross)"),
+                     "said parallel vectors do not commute under the cross product (both products are 0)", general)
     p, q = rng.normal(size=4), rng.normal(size=4)
-    expect(not _commutes(student, p, q, Probe("quat_multiply"), "commutes(p, q, quat_multiply)"),
-           "said two random quaternions commute under the Hamilton product",
-           "use the op argument rather than a fixed product")
+    _expect_commutes(student, not _commutes(student, p, q, Probe("quat_multiply"), "commutes(p, q, quat_multiply)"),
+                     "said two random quaternions commute under the Hamilton product", general)
     A, B = random_rotations(2, seed=216)
-    expect(_commutes(student, A, B, Probe("add"), "commutes(A, B, add)"),
-           "said two matrices do not commute under addition", "use the op argument rather than @")
+    _expect_commutes(student, _commutes(student, A, B, Probe("add"), "commutes(A, B, add)"),
+                     "said two matrices do not commute under addition", general)
 
 
 @exercise("commutes", weight=2)
@@ -246,10 +332,11 @@ def test_commutes_uses_tol(student):
     """uses tol: a commutator of ~3e-8 passes with tol=1e-5 and fails with tol=1e-9"""
     A = _about_axis([0.0, 0.0, 1.0], 0.3)
     B = Rotation.from_rotvec([1e-7, 0.0, 0.5]).as_matrix()
-    expect(_commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-5)", tol=1e-5),
-           "with tol=1e-5 a difference of ~3e-8 was not accepted", "compare with the tol argument")
-    expect(not _commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-9)", tol=1e-9),
-           "with tol=1e-9 a difference of ~3e-8 was accepted", ALLCLOSE_HINT)
+    gap = np.max(np.abs(A @ B - B @ A))
+    _expect_commutes(student, _commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-5)", tol=1e-5),
+                     f"with tol=1e-5 a difference of {gap:.2g} was not accepted", "compare with the tol argument")
+    _expect_commutes(student, not _commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-9)", tol=1e-9),
+                     f"with tol=1e-9 a difference of {gap:.2g} was accepted", "compare with the tol argument")
 
 
 @exercise("commutes", weight=2)
@@ -260,6 +347,6 @@ def test_commutes_tol_is_absolute(student):
         M, N = rng.uniform(1.0, 2.0, (3, 3)), rng.normal(size=(3, 3))
         A, B = M, M + 1e-6 * N
         gap = np.max(np.abs(A @ B - B @ A))
-        expect(not _commutes(student, A, B, Probe("matmul"), "commutes(A, B, tol=1e-9)"),
-               f"with tol=1e-9 said dense matrices commute whose products differ by {gap:.2g} (pair #{index})",
-               ALLCLOSE_HINT)
+        _expect_commutes(student, not _commutes(student, A, B, Probe("matmul"), "commutes(A, B, tol=1e-9)"),
+                         f"with tol=1e-9 said dense matrices commute whose products differ by {gap:.2g} "
+                         f"(pair #{index})", "compare max |op(a, b) - op(b, a)| with tol, an absolute tolerance")

@@ -21,10 +21,10 @@ hidden suite cannot see the change, and the public check agrees.
 import numpy as np
 from scipy.spatial.transform import Rotation, Slerp
 
-from coursekit.diagnose import quaternion_hint, same_rotation_quat
+from coursekit.diagnose import close, quaternion_hint, same_rotation_quat
 
-from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, rotation_hint,
-                      rotation_problem)
+from .helpers import (LISTS_HINT, Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
+                      rotation_hint, rotation_problem, shape_problem)
 
 TOL = 1e-9
 ONE = np.array([1.0, 0.0, 0.0, 0.0])
@@ -74,16 +74,38 @@ def rotation_of_pi(axis):
 
 
 # ---------------------------------------------------------------- quat_multiply
+PRODUCT_HINTS = {
+    "swapped": "this is q ⊗ p: the sign of the cross product p_v × q_v is flipped (the JPL product, ij = -k), "
+               "or the factors are swapped",
+    "no_cross": "the cross product is missing: the vector part is p_w q_v + q_w p_v + p_v × q_v",
+    "dot_plus": "the scalar part is p_w q_w - p_v · q_v (minus the dot product)",
+    "elementwise": "multiplied entry by entry: every component of p ⊗ q mixes all four components of p and q",
+}
+PRODUCT_GENERIC = "compare each of the 16 terms with p ⊗ q = [p_w q_w - p_v · q_v, p_w q_v + q_w p_v + p_v × q_v]"
+
+
+def product_hint(got, p, q, ref, tol, up_to_sign=False):
+    """The hint for the one typical wrong product that ``got`` equals, else an honest general one."""
+    p, q = np.asarray(p, dtype=float), np.asarray(q, dtype=float)
+    exact = np.asarray(ref.quat_multiply(p, q), dtype=float)
+    candidates = {"swapped": np.asarray(ref.quat_multiply(q, p), dtype=float),
+                  "no_cross": exact - np.concatenate([[0.0], np.cross(p[1:], q[1:])]),
+                  "dot_plus": exact + np.concatenate([[2.0 * (p[1:] @ q[1:])], np.zeros(3)]),
+                  "elementwise": p * q}
+    same = same_rotation_quat if up_to_sign else close
+    matches = [key for key, value in candidates.items() if not close(value, exact, tol) and same(got, value, tol)]
+    return PRODUCT_HINTS[matches[0]] if len(matches) == 1 else PRODUCT_GENERIC
+
+
 @exercise("quat_multiply", weight=3)
-def test_quat_multiply_matches_scipy(student):
+def test_quat_multiply_matches_scipy(student, ref):
     """composes like scipy's rotations for 20 random unit pairs (both hemispheres)"""
     for p, q in zip(unit_quats(20, seed=401), unit_quats(20, seed=402)[::-1]):
         got = expect_array(student.quat_multiply(p, q), (4,), "quat_multiply(p, q)")
         expected = (scipy_rotation(p) * scipy_rotation(q)).as_quat(scalar_first=True)
-        swapped = (scipy_rotation(q) * scipy_rotation(p)).as_quat(scalar_first=True)
-        hint = ("matches q ⊗ p: the sign of the cross product p_v × q_v is flipped (JPL product) "
-                "or the factors are swapped" if same_rotation_quat(got, swapped, 1e-6) else "")
-        expect_same_rotation(got, expected, TOL, "quat_multiply(p, q) as a rotation", hint)
+        if not same_rotation_quat(got, expected, TOL):
+            expect_same_rotation(got, expected, TOL, "quat_multiply(p, q) as a rotation",
+                                 product_hint(got, p, q, ref, 1e-6, up_to_sign=True))
 
 
 @exercise("quat_multiply", weight=2)
@@ -93,52 +115,67 @@ def test_quat_multiply_exact_general(student, ref):
         got = expect_array(student.quat_multiply(p, q), (4,), "quat_multiply(p, q)")
         expected = ref.quat_multiply(p, q)
         scale = np.linalg.norm(p) * np.linalg.norm(q)
-        hint = ("matches q ⊗ p: flip the sign of the cross product p_v × q_v"
-                if np.allclose(got, ref.quat_multiply(q, p), atol=1e-9 * scale) else "")
-        expect_close(got, expected, TOL * scale, f"quat_multiply(p, q) with |p| |q| = {scale:.3g}", hint)
+        if not close(got, expected, TOL * scale):
+            expect_close(got, expected, TOL * scale, f"quat_multiply(p, q) with |p| |q| = {scale:.3g}",
+                         product_hint(got, p, q, ref, 1e-9 * scale))
 
 
 @exercise("quat_multiply", weight=1)
-def test_quat_multiply_unit_table(student):
+def test_quat_multiply_unit_table(student, ref):
     """reproduces Hamilton's table: i² = j² = k² = -1, ij = k = -ji, jk = i, ki = j"""
     for (a, b), (sign, c) in TABLE.items():
         got = expect_array(student.quat_multiply(UNITS[a], UNITS[b]), (4,), f"quat_multiply({a}, {b})")
-        hint = "the cross product has the wrong sign (that is the JPL rule ij = -k)" \
-            if np.allclose(got, -sign * UNITS[c]) and c != "1" else ""
-        expect_close(got, sign * UNITS[c], TOL, f"{a} ⊗ {b}", hint)
+        if not close(got, sign * UNITS[c], TOL):
+            expect_close(got, sign * UNITS[c], TOL, f"{a} ⊗ {b}", product_hint(got, UNITS[a], UNITS[b], ref, 1e-9))
 
 
 @exercise("quat_multiply", weight=1)
-def test_quat_multiply_identity_and_lists(student):
+def test_quat_multiply_identity_and_lists(student, ref):
     """[1, 0, 0, 0] is a two-sided identity; plain lists are accepted"""
     for q in general_quats(5, seed=405):
-        expect_close(expect_array(student.quat_multiply(ONE, q), (4,), "quat_multiply"),
-                     q, TOL * np.linalg.norm(q), "1 ⊗ q")
-        expect_close(expect_array(student.quat_multiply(q, ONE), (4,), "quat_multiply"),
-                     q, TOL * np.linalg.norm(q), "q ⊗ 1")
+        for what, p_, q_ in (("1 ⊗ q", ONE, q), ("q ⊗ 1", q, ONE)):
+            got = expect_array(student.quat_multiply(p_, q_), (4,), "quat_multiply")
+            tol = TOL * np.linalg.norm(q)
+            if not close(got, q, tol):
+                expect_close(got, q, tol, what, product_hint(got, p_, q_, ref, tol))
     expect_same_with_lists(student.quat_multiply, tuple(general_quats(2, seed=406)), (4,), "quat_multiply(p, q)")
 
 
 # ---------------------------------------------------------------- quat_left, quat_right
+def product_matrix_hint(M, q, name, ref, tol):
+    """The hint for the one typical wrong product matrix that ``M`` equals, else ""."""
+    q = np.asarray(q, dtype=float)
+    own, other = (ref.quat_left, ref.quat_right) if name == "quat_left" else (ref.quat_right, ref.quat_left)
+    letter, mine, theirs, sign = ("p", "L", "R", "plus") if name == "quat_left" else ("q", "R", "L", "minus")
+    exact = np.asarray(own(q), dtype=float)
+    no_minus = exact.copy()
+    no_minus[0, 1:] = q[1:]
+    candidates = [
+        (other(q), f"this is [{letter}]_{theirs}: in [{letter}]_{mine} the [v]× block has a {sign} sign"),
+        (exact.T, f"looks like the transpose of [{letter}]_{mine}: row i holds the coefficients of component i "
+                  "of p ⊗ q"),
+        (no_minus, "the first row is [w, -x, -y, -z]: its minus signs are missing"),
+        (own(np.roll(q, 1)), f"{letter} was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"),
+    ]
+    matches = [hint for value, hint in candidates if not close(value, exact, tol) and close(M, value, tol)]
+    return matches[0] if len(matches) == 1 else ""
+
+
 def _check_product_matrix(student, ref, name, seed):
     function = getattr(student, name)
     for p, q in zip(general_quats(15, seed=seed), general_quats(15, seed=seed + 1)):
         if name == "quat_left":
             M = expect_array(function(p), (4, 4), "quat_left(p)")
             got, expected, what = M @ q, ref.quat_multiply(p, q), "quat_left(p) @ q vs p ⊗ q"
-            hint = ("this is [p]_R: in [p]_L the [v]× block has a plus sign"
-                    if np.allclose(M, ref.quat_right(p)) else
-                    "looks like the transpose of [p]_L: row i holds the coefficients of component i of p ⊗ q"
-                    if np.allclose(M, ref.quat_left(p).T) else "")
+            factor = p
         else:
             M = expect_array(function(q), (4, 4), "quat_right(q)")
             got, expected, what = M @ p, ref.quat_multiply(p, q), "quat_right(q) @ p vs p ⊗ q"
-            hint = ("this is [q]_L: in [q]_R the [v]× block has a minus sign"
-                    if np.allclose(M, ref.quat_left(q)) else
-                    "looks like the transpose of [q]_R: row i holds the coefficients of component i of p ⊗ q"
-                    if np.allclose(M, ref.quat_right(q).T) else "")
+            factor = q
         scale = np.linalg.norm(p) * np.linalg.norm(q)
-        expect_close(got, expected, TOL * scale, what, hint)
+        if not close(got, expected, TOL * scale):
+            expect_close(got, expected, TOL * scale, what,
+                         product_matrix_hint(M, factor, name, ref, 1e-9 * np.linalg.norm(factor)))
 
 
 def _check_orthogonal(student, name, seed):
@@ -152,15 +189,16 @@ def _check_orthogonal(student, name, seed):
         expect_close(M.T @ M, (q @ q) * np.eye(4), TOL * (q @ q), f"{name}(q)ᵀ {name}(q) for |q|² = {q @ q:.3g}")
 
 
-def _check_scipy(student, name, seed):
+def _check_scipy(student, ref, name, seed):
     function = getattr(student, name)
     for a, b in zip(unit_quats(8, seed=seed), unit_quats(8, seed=seed + 1)):
-        if name == "quat_left":
-            got = expect_array(function(a), (4, 4), "quat_left(a)") @ b
-        else:
-            got = expect_array(function(b), (4, 4), "quat_right(b)") @ a
+        factor = a if name == "quat_left" else b
+        M = expect_array(function(factor), (4, 4), f"{name}({'a' if name == 'quat_left' else 'b'})")
+        got = M @ (b if name == "quat_left" else a)
         expected = (scipy_rotation(a) * scipy_rotation(b)).as_quat(scalar_first=True)
-        expect_same_rotation(got, expected, TOL, f"the composition a ⊗ b through {name}")
+        if not same_rotation_quat(got, expected, TOL):
+            expect_same_rotation(got, expected, TOL, f"the composition a ⊗ b through {name}",
+                                 product_matrix_hint(M, factor, name, ref, 1e-9))
 
 
 @exercise("quat_left", weight=3)
@@ -176,9 +214,9 @@ def test_quat_left_orthogonal(student):
 
 
 @exercise("quat_left", weight=1)
-def test_quat_left_matches_scipy(student):
+def test_quat_left_matches_scipy(student, ref):
     """[a]_L b composes like scipy's rotations (up to sign)"""
-    _check_scipy(student, "quat_left", seed=415)
+    _check_scipy(student, ref, "quat_left", seed=415)
 
 
 @exercise("quat_right", weight=3)
@@ -194,9 +232,9 @@ def test_quat_right_orthogonal(student):
 
 
 @exercise("quat_right", weight=1)
-def test_quat_right_matches_scipy(student):
+def test_quat_right_matches_scipy(student, ref):
     """[b]_R a composes like scipy's rotations (up to sign)"""
-    _check_scipy(student, "quat_right", seed=425)
+    _check_scipy(student, ref, "quat_right", seed=425)
 
 
 # ---------------------------------------------------------------- quat_conjugate
@@ -205,9 +243,11 @@ def test_quat_conjugate_values(student):
     """[w, x, y, z]* = [w, -x, -y, -z] for 20 random quaternions"""
     for q in general_quats(20, seed=431):
         got = expect_array(student.quat_conjugate(q), (4,), "quat_conjugate(q)")
-        hint = "negated the scalar instead of the vector part" if np.allclose(got, -conj(q)) else \
-            "returned q unchanged" if np.allclose(got, q) else ""
-        expect_close(got, conj(q), TOL * np.linalg.norm(q), "quat_conjugate(q)", hint)
+        tol = TOL * np.linalg.norm(q)
+        hint = ("negated the scalar instead of the vector part" if close(got, -conj(q), tol) else
+                "returned q unchanged: negate the vector part x, y, z" if close(got, q, tol) else
+                "returned -q: keep the scalar w, negate only x, y, z" if close(got, -q, tol) else "")
+        expect_close(got, conj(q), tol, "quat_conjugate(q)", hint)
 
 
 @exercise("quat_conjugate", weight=1)
@@ -216,7 +256,9 @@ def test_quat_conjugate_is_inverse_rotation(student):
     for q in unit_quats(8, seed=432):
         got = expect_array(student.quat_conjugate(q), (4,), "quat_conjugate(q)")
         expected = scipy_rotation(q).inv().as_quat(scalar_first=True)
-        expect_same_rotation(got, expected, TOL, "quat_conjugate(q) as a rotation")
+        hint = ("this is the rotation of q itself (q and -q are one rotation), not its inverse: "
+                "q* = [w, -x, -y, -z]" if same_rotation_quat(got, q, TOL) else "")
+        expect_same_rotation(got, expected, TOL, "quat_conjugate(q) as a rotation", hint)
 
 
 @exercise("quat_conjugate", weight=1)
@@ -226,15 +268,31 @@ def test_quat_conjugate_lists(student):
 
 
 # ---------------------------------------------------------------- quat_inverse
+def inverse_hint(got, q):
+    """The hint for the one typical wrong inverse that ``got`` equals (relative tolerance 1e-9), else ""."""
+    q = np.asarray(q, dtype=float)
+    n2 = q @ q
+    exact = conj(q) / n2
+    candidates = [(conj(q), "returned the conjugate: divide it by |q|²"),
+                  (conj(q) / np.sqrt(n2), "divided by |q|, not by |q|²"),
+                  (-q / n2, "returned -q / |q|²: only the vector part changes sign, q⁻¹ = q* / |q|²")]
+    if np.all(q != 0.0):
+        candidates.append((1.0 / q, "took 1/q entry by entry: the inverse of a quaternion is q* / |q|²"))
+    matches = [hint for value, hint in candidates
+               if not close(value, exact, 1e-9 * np.max(np.abs(exact)))
+               and close(got, value, 1e-9 * np.max(np.abs(value)))]
+    return matches[0] if len(matches) == 1 else ""
+
+
 @exercise("quat_inverse", weight=3)
 def test_quat_inverse_non_unit(student):
     """q⁻¹ = q* / |q|² for 20 random quaternions of lengths 0.1 to 10"""
     for q in general_quats(20, seed=441):
         got = expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)")
         n2 = q @ q
-        hint = ("returned the conjugate: divide it by |q|²" if np.allclose(got, conj(q)) else
-                "divided by |q|, not by |q|²" if np.allclose(got, conj(q) / np.sqrt(n2)) else "")
-        expect_close(got, conj(q) / n2, TOL / n2, f"quat_inverse(q) for |q| = {np.sqrt(n2):.3g}", hint)
+        if not close(got, conj(q) / n2, TOL / n2):
+            expect_close(got, conj(q) / n2, TOL / n2, f"quat_inverse(q) for |q| = {np.sqrt(n2):.3g}",
+                         inverse_hint(got, q))
 
 
 @exercise("quat_inverse", weight=2)
@@ -246,16 +304,17 @@ def test_quat_inverse_undoes_product(student, ref):
         q = scale * q / np.linalg.norm(q)
         got = expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)")
         for what, product in (("q ⊗ q⁻¹", ref.quat_multiply(q, got)), ("q⁻¹ ⊗ q", ref.quat_multiply(got, q))):
-            expect_close(product, ONE, 1e-9, f"{what} for |q| = {scale:g}",
-                         "q⁻¹ = q* / |q|² (the conjugate alone only works for unit q)")
+            if not close(product, ONE, 1e-9):
+                expect_close(product, ONE, 1e-9, f"{what} for |q| = {scale:g}", inverse_hint(got, q))
 
 
 @exercise("quat_inverse", weight=1)
 def test_quat_inverse_unit(student):
     """for unit quaternions the inverse is the conjugate"""
     for q in unit_quats(6, seed=443):
-        expect_close(expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)"), conj(q), TOL,
-                     "quat_inverse(q) for a unit q")
+        got = expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)")
+        if not close(got, conj(q), TOL):
+            expect_close(got, conj(q), TOL, "quat_inverse(q) for a unit q", inverse_hint(got, q))
 
 
 # ---------------------------------------------------------------- quat_from_axis_angle
@@ -267,18 +326,43 @@ def _axis_angle_cases(seed):
     return zip(axes, angles)
 
 
+def axis_angle_hint(got, axis, theta, up_to_sign=False, tol=1e-9):
+    """The hint for the one typical wrong quaternion of (axis, θ) that ``got`` equals, else ""."""
+    axis = np.asarray(axis, dtype=float)
+    u = axis / np.linalg.norm(axis)
+
+    def quat(c, s, direction):
+        return np.concatenate([[c], s * direction])
+
+    exact = quat(np.cos(theta / 2), np.sin(theta / 2), u)
+    half_degrees = np.deg2rad(theta) / 2
+    candidates = [
+        (quat(np.cos(theta), np.sin(theta), u),
+         "this is the rotation by 2θ: the quaternion uses the half angle, [cos(θ/2), u sin(θ/2)]"),
+        (quat(np.cos(half_degrees), np.sin(half_degrees), u), "looks like degrees: the course works in radians"),
+        (quat(np.sin(theta / 2), np.cos(theta / 2), u),
+         "sin and cos are swapped: the scalar is cos(θ/2), the vector part u sin(θ/2)"),
+         (quat(np.cos(theta / 2), np.sin(theta / 2), axis),
+          "divide u by its norm first: the axis must be a unit vector"),
+    ]
+    same = same_rotation_quat if up_to_sign else close
+    matches = [hint for value, hint in candidates if not same(value, exact, tol) and same(got, value, tol)]
+    if len(matches) == 1:
+        return matches[0]
+    if not up_to_sign and close(got, -exact, tol):
+        return "the sign was changed: keep [cos(θ/2), u sin(θ/2)] as it is (w may be negative)"
+    return ""
+
+
 @exercise("quat_from_axis_angle", weight=3)
 def test_quat_from_axis_angle_matches_scipy(student):
     """the same rotation as scipy's rotation vector θu, for 20 random and special cases"""
     for u, theta in _axis_angle_cases(451):
         got = expect_array(student.quat_from_axis_angle(u, theta), (4,), f"quat_from_axis_angle(u, {theta:.4g})")
         expected = Rotation.from_rotvec(theta * u).as_quat(scalar_first=True)
-        hint = ""
-        if same_rotation_quat(got, Rotation.from_rotvec(2 * theta * u).as_quat(scalar_first=True), 1e-6):
-            hint = "this is the rotation by 2θ: the quaternion uses the half angle, [cos(θ/2), u sin(θ/2)]"
-        elif same_rotation_quat(got, Rotation.from_rotvec(np.deg2rad(theta) * u).as_quat(scalar_first=True), 1e-6):
-            hint = "looks like degrees: the course works in radians"
-        expect_same_rotation(got, expected, TOL, f"quat_from_axis_angle(u, {theta:.4g})", hint)
+        if not same_rotation_quat(got, expected, TOL):
+            expect_same_rotation(got, expected, TOL, f"quat_from_axis_angle(u, {theta:.4g})",
+                                 axis_angle_hint(got, u, theta, up_to_sign=True, tol=1e-6))
 
 
 @exercise("quat_from_axis_angle", weight=1)
@@ -290,9 +374,8 @@ def test_quat_from_axis_angle_exact_formula(student):
         u /= np.linalg.norm(u)
         got = expect_array(student.quat_from_axis_angle(u, theta), (4,), f"quat_from_axis_angle(u, {theta})")
         expected = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
-        hint = ("the sign was changed: keep [cos(θ/2), u sin(θ/2)] as it is (w may be negative)"
-                if np.allclose(got, -expected) else "")
-        expect_close(got, expected, TOL, f"quat_from_axis_angle(u, {theta})", hint)
+        if not close(got, expected, TOL):
+            expect_close(got, expected, TOL, f"quat_from_axis_angle(u, {theta})", axis_angle_hint(got, u, theta))
 
 
 @exercise("quat_from_axis_angle", weight=1)
@@ -302,23 +385,40 @@ def test_quat_from_axis_angle_normalises_axis(student):
         got = expect_array(student.quat_from_axis_angle(axis, theta), (4,), f"quat_from_axis_angle({axis}, {theta})")
         u = np.asarray(axis) / np.linalg.norm(axis)
         expected = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
-        expect_close(got, expected, TOL, f"quat_from_axis_angle({axis}, {theta})", "divide u by its norm first")
+        if not close(got, expected, TOL):
+            expect_close(got, expected, TOL, f"quat_from_axis_angle({axis}, {theta})",
+                         axis_angle_hint(got, axis, theta)
+                         or "expected [cos(θ/2), u sin(θ/2)] with the unit axis u = axis / |axis|")
 
 
 # ---------------------------------------------------------------- quat_rotate
+def rotate_hint(got, q, v, ref, tol):
+    """The hint for the one typical wrong rotated vector that ``got`` equals, else ""."""
+    q, v = np.asarray(q, dtype=float), np.asarray(v, dtype=float)
+    exact = scipy_rotation(q).apply(v)
+    no_conjugate = ref.quat_multiply(ref.quat_multiply(q, np.concatenate([[0.0], v])), q)[1:]
+    candidates = [
+        (scipy_rotation(q).inv().apply(v),
+         "rotated the opposite way: the sandwich is q ⊗ [0, v] ⊗ q*, with the conjugate on the right"),
+        (Rotation.from_quat(q).apply(v), "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"),
+        (no_conjugate, "the conjugate is missing: q ⊗ [0, v] ⊗ q does not rotate v; use q ⊗ [0, v] ⊗ q*"),
+        (v + 2.0 * q[0] * np.cross(q[1:], v),
+         "the second-order term is missing: with u = q_v, v' = v + 2w (u × v) + 2 u × (u × v)"),
+    ]
+    matches = [hint for value, hint in candidates if not close(value, exact, tol) and close(got, value, tol)]
+    return matches[0] if len(matches) == 1 else ""
+
+
 @exercise("quat_rotate", weight=3)
-def test_quat_rotate_matches_scipy(student):
+def test_quat_rotate_matches_scipy(student, ref):
     """rotates 20 random vectors like scipy, for unit q in both hemispheres"""
     vectors = np.random.default_rng(461).normal(size=(20, 3)) * 3.0
     for q, v in zip(unit_quats(20, seed=462), vectors):
         got = expect_array(student.quat_rotate(q, v), (3,), "quat_rotate(q, v)")
-        rotation = scipy_rotation(q)
-        hint = ""
-        if np.allclose(got, rotation.inv().apply(v)):
-            hint = "rotated the opposite way: the sandwich is q ⊗ [0, v] ⊗ q*, with the conjugate on the right"
-        elif np.allclose(got, Rotation.from_quat(q).apply(v)):
-            hint = "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
-        expect_close(got, rotation.apply(v), TOL * 3.0 * np.linalg.norm(v), "quat_rotate(q, v)", hint)
+        tol = TOL * 3.0 * np.linalg.norm(v)
+        if not close(got, scipy_rotation(q).apply(v), tol):
+            expect_close(got, scipy_rotation(q).apply(v), tol, "quat_rotate(q, v)",
+                         rotate_hint(got, q, v, ref, 1e-6 * np.linalg.norm(v)))
 
 
 @exercise("quat_rotate", weight=1)
@@ -332,7 +432,7 @@ def test_quat_rotate_sign_of_q(student):
 
 
 @exercise("quat_rotate", weight=1)
-def test_quat_rotate_axis_and_lists(student):
+def test_quat_rotate_axis_and_lists(student, ref):
     """leaves the rotation axis where it is and accepts plain lists"""
     rng = np.random.default_rng(464)
     for _ in range(4):
@@ -341,23 +441,39 @@ def test_quat_rotate_axis_and_lists(student):
         theta = rng.uniform(-3.0, 3.0)
         q = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
         got = expect_array(student.quat_rotate(q.tolist(), (2.0 * u).tolist()), (3,), "quat_rotate(q, axis)")
-        expect_close(got, 2.0 * u, TOL * 2.0, "quat_rotate(q, 2u) along the axis u", "convert inputs with np.asarray")
+        if not close(got, 2.0 * u, TOL * 2.0):
+            with_arrays = expect_array(student.quat_rotate(q, 2.0 * u), (3,), "quat_rotate(q, axis)")
+            hint = (LISTS_HINT if close(with_arrays, 2.0 * u, TOL * 2.0) else
+                    rotate_hint(got, q, 2.0 * u, ref, 1e-6 * 2.0))
+            expect_close(got, 2.0 * u, TOL * 2.0, "quat_rotate(q, 2u) along the axis u", hint)
 
 
 # ---------------------------------------------------------------- quat_to_matrix
+def matrix_hint(got, q, tol=1e-6):
+    """The hint for the one typical wrong matrix of ``q`` that ``got`` equals, else a shared guess or ""."""
+    q = np.asarray(q, dtype=float)
+    exact = scipy_rotation(q).as_matrix()
+    w, v = q[0], q[1:]
+    K = np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+    candidates = [
+        (exact.T, "looks like the transpose (the inverse rotation): check the signs of the 2w[v]× terms"),
+        (Rotation.from_quat(q).as_matrix(), "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"),
+        (np.eye(3) + w * K + K @ K, "the factor 2 is missing: R = I + 2w[v]× + 2[v]×²"),
+    ]
+    matches = [hint for value, hint in candidates if not close(value, exact, tol) and close(got, value, tol)]
+    if len(matches) == 1:
+        return matches[0]
+    return "" if matches else rotation_hint(got, exact) or ""
+
+
 @exercise("quat_to_matrix", weight=3)
 def test_quat_to_matrix_matches_scipy(student):
     """equals scipy's matrix (scalar_first=True) for 20 random unit q, both hemispheres"""
     for q in unit_quats(20, seed=471):
         got = expect_array(student.quat_to_matrix(q), (3, 3), "quat_to_matrix(q)")
         expected = scipy_rotation(q).as_matrix()
-        if np.allclose(got, expected.T):
-            hint = "looks like the transpose (the inverse rotation): check the signs of the 2w[v]× terms"
-        elif np.allclose(got, Rotation.from_quat(q).as_matrix()):
-            hint = "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
-        else:
-            hint = rotation_hint(got, expected) or ""
-        expect_close(got, expected, TOL, "quat_to_matrix(q)", hint)
+        if not close(got, expected, TOL):
+            expect_close(got, expected, TOL, "quat_to_matrix(q)", matrix_hint(got, q))
 
 
 @exercise("quat_to_matrix", weight=1)
@@ -366,20 +482,23 @@ def test_quat_to_matrix_scalar_last_oracle(student):
     for xyzw in Rotation.random(8, random_state=472).as_quat():
         wxyz = np.concatenate([xyzw[3:], xyzw[:3]])
         got = expect_array(student.quat_to_matrix(wxyz), (3, 3), "quat_to_matrix(q)")
-        expect_close(got, Rotation.from_quat(xyzw).as_matrix(), TOL, "quat_to_matrix([w, x, y, z])")
+        if not close(got, Rotation.from_quat(xyzw).as_matrix(), TOL):
+            expect_close(got, Rotation.from_quat(xyzw).as_matrix(), TOL, "quat_to_matrix([w, x, y, z])",
+                         matrix_hint(got, wxyz))
 
 
 @exercise("quat_to_matrix", weight=1)
 def test_quat_to_matrix_edge_cases(student):
     """identity, half turns (w = 0) and R(q) == R(-q)"""
-    expect_close(expect_array(student.quat_to_matrix(ONE), (3, 3), "quat_to_matrix(1)"), np.eye(3), TOL,
-                 "quat_to_matrix([1, 0, 0, 0])")
+    got = expect_array(student.quat_to_matrix(ONE), (3, 3), "quat_to_matrix(1)")
+    expect_close(got, np.eye(3), TOL, "quat_to_matrix([1, 0, 0, 0])", matrix_hint(got, ONE))
     rng = np.random.default_rng(473)
     for _ in range(4):
         u = rng.normal(size=3)
         u /= np.linalg.norm(u)
         got = expect_array(student.quat_to_matrix(np.concatenate([[0.0], u])), (3, 3), "quat_to_matrix")
-        expect_close(got, rotation_of_pi(u), TOL, "quat_to_matrix([0, u]), a half turn")
+        expect_close(got, rotation_of_pi(u), TOL, "quat_to_matrix([0, u]), a half turn",
+                     matrix_hint(got, np.concatenate([[0.0], u])))
     for q in unit_quats(4, seed=474):
         a = expect_array(student.quat_to_matrix(q), (3, 3), "quat_to_matrix(q)")
         b = expect_array(student.quat_to_matrix(-q), (3, 3), "quat_to_matrix(-q)")
@@ -389,8 +508,30 @@ def test_quat_to_matrix_edge_cases(student):
 
 
 # ---------------------------------------------------------------- matrix_to_quat
-NAIVE_HINT = ("near θ = π the trace formula w = ½√(1 + tr R) loses accuracy: start from the largest of "
-              "w², x², y², z² (Shepperd's method)")
+SHEPPERD = "start from the largest of w², x², y², z² (Shepperd's method)"
+NAN_NEAR_PI_HINT = ("NaN or inf near θ = π, where w = cos(θ/2) → 0: dividing by 4w fails there; " + SHEPPERD)
+
+
+def naive_hint(got, expected):
+    """Near θ = π, the trace formula's signature: the right direction in R⁴ but the wrong length, else ""."""
+    got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
+    length = np.linalg.norm(got)
+    if abs(expected[0]) > 0.1 or abs(length - 1.0) <= TOL / 2 or not same_rotation_quat(got / length, expected, 1e-6):
+        return ""
+    return (f"|q| = 1 {'+' if length > 1 else '-'} {abs(length - 1.0):.2g}: near θ = π the trace formula "
+            f"w = ½√(1 + tr R) loses accuracy, and dividing by 4w carries the error into x, y, z; " + SHEPPERD)
+
+
+def m2q_array(value, what, near_pi):
+    """``value`` as a (4,) array; NaN or inf near θ = π is the division by w = 0."""
+    if shape_problem(value, (4,)) == "returned NaN or inf values":
+        raise Wrong(f"{what} returned NaN or inf values", NAN_NEAR_PI_HINT if near_pi else "")
+    return expect_array(value, (4,), what)
+
+
+def m2q_hint(got, expected):
+    """Layout, conjugate or sign (``quaternion_hint``), else the trace formula's signature, else ""."""
+    return quaternion_hint(got, expected) or naive_hint(got, expected) or ""
 
 
 @exercise("matrix_to_quat", weight=2)
@@ -399,7 +540,7 @@ def test_matrix_to_quat_random(student):
     for R in Rotation.random(20, random_state=481).as_matrix():
         got = expect_array(student.matrix_to_quat(R), (4,), "matrix_to_quat(R)")
         expected = Rotation.from_matrix(R).as_quat(scalar_first=True)
-        expect_same_rotation(got, expected, TOL, "matrix_to_quat(R)")
+        expect_same_rotation(got, expected, TOL, "matrix_to_quat(R)", m2q_hint(got, expected))
 
 
 @exercise("matrix_to_quat", weight=1)
@@ -412,8 +553,8 @@ def test_matrix_to_quat_near_pi(student):
         theta = np.pi - delta
         q_true = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
         R = scipy_rotation(q_true).as_matrix()
-        got = expect_array(student.matrix_to_quat(R), (4,), f"matrix_to_quat(R) at θ = π - {delta:g}")
-        expect_same_rotation(got, q_true, TOL, f"matrix_to_quat(R) at θ = π - {delta:g}", NAIVE_HINT)
+        got = m2q_array(student.matrix_to_quat(R), f"matrix_to_quat(R) at θ = π - {delta:g}", near_pi=True)
+        expect_same_rotation(got, q_true, TOL, f"matrix_to_quat(R) at θ = π - {delta:g}", m2q_hint(got, q_true))
 
 
 @exercise("matrix_to_quat", weight=1)
@@ -423,9 +564,10 @@ def test_matrix_to_quat_exactly_pi(student):
     axes = [np.eye(3)[k] for k in range(3)] + [rng.normal(size=3) for _ in range(4)]
     for axis in axes:
         u = axis / np.linalg.norm(axis)
-        got = expect_array(student.matrix_to_quat(rotation_of_pi(u)), (4,), f"matrix_to_quat at θ = π about {fmt(u)}")
-        expect_same_rotation(got, np.concatenate([[0.0], u]), TOL, f"matrix_to_quat at θ = π about {fmt(u)}",
-                             NAIVE_HINT)
+        got = m2q_array(student.matrix_to_quat(rotation_of_pi(u)), f"matrix_to_quat at θ = π about {fmt(u)}",
+                        near_pi=True)
+        expected = np.concatenate([[0.0], u])
+        expect_same_rotation(got, expected, TOL, f"matrix_to_quat at θ = π about {fmt(u)}", m2q_hint(got, expected))
 
 
 @exercise("matrix_to_quat", weight=5)
@@ -437,17 +579,18 @@ def test_matrix_to_quat_canonical_sign(student):
         u /= np.linalg.norm(u)
         q = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
         canonical = q if q[0] >= 0 else -q
-        got = expect_array(student.matrix_to_quat(scipy_rotation(q).as_matrix()), (4,), "matrix_to_quat(R)")
-        hint = "q and -q are the same rotation; the canonical choice has w >= 0: negate q when w < 0" \
-            if np.allclose(got, -canonical, atol=1e-9) else ""
+        got = m2q_array(student.matrix_to_quat(scipy_rotation(q).as_matrix()), "matrix_to_quat(R)",
+                        near_pi=abs(theta - np.pi) < 0.1)
+        hint = ("q and -q are the same rotation; the canonical choice has w >= 0: negate q when w < 0"
+                if close(got, -canonical, 1e-9) else m2q_hint(got, canonical))
         expect_close(got, canonical, TOL, f"matrix_to_quat(R) for a turn by {theta:.4g} rad", hint)
 
 
 @exercise("matrix_to_quat", weight=1)
 def test_matrix_to_quat_identity_and_norm(student):
     """identity → [1, 0, 0, 0]; the result has unit length"""
-    expect_close(expect_array(student.matrix_to_quat(np.eye(3)), (4,), "matrix_to_quat(I)"), ONE, TOL,
-                 "matrix_to_quat(I)")
+    got = expect_array(student.matrix_to_quat(np.eye(3)), (4,), "matrix_to_quat(I)")
+    expect_close(got, ONE, TOL, "matrix_to_quat(I)", quaternion_hint(got, ONE) or "")
     for R in Rotation.random(5, random_state=485).as_matrix():
         got = expect_array(student.matrix_to_quat(R.tolist()), (4,), "matrix_to_quat(R as a list)")
         expect(abs(np.linalg.norm(got) - 1.0) <= TOL, f"|matrix_to_quat(R)| = {np.linalg.norm(got):.12f}",
@@ -455,13 +598,29 @@ def test_matrix_to_quat_identity_and_norm(student):
 
 
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz
+def layout_hint(got, q, to_end):
+    """The hint for the one typical wrong reordering of ``q`` (one quaternion or a stack) that ``got`` equals."""
+    q = np.asarray(q, dtype=float)
+    shift, where, index = ((-1, "end", "q[..., 1:] and q[..., :1]") if to_end else
+                           (1, "front", "q[..., 3:] and q[..., :3]"))
+    exact = np.roll(q, shift, axis=-1)
+    candidates = [
+        (q[..., ::-1], "the array was reversed: only the scalar moves, x, y, z keep their order"),
+        (q, f"returned q unchanged: the scalar must move to the {where}"),
+        (np.roll(q, -shift, axis=-1), f"rolled the wrong way: the scalar must move to the {where}"),
+        (np.roll(q.ravel(), shift).reshape(q.shape),
+         f"the whole stack was rolled as one flat array: roll along the last axis (axis=-1) or index {index}"),
+    ]
+    matches = [hint for value, hint in candidates if not close(value, exact, 0.0) and close(got, value, 0.0)]
+    return matches[0] if len(matches) == 1 else ""
+
+
 @exercise("wxyz_to_xyzw", weight=3)
 def test_wxyz_to_xyzw_values(student):
     """moves the scalar to the end; scipy's default from_quat then gives the same rotation"""
     for q in unit_quats(10, seed=491):
         got = expect_array(student.wxyz_to_xyzw(q), (4,), "wxyz_to_xyzw(q)")
-        hint = "the array was reversed: only the scalar moves" if np.allclose(got, q[::-1]) else ""
-        expect_close(got, np.concatenate([q[1:], q[:1]]), 0.0, "wxyz_to_xyzw(q)", hint)
+        expect_close(got, np.concatenate([q[1:], q[:1]]), 0.0, "wxyz_to_xyzw(q)", layout_hint(got, q, to_end=True))
         expect_close(Rotation.from_quat(got).as_matrix(), scipy_rotation(q).as_matrix(), TOL,
                      "scipy's Rotation.from_quat(wxyz_to_xyzw(q))")
 
@@ -472,7 +631,7 @@ def test_wxyz_to_xyzw_stack(student):
     stack = general_quats(5, seed=492)
     got = expect_array(student.wxyz_to_xyzw(stack), (5, 4), "wxyz_to_xyzw(stack of 5)")
     expect_close(got, np.concatenate([stack[:, 1:], stack[:, :1]], axis=1), 0.0, "wxyz_to_xyzw(stack)",
-                 "index the last axis: q[..., 1:] and q[..., :1]")
+                 layout_hint(got, stack, to_end=True))
     got = expect_array(student.wxyz_to_xyzw([1.0, 2.0, 3.0, 4.0]), (4,), "wxyz_to_xyzw(list)")
     expect_close(got, [2.0, 3.0, 4.0, 1.0], 0.0, "wxyz_to_xyzw([1, 2, 3, 4])")
 
@@ -484,10 +643,8 @@ def test_xyzw_to_wxyz_values(student):
     quats[1::2] *= -1.0                                                    # both hemispheres
     for xyzw in quats:
         got = expect_array(student.xyzw_to_wxyz(xyzw), (4,), "xyzw_to_wxyz(q)")
-        hint = ("the array was reversed: only the scalar moves" if np.allclose(got, xyzw[::-1]) else
-                "rolled the wrong way: the last entry (w) must come first" if np.allclose(got, np.roll(xyzw, -1))
-                else "")
-        expect_close(got, np.concatenate([xyzw[3:], xyzw[:3]]), 0.0, "xyzw_to_wxyz(q)", hint)
+        expect_close(got, np.concatenate([xyzw[3:], xyzw[:3]]), 0.0, "xyzw_to_wxyz(q)",
+                     layout_hint(got, xyzw, to_end=False))
         expect_close(scipy_rotation(got).as_matrix(), Rotation.from_quat(xyzw).as_matrix(), TOL,
                      "Rotation.from_quat(xyzw_to_wxyz(q), scalar_first=True)")
 
@@ -498,7 +655,7 @@ def test_xyzw_to_wxyz_stack(student):
     stack = general_quats(5, seed=494)
     got = expect_array(student.xyzw_to_wxyz(stack), (5, 4), "xyzw_to_wxyz(stack of 5)")
     expect_close(got, np.concatenate([stack[:, 3:], stack[:, :3]], axis=1), 0.0, "xyzw_to_wxyz(stack)",
-                 "index the last axis: q[..., 3:] and q[..., :3]")
+                 layout_hint(got, stack, to_end=False))
     got = expect_array(student.xyzw_to_wxyz([2.0, 3.0, 4.0, 1.0]), (4,), "xyzw_to_wxyz(list)")
     expect_close(got, [1.0, 2.0, 3.0, 4.0], 0.0, "xyzw_to_wxyz([2, 3, 4, 1])")
 
@@ -529,6 +686,36 @@ def angle_between(a, b):
     return 2.0 * np.arccos(min(abs(float(np.dot(a, b))), 1.0))
 
 
+LONG_ARC_HINT = "took the longer arc: q1 and -q1 are one rotation; when q0 · q1 < 0, interpolate towards -q1"
+TINY_OMEGA_HINT = ("NaN or inf for (nearly) equal inputs: sin Ω = 0 there; when sin Ω is tiny, fall back to "
+                   "(normalised) linear interpolation")
+
+
+def slerp_hint(got, q0, q1, t):
+    """The hint for the typical wrong slerp that ``got`` equals, else what property failed, else ""."""
+    q0, q1 = np.asarray(q0, dtype=float), np.asarray(q1, dtype=float)
+    near = q1 if q0 @ q1 >= 0 else -q1
+    length = np.linalg.norm(got)
+    if q0 @ q1 < 0 and abs(q0 @ q1) < 1.0 - 1e-12 and same_rotation_quat(got, long_arc(q0, q1, t), 1e-6):
+        return LONG_ARC_HINT
+    if close(got, (1 - t) * q0 + t * near, 1e-9) or close(got, (1 - t) * q0 + t * q1, 1e-9):
+        return (f"plain linear interpolation (1 - t) q0 + t q1 leaves the unit sphere (|result| = {length:.4f}): "
+                "use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+    if abs(length - 1.0) > 1e-6:
+        return f"|result| = {length:.4f}: slerp stays on the unit sphere"
+    if t != 0.5 and same_rotation_quat(got, nlerp(q0, q1, t), 1e-9):
+        return NLERP_HINT
+    return ""
+
+
+def slerp_array(value, what, q0, q1):
+    """``value`` as a (4,) array; NaN or inf for (nearly) equal or opposite inputs is the division by sin Ω."""
+    if shape_problem(value, (4,)) == "returned NaN or inf values":
+        raise Wrong(f"{what} returned NaN or inf values",
+                    TINY_OMEGA_HINT if abs(np.dot(q0, q1)) > 1.0 - 1e-6 else "")
+    return expect_array(value, (4,), what)
+
+
 @exercise("quat_slerp", weight=3)
 def test_quat_slerp_matches_scipy(student):
     """agrees with scipy's Slerp for 12 random pairs at t = 0.1 … 0.9 (half of them need the sign flip)"""
@@ -537,14 +724,9 @@ def test_quat_slerp_matches_scipy(student):
             q1 = -q1   # odd pairs have q0 · q1 < 0, even pairs q0 · q1 > 0
         for t in (0.1, 0.25, 0.5, 0.75, 0.9):
             got = expect_array(student.quat_slerp(q0, q1, t), (4,), f"quat_slerp(q0, q1, {t})")
-            hint = ""
-            if q0 @ q1 < 0 and same_rotation_quat(got, long_arc(q0, q1, t), 1e-6):
-                hint = "took the longer arc: when q0 · q1 < 0, interpolate towards -q1"
-            elif abs(np.linalg.norm(got) - 1.0) > 1e-6:
-                hint = f"|result| = {np.linalg.norm(got):.4f}: slerp stays on the unit sphere"
-            elif same_rotation_quat(got, nlerp(q0, q1, t), 1e-9) and t != 0.5:
-                hint = NLERP_HINT
-            expect_same_rotation(got, scipy_slerp(q0, q1, t), TOL, f"quat_slerp(q0, q1, {t})", hint)
+            if not same_rotation_quat(got, scipy_slerp(q0, q1, t), TOL):
+                expect_same_rotation(got, scipy_slerp(q0, q1, t), TOL, f"quat_slerp(q0, q1, {t})",
+                                     slerp_hint(got, q0, q1, t))
 
 
 @exercise("quat_slerp", weight=2)
@@ -573,11 +755,13 @@ def test_quat_slerp_shorter_arc(student):
     for q0, q1, angle in cases:
         for t in (0.25, 0.5, 0.8):
             got = expect_array(student.quat_slerp(q0, q1, t), (4,), f"quat_slerp(q0, q1, {t})")
-            expect(abs(np.linalg.norm(got) - 1.0) <= 1e-9, f"|quat_slerp(q0, q1, {t})| = {np.linalg.norm(got):.6f}",
-                   "slerp stays on the unit sphere: the sine weights do that, plain averaging does not")
+            expect(abs(np.linalg.norm(got) - 1.0) <= 1e-9,
+                   f"|quat_slerp(q0, q1, {t})| = {np.linalg.norm(got):.6f}, off the unit sphere by "
+                   f"{abs(np.linalg.norm(got) - 1.0):.2g}",
+                   slerp_hint(got, q0, q1, t) or "slerp stays on the unit sphere: the sine weights keep it there")
             turned = angle_between(q0, got)
-            hint = ("q1 and -q1 are one rotation: when q0 · q1 < 0 use -q1, or slerp takes the longer arc"
-                    if same_rotation_quat(got, long_arc(q0, q1, t), 1e-6) else NLERP_HINT)
+            hint = slerp_hint(got, q0, q1, t) or ("not at constant speed: the turn from q0 must grow as t × the whole "
+                                                  "angle; use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
             expect(abs(turned - t * angle) <= 1e-8,
                    f"at t = {t} the result is {turned:.6f} rad from q0, off by {abs(turned - t * angle):.2g} from "
                    f"t × {angle:.4f} = {t * angle:.6f}", hint)
@@ -596,7 +780,9 @@ def test_quat_slerp_nearly_identical(student):
         q1 = np.concatenate([[w * step[0] - v @ step[1:]], w * step[1:] + step[0] * v + np.cross(v, step[1:])])
         for other, name in ((q1, "nearly identical"), (-q1, "nearly opposite")):
             for t in (0.3, 0.5):
-                got = expect_array(student.quat_slerp(q0, other, t), (4,), f"quat_slerp for {name} inputs")
-                expect_same_rotation(got, scipy_slerp(q0, other, t), 1e-8,
-                                     f"quat_slerp(q0, q1, {t}) for {name} inputs ({tiny:g} apart)",
-                                     "when sin Ω is tiny, use normalised linear interpolation instead")
+                got = slerp_array(student.quat_slerp(q0, other, t), f"quat_slerp for {name} inputs ({tiny:g} apart)",
+                                  q0, other)
+                if not same_rotation_quat(got, scipy_slerp(q0, other, t), 1e-8):
+                    expect_same_rotation(got, scipy_slerp(q0, other, t), 1e-8,
+                                         f"quat_slerp(q0, q1, {t}) for {name} inputs ({tiny:g} apart)",
+                                         slerp_hint(got, q0, other, t))

@@ -95,13 +95,13 @@ def lock_matrices(seed):
     rng = np.random.default_rng(seed)
     found = []
     for sign in (1.0, -1.0):
+        R = product_matrix(0.4, sign * HALF_PI, -1.1)
+        R[2, 0] = np.nextafter(R[2, 0], 2.0 * R[2, 0])   # |R[2, 0]| = 1 + 2.2e-16, as rounding produces
+        found.append((f"pitch = {'+' if sign > 0 else '-'}π/2 with |R[2, 0]| = 1 + 2e-16 (rounding)", R))
         for make in (product_matrix, scipy_matrix):
             yaw, roll = rng.uniform(-np.pi, np.pi, 2)
             found.append((f"pitch = {'+' if sign > 0 else '-'}π/2, yaw = {yaw:.3f}, roll = {roll:.3f}",
                           make(yaw, sign * HALF_PI, roll)))
-        R = product_matrix(0.4, sign * HALF_PI, -1.1)
-        R[2, 0] = np.nextafter(R[2, 0], 2.0 * R[2, 0])   # |R[2, 0]| = 1 + 2.2e-16, as rounding produces
-        found.append((f"pitch = {'+' if sign > 0 else '-'}π/2 with |R[2, 0]| = 1 + 2e-16 (rounding)", R))
     return found
 
 
@@ -110,43 +110,93 @@ NAN_HINT = ("np.arcsin of a value a hair beyond ±1 (rounding) is nan: get pitch
             "atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), or clip the argument to [-1, 1]")
 
 
+PITCH_SIGN_HINT = ("the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], [-sin, 0, cos]] "
+                   "(about y the minus sign sits bottom-left)")
+MATRIX_GENERAL_HINT = ("R should be Rz(yaw) @ Ry(pitch) @ Rx(roll); compare each elementary rotation with "
+                       "a quarter turn (yaw = π/2 sends x to y, pitch = π/2 sends z to x, roll = π/2 sends y to z)")
+
+
 def _matrix_hint(got, yaw, pitch, roll):
+    """The mistake whose matrix ``got`` is (computed from the same angles), or a general hint."""
     candidates = [
         (_rx(roll) @ _ry(pitch) @ _rz(yaw),
          "looks like Rx(roll) @ Ry(pitch) @ Rz(yaw): the x-y-z order (scipy's extrinsic 'zyx'); "
          "the course uses R = Rz(yaw) @ Ry(pitch) @ Rx(roll)"),
         (product_matrix(roll, pitch, yaw), "yaw and roll are swapped: yaw turns about z, roll about x"),
+        (product_matrix(yaw, -pitch, roll), PITCH_SIGN_HINT),
         (product_matrix(yaw, pitch, roll).T, "looks like the transpose (the inverse rotation)"),
         (product_matrix(*np.deg2rad([yaw, pitch, roll])), "looks like degrees: angles are in radians"),
     ]
+    truth = product_matrix(yaw, pitch, roll)
     for candidate, hint in candidates:
-        if np.allclose(got, candidate, atol=1e-9):
+        if np.max(np.abs(candidate - truth)) > 1e-6 and np.max(np.abs(got - candidate)) <= 1e-9:
             return hint
-    return ""
+    return MATRIX_GENERAL_HINT
+
+
+def _rebuilds(angles, R, tol):
+    return float(np.max(np.abs(scipy_matrix(*angles) - R))) <= tol
 
 
 def _angles_hint(got, R):
-    """Name the likely mistake when angles ``got`` do not rebuild ``R``."""
+    """Name the mistake when angles ``got`` do not rebuild ``R`` (each candidate checked), else ""."""
     if not np.all(np.isfinite(got)):
         return NAN_HINT
     yaw, pitch, roll = got
-    if np.allclose(scipy_matrix(roll, pitch, yaw), R, atol=1e-9):
+    # 1e-6: these mistakes are off by O(1); the loose tolerance still recognises them next to the lock,
+    # where the extraction itself loses digits.
+    if _rebuilds((roll, pitch, yaw), R, 1e-6):
         return "returned (roll, pitch, yaw): the order is (yaw, pitch, roll)"
-    if np.allclose(Rotation.from_euler("zyx", got).as_matrix(), R, atol=1e-9):
+    if np.max(np.abs(Rotation.from_euler("zyx", got).as_matrix() - R)) <= 1e-6:
         return ("these are angles of the extrinsic sequence (scipy's lowercase 'zyx', R = Rx(c) Ry(b) Rz(a)); "
                 "the course uses intrinsic z-y-x, scipy's 'ZYX'")
-    if np.allclose(scipy_matrix(*np.deg2rad(got)), R, atol=1e-9):
+    if _rebuilds(np.deg2rad(got), R, 1e-6):
         return "looks like degrees: return radians"
     return ""
 
 
-def _near_lock_hint(got, R, eps):
-    error = float(np.max(np.abs(scipy_matrix(*got) - R)))
-    if abs(got[2]) == 0.0 and error < 10 * eps + 1e-9:
+ANGLES_GENERAL_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
+                       "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
+
+NO_LOCK_BRANCH_HINT = ("no separate gimbal-lock branch: at |pitch| = π/2 the entries R[0, 0], R[1, 0], R[2, 1], "
+                       "R[2, 2] are rounding noise, so atan2 of them is arbitrary; there set roll = 0 and "
+                       "yaw = atan2(-R[0, 1], R[1, 1])")
+ASIN_HINT = ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by √(2ε)): "
+             "get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
+
+
+def _naive_angles(R):
+    """What the textbook formulas give without a lock branch: atan2 of the entries that vanish at the lock."""
+    return np.array([np.arctan2(R[1, 0], R[0, 0]), np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])),
+                     np.arctan2(R[2, 1], R[2, 2])])
+
+
+def _asin_pitch(R):
+    with np.errstate(invalid="ignore"):
+        return float(np.arcsin(-R[2, 0]))
+
+
+def _extraction_hint(got, R, eps=None):
+    """At or next to the lock: which extraction gave ``got`` (each candidate computed from R)."""
+    hint = _angles_hint(got, R)
+    if hint:
+        return hint
+    good_pitch = float(np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])))
+    asin = _asin_pitch(R)
+    if np.isfinite(asin) and abs(asin - good_pitch) > 1e-13 and abs(got[1] - asin) <= 1e-15 + 1e-3 * abs(asin - good_pitch):
+        return ASIN_HINT
+    naive = _naive_angles(R)
+    if np.max(np.abs(wrapped(got - naive))) <= 1e-12:
+        if eps is None:
+            return NO_LOCK_BRANCH_HINT
+        return ("next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
+                "atan2 of them gives yaw and roll only to ~1e-16/cos(pitch); get yaw first, then roll from the "
+                "large entries (undo Rz(yaw): roll = atan2(s R[0, 2] - c R[1, 2], c R[1, 1] - s R[0, 1]))")
+    if eps is not None and abs(got[2]) == 0.0:
         return (f"treated a matrix {eps:g} rad from the lock as locked: only call it gimbal lock when "
                 "cos(pitch) is below about 1e-12")
-    return ("near the lock: pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])) (asin loses digits), "
-            "then the roll from the large entries once the yaw is known")
+    return ("at and next to the lock: pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), a lock branch when "
+            "cos(pitch) < 1e-12 (roll = 0), and the roll from the large entries once the yaw is known")
 
 
 def _expect_angles(value, what):
@@ -211,7 +261,8 @@ def test_matrix_to_euler_zyx_random(student):
         got = _expect_angles(student.matrix_to_euler_zyx(R), what)
         rebuilt = scipy_matrix(*got)
         error = float(np.max(np.abs(rebuilt - R)))
-        expect(error <= REBUILD_TOL, f"{what} = {fmt(got)} rebuilds R only to {error:.2g}", _angles_hint(got, R))
+        expect(error <= REBUILD_TOL, f"{what} = {fmt(got)} rebuilds R only to {error:.2g}",
+               _angles_hint(got, R) or ANGLES_GENERAL_HINT)
         _expect_in_range(got, what)
         difference = np.max(np.abs(wrapped(got - scipy_angles(R))))
         expect(difference <= ANGLE_TOL, f"{what} = {fmt(got)} differs from scipy's {fmt(scipy_angles(R))}",
@@ -225,7 +276,8 @@ def test_matrix_to_euler_zyx_other_solution(student):
         R = scipy_matrix(yaw, pitch, roll)
         what = f"matrix_to_euler_zyx(R) for R built from ({yaw:.3f}, {pitch:.3f}, {roll:.3f})"
         got = _expect_angles(student.matrix_to_euler_zyx(R.tolist()), what)
-        expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the matrix rebuilt from {what}", _angles_hint(got, R))
+        expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the matrix rebuilt from {what}",
+                     _angles_hint(got, R) or ANGLES_GENERAL_HINT)
         _expect_in_range(got, what)
 
 
@@ -236,13 +288,22 @@ def test_matrix_to_euler_zyx_at_lock(student):
         what = f"matrix_to_euler_zyx(R) at {label}"
         got = _expect_angles(student.matrix_to_euler_zyx(R), what)
         yaw, pitch, roll = got
+        expected_pitch = -np.sign(R[2, 0]) * HALF_PI
         expect(abs(abs(pitch) - HALF_PI) <= 1e-12 and np.sign(pitch) == -np.sign(R[2, 0]),
-               f"{what}: pitch = {pitch:.17g}, expected {'-' if R[2, 0] > 0 else ''}π/2 = {-np.sign(R[2, 0]) * HALF_PI:.17g}",
-               _angles_hint(got, R) or "asin loses digits near ±1: get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
+               f"{what}: pitch = {pitch:.17g} is off by {abs(pitch - expected_pitch):.2g} from "
+               f"{'-' if R[2, 0] > 0 else ''}π/2", _extraction_hint(got, R))
+        rebuilt_error = float(np.max(np.abs(scipy_matrix(*got) - R)))
+        if np.max(np.abs(wrapped(got - _naive_angles(R)))) <= 1e-12:
+            roll_hint = NO_LOCK_BRANCH_HINT
+        elif rebuilt_error <= REBUILD_TOL:
+            roll_hint = ("at the lock only yaw ∓ roll is defined and these angles do give R: the course sets "
+                         "roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
+        else:
+            roll_hint = _extraction_hint(got, R)
         expect(abs(roll) <= 1e-12, f"{what}: roll = {roll:.4f}, expected 0 (the course's convention at the lock)",
-               "at the lock only yaw ∓ roll is defined: set roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
+               roll_hint)
         expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the matrix rebuilt from {what} = {fmt(got)}",
-                     _angles_hint(got, R))
+                     _extraction_hint(got, R))
 
 
 @exercise("matrix_to_euler_zyx", weight=2)
@@ -255,11 +316,19 @@ def test_matrix_to_euler_zyx_near_lock(student):
         got = _expect_angles(student.matrix_to_euler_zyx(R), what)
         error = float(np.max(np.abs(scipy_matrix(*got) - R)))
         expect(error <= REBUILD_TOL, f"{what}: the angles {fmt(got)} rebuild R only to {error:.2g}",
-               _angles_hint(got, R) or _near_lock_hint(got, R, eps))
+               _extraction_hint(got, R, eps))
 
 
 # ---------------------------------------------------------------- euler_zyx_to_quat
+def _all_plus_quat(yaw, pitch, roll):
+    """The z-y-x formula with every mixed product added (the minus signs lost)."""
+    cy, sy, cp, sp, cr, sr = (f(a / 2) for a in (yaw, pitch, roll) for f in (np.cos, np.sin))
+    return np.array([cy * cp * cr + sy * sp * sr, cy * cp * sr + sy * sp * cr,
+                     cy * sp * cr + sy * cp * sr, sy * cp * cr + cy * sp * sr])
+
+
 def _quat_hint(got, yaw, pitch, roll):
+    """The mistake whose quaternion ``got`` is (each candidate computed from the angles), or a general hint."""
     expected = scipy_quat(yaw, pitch, roll)
     candidates = [
         (np.roll(expected, -1), "looks scalar-last [x, y, z, w]: the course puts the scalar first, [w, x, y, z]"),
@@ -267,14 +336,20 @@ def _quat_hint(got, yaw, pitch, roll):
          "looks like q_x ⊗ q_y ⊗ q_z (scipy's extrinsic 'zyx'): the course uses q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll)"),
         (scipy_quat(2 * yaw, 2 * pitch, 2 * roll), "full angles: a quaternion uses half angles, cos(yaw / 2)"),
         (scipy_quat(roll, pitch, yaw), "yaw and roll are swapped"),
+        (_all_plus_quat(yaw, pitch, roll),
+         "the mixed products lost their minus signs: w = c c c + s s s, x = c c s - s s c, y = c s c + s c s, "
+         "z = s c c - c s s (c, s of yaw/2, pitch/2, roll/2 in that order)"),
     ]
     for candidate, hint in candidates:
-        if np.allclose(got, candidate, atol=1e-9) or np.allclose(got, -candidate, atol=1e-9):
+        if min(np.max(np.abs(candidate - expected)), np.max(np.abs(candidate + expected))) <= 1e-6:
+            continue                                   # here the candidate is the right answer: no diagnosis
+        if np.max(np.abs(got - candidate)) <= 1e-9 or np.max(np.abs(got + candidate)) <= 1e-9:
             return hint
     norm = np.linalg.norm(got)
     if abs(norm - 1.0) > 1e-6:
-        return f"|q| = {norm:.4f}: a rotation quaternion has unit length"
-    return ""
+        return (f"|q| = {norm:.4f}: a rotation quaternion has unit length; q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) "
+                "is a product of unit quaternions")
+    return "q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) with q_z(a) = [cos(a/2), 0, 0, sin(a/2)] and so on"
 
 
 def _expect_same_quat(got, expected, what, hint):
@@ -311,22 +386,48 @@ def test_euler_zyx_to_quat_unit_and_lock(student):
     for yaw, pitch, roll in [(0.6, HALF_PI, -0.2), (-1.7, -HALF_PI, 2.9), (1, 0, -1), (0, 0, 0)]:
         what = f"euler_zyx_to_quat({yaw:.3f}, {pitch:.3f}, {roll:.3f})"
         got = expect_array(student.euler_zyx_to_quat(yaw, pitch, roll), (4,), what)
-        expect(abs(np.linalg.norm(got) - 1.0) <= TOL, f"{what} has |q| = {np.linalg.norm(got):.6f}",
-               "a rotation quaternion has unit length")
+        expect(abs(np.linalg.norm(got) - 1.0) <= TOL,
+               f"{what} has |q| = {np.linalg.norm(got):.6f} (off by {abs(np.linalg.norm(got) - 1.0):.2g})",
+               _quat_hint(got, yaw, pitch, roll))
         _expect_same_quat(got, scipy_quat(yaw, pitch, roll), what, _quat_hint(got, yaw, pitch, roll))
 
 
 # ---------------------------------------------------------------- quat_to_euler_zyx
-def _quat_angles_hint(got, q):
+QUAT_ASIN_HINT = ("the lecture's formulas lose digits next to the lock: asin(2(wy - xz)) near ±1, and the atan2 "
+                  "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums (w ± y, x + z, z - x) "
+                  "and atan2")
+QUAT_NO_LOCK_HINT = ("no gimbal-lock branch: at |pitch| = π/2 both arguments of the atan2 formulas for yaw and roll "
+                     "are rounding noise; there set roll = 0 and give the whole turn to yaw")
+
+
+def _lecture_angles(q, normalise=True):
+    """(yaw, pitch, roll) of the lecture's formulas with a clipped asin, from q (normalised first or not)."""
+    q = np.asarray(q, dtype=float)
+    w, x, y, z = q / np.linalg.norm(q) if normalise else q
+    return np.array([np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)),
+                     np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
+                     np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))])
+
+
+def _quat_angles_hint(got, q, at_lock=False):
+    """The mistake behind angles ``got`` of ``q`` (each candidate computed from q), or a general hint."""
     R = Rotation.from_quat(q, scalar_first=True).as_matrix()
     hint = _angles_hint(got, R)
     if hint:
         return hint
-    if np.all(np.isfinite(got)):
-        scalar_last = Rotation.from_quat(q).as_matrix()
-        if np.allclose(scipy_matrix(*got), scalar_last, atol=1e-9):
-            return "read q as scalar-last [x, y, z, w]: the course's quaternions are [w, x, y, z]"
-    return ""
+    if np.max(np.abs(scipy_matrix(*got) - Rotation.from_quat(q).as_matrix())) <= 1e-6:
+        return "read q as scalar-last [x, y, z, w]: the course's quaternions are [w, x, y, z]"
+    for lecture in (_lecture_angles(q), _lecture_angles(q, normalise=False)):
+        # The lecture's atan2/asin formulas, recomputed here: near and at the lock they are what goes wrong.
+        if np.max(np.abs(wrapped(got[::-1] - lecture))) <= 1e-9:
+            return "returned (roll, pitch, yaw): the order is (yaw, pitch, roll)"
+        if np.max(np.abs(wrapped(got - lecture))) <= 1e-9:
+            return QUAT_NO_LOCK_HINT if at_lock else QUAT_ASIN_HINT
+    if not at_lock and got[2] == 0.0:
+        return ("treated a rotation next to the lock as locked (roll = 0): call it gimbal lock only when "
+                "cos(pitch) is below about 1e-12")
+    return ("the angles must rebuild the rotation of q: pitch from the half-angle sums, "
+            "2 atan2(hypot(w + y, z - x), hypot(w - y, x + z)) - π/2, then yaw ± roll from 2 atan2 of the same sums")
 
 
 @exercise("quat_to_euler_zyx", weight=3)
@@ -368,10 +469,13 @@ def test_quat_to_euler_zyx_at_lock(student):
             R = scipy_matrix(yaw, sign * HALF_PI, roll)
             what = f"quat_to_euler_zyx(q) at pitch = {'+' if sign > 0 else '-'}π/2 (q = {fmt(q, 6)})"
             got = _expect_angles(student.quat_to_euler_zyx(q), what)
+            rebuilt_error = float(np.max(np.abs(scipy_matrix(*got) - R)))
             expect(abs(got[2]) <= 1e-12, f"{what}: roll = {got[2]:.4f}, expected 0 (the course's convention)",
-                   "at the lock only yaw ∓ roll is defined: set roll = 0 and give the whole turn to yaw")
+                   "at the lock only yaw ∓ roll is defined and these angles do give the rotation: the course sets "
+                   "roll = 0 and gives the whole turn to yaw" if rebuilt_error <= REBUILD_TOL
+                   else _quat_angles_hint(got, q, at_lock=True))
             expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the rotation rebuilt from {what} = {fmt(got)}",
-                         _quat_angles_hint(got, q))
+                         _quat_angles_hint(got, q, at_lock=True))
 
 
 @exercise("quat_to_euler_zyx", weight=1)
@@ -384,8 +488,7 @@ def test_quat_to_euler_zyx_near_lock(student):
         got = _expect_angles(student.quat_to_euler_zyx(q), what)
         error = float(np.max(np.abs(scipy_matrix(*got) - R)))
         expect(error <= REBUILD_TOL, f"{what}: the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
-               _quat_angles_hint(got, q) or
-               "asin(2(wy - xz)) loses digits near ±1: use the half-angle sums (w ± y, x + z, z - x) and atan2")
+               _quat_angles_hint(got, q))
 
 
 # ---------------------------------------------------------------- euler_rates_matrix
@@ -405,11 +508,16 @@ def _rates_hint(E, pitch, roll):
         (np.array([[-sp, 0.0, 1.0], [-cp * sr, cr, 0.0], [cp * cr, sr, 0.0]]),
          "the roll signs are flipped: express the axes in the body frame with Rx(roll)ᵀ, not Rx(roll)"),
         (right.T, "looks like the transpose of E"),
+        (np.eye(3), "E = I treats the Euler-angle rates as body rates; they are not: yaw spins about the world z, "
+                    "pitch about the once-turned y, roll about the body x, each seen in the body frame"),
     ]
-    for candidate, hint in candidates:
-        if np.allclose(E, candidate, atol=1e-6):
-            return hint
-    return ""
+    matching = [hint for candidate, hint in candidates
+                if np.max(np.abs(candidate - right)) > 1e-6 and np.max(np.abs(E - candidate)) <= 1e-6]
+    if len(matching) == 1:
+        return matching[0]
+    # None, or several mistakes that coincide at these angles (at zero angles reversed columns are I).
+    return (f"E({pitch:.3g}, {roll:.3g}) should be {fmt(right, 3)}: its columns are the yaw, pitch and roll axes "
+            "seen in the body, Rx(roll)ᵀ Ry(pitch)ᵀ e_z, Rx(roll)ᵀ e_y, e_x")
 
 
 @exercise("euler_rates_matrix", weight=3)
@@ -432,9 +540,10 @@ def test_euler_rates_matrix_determinant(student):
         what = f"euler_rates_matrix({pitch:.3f}, {roll:.3f})"
         E = expect_array(student.euler_rates_matrix(pitch, roll), (3, 3), what)
         det = np.linalg.det(E)
-        expect(abs(det + np.cos(pitch)) <= 1e-9, f"det {what} = {det:.4f}, expected -cos(pitch) = {-np.cos(pitch):.4f}",
+        expect(abs(det + np.cos(pitch)) <= 1e-9,
+               f"det {what} = {det:.4f}, expected -cos(pitch) = {-np.cos(pitch):.4f} (off by {abs(det + np.cos(pitch)):.2g})",
                _rates_hint(E, pitch, roll))
     for pitch, null in [(HALF_PI, [1.0, 0.0, 1.0]), (-HALF_PI, [1.0, 0.0, -1.0])]:
         E = expect_array(student.euler_rates_matrix(pitch, 0.8), (3, 3), "euler_rates_matrix")
         expect_close(E @ null, np.zeros(3), 1e-12, f"euler_rates_matrix({pitch:.4f}, 0.8) @ {null}",
-                     "at the lock a yaw rate and an equal (or opposite) roll rate spin about the same axis")
+                     _rates_hint(E, pitch, 0.8))

@@ -73,18 +73,58 @@ def _same_quat(a, b, tol):
     return np.max(np.abs(a - b)) <= tol or np.max(np.abs(a + b)) <= tol
 
 
+def _is(got, candidate, truth, tol=1e-8):
+    """True when ``got`` is the candidate mistake's value: within ``tol`` of it, and much closer to it than the
+    candidate is to the truth (so a hint never fires where the mistake and the right answer agree)."""
+    got, candidate, truth = (np.asarray(a, dtype=float) for a in (got, candidate, truth))
+    if got.shape != candidate.shape or candidate.shape != truth.shape or not np.all(np.isfinite(got)):
+        return False
+    gap = float(np.max(np.abs(candidate - truth)))
+    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= min(tol, 1e-2 * gap + 1e-15)
+
+
+def _diagnose(got, truth, candidates, fallback=""):
+    """The hint of the first candidate (value, hint) that ``got`` equals, else ``fallback``."""
+    for value, hint in candidates:
+        if _is(got, value, truth):
+            return hint
+    return fallback
+
+
+def _array(value, shape, what, nan_hint=""):
+    """Like ``expect_array``, with a hint for NaN or inf (``nan_hint``, may be a callable) or a transposed shape."""
+    problem = shape_problem(value, shape)
+    if problem:
+        hint = ""
+        if problem == "returned NaN or inf values":
+            hint = nan_hint(np.asarray(value, dtype=float)) if callable(nan_hint) else nan_hint
+        elif len(shape) == 2 and shape[0] != shape[1] and np.shape(value) == tuple(reversed(shape)):
+            hint = "row i is output f_i, column j is input x_j: shape (len(f(x)), n)"
+        raise Wrong(f"{what} {problem}", hint)
+    return np.asarray(value, dtype=float)
+
+
 # ---------------------------------------------------------------- boxplus_right
-def _boxplus_hint(got, R, d, right):
-    other = _exp(d) @ R if right else R @ _exp(d)
-    if np.allclose(got, other, atol=1e-8):
-        return ("that is the left perturbation Exp(δ) R; boxplus_right is R @ Exp(δ)" if right else
-                "that is the right perturbation R Exp(δ); boxplus_left is Exp(δ) @ R")
-    first_order = R @ (np.eye(3) + _skew(d)) if right else (np.eye(3) + _skew(d)) @ R
-    if np.allclose(got, first_order, atol=1e-8):
-        return "I + [δ]× is only the first-order approximation and not a rotation: use Exp(δ)"
-    if np.allclose(got, R @ _exp(-np.asarray(d)) if right else _exp(-np.asarray(d)) @ R, atol=1e-8):
-        return "turned by -δ: check the sign (Exp(δ), not Exp(δ)ᵀ)"
-    return ""
+def _boxplus_hint(got, R, d, right, fallback=""):
+    """Name the mistake when ``got`` is one of the typical wrong versions of R ⊞ δ (right or left)."""
+    R, d = np.asarray(R, dtype=float), np.asarray(d, dtype=float)
+    if right:
+        truth = R @ _exp(d)
+        candidates = [(_exp(d) @ R, "that is the left perturbation Exp(δ) R; boxplus_right is R @ Exp(δ)"),
+                      (R @ (np.eye(3) + _skew(d)), "that is R (I + [δ]×), only the first-order approximation "
+                       "and not a rotation: use R @ Exp(δ)"),
+                      (R @ _exp(-d), "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)"),
+                      (R.T @ _exp(d), "that is Rᵀ Exp(δ): R got transposed; boxplus_right is R @ Exp(δ)")]
+    else:
+        truth = _exp(d) @ R
+        candidates = [(R @ _exp(d), "that is the right perturbation R Exp(δ); boxplus_left is Exp(δ) @ R"),
+                      ((np.eye(3) + _skew(d)) @ R, "that is (I + [δ]×) R, only the first-order approximation "
+                       "and not a rotation: use Exp(δ) @ R"),
+                      (_exp(-d) @ R, "turned by -δ: check the sign (Exp(δ) @ R, not Exp(δ)ᵀ @ R)"),
+                      (_exp(d) @ R.T, "that is Exp(δ) Rᵀ: R got transposed; boxplus_left is Exp(δ) @ R")]
+    candidates.append((R + _skew(d), "that is R + [δ]×: rotations do not add, the sum is not a rotation; "
+                       "compose with Exp(δ) instead"))
+    return _diagnose(got, truth, candidates, fallback)
 
 
 def _boxplus_cases(seed):
@@ -109,7 +149,7 @@ def test_boxplus_right_stays_rotation(student):
         got = expect_array(student.boxplus_right(R, d), (3, 3), "boxplus_right(R, δ)")
         problem = rotation_problem(got, tol=1e-9)
         expect(problem is None, f"boxplus_right(R, {fmt(d)}) is not a rotation: {problem}",
-               "R (I + [δ]×) is not a rotation: use R @ Exp(δ)")
+               _boxplus_hint(got, R, d, True, "Exp(δ) is a rotation and so is R @ Exp(δ): build the result from it"))
 
 
 @exercise("boxplus_right", weight=1)
@@ -120,7 +160,7 @@ def test_boxplus_right_turns_about_body_axes(student):
         d = 0.7 * np.eye(3)[k]
         got = expect_array(student.boxplus_right(R.tolist(), d.tolist()), (3, 3), "boxplus_right with lists")
         expect_close(got[:, k], R[:, k], TOL, f"body axis {k} after turning about it",
-                     "the right perturbation turns about the body's axes: R @ Exp(δ)")
+                     _boxplus_hint(got, R, d, True, "the right perturbation turns about the body's axes: R @ Exp(δ)"))
 
 
 # ---------------------------------------------------------------- boxplus_left
@@ -139,7 +179,7 @@ def test_boxplus_left_stays_rotation(student):
         got = expect_array(student.boxplus_left(R, d), (3, 3), "boxplus_left(R, δ)")
         problem = rotation_problem(got, tol=1e-9)
         expect(problem is None, f"boxplus_left(R, {fmt(d)}) is not a rotation: {problem}",
-               "use Exp(δ) @ R, which is always a rotation")
+               _boxplus_hint(got, R, d, False, "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"))
 
 
 @exercise("boxplus_left", weight=1)
@@ -150,17 +190,24 @@ def test_boxplus_left_turns_about_world_axes(student):
         d = 0.7 * np.eye(3)[k]
         got = expect_array(student.boxplus_left(R.tolist(), d.tolist()), (3, 3), "boxplus_left with lists")
         expect_close(got[k, :], R[k, :], TOL, f"row {k} after turning about world axis {k}",
-                     "the left perturbation turns about the world's axes: Exp(δ) @ R")
+                     _boxplus_hint(got, R, d, False, "the left perturbation turns about the world's axes: Exp(δ) @ R"))
 
 
 # ---------------------------------------------------------------- boxminus
 def _boxminus_hint(got, R_a, R_b):
-    expected = _log(R_b.T @ R_a)
-    if np.allclose(got, -expected, atol=1e-8):
-        return "got the step back: arguments swapped? boxminus(R_a, R_b) = Log(R_bᵀ R_a)"
-    if np.allclose(_exp(got), R_a @ R_b.T, atol=1e-8):
-        return "that is the left difference Log(R_a R_bᵀ); the right one is Log(R_bᵀ R_a)"
-    return ""
+    """Name the mistake when ``got`` is one of the typical wrong versions of R_a ⊟ R_b."""
+    truth = _log(R_b.T @ R_a)
+    D = R_b.T @ R_a
+    hint = _diagnose(got, truth, [
+        (-truth, "got the step back: arguments swapped? boxminus(R_a, R_b) = Log(R_bᵀ R_a)"),
+        (_log(R_a) - _log(R_b), "that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not "
+         "commute); the difference is Log(R_bᵀ R_a)"),
+        (0.5 * np.array([D[2, 1] - D[1, 2], D[0, 2] - D[2, 0], D[1, 0] - D[0, 1]]),
+         "that is the axis times sin θ (the vee of R_bᵀ R_a - I), right only to first order: take Log(R_bᵀ R_a), "
+         "whose length is the angle θ itself")])
+    if not hint and np.all(np.isfinite(got)) and _is(_exp(got), R_a @ R_b.T, D):
+        hint = "that is the left difference Log(R_a R_bᵀ); the right one is Log(R_bᵀ R_a)"
+    return hint
 
 
 @exercise("boxminus", weight=3)
@@ -204,17 +251,35 @@ def _random_quats(count, seed):
     return Rotation.random(count, random_state=seed).as_quat(scalar_first=True)
 
 
-def _quat_hint(got, q, d):
+def _is_quat(got, candidate, truth):
+    """``_is`` for quaternions, where q and -q are the same rotation."""
+    candidate = candidate if np.dot(candidate, truth) >= 0 else -candidate
+    return _is(got, candidate, truth) or _is(-np.asarray(got, dtype=float), candidate, truth)
+
+
+def _quat_hint(got, q, d, fallback=""):
+    """Name the mistake when ``got`` is one of the typical wrong versions of q ⊞ δ."""
+    d = np.asarray(d, dtype=float)
+    truth = _qmul(q, _exp_q(d))
+    first_order = _qmul(q, np.concatenate([[1.0], d / 2.0]))
+    candidates = [
+        (first_order, "that is q ⊗ [1, δ/2] without normalising: its norm is √(1 + |δ|²/4), not 1; "
+         "use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]"),
+        (first_order / np.linalg.norm(first_order), "that is q ⊗ [1, δ/2] rescaled to unit length: a unit "
+         "quaternion, but it turns by 2·atan(|δ|/2) instead of |δ|; use the exact Exp_q(δ) = "
+         "[cos(|δ|/2), sin(|δ|/2) δ/|δ|]"),
+        (_qmul(q, _exp_q(2.0 * d)), "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and "
+         "sin(|δ|/2)"),
+        (_qmul(_exp_q(d), q), "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the right: q ⊗ Exp_q(δ)")]
+    for value, hint in candidates:
+        if _is_quat(got, value, truth):
+            return hint
+    if _is_quat(got, truth[[1, 2, 3, 0]], truth):
+        return "scalar last? The course stores quaternions scalar first, [w, x, y, z]"
     length = np.linalg.norm(got)
     if abs(length - 1.0) > 1e-9:
-        return f"|result| = {length:.6f}: q ⊗ [1, δ/2] is not a unit quaternion; use the exact Exp_q(δ) or normalise"
-    if _same_quat(got, _qmul(q, _exp_q(2.0 * np.asarray(d))), 1e-8):
-        return "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and sin(|δ|/2)"
-    if _same_quat(got, _qmul(_exp_q(d), q), 1e-8):
-        return "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the right: q ⊗ Exp_q(δ)"
-    if _same_quat(got[[3, 0, 1, 2]], _qmul(q, _exp_q(d)), 1e-8):
-        return "scalar last? The course stores quaternions scalar first, [w, x, y, z]"
-    return ""
+        return f"|result| = {length:.6f}: not a unit quaternion; q ⊗ Exp_q(δ) always has norm 1"
+    return fallback
 
 
 @exercise("quat_boxplus", weight=3)
@@ -234,8 +299,8 @@ def test_quat_boxplus_unit_norm(student):
     for q, d in zip(_random_quats(8, 633), _rotvecs(8, 634, 1.0, 6.0)):
         got = expect_array(student.quat_boxplus(q, d), (4,), "quat_boxplus(q, δ)")
         norm = np.linalg.norm(got)
-        expect(abs(norm - 1.0) <= 1e-12, f"|quat_boxplus(q, {fmt(d)})| = {norm:.9f}",
-               "q ⊗ [1, δ/2] has norm √(1 + |δ|²/4): use the exact Exp_q(δ) or normalise")
+        expect(abs(norm - 1.0) <= 1e-12, f"|quat_boxplus(q, {fmt(d)})| = {norm:.9f} (off by {abs(norm - 1):.2g})",
+               _quat_hint(got, q, d))
 
 
 @exercise("quat_boxplus", weight=1)
@@ -244,7 +309,7 @@ def test_quat_boxplus_agrees_with_matrices(student):
     for q, d in zip(_random_quats(8, 635), _rotvecs(8, 636, 0.1, 3.0)):
         got = expect_array(student.quat_boxplus(q, d), (4,), "quat_boxplus(q, δ)")
         expect(abs(np.linalg.norm(got) - 1.0) <= 1e-9, f"|quat_boxplus(q, δ)| = {np.linalg.norm(got):.6f}",
-               "return a unit quaternion")
+               _quat_hint(got, q, d, "return a unit quaternion"))
         expect_close(_quat_matrix(got), _quat_matrix(q) @ _exp(d), 1e-9, "R(quat_boxplus(q, δ))",
                      _quat_hint(got, q, d))
 
@@ -253,19 +318,71 @@ def test_quat_boxplus_agrees_with_matrices(student):
 def test_quat_boxplus_tiny_and_zero(student):
     """δ = 0 returns q and a tiny δ (1e-9 rad) is exact, with no NaN"""
     q = _random_quats(1, 637)[0]
-    got = expect_array(student.quat_boxplus(q, np.zeros(3)), (4,), "quat_boxplus(q, 0)")
+    got = _array(student.quat_boxplus(q, np.zeros(3)), (4,), "quat_boxplus(q, 0)",
+                 "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle")
     expect(_same_quat(got, q, 1e-14), f"quat_boxplus(q, 0) = {fmt(got)}, expected q = {fmt(q)}",
-           "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle")
+           "a zero step must return q itself (or -q)")
     d = 1e-9 * _unit(638, 1)[0]
     got = expect_array(student.quat_boxplus(q, d), (4,), "quat_boxplus(q, δ) for |δ| = 1e-9")
     expected = _qmul(q, _exp_q(d))
-    expect(_same_quat(got, expected, 1e-15), f"quat_boxplus(q, δ) for |δ| = 1e-9 is off: got {fmt(got, 12)}",
-           "below a tiny angle, Exp_q(δ) = [1, δ/2] to machine precision")
+    error = min(np.max(np.abs(got - expected)), np.max(np.abs(got + expected)))
+    expect(_same_quat(got, expected, 1e-15), f"quat_boxplus(q, δ) for |δ| = 1e-9 is off by {error:.2g} "
+           f"(tolerance 1e-15)", _quat_hint(got, q, d, "below a tiny angle, Exp_q(δ) = [1, δ/2] to machine precision"))
 
 
 # ---------------------------------------------------------------- numerical_jacobian
 SMOOTH_POINTS = [np.array([0.7, -1.3, 2.1]), np.array([2.0, -1.5, 0.0]), np.array([1.5, 2.5, -3.0]),
                  np.array([-0.4, 0.9, 0.3])]
+
+
+def _forward_differences(f, x, h, boxplus=None):
+    """The grader's own forward differences with one fixed step ``h`` (a candidate for a wrong step size)."""
+    if boxplus is None:
+        x = np.asarray(x, dtype=float)
+        f0 = np.asarray(f(x), dtype=float)
+        columns = []
+        for j in range(x.size):
+            moved = x.copy()
+            moved[j] += h
+            columns.append((np.asarray(f(moved), dtype=float) - f0) / h)
+        return np.column_stack(columns)
+    f0 = np.asarray(f(x), dtype=float)
+    return np.column_stack([(np.asarray(f(boxplus(x, h * e)), dtype=float) - f0) / h for e in np.eye(3)])
+
+
+def _step_hint(got, exact, f, x, boxplus=None, fallback=JACOBIAN_STEP_HINT):
+    """Name a fixed step that is far too large or far too small when ``got`` is exactly the forward
+    differences with that step; the transpose; else ``fallback``."""
+    got, exact = np.asarray(got, dtype=float), np.asarray(exact, dtype=float)
+    if got.shape != exact.shape or not np.all(np.isfinite(got)):
+        return fallback
+    error = float(np.max(np.abs(got - exact)))
+    if got.shape[0] == got.shape[1] and float(np.max(np.abs(got.T - exact))) <= 1e-3 * error:
+        return "row i is output f_i, column j is the direction δ_j: that is the transpose of the Jacobian"
+    for k in list(range(1, 5)) + list(range(10, 16)):
+        h = 10.0 ** -k
+        if float(np.max(np.abs(got - _forward_differences(f, x, h, boxplus)))) <= 1e-3 * error:
+            if h >= 1e-4:
+                return (f"that is forward differences with a fixed step h = {h:g}, a step far too large: the slope is "
+                        "biased by about h/2 · f'' (the right side of the V-curve); use δ_j = max(|1e-4 x_j|, 1e-6), "
+                        "a step near √ε ≈ 1e-8, or central differences")
+            return (f"that is forward differences with a fixed step h = {h:g}, a step far too small: rounding noise "
+                    "of about ε·|f|/h swamps the slope (the left side of the V-curve); use δ_j = max(|1e-4 x_j|, "
+                    "1e-6) or a step near √ε ≈ 1e-8")
+    return fallback
+
+
+def _floor_hint(x):
+    """Said when the columns with NaN or inf are exactly those where x_j = 0 (a relative step with no floor)."""
+    x = np.asarray(x, dtype=float)
+
+    def hint(value):
+        bad = ~np.all(np.isfinite(value), axis=0)
+        if value.ndim == 2 and value.shape[1] == x.size and np.any(bad) and np.array_equal(bad, x == 0.0):
+            return ("NaN exactly in the columns where x_j = 0: the relative step 1e-4·|x_j| is 0 there and the slope "
+                    "0/0; keep the floor, δ_j = max(|1e-4 x_j|, 1e-6)")
+        return ""
+    return hint
 
 
 def _matrix_entries_hint(value):
@@ -282,9 +399,10 @@ def test_numerical_jacobian_vector_function(student):
         value = student.numerical_jacobian(Probe("smooth_vector_function"), x)
         expect(np.shape(value) != (3, 2), "returned shape 3×2 for f: R³ → R²: the Jacobian is transposed",
                "row i is output f_i, column j is input x_j: shape (len(f(x)), n)")
-        got = expect_array(value, (2, 3), f"numerical_jacobian(f, {fmt(x)})")
+        got = _array(value, (2, 3), f"numerical_jacobian(f, {fmt(x)})", _floor_hint(x))
         expected = probes.smooth_vector_function_jacobian(x)
-        expect_close(got, expected, 2e-3 * (1.0 + np.max(np.abs(expected))), f"numerical_jacobian(f, {fmt(x)})")
+        expect_close(got, expected, 2e-3 * (1.0 + np.max(np.abs(expected))), f"numerical_jacobian(f, {fmt(x)})",
+                     _step_hint(got, expected, probes.smooth_vector_function, x))
 
 
 def _expect_accurate_jacobian(got, x, what, ref):
@@ -296,15 +414,15 @@ def _expect_accurate_jacobian(got, x, what, ref):
     error = float(np.max(np.abs(got - exact)))
     expect(error <= allowed, f"{what} is off by {error:.2g} from the analytic Jacobian; the lecture's forward "
            f"steps are off by {(allowed - 1e-8 * (1 + np.max(np.abs(exact)))) / 2:.2g} (allowed: {allowed:.2g})",
-           JACOBIAN_STEP_HINT)
+           _step_hint(got, exact, probes.smooth_vector_function, x))
 
 
 @exercise("numerical_jacobian", weight=2)
 def test_numerical_jacobian_step_rule(student, ref):
     """at least as accurate as forward differences with the lecture's steps δ_j = max(|1e-4 x_j|, 1e-6)"""
     for x in SMOOTH_POINTS:
-        got = expect_array(student.numerical_jacobian(Probe("smooth_vector_function"), x), (2, 3),
-                           f"numerical_jacobian(f, {fmt(x)})")
+        got = _array(student.numerical_jacobian(Probe("smooth_vector_function"), x), (2, 3),
+                     f"numerical_jacobian(f, {fmt(x)})", _floor_hint(x))
         _expect_accurate_jacobian(got, x, f"numerical_jacobian(f, {fmt(x)})", ref)
 
 
@@ -312,8 +430,8 @@ def test_numerical_jacobian_step_rule(student, ref):
 def test_numerical_jacobian_at_zero(student, ref):
     """works at x = 0 (no 0/0: the lecture's step has the floor 1e-6), as accurately as the lecture's rule"""
     x = np.zeros(3)
-    got = expect_array(student.numerical_jacobian(Probe("smooth_vector_function"), x), (2, 3),
-                       "numerical_jacobian(f, 0)")
+    got = _array(student.numerical_jacobian(Probe("smooth_vector_function"), x), (2, 3),
+                 "numerical_jacobian(f, 0)", _floor_hint(x))
     _expect_accurate_jacobian(got, x, "numerical_jacobian(f, 0)", ref)
 
 
@@ -327,6 +445,9 @@ def _manifold_tol(p):
     return 5e-6 * (1.0 + np.linalg.norm(p))
 
 
+_MANIFOLD_HINT = "column j: (f(boxplus(x, h e_j)) - f(x)) / h, forward differences with a small h (e.g. 1e-6)"
+
+
 @exercise("numerical_jacobian", weight=2)
 def test_numerical_jacobian_rotation_right(student):
     """with a right boxplus, the Jacobian of R ↦ R p is -R [p]× (3 columns, one per δ_j)"""
@@ -335,9 +456,11 @@ def test_numerical_jacobian_rotation_right(student):
         expect(not _matrix_entries_hint(value), f"returned shape {np.shape(value)} for a rotation",
                _matrix_entries_hint(value))
         got = expect_array(value, (3, 3), "numerical_jacobian(R ↦ R p, R, so3_plus_right)")
+        exact = -R @ _skew(p)
         hint = "looks like the left-perturbation Jacobian: use the boxplus you are given" \
-            if np.allclose(got, -_skew(R @ p), atol=1e-4) else "column j: (f(boxplus(x, h e_j)) - f(x)) / h"
-        expect_close(got, -R @ _skew(p), _manifold_tol(p), "numerical_jacobian(R ↦ R p, R, right ⊞)", hint)
+            if np.max(np.abs(got + _skew(R @ p))) <= _manifold_tol(p) else \
+            _step_hint(got, exact, lambda X: probes.rotate_point_by(p, X), R, probes.so3_plus_right, _MANIFOLD_HINT)
+        expect_close(got, exact, _manifold_tol(p), "numerical_jacobian(R ↦ R p, R, right ⊞)", hint)
 
 
 @exercise("numerical_jacobian", weight=1)
@@ -348,8 +471,11 @@ def test_numerical_jacobian_rotation_left(student):
         expect(not _matrix_entries_hint(value), f"returned shape {np.shape(value)} for a rotation",
                _matrix_entries_hint(value))
         got = expect_array(value, (3, 3), "numerical_jacobian(R ↦ R p, R, so3_plus_left)")
-        expect_close(got, -_skew(R @ p), _manifold_tol(p), "numerical_jacobian(R ↦ R p, R, left ⊞)",
-                     "perturb through the boxplus you are given: boxplus(x, h e_j)")
+        exact = -_skew(R @ p)
+        hint = "looks like the right-perturbation Jacobian: perturb through the boxplus you are given" \
+            if np.max(np.abs(got + R @ _skew(p))) <= _manifold_tol(p) else \
+            _step_hint(got, exact, lambda X: probes.rotate_point_by(p, X), R, probes.so3_plus_left, _MANIFOLD_HINT)
+        expect_close(got, exact, _manifold_tol(p), "numerical_jacobian(R ↦ R p, R, left ⊞)", hint)
 
 
 @exercise("numerical_jacobian", weight=1)
@@ -360,8 +486,10 @@ def test_numerical_jacobian_unrotate(student):
         expect(not _matrix_entries_hint(value), f"returned shape {np.shape(value)} for a rotation",
                _matrix_entries_hint(value))
         got = expect_array(value, (3, 3), "numerical_jacobian(R ↦ Rᵀ p, R, so3_plus_right)")
-        expect_close(got, _skew(R.T @ p), _manifold_tol(p), "numerical_jacobian(R ↦ Rᵀ p, R, right ⊞)",
-                     "column j: (f(boxplus(x, h e_j)) - f(x)) / h, forward differences with h = 1e-6")
+        exact = _skew(R.T @ p)
+        expect_close(got, exact, _manifold_tol(p), "numerical_jacobian(R ↦ Rᵀ p, R, right ⊞)",
+                     _step_hint(got, exact, lambda X: probes.unrotate_point_by(p, X), R, probes.so3_plus_right,
+                                _MANIFOLD_HINT))
 
 
 @exercise("numerical_jacobian", weight=1)
@@ -374,17 +502,20 @@ def test_numerical_jacobian_quaternion(student):
         expect(not _matrix_entries_hint(value), f"returned shape {np.shape(value)} for a quaternion",
                _matrix_entries_hint(value))
         got = expect_array(value, (3, 3), "numerical_jacobian(q ↦ R(q) p, q, quat_plus_right)")
-        expect_close(got, -_quat_matrix(q) @ _skew(p), _manifold_tol(p), "numerical_jacobian(q ↦ R(q) p, q, ⊞)",
-                     "column j: (f(boxplus(x, h e_j)) - f(x)) / h, forward differences with h = 1e-6")
+        exact = -_quat_matrix(q) @ _skew(p)
+        expect_close(got, exact, _manifold_tol(p), "numerical_jacobian(q ↦ R(q) p, q, ⊞)",
+                     _step_hint(got, exact, lambda X: probes.quat_rotate_point_by(p, X), q, probes.quat_plus_right,
+                                _MANIFOLD_HINT))
 
 
 @exercise("numerical_jacobian", weight=1)
 def test_numerical_jacobian_shapes(student):
     """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation"""
     x = np.array([3.0, -0.2, 0.0, 1e-3, 40.0])
-    got = expect_array(student.numerical_jacobian(Probe("identity_function"), x), (5, 5),
-                       "numerical_jacobian(identity, x in R⁵)")
-    expect_close(got, np.eye(5), 1e-6, "numerical_jacobian of the identity map")
+    got = _array(student.numerical_jacobian(Probe("identity_function"), x), (5, 5),
+                 "numerical_jacobian(identity, x in R⁵)", _floor_hint(x))
+    expect_close(got, np.eye(5), 1e-6, "numerical_jacobian of the identity map",
+                 _step_hint(got, np.eye(5), probes.identity_function, x))
     R = random_rotations(1, seed=649)[0]
     value = student.numerical_jacobian(Probe("rotate_point_by", [1.0, 2.0, 3.0]), R, Probe("so3_plus_right"))
     expect(np.shape(value) == (3, 3), f"returned shape {np.shape(value)} for f: SO(3) → R³, expected (3, 3)",
@@ -393,17 +524,13 @@ def test_numerical_jacobian_shapes(student):
 
 # ---------------------------------------------------------------- jacobian_rotate_point
 def _rotate_point_hint(got, R, p):
-    if np.allclose(got, -_skew(R @ p), atol=1e-8):
-        return "that is -[R p]×, the Jacobian of the left perturbation; the right one is -R [p]×"
-    if np.allclose(got, R @ _skew(p), atol=1e-8):
-        return "the sign is flipped: [δ]× p = -[p]× δ, so the Jacobian is -R [p]×"
-    if np.allclose(got, -_skew(p) @ R, atol=1e-8):
-        return "the factors are in the wrong order: -R [p]×, not -[p]× R"
-    if np.allclose(got, -_skew(p), atol=1e-8):
-        return "R is missing: the Jacobian is -R [p]×"
-    if np.allclose(got, (-R @ _skew(p)).T, atol=1e-8):
-        return "that is the transpose of -R [p]×: row i is output i, column j is δ_j"
-    return ""
+    """Name the mistake when ``got`` is one of the typical wrong versions of -R [p]×."""
+    return _diagnose(got, -R @ _skew(p), [
+        (-_skew(R @ p), "that is -[R p]×, the Jacobian of the left perturbation; the right one is -R [p]×"),
+        (R @ _skew(p), "the sign is flipped: [δ]× p = -[p]× δ, so the Jacobian is -R [p]×"),
+        (-_skew(p) @ R, "the factors are in the wrong order: -R [p]×, not -[p]× R"),
+        (-_skew(p), "R is missing: the Jacobian is -R [p]×"),
+        ((-R @ _skew(p)).T, "that is the transpose of -R [p]×: row i is output i, column j is δ_j")])
 
 
 @exercise("jacobian_rotate_point", weight=3)
@@ -417,14 +544,15 @@ def test_jacobian_rotate_point_formula(student):
 @exercise("jacobian_rotate_point", weight=2)
 def test_jacobian_rotate_point_linearises(student):
     """R Exp(δ) p ≈ R p + J δ with a remainder of order |δ|² (|δ| = 1e-3 and 1e-4)"""
-    directions = _unit(653, 6)
+    directions = _unit(659, 6)          # not 653: the points are drawn with that seed, and δ ∥ p would hide J
     for (R, p), direction in zip(_rotation_cases(652), directions):
         J = expect_array(student.jacobian_rotate_point(R, p), (3, 3), "jacobian_rotate_point(R, p)")
         for scale in (1e-3, 1e-4):
             step = scale * direction
             remainder = np.linalg.norm(R @ _exp(step) @ p - R @ p - J @ step)
             expect(remainder <= np.linalg.norm(p) * scale**2 + 1e-13,
-                   f"R Exp(δ) p - R p - J δ = {remainder:.2g} for |δ| = {scale:g}: not of order |δ|²",
+                   f"R Exp(δ) p - R p - J δ = {remainder:.2g} for |δ| = {scale:g}: not of order |δ|² "
+                   f"(allowed {np.linalg.norm(p) * scale**2 + 1e-13:.2g})",
                    _rotate_point_hint(J, R, p))
 
 
@@ -454,23 +582,78 @@ def _jr_series(w):
     return np.eye(3) - W / 2.0 + W @ W / 6.0
 
 
-def _expect_identity_at_zero(value, what, hint):
+def _jr_coefficients(theta, swapped=False):
+    """a = (1 - cos θ)/θ², b = (θ - sin θ)/θ³, with their series below 1e-4 rad."""
+    if theta < 1e-4:
+        a, b = 0.5 - theta**2 / 24.0, 1.0 / 6.0 - theta**2 / 120.0
+    else:
+        a, b = 2.0 * np.sin(theta / 2.0) ** 2 / theta**2, (theta - np.sin(theta)) / theta**3
+    return (b, a) if swapped else (a, b)
+
+
+def _jr(w, swapped=False):
+    """Jr(w) = I - a [w]× + b [w]×², written out here (``swapped``: the two coefficients exchanged)."""
+    w = np.asarray(w, dtype=float)
+    a, b = _jr_coefficients(np.linalg.norm(w), swapped)
+    W = _skew(w)
+    return np.eye(3) - a * W + b * W @ W
+
+
+def _jr_naive(w):
+    """The closed form with no small-angle branch, as a student writes it: 1 - cos θ loses its digits."""
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = _skew(w)
+    return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+
+
+JR_FORMULA = "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²"
+
+
+def _jr_candidates(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    candidates = [
+        (_jr(-w), "that is Jr(w)ᵀ = Jr(-w) = Jl(w), the left Jacobian: the [w]× term has the wrong sign"),
+        (_jr(w, swapped=True), "the coefficients are swapped: (1 - cos θ)/θ² multiplies [w]× and (θ - sin θ)/θ³ "
+         "multiplies [w]×²"),
+        (np.eye(3), f"returned I at θ = {theta:.2g}: the first-order term -[w]×/2 is missing; below a small angle use "
+         "the series I - [w]×/2 + [w]×²/6"),
+        (_jr_naive(w), "the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, so "
+         "(1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a threshold")]
+    return candidates
+
+
+def _jr_hint(got, w, fallback=JR_FORMULA):
+    return _diagnose(got, _jr(w), _jr_candidates(w), fallback)
+
+
+def _expect_identity_at_zero(value, what, nan_hint):
     problem = shape_problem(value, (3, 3))
     if problem:
-        raise Wrong(f"{what} {problem}", hint)
-    expect_close(value, np.eye(3), 1e-15, what, hint)
+        raise Wrong(f"{what} {problem}", nan_hint if problem == "returned NaN or inf values" else "")
+    expect_close(value, np.eye(3), 1e-15, what, "at w = 0 there is nothing to correct: the result is the identity")
 
 
-def _expect_tiny_angle(got, w, expected, what, hint, sign):
-    """Compare at a tiny angle; on failure, report the coefficient of the [w]× term."""
-    angle = np.linalg.norm(w)
-    error = float(np.max(np.abs(got - expected)))
-    if error <= 1e-6 * angle + 1e-15:
+def _expect_tiny_angles(results, expected, candidates, what, fallback, sign):
+    """Compare at tiny angles (``results``: (w, got) pairs); on failure, report the coefficient of the [w]× term
+    and name the candidate mistake that ``got`` equals at every failing angle."""
+    failing = [(w, got, truth) for (w, got), truth in zip(results, expected)
+               if not float(np.max(np.abs(got - truth))) <= 1e-6 * np.linalg.norm(w) + 1e-15]
+    if not failing:
         return
+    w, got, truth = failing[0]
+    angle = np.linalg.norm(w)
+    error = float(np.max(np.abs(got - truth)))
     anti = 0.5 * (got - got.T)
     coefficient = np.dot([anti[2, 1], anti[0, 2], anti[1, 0]], w) / angle**2 + 0.0
-    raise Wrong(f"{what}: the coefficient of [w]× came out as {coefficient:.9g}, expected {sign * 0.5:g} "
-                f"(max error {error:.2g}, tolerance {1e-6 * angle + 1e-15:.2g})", hint)
+    hint = fallback
+    for index, (_, text) in enumerate(candidates(w)):
+        if all(_is(g, candidates(v)[index][0], t) for v, g, t in failing):
+            hint = text
+            break
+    raise Wrong(f"{what} at angle {angle:g}: the coefficient of [w]× came out as {coefficient:.9g}, expected "
+                f"{sign * 0.5:g} (off by {error:.2g}, tolerance {1e-6 * angle + 1e-15:.2g})", hint)
 
 
 def _jacobian_side_hint(got, w, dw):
@@ -486,9 +669,8 @@ def test_right_jacobian_matches_reference(student, ref):
     """matches Jr(w) for 20 random w with angles from 1e-3 to π"""
     for w in _rotvecs(20, 661, 1e-3, np.pi):
         got = expect_array(student.right_jacobian_so3(w), (3, 3), "right_jacobian_so3(w)")
-        hint = ("that is Jr(w)ᵀ = Jl(w), the left Jacobian: the [w]× term has the wrong sign"
-                if np.allclose(got, ref.right_jacobian_so3(w).T, atol=1e-8) else "")
-        expect_close(got, ref.right_jacobian_so3(w), 1e-9, f"right_jacobian_so3 at angle {np.linalg.norm(w):.4f}", hint)
+        expect_close(got, ref.right_jacobian_so3(w), 1e-9, f"right_jacobian_so3 at angle {np.linalg.norm(w):.4f}",
+                     _jr_hint(got, w))
 
 
 @exercise("right_jacobian_so3", weight=2)
@@ -502,7 +684,7 @@ def test_right_jacobian_linearises(student):
         leftover = np.linalg.norm(_log((_exp(w) @ _exp(J @ dw)).T @ _exp(w + dw)))
         expect(leftover <= np.dot(dw, dw) + 1e-13,
                f"at angle {np.linalg.norm(w):.4f}, Exp(w) Exp(J dw) misses Exp(w + dw) by {leftover:.2g} rad "
-               f"for |dw| = 1e-4 (expected below 1e-8)", _jacobian_side_hint(J, w, dw))
+               f"for |dw| = 1e-4 (expected below 1e-8)", _jr_hint(J, w, _jacobian_side_hint(J, w, dw) or JR_FORMULA))
 
 
 @exercise("right_jacobian_so3", weight=1)
@@ -514,7 +696,8 @@ def test_right_jacobian_matches_finite_differences(student):
         R_inv = _exp(w).T
         numeric = np.column_stack([(_log(R_inv @ _exp(w + h * e)) - _log(R_inv @ _exp(w - h * e))) / (2 * h)
                                    for e in np.eye(3)])
-        expect_close(got, numeric, 1e-8, f"right_jacobian_so3 vs finite differences at angle {np.linalg.norm(w):.3f}")
+        expect_close(got, numeric, 1e-8, f"right_jacobian_so3 vs finite differences at angle {np.linalg.norm(w):.3f}",
+                     _jr_hint(got, w))
 
 
 @exercise("right_jacobian_so3", weight=2)
@@ -522,13 +705,12 @@ def test_right_jacobian_tiny_angles(student):
     """w = 0 gives I (no NaN); at 1e-12, 1e-9, 1e-8, 1e-7 rad the [w]× term is accurate to 6 digits"""
     _expect_identity_at_zero(student.right_jacobian_so3(np.zeros(3)), "right_jacobian_so3(0)",
                              "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle")
-    axes = _unit(667, 4)
-    for angle, axis in zip([1e-12, 1e-9, 1e-8, 1e-7], axes):
-        w = angle * axis
-        got = expect_array(student.right_jacobian_so3(w), (3, 3), f"right_jacobian_so3 at angle {angle:g}")
-        _expect_tiny_angle(got, w, _jr_series(w), f"right_jacobian_so3 at angle {angle:g}",
-                           "(1 - cos θ)/θ² loses its digits at tiny angles: use the Taylor series "
-                           "1/2 - θ²/24 + … below a threshold (and mind the sign: Jr = I - a [w]× + …)", sign=-1.0)
+    ws = [angle * axis for angle, axis in zip([1e-12, 1e-9, 1e-8, 1e-7], _unit(667, 4))]
+    results = [(w, expect_array(student.right_jacobian_so3(w), (3, 3), f"right_jacobian_so3 at angle "
+                                f"{np.linalg.norm(w):g}")) for w in ws]
+    _expect_tiny_angles(results, [_jr_series(w) for w in ws], _jr_candidates, "right_jacobian_so3",
+                        "Jr = I - a [w]× + b [w]×² with a → 1/2 and b → 1/6: below a small angle use the series "
+                        "a = 1/2 - θ²/24, b = 1/6 - θ²/120", sign=-1.0)
 
 
 @exercise("right_jacobian_so3", weight=1)
@@ -537,7 +719,8 @@ def test_right_jacobian_near_pi(student, ref):
     for offset, axis in zip([0.0, 1e-6, 1e-9], _unit(668, 3)):
         w = (np.pi - offset) * axis
         got = expect_array(student.right_jacobian_so3(w), (3, 3), f"right_jacobian_so3 at angle π - {offset:g}")
-        expect_close(got, ref.right_jacobian_so3(w), 1e-9, f"right_jacobian_so3 at angle π - {offset:g}")
+        expect_close(got, ref.right_jacobian_so3(w), 1e-9, f"right_jacobian_so3 at angle π - {offset:g}",
+                     _jr_hint(got, w))
 
 
 @exercise("right_jacobian_so3", weight=1)
@@ -546,22 +729,28 @@ def test_right_jacobian_identities(student):
     for w in _rotvecs(5, 669, 0.2, 3.0):
         J = expect_array(student.right_jacobian_so3(w), (3, 3), "right_jacobian_so3(w)")
         J_minus = expect_array(student.right_jacobian_so3(-w), (3, 3), "right_jacobian_so3(-w)")
-        expect_close(J @ w, w, 1e-10, "Jr(w) @ w", "Jr leaves w itself unchanged: [w]× w = 0")
-        expect_close(J_minus, J.T, 1e-10, "Jr(-w) against Jr(w)ᵀ")
+        expect_close(J @ w, w, 1e-10, "Jr(w) @ w", _jr_hint(J, w, "Jr leaves w itself unchanged: [w]× w = 0"))
+        expect_close(J_minus, J.T, 1e-10, "Jr(-w) against Jr(w)ᵀ", _jr_hint(J, w))
         expect_close(J_minus, _exp(w) @ J, 1e-10, "Jr(-w) against Exp(w) Jr(w)",
-                     "Jl(w) = Exp(w) Jr(w) holds for the right Jacobian only: check the sign of the [w]× term")
+                     _jr_hint(J, w, "Jl(w) = Exp(w) Jr(w) holds for the right Jacobian only: " + JR_FORMULA))
 
 
 # ---------------------------------------------------------------- right_jacobian_inv_so3
-def _inverse_hint(got, w, ref):
-    Jr = ref.right_jacobian_so3(w)
-    if np.allclose(got, Jr.T, atol=1e-8):
-        return "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
-    if np.allclose(got, Jr, atol=1e-8):
-        return "that is Jr(w) itself, not its inverse"
-    if np.allclose(got, np.linalg.inv(Jr.T), atol=1e-8):
-        return "that is the inverse of the left Jacobian: the [w]×/2 term has the wrong sign"
-    return ""
+JR_INV_FORMULA = "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²"
+
+
+def _inverse_candidates(w):
+    Jr = _jr(w)
+    W = _skew(w)
+    return [(Jr.T, "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"),
+            (Jr, "that is Jr(w) itself, not its inverse"),
+            (np.linalg.inv(Jr.T), "that is the inverse of the left Jacobian: the [w]×/2 term has the wrong sign"),
+            (np.eye(3) + 0.5 * W, "that is I + [w]×/2, only the first-order part: add the [w]×² term with the "
+             "coefficient 1/θ² - (1 + cos θ)/(2θ sin θ)")]
+
+
+def _inverse_hint(got, w, ref=None, fallback=JR_INV_FORMULA):
+    return _diagnose(got, np.linalg.inv(_jr(w)), _inverse_candidates(w), fallback)
 
 
 @exercise("right_jacobian_inv_so3", weight=2)
@@ -592,12 +781,13 @@ def test_right_jacobian_inv_tiny_angles(student):
     _expect_identity_at_zero(student.right_jacobian_inv_so3(np.zeros(3)), "right_jacobian_inv_so3(0)",
                              "the closed form is 0/0 at θ = 0: use the series 1/12 + θ²/720 of the [w]×² "
                              "coefficient below a small angle")
-    for angle, axis in zip([1e-12, 1e-9, 1e-7], _unit(674, 3)):
-        w = angle * axis
-        W = _skew(w)
-        got = expect_array(student.right_jacobian_inv_so3(w), (3, 3), f"right_jacobian_inv_so3 at angle {angle:g}")
-        _expect_tiny_angle(got, w, np.eye(3) + W / 2.0 + W @ W / 12.0, f"right_jacobian_inv_so3 at angle {angle:g}",
-                           "Jr⁻¹ = I + [w]×/2 + c [w]×²: use the series c = 1/12 + θ²/720 below a threshold", sign=1.0)
+    ws = [angle * axis for angle, axis in zip([1e-12, 1e-9, 1e-7], _unit(674, 3))]
+    results = [(w, expect_array(student.right_jacobian_inv_so3(w), (3, 3), f"right_jacobian_inv_so3 at angle "
+                                f"{np.linalg.norm(w):g}")) for w in ws]
+    expected = [np.eye(3) + _skew(w) / 2.0 + _skew(w) @ _skew(w) / 12.0 for w in ws]
+    _expect_tiny_angles(results, expected, _inverse_candidates, "right_jacobian_inv_so3",
+                        "Jr⁻¹ = I + [w]×/2 + c [w]×² with c → 1/12: below a small angle use the series "
+                        "c = 1/12 + θ²/720", sign=1.0)
 
 
 @exercise("right_jacobian_inv_so3", weight=1)

@@ -15,10 +15,11 @@ function's answer for arrays.
 
 import numpy as np
 from scipy.linalg import expm
+from scipy.spatial.transform import Rotation
 
 from coursekit.diagnose import as_float_array
 
-from .helpers import (exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, random_rotations,
+from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, random_rotations,
                       rotation_problem)
 
 TOL = 1e-9
@@ -55,6 +56,14 @@ def _exp(xi):
     return expm(_twist_matrix(np.asarray(xi, dtype=float)))
 
 
+def _v_matrix(phi):
+    """V(phi) from expm: the top-right block of exp of [[W, e_j], [0, 0]] is V e_j."""
+    V = np.empty((3, 3))
+    for j in range(3):
+        V[:, j] = _exp(np.concatenate([np.eye(3)[j], phi]))[:3, 3]
+    return V
+
+
 def _unit(v):
     v = np.asarray(v, dtype=float)
     return v / np.linalg.norm(v)
@@ -69,8 +78,10 @@ def _random_twists(count, seed, max_angle):
     return [_twist(rng.normal(size=3), rng.uniform(0.0, max_angle), rng.normal(size=3)) for _ in range(count)]
 
 
-SERIES_HINT_V = ("below θ = 1e-2 use the Taylor series of the two coefficients of V: "
-                 "the closed forms are 0/0 at θ = 0 and lose digits just above it")
+SERIES_HINT_V = ("below θ = 1e-2 use the Taylor series of the two coefficients of V (1/2 - θ²/24, 1/6 - θ²/120): "
+                 "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2")
+SERIES_NAN_HINT_V = ("NaN or inf at a tiny angle: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
+                     "below θ = 1e-2 use their Taylor series (1/2 - θ²/24, 1/6 - θ²/120)")
 SERIES_HINT_C = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: "
                  "the closed form is 0/0 at θ = 0 and cancels catastrophically just above it")
 
@@ -80,6 +91,19 @@ def _expect_finite(value, what, hint):
     numbers = as_float_array(value)
     if numbers is not None:
         expect(bool(np.all(np.isfinite(numbers))), f"{what} returned NaN or inf values", hint)
+
+
+def _close(a, b, tol=1e-9):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.max(np.abs(a - b), initial=0.0) <= tol)
+
+
+def _first_match(got, truth, candidates, general):
+    """The hint of the first candidate (a mistake's value computed from the inputs) that ``got`` equals."""
+    for candidate, hint in candidates:
+        if not _close(candidate, truth, 1e-6) and _close(got, candidate):
+            return hint
+    return general
 
 
 def _expect_pose(T, what):
@@ -97,7 +121,16 @@ def test_make_pose_blocks(student):
     for R in random_rotations(10, seed=702):
         t = rng.normal(size=3)
         got = expect_array(student.make_pose(R, t), (4, 4), "make_pose(R, t)")
-        hint = "t belongs in the last column, not the bottom row" if np.allclose(got, _pose(R, t).T) else ""
+        bottom_row = np.eye(4)
+        bottom_row[:3, :3], bottom_row[3, :3] = R, t
+        no_one = _pose(R, t)
+        no_one[3, 3] = 0.0
+        hint = _first_match(got, _pose(R, t), [
+            (_pose(R, t).T, "t belongs in the last column, not the bottom row (this is the transpose of T)"),
+            (bottom_row, "t belongs in the last column, not the bottom row"),
+            (_pose(R.T, t), "the top-left block holds Rᵀ: copy R itself, not its transpose"),
+            (no_one, "T[3, 3] is 0: a pose's bottom row is [0, 0, 0, 1] (start from np.eye(4), not np.zeros)"),
+        ], "T = [[R, t], [0, 0, 0, 1]]: R in T[:3, :3], t in T[:3, 3], and T[3] = [0, 0, 0, 1]")
         expect_close(got, _pose(R, t), 1e-12, "make_pose(R, t)", hint)
 
 
@@ -109,17 +142,22 @@ def test_make_pose_accepts_lists(student):
 
 
 # ---------------------------------------------------------------- pose_inverse
+def _inverse_hint(got, T):
+    R, t = T[:3, :3], T[:3, 3]
+    return _first_match(got, _inverse(T), [
+        (T.T, "that is the plain transpose of T: a pose is not orthogonal; only the rotation block is transposed"),
+        (_pose(R.T, -t), "the translation must be turned as well as negated: -Rᵀ t"),
+        (_pose(R.T, t), "kept t unchanged: the inverse translation is -Rᵀ t (undo the shift, then the turn)"),
+        (_pose(R, -R @ t), "the rotation block of the inverse is Rᵀ, not R (and its translation -Rᵀ t)"),
+    ], "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
+
+
 @exercise("pose_inverse", weight=3)
 def test_pose_inverse_formula(student):
     """returns [[Rᵀ, -Rᵀ t], [0, 0, 0, 1]] for 20 random poses"""
     for T in _random_poses(20, seed=711):
         got = expect_array(student.pose_inverse(T), (4, 4), "pose_inverse(T)")
-        hint = ""
-        if np.allclose(got, T.T):
-            hint = "that is the transpose of T: a pose is not orthogonal; only the rotation block is transposed"
-        elif np.allclose(got[:3, 3], -T[:3, 3]):
-            hint = "the translation must be turned as well as negated: -Rᵀ t"
-        expect_close(got, _inverse(T), TOL, "pose_inverse(T)", hint)
+        expect_close(got, _inverse(T), TOL, "pose_inverse(T)", _inverse_hint(got, T))
 
 
 @exercise("pose_inverse", weight=2)
@@ -127,7 +165,7 @@ def test_pose_inverse_undoes(student):
     """T @ pose_inverse(T) and pose_inverse(T) @ T are the identity; the inverse of the inverse is T"""
     for T in _random_poses(10, seed=712, scale=5.0):
         inverse = expect_array(student.pose_inverse(T), (4, 4), "pose_inverse(T)")
-        expect_close(T @ inverse, np.eye(4), TOL, "T @ pose_inverse(T)")
+        expect_close(T @ inverse, np.eye(4), TOL, "T @ pose_inverse(T)", _inverse_hint(inverse, T))
         expect_close(inverse @ T, np.eye(4), TOL, "pose_inverse(T) @ T")
         again = expect_array(student.pose_inverse(inverse), (4, 4), "pose_inverse(pose_inverse(T))")
         expect_close(again, T, TOL, "pose_inverse(pose_inverse(T))")
@@ -141,18 +179,29 @@ def test_pose_inverse_of_a_chain(student):
         whole = expect_array(student.pose_inverse(T_ab @ T_bc), (4, 4), "pose_inverse(T_ab @ T_bc)")
         parts = (expect_array(student.pose_inverse(T_bc), (4, 4), "pose_inverse(T_bc)")
                  @ expect_array(student.pose_inverse(T_ab), (4, 4), "pose_inverse(T_ab)"))
-        expect_close(whole, parts, TOL, "pose_inverse(T_ab T_bc) vs pose_inverse(T_bc) pose_inverse(T_ab)")
+        expect_close(whole, parts, TOL, "pose_inverse(T_ab T_bc) vs pose_inverse(T_bc) pose_inverse(T_ab)",
+                     _inverse_hint(whole, T_ab @ T_bc))
 
 
 # ---------------------------------------------------------------- pose_compose
+def _compose_hint(got, T_ab, T_bc):
+    added = T_ab @ T_bc
+    added[:3, 3] = T_ab[:3, 3] + T_bc[:3, 3]
+    return _first_match(got, T_ab @ T_bc, [
+        (T_bc @ T_ab, "the order is reversed: T_ac = T_ab @ T_bc"),
+        (T_ab * T_bc, "* multiplies entry by entry: compose poses with the matrix product @"),
+        (added, "t_ab + t_bc: t_bc must be turned by R_ab first, t_ac = R_ab t_bc + t_ab"),
+        (T_ab.T @ T_bc, "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"),
+    ], "T_ac = T_ab @ T_bc: R_ac = R_ab R_bc, t_ac = R_ab t_bc + t_ab")
+
+
 @exercise("pose_compose", weight=3)
 def test_pose_compose_random(student):
     """T_ac = T_ab T_bc for 20 random pairs"""
     poses = _random_poses(40, seed=721)
     for T_ab, T_bc in zip(poses[::2], poses[1::2]):
         got = expect_array(student.pose_compose(T_ab, T_bc), (4, 4), "pose_compose(T_ab, T_bc)")
-        hint = "the order is reversed: T_ac = T_ab @ T_bc" if np.allclose(got, T_bc @ T_ab) else ""
-        expect_close(got, T_ab @ T_bc, TOL, "pose_compose(T_ab, T_bc)", hint)
+        expect_close(got, T_ab @ T_bc, TOL, "pose_compose(T_ab, T_bc)", _compose_hint(got, T_ab, T_bc))
 
 
 @exercise("pose_compose", weight=2)
@@ -164,7 +213,7 @@ def test_pose_compose_frame_chain(student):
     for p_c in points_c:
         p_w_two_steps = T_wr[:3, :3] @ (T_rc[:3, :3] @ p_c + T_rc[:3, 3]) + T_wr[:3, 3]
         expect_close(T_wc[:3, :3] @ p_c + T_wc[:3, 3], p_w_two_steps, TOL,
-                     "a camera point mapped with pose_compose(T_wr, T_rc)")
+                     "a camera point mapped with pose_compose(T_wr, T_rc)", _compose_hint(T_wc, T_wr, T_rc))
 
 
 @exercise("pose_compose", weight=1)
@@ -175,38 +224,76 @@ def test_pose_compose_laws(student):
     BC = expect_array(student.pose_compose(B, C), (4, 4), "pose_compose(B, C)")
     left = expect_array(student.pose_compose(AB, C), (4, 4), "pose_compose(AB, C)")
     right = expect_array(student.pose_compose(A, BC), (4, 4), "pose_compose(A, BC)")
-    expect_close(left, right, TOL, "(A B) C vs A (B C)")
+    expect_close(left, right, TOL, "(A B) C vs A (B C)", _compose_hint(AB, A, B))
     _expect_pose(AB, "pose_compose(A, B)")
     expect_close(expect_array(student.pose_compose(A, np.eye(4)), (4, 4), "pose_compose(A, I)"), A, TOL,
                  "pose_compose(A, I)")
 
 
 # ---------------------------------------------------------------- to_homogeneous
+ROW_HINT = "a row of ones was added below the points: append a column, the new coordinate belongs to every point (axis=-1)"
+
+
+def _homogeneous_hint(got, P):
+    ones = np.ones(P.shape[:-1] + (1,))
+    return _first_match(got, np.concatenate([P, ones], axis=-1), [
+        (np.concatenate([P, 0.0 * ones], axis=-1), "points get a 1; a trailing 0 marks a direction"),
+        (np.concatenate([ones, P], axis=-1), "the 1 goes last: [x, y, z] becomes [x, y, z, 1]"),
+    ], "each point [x, y, z] becomes [x, y, z, 1]")
+
+
 @exercise("to_homogeneous", weight=2)
 def test_to_homogeneous_rows(student):
     """(N, 3) → (N, 4): each row gets a trailing 1"""
     P = np.random.default_rng(731).normal(size=(7, 3))
-    got = expect_array(student.to_homogeneous(P), (7, 4), "to_homogeneous(P) for 7 points")
-    hint = "points get a 1; a trailing 0 marks a direction" if np.allclose(got[:, 3], 0.0) else ""
-    expect_close(got, np.column_stack([P, np.ones(7)]), 0.0, "to_homogeneous(P)", hint)
+    got = student.to_homogeneous(P)
+    expect(np.shape(got) != (8, 3), "to_homogeneous(P) for 7 points returned shape 8×3: a row was added below them",
+           ROW_HINT)
+    got = expect_array(got, (7, 4), "to_homogeneous(P) for 7 points")
+    expect_close(got, np.column_stack([P, np.ones(7)]), 0.0, "to_homogeneous(P)", _homogeneous_hint(got, P))
 
 
 @exercise("to_homogeneous", weight=2)
 def test_to_homogeneous_single(student):
     """(3,) → (4,) for a single point, and lists work"""
-    got = expect_array(student.to_homogeneous([1.5, -2.0, 0.25]), (4,), "to_homogeneous of one point")
-    hint = "points get a 1; a trailing 0 marks a direction" if got[3] == 0.0 else ""
-    expect_close(got, [1.5, -2.0, 0.25, 1.0], 0.0, "to_homogeneous([1.5, -2, 0.25])", hint)
+    got = student.to_homogeneous([1.5, -2.0, 0.25])
+    expect(np.shape(got) != (1, 4), "to_homogeneous of one point returned shape 1×4, expected 4",
+           "one point of shape (3,) became a batch of shape (1, 4) (np.atleast_2d / np.column_stack): "
+           "append along the last axis, np.concatenate([P, ones], axis=-1), so (3,) gives (4,)")
+    got = expect_array(got, (4,), "to_homogeneous of one point")
+    expect_close(got, [1.5, -2.0, 0.25, 1.0], 0.0, "to_homogeneous([1.5, -2, 0.25])",
+                 _homogeneous_hint(got, np.array([1.5, -2.0, 0.25])))
 
 
 @exercise("to_homogeneous", weight=1)
 def test_to_homogeneous_one_row(student):
     """keeps a batch of one point as a batch: (1, 3) → (1, 4)"""
-    got = expect_array(student.to_homogeneous(np.array([[3.0, 2.0, 1.0]])), (1, 4), "to_homogeneous of shape (1, 3)")
-    expect_close(got, [[3.0, 2.0, 1.0, 1.0]], 0.0, "to_homogeneous([[3, 2, 1]])")
+    got = student.to_homogeneous(np.array([[3.0, 2.0, 1.0]]))
+    expect(np.shape(got) != (2, 3), "to_homogeneous of shape (1, 3) returned shape 2×3: a row was added", ROW_HINT)
+    got = expect_array(got, (1, 4), "to_homogeneous of shape (1, 3)")
+    expect_close(got, [[3.0, 2.0, 1.0, 1.0]], 0.0, "to_homogeneous([[3, 2, 1]])",
+                 _homogeneous_hint(got, np.array([[3.0, 2.0, 1.0]])))
 
 
 # ---------------------------------------------------------------- from_homogeneous
+def _dehomogeneous_hint(got, P_h):
+    return _first_match(got, P_h[..., :3] / P_h[..., 3:], [
+        (P_h[..., :3], "divide by the last coordinate before dropping it"),
+        (P_h[..., 1:] / P_h[..., :1], "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"),
+        (P_h[..., :3] * P_h[..., 3:], "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"),
+    ], "[x, y, z, w] is the point [x/w, y/w, z/w]: divide each row by its own last coordinate")
+
+
+SINGLE_ONLY_HINT = ("P_h[:3] / P_h[3] indexes rows, so it works for one point only: index the last axis, "
+                    "P_h[..., :3] / P_h[..., 3:]")
+
+
+def _expect_rows(got, P_h, shape, what):
+    if P_h.ndim == 2 and np.shape(got) == (3, 4) and len(P_h) > 3 and _close(got, P_h[:3] / P_h[3]):
+        raise Wrong(f"{what} returned shape 3×4, expected {shape[0]}×3", SINGLE_ONLY_HINT)
+    return expect_array(got, shape, what)
+
+
 @exercise("from_homogeneous", weight=3)
 def test_from_homogeneous_divides(student):
     """(N, 4) → (N, 3), dividing each row by its last coordinate (scales 0.5, 2.5, -3, ...)"""
@@ -214,17 +301,16 @@ def test_from_homogeneous_divides(student):
     P = rng.normal(size=(6, 3))
     w = np.array([0.5, 2.5, -3.0, 1.0, 1e-3, 7.0])
     P_h = np.column_stack([P * w[:, None], w])
-    got = expect_array(student.from_homogeneous(P_h), (6, 3), "from_homogeneous(P_h)")
-    hint = "divide by the last coordinate before dropping it" if np.allclose(got, P_h[:, :3]) else ""
-    expect_close(got, P, 1e-12, "from_homogeneous(P_h)", hint)
+    got = _expect_rows(student.from_homogeneous(P_h), P_h, (6, 3), "from_homogeneous(P_h)")
+    expect_close(got, P, 1e-12, "from_homogeneous(P_h)", _dehomogeneous_hint(got, P_h))
 
 
 @exercise("from_homogeneous", weight=1)
 def test_from_homogeneous_single(student):
     """(4,) → (3,) for a single point"""
     got = expect_array(student.from_homogeneous([2.0, -4.0, 1.0, 2.0]), (3,), "from_homogeneous of one point")
-    hint = "divide by the last coordinate before dropping it" if np.allclose(got, [2.0, -4.0, 1.0]) else ""
-    expect_close(got, [1.0, -2.0, 0.5], 1e-12, "from_homogeneous([2, -4, 1, 2])", hint)
+    expect_close(got, [1.0, -2.0, 0.5], 1e-12, "from_homogeneous([2, -4, 1, 2])",
+                 _dehomogeneous_hint(got, np.array([2.0, -4.0, 1.0, 2.0])))
 
 
 @exercise("from_homogeneous", weight=1)
@@ -233,24 +319,24 @@ def test_from_homogeneous_undoes_a_pose(student):
     T = _random_poses(1, seed=742)[0]
     P = np.random.default_rng(743).normal(size=(5, 3))
     P_h = np.column_stack([P, np.ones(5)]) @ T.T * 3.0
-    got = expect_array(student.from_homogeneous(P_h), (5, 3), "from_homogeneous(3 T [p, 1])")
-    expect_close(got, P @ T[:3, :3].T + T[:3, 3], 1e-12, "from_homogeneous(3 T [p, 1])")
+    got = _expect_rows(student.from_homogeneous(P_h), P_h, (5, 3), "from_homogeneous(3 T [p, 1])")
+    expect_close(got, P @ T[:3, :3].T + T[:3, 3], 1e-12, "from_homogeneous(3 T [p, 1])", _dehomogeneous_hint(got, P_h))
 
 
 # ---------------------------------------------------------------- transform_points
 def _transform_hint(got, T, P):
+    """The mistake whose points ``got`` are (each candidate computed from T and P), or a general hint."""
     R, t = T[:3, :3], T[:3, 3]
-    if np.allclose(got, P @ R + t):
-        return "for rows use P @ R.T (or P_h @ T.T): this is the inverse rotation"
-    moved = np.column_stack([P, np.ones(len(P))]) @ T
+    moved = np.concatenate([P, np.ones(P.shape[:-1] + (1,))], axis=-1) @ T
     with np.errstate(divide="ignore", invalid="ignore"):
-        if np.allclose(got, moved[:, :3]) or np.allclose(got, moved[:, :3] / moved[:, 3:]):
-            return "P_h @ T applies the transpose of T; rows need P_h @ T.T"
-    if np.allclose(got, P @ R.T):
-        return "the translation is missing: add T[:3, 3]"
-    if np.allclose(got, (P + t) @ R.T):
-        return "rotate first, then shift: R p + t, not R (p + t)"
-    return ""
+        divided = moved[..., :3] / moved[..., 3:]
+    return _first_match(got, P @ R.T + t, [
+        (P @ R + t, "for rows use P @ R.T (or P_h @ T.T): P @ R is the inverse rotation"),
+        (moved[..., :3], "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
+        (divided, "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
+        (P @ R.T, "the translation is missing: add T[:3, 3]"),
+        ((P + t) @ R.T, "rotate first, then shift: R p + t, not R (p + t)"),
+    ], "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t")
 
 
 @exercise("transform_points", weight=3)
@@ -269,7 +355,7 @@ def test_transform_points_single(student):
     for T in _random_poses(4, seed=753):
         p = np.array([0.4, -1.1, 2.3])
         got = expect_array(student.transform_points(T, p), (3,), "transform_points(T, p) for one point")
-        expect_close(got, T[:3, :3] @ p + T[:3, 3], TOL, "transform_points(T, p)")
+        expect_close(got, T[:3, :3] @ p + T[:3, 3], TOL, "transform_points(T, p)", _transform_hint(got, T, p))
 
 
 @exercise("transform_points", weight=1)
@@ -280,10 +366,10 @@ def test_transform_points_chain(student):
     in_b = expect_array(student.transform_points(T_bc, P), (5, 3), "transform_points(T_bc, P)")
     in_a = expect_array(student.transform_points(T_ab, in_b), (5, 3), "transform_points(T_ab, ...)")
     direct = expect_array(student.transform_points(T_ab @ T_bc, P), (5, 3), "transform_points(T_ab T_bc, P)")
-    expect_close(direct, in_a, TOL, "one step vs two steps along the chain")
+    expect_close(direct, in_a, TOL, "one step vs two steps along the chain", _transform_hint(direct, T_ab @ T_bc, P))
     back = expect_array(student.transform_points(_inverse(T_ab @ T_bc), direct), (5, 3),
                         "transform_points(T_ac⁻¹, ...)")
-    expect_close(back, P, TOL, "transforming back with the inverse pose")
+    expect_close(back, P, TOL, "transforming back with the inverse pose", _transform_hint(back, _inverse(T_ab @ T_bc), direct))
 
 
 @exercise("transform_points", weight=1)
@@ -295,22 +381,28 @@ def test_transform_points_lists(student):
 
 
 # ---------------------------------------------------------------- exp_se3
-def _far(t, rho):
-    """t = V rho differs visibly from rho (not at tiny angles, where V ≈ I and the diagnosis cannot hold)."""
-    return np.linalg.norm(t - rho) > 1e-6 * (1.0 + np.linalg.norm(rho))
+FORGETS_V_HINT = "the translation is V(phi) @ rho, not rho"
+
+
+def _is_rho(got, xi):
+    """The translation of ``got`` is rho itself, and rho is visibly not the right translation V rho."""
+    xi = np.asarray(xi, dtype=float)
+    gap = np.max(np.abs(_exp(xi)[:3, 3] - xi[:3]))
+    return gap > 0.0 and np.max(np.abs(got[:3, 3] - xi[:3])) <= 1e-3 * gap
 
 
 def _exp_hint(got, xi, tiny=False):
     xi = np.asarray(xi, dtype=float)
-    if np.allclose(got, _exp(np.concatenate([xi[3:], xi[:3]])), atol=1e-8):
+    if not np.all(np.isfinite(got)):
+        return SERIES_HINT_V
+    if np.allclose(got, _exp(np.concatenate([xi[3:], xi[:3]])), atol=1e-8, rtol=0.0):
         return MIRROR_HINT
-    t = _exp(xi)[:3, 3]
-    if _far(t, xi[:3]) and np.allclose(got[:3, 3], xi[:3], atol=1e-12):
-        return "the translation is V(phi) @ rho, not rho"
-    if np.allclose(got[:3, :3], _exp(xi)[:3, :3], atol=1e-8):
+    if _is_rho(got, xi) and not tiny:
+        return FORGETS_V_HINT
+    if np.allclose(got[:3, :3], _exp(xi)[:3, :3], atol=1e-8, rtol=0.0):
         return SERIES_HINT_V if tiny else \
             "the rotation block is right; check V (its two coefficients and the sign of the W term)"
-    return ""
+    return "T = [[Exp(phi), V(phi) rho], [0, 1]] with xi = [rho, phi]"
 
 
 @exercise("exp_se3", weight=3)
@@ -325,14 +417,26 @@ def test_exp_se3_matches_expm(student):
 def test_exp_se3_tiny_angles(student):
     """is exact at tiny rotation parts (|phi| = 0 … 9e-3) with |rho| up to 50: error ≤ 1e-12 |rho|"""
     rng = np.random.default_rng(762)
+    failures = []
     for angle in (0.0, 1e-12, 1e-9, 1e-6, 1e-4, 9e-3):
         for length in (1.0, 50.0):
             xi = _twist(length * _unit(rng.normal(size=3)), angle, rng.normal(size=3))
             what = f"exp_se3 at |phi| = {angle:g}, |rho| = {length:g}"
             got = student.exp_se3(xi)
-            _expect_finite(got, what, SERIES_HINT_V)
+            _expect_finite(got, what, SERIES_NAN_HINT_V)
             got = expect_array(got, (4, 4), what)
-            expect_close(got, _exp(xi), 1e-12, what, _exp_hint(got, xi, tiny=True) or SERIES_HINT_V, scale=length)
+            if np.max(np.abs(got - _exp(xi))) > 1e-12 * length:
+                failures.append((what, got, xi, length))
+    if failures:
+        # At |phi| = 1e-9 a V whose coefficients round to 0 gives V = I exactly, like a missing V: the
+        # diagnosis looks at every failing angle, and blames V itself only when each one returned rho.
+        if all(_is_rho(got, xi) for _, got, xi, _ in failures):
+            hint = FORGETS_V_HINT
+        else:
+            hint = next((_exp_hint(got, xi, tiny=True) for _, got, xi, _ in failures
+                         if not _is_rho(got, xi)), SERIES_HINT_V)
+        what, got, xi, length = failures[0]
+        expect_close(got, _exp(xi), 1e-12, what, hint, scale=length)
 
 
 @exercise("exp_se3", weight=1)
@@ -349,24 +453,38 @@ def test_exp_se3_large_angles(student):
 def test_exp_se3_group_laws(student):
     """returns a pose; exp(a xi) exp(b xi) = exp((a + b) xi); a pure translation moves by rho"""
     xi = _twist([0.3, -1.0, 0.7], 1.1, [1.0, -2.0, 0.5])
-    T = expect_array(student.exp_se3(xi), (4, 4), "exp_se3(xi)")
+    T = student.exp_se3(xi)
+    _expect_finite(T, "exp_se3(xi)", SERIES_NAN_HINT_V)
+    T = expect_array(T, (4, 4), "exp_se3(xi)")
     _expect_pose(T, "exp_se3(xi)")
     a = expect_array(student.exp_se3(0.3 * xi), (4, 4), "exp_se3(0.3 xi)")
     b = expect_array(student.exp_se3(0.7 * xi), (4, 4), "exp_se3(0.7 xi)")
     expect_close(a @ b, T, TOL, "exp_se3(0.3 xi) @ exp_se3(0.7 xi) vs exp_se3(xi)", _exp_hint(T, xi))
-    shift = expect_array(student.exp_se3([1.0, -2.0, 3.0, 0.0, 0.0, 0.0]), (4, 4), "exp_se3 of a pure translation")
-    expect_close(shift, _pose(np.eye(3), [1.0, -2.0, 3.0]), TOL, "exp_se3([1, -2, 3, 0, 0, 0])", MIRROR_HINT)
+    shift = student.exp_se3([1.0, -2.0, 3.0, 0.0, 0.0, 0.0])
+    _expect_finite(shift, "exp_se3 of a pure translation (phi = 0)", SERIES_NAN_HINT_V)
+    shift = expect_array(shift, (4, 4), "exp_se3 of a pure translation")
+    expect_close(shift, _pose(np.eye(3), [1.0, -2.0, 3.0]), TOL, "exp_se3([1, -2, 3, 0, 0, 0])",
+                 _exp_hint(shift, [1.0, -2.0, 3.0, 0.0, 0.0, 0.0]))
 
 
 # ---------------------------------------------------------------- log_se3
 def _log_hint(got, T, xi, tiny=False):
-    if np.allclose(np.concatenate([got[3:], got[:3]]), xi, atol=1e-6):
+    """The mistake whose twist ``got`` is (each candidate computed from T), or a general hint."""
+    xi = np.asarray(xi, dtype=float)
+    if np.allclose(np.concatenate([got[3:], got[:3]]), xi, atol=1e-6, rtol=0.0):
         return MIRROR_HINT
-    if _far(T[:3, 3], xi[:3]) and np.allclose(got[:3], T[:3, 3], atol=1e-12):
+    gap = np.max(np.abs(T[:3, 3] - xi[:3]))
+    if gap > 0.0 and np.max(np.abs(got[:3] - T[:3, 3])) <= 1e-3 * gap:
         return "rho is V(phi)⁻¹ t, not t itself"
-    if np.allclose(got[3:], xi[3:], atol=1e-6):
+    phi = xi[3:]
+    W = _twist_matrix(np.concatenate([np.zeros(3), phi]))[:3, :3]
+    constant_c = (np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3]
+    if not _close(constant_c, xi[:3], 1e-8) and _close(got[:3], constant_c, 1e-8):
+        return ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use "
+                "c(θ) = (1 - (θ/2) cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
+    if np.allclose(got[3:], xi[3:], atol=1e-6, rtol=0.0):
         return SERIES_HINT_C if tiny else "phi is right; check V⁻¹ (the -W/2 term and the coefficient c(θ) of W²)"
-    return ""
+    return "xi = [V(phi)⁻¹ t, phi] with phi = Log(R)"
 
 
 @exercise("log_se3", weight=3)
@@ -421,4 +539,6 @@ def test_log_se3_large_rotation(student):
     got = expect_array(student.log_se3(T), (6,), "log_se3(T) for a 5 rad turn")
     expect(np.linalg.norm(got[3:]) <= np.pi + 1e-9,
            f"the rotation part has angle {np.linalg.norm(got[3:]):.4f} > π", "Log returns angles in [0, π]")
-    expect_close(_exp(got), T, TOL, "expm of the twist of log_se3(T) for a 5 rad turn", MIRROR_HINT)
+    phi = Rotation.from_matrix(T[:3, :3]).as_rotvec()              # the same rotation with angle ≤ π
+    expect_close(_exp(got), T, TOL, "expm of the twist of log_se3(T) for a 5 rad turn",
+                 _log_hint(got, T, np.concatenate([np.linalg.solve(_v_matrix(phi), T[:3, 3]), phi])))

@@ -62,15 +62,43 @@ def _expect_rotation(R, what, tol=1e-8, hint=""):
     expect(problem is None, f"{what} is not a rotation: {problem}", hint)
 
 
+# ---------------------------------------------------------------- diagnosis
+def _explains(got, candidate, truth):
+    """True when ``candidate`` (what a known mistake returns) accounts for ``got``'s error from ``truth``:
+    ``got`` is within a thousandth of the candidate's distance from the truth of the candidate."""
+    got, candidate, truth = (np.asarray(x, dtype=float) for x in (got, candidate, truth))
+    if got.shape != candidate.shape or not np.all(np.isfinite(candidate)):
+        return False
+    gap = float(np.max(np.abs(candidate - truth)))
+    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + 1e-12
+
+
+def _hat(v):
+    x, y, z = v
+    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+
+
 # ---------------------------------------------------------------- align_svd
-def _svd_hint(got, expected):
-    if np.allclose(got, expected.T, atol=1e-6):
-        return "that is the inverse rotation: use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q gives Rᵀ)"
-    if np.linalg.det(got) < 0:
-        return "det < 0: a reflection; use U diag(1, 1, det(U Vᵀ)) Vᵀ"
+def _svd_hint(got, P, Q, expected):
+    """Name the slip behind a wrong align_svd(P, Q) = ``got`` by computing what each slip returns."""
+    P, Q = np.asarray(P, dtype=float), np.asarray(Q, dtype=float)
+    U, _, Vt = np.linalg.svd(Q.T @ P)
+    if np.linalg.det(U @ Vt) < 0 and _explains(got, U @ Vt, expected):
+        return ("that is U Vᵀ without the determinant fix: a reflection (det = -1); "
+                "use U diag(1, 1, d) Vᵀ with d = det(U Vᵀ)")
+    if _explains(got, expected.T, expected):
+        return "that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q gives Rᵀ)"
+    if _explains(got, np.linalg.lstsq(P, Q, rcond=None)[0].T, expected):
+        return ("that is the unconstrained least-squares matrix, which need not be a rotation: "
+                "take R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P")
+    if _explains(got, np.eye(3), expected):
+        return "returned the identity, as if Q were ignored (the SVD of Pᵀ P gives I): M = Qᵀ P = Σ q_i p_iᵀ"
+    det = np.linalg.det(got)
+    if det < 0:
+        return f"det = {det:.3f}: a reflection, not a rotation"
     if rotation_problem(got, 1e-8):
         return "the result must be a rotation (orthonormal, det +1): build it from the SVD of M = Qᵀ P"
-    return ""
+    return "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
 
 
 @exercise("align_svd", weight=1)
@@ -79,7 +107,7 @@ def test_align_svd_exact(student):
     for k, count in enumerate((3, 4, 5, 8, 12, 20, 3, 6, 10, 20)):
         P, Q, R = _data(count, seed=800 + k)
         got = expect_array(student.align_svd(P, Q), (3, 3), f"align_svd for {count} exact pairs")
-        expect_close(got, R, TOL, f"align_svd for {count} exact pairs", _svd_hint(got, R))
+        expect_close(got, R, TOL, f"align_svd for {count} exact pairs", _svd_hint(got, P, Q, R))
 
 
 @exercise("align_svd", weight=1)
@@ -90,7 +118,7 @@ def test_align_svd_noisy(student):
         expected = _closed_form(P, Q)
         got = expect_array(student.align_svd(P, Q), (3, 3), f"align_svd for {count} noisy pairs")
         expect_close(got, expected, 1e-8, f"align_svd for {count} pairs with noise {noise}",
-                     _svd_hint(got, expected))
+                     _svd_hint(got, P, Q, expected))
 
 
 @exercise("align_svd", weight=4)
@@ -102,10 +130,10 @@ def test_align_svd_no_reflection(student):
         Q = P @ (R @ mirror).T + 0.01 * np.random.default_rng(850 + k).normal(size=P.shape)
         # (for this data the naive U Vᵀ of Qᵀ P has det = -1: the case this test is about)
         got = expect_array(student.align_svd(P, Q), (3, 3), "align_svd for mirrored data")
+        expected = _closed_form(P, Q)
         det = np.linalg.det(got)
-        expect(det > 0, f"returned a reflection (det = {det:.3f}) for mirrored data",
-               "when det(U Vᵀ) < 0 use U diag(1, 1, -1) Vᵀ")
-        expect_close(got, _closed_form(P, Q), 1e-8, "align_svd for mirrored data")
+        expect(det > 0, f"returned a reflection (det = {det:.3f}) for mirrored data", _svd_hint(got, P, Q, expected))
+        expect_close(got, expected, 1e-8, "align_svd for mirrored data", _svd_hint(got, P, Q, expected))
 
 
 @exercise("align_svd", weight=1)
@@ -114,14 +142,53 @@ def test_align_svd_is_a_rotation_and_accepts_lists(student):
     P, Q, _ = _data(12, seed=860, noise=0.05)
     P[:, 2] *= 1e-3
     got = expect_array(student.align_svd(P, Q), (3, 3), "align_svd for nearly coplanar data")
-    _expect_rotation(got, "align_svd for nearly coplanar data",
-                     hint="the answer must be a rotation: take it from the SVD, U diag(1, 1, d) Vᵀ")
-    expect_close(got, _closed_form(P, Q), 1e-7, "align_svd for nearly coplanar data")
+    expected = _closed_form(P, Q)
+    _expect_rotation(got, "align_svd for nearly coplanar data", hint=_svd_hint(got, P, Q, expected))
+    expect_close(got, expected, 1e-7, "align_svd for nearly coplanar data", _svd_hint(got, P, Q, expected))
     P, Q, R = _data(5, seed=861)
     expect_same_with_lists(student.align_svd, (P, Q), (3, 3), "align_svd(P, Q)")
 
 
 # ---------------------------------------------------------------- align_gauss_newton
+def _gauss_newton(P, Q, R0, iters, jacobian="right", update="exp", sign=-1.0):
+    """Gauss-Newton as the lecture writes it, or with one known slip (to recognise it in an answer)."""
+    R = np.array(R0, dtype=float)
+    for _ in range(iters):
+        H, g = np.zeros((3, 3)), np.zeros(3)
+        for p, q in zip(P, Q):
+            J = -R @ _hat(p) if jacobian == "right" else -_hat(R @ p)
+            H += J.T @ J
+            g += J.T @ (R @ p - q)
+        delta = np.linalg.solve(H, sign * g)
+        R = R @ _exp(delta) if update == "exp" else R + R @ _hat(delta)
+    return R
+
+
+def _gn_hint(got, P, Q, R0, iters, expected):
+    """Name the slip behind a wrong align_gauss_newton(P, Q, R0, iters) = ``got``."""
+    P, Q = np.asarray(P, dtype=float), np.asarray(Q, dtype=float)
+    if np.max(np.abs(got - R0)) == 0.0:
+        return "returned R0 unchanged: do iters updates R ← R Exp(δ)"
+    slips = [
+        (dict(jacobian="left"), "the left Jacobian -[R p_i]× with the right update R Exp(δ) mixes two conventions: "
+                                "J_i = -R [p_i]× goes with R ← R Exp(δ) (-[R p_i]× would need Exp(δ) R)"),
+        (dict(sign=1.0), "steps uphill: δ solves H δ = -g (mind the minus sign)"),
+        (dict(update="add"), "updated by adding R [δ]× to R, which leaves SO(3): use R ← R Exp(δ)"),
+    ]
+    for options, hint in slips:
+        try:
+            candidate = _gauss_newton(P, Q, R0, iters, **options)
+        except np.linalg.LinAlgError:
+            continue
+        if _explains(got, candidate, expected):
+            return hint
+    if iters > 1 and _explains(got, _gauss_newton(P, Q, R0, 1), expected):
+        return f"that is one Gauss-Newton step, whatever iters says: repeat the update iters times (here {iters})"
+    if rotation_problem(got, 1e-8):
+        return "the result drifted off SO(3): update with R ← R Exp(δ), which stays a rotation"
+    return "J_i = -R [p_i]×, H = Σ J_iᵀ J_i, g = Σ J_iᵀ r_i, δ = solve(H, -g), R ← R Exp(δ)"
+
+
 @exercise("align_gauss_newton", weight=1)
 def test_align_gauss_newton_one_step(student, ref):
     """one iteration is exactly one Gauss-Newton step (right perturbation, R ← R Exp(δ))"""
@@ -131,15 +198,7 @@ def test_align_gauss_newton_one_step(student, ref):
         R0 = R @ _exp(0.5 * np.random.default_rng(910 + k).normal(size=3))
         expected = ref.align_gauss_newton(P, Q, R0, iters=1)
         got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=1), (3, 3), "align_gauss_newton(..., iters=1)")
-        hint = ""
-        if np.allclose(got, R0):
-            hint = "one iteration must update R0: use the iters argument"
-        elif rotation_problem(got, 1e-8):
-            hint = "update with R @ Exp(delta): the result must stay a rotation"
-        else:
-            hint = ("check the Jacobian and the update side: J_i = -R [p_i]× goes with R ← R Exp(δ) "
-                    "(the left Jacobian -[R p_i]× would need Exp(δ) R), and δ solves H δ = -g")
-        expect_close(got, expected, 1e-8, "one Gauss-Newton step from R0", hint)
+        expect_close(got, expected, 1e-8, "one Gauss-Newton step from R0", _gn_hint(got, P, Q, R0, 1, expected))
 
 
 @exercise("align_gauss_newton", weight=3)
@@ -153,7 +212,7 @@ def test_align_gauss_newton_converges_from_far(student):
         R0 = expected @ _exp(2.5 * axis / np.linalg.norm(axis))
         got = expect_array(solver.align_gauss_newton(P, Q, R0), (3, 3), "align_gauss_newton(P, Q, R0)")
         expect_close(got, expected, 1e-8, f"align_gauss_newton from {2.5:.1f} rad away (10 iterations)",
-                     "J_i = -R [p_i]×, H = Σ J_iᵀ J_i, g = Σ J_iᵀ r_i, δ = solve(H, -g), R ← R Exp(δ)")
+                     _gn_hint(got, P, Q, R0, 10, expected))
 
 
 @exercise("align_gauss_newton", weight=1)
@@ -163,7 +222,7 @@ def test_align_gauss_newton_exact_data(student):
     P, Q, R = _data(8, seed=940)
     R0 = R @ _exp([0.6, -0.5, 0.6])
     got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=10), (3, 3), "align_gauss_newton on exact data")
-    expect_close(got, R, 1e-10, "align_gauss_newton on exact data")
+    expect_close(got, R, 1e-10, "align_gauss_newton on exact data", _gn_hint(got, P, Q, R0, 10, R))
 
 
 @exercise("align_gauss_newton", weight=1)
@@ -174,7 +233,7 @@ def test_align_gauss_newton_stays_on_so3(student):
     R0 = R @ _exp([1.0, 0.8, -0.7])
     got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=30), (3, 3), "align_gauss_newton(..., iters=30)")
     _expect_rotation(got, "align_gauss_newton after 30 iterations", tol=1e-9,
-                     hint="update with R @ Exp(delta), never by adding to R")
+                     hint=_gn_hint(got, P, Q, R0, 30, _closed_form(P, Q)))
 
 
 # ---------------------------------------------------------------- rotation_mean
@@ -189,14 +248,29 @@ def _chordal(Rs):
     return U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt
 
 
+def _geodesic_mean(Rs):
+    M = _chordal(Rs)
+    for _ in range(100):
+        delta = np.mean([_log(M.T @ R) for R in Rs], axis=0)
+        M = M @ _exp(delta)
+        if np.linalg.norm(delta) < 1e-14:
+            break
+    return M
+
+
 def _mean_hint(M, Rs):
-    if np.allclose(M, _chordal(Rs), atol=1e-9):
+    """Name the slip behind a wrong rotation_mean(Rs) = ``M`` by computing what each slip returns."""
+    Rs = np.asarray(Rs, dtype=float)
+    truth = _geodesic_mean(Rs)
+    if _explains(M, _chordal(Rs), truth):
         return "that is the chordal mean (the projected arithmetic mean); iterate M ← M Exp(mean Log(Mᵀ R_i))"
     one_step = Rs[0] @ _exp(np.mean([_log(Rs[0].T @ R) for R in Rs], axis=0))
-    if np.allclose(M, one_step, atol=1e-9):
+    if _explains(M, one_step, truth):
         return "that is a single step from Rs[0]: repeat until the step is tiny (|δ| < 1e-12)"
-    if np.allclose(M, _exp(np.mean([_log(R) for R in Rs], axis=0)), atol=1e-9):
+    if _explains(M, _exp(np.mean([_log(R) for R in Rs], axis=0)), truth):
         return "averaging Log(R_i) about the identity is not the mean: average Log(Mᵀ R_i) about the current M"
+    if _explains(M, Rs[0], truth):
+        return "returned the first rotation Rs[0]: the mean must weigh all of them"
     return "iterate δ = mean of Log(Mᵀ R_i), M ← M Exp(δ), until |δ| < 1e-12"
 
 
@@ -227,8 +301,7 @@ def test_rotation_mean_bi_invariant(student):
     for A, B in zip(random_rotations(3, seed=1011), random_rotations(3, seed=1012)):
         moved = np.array([A @ R @ B for R in Rs])
         got = expect_array(solver.rotation_mean(moved), (3, 3), "rotation_mean of A R_i B")
-        expect_close(got, A @ M @ B, 1e-8, "rotation_mean(A R_i B) vs A rotation_mean(R_i) B",
-                     "average Log(Mᵀ R_i) about the current M (not about the identity) and iterate to convergence")
+        expect_close(got, A @ M @ B, 1e-8, "rotation_mean(A R_i B) vs A rotation_mean(R_i) B", _mean_hint(got, moved))
 
 
 @exercise("rotation_mean", weight=1)
@@ -237,12 +310,12 @@ def test_rotation_mean_simple_cases(student):
     solver = student.with_timeout(SLOW)
     R = random_rotations(1, seed=1020)[0]
     got = expect_array(solver.rotation_mean(np.array([R, R, R, R])), (3, 3), "rotation_mean of 4 copies of R")
-    expect_close(got, R, TOL, "rotation_mean of 4 copies of R")
+    expect_close(got, R, TOL, "rotation_mean of 4 copies of R", _mean_hint(got, np.array([R, R, R, R])))
     A = random_rotations(1, seed=1021)[0]
     step = np.array([0.3, -1.1, 0.9])
-    got = expect_array(solver.rotation_mean(np.array([A, A @ _exp(step)])), (3, 3), "rotation_mean of two rotations")
-    expect_close(got, A @ _exp(step / 2.0), 1e-8, "rotation_mean of two rotations (the midpoint)",
-                 "iterate until the step is tiny")
+    pair = np.array([A, A @ _exp(step)])
+    got = expect_array(solver.rotation_mean(pair), (3, 3), "rotation_mean of two rotations")
+    expect_close(got, A @ _exp(step / 2.0), 1e-8, "rotation_mean of two rotations (the midpoint)", _mean_hint(got, pair))
     expect(_angle(got, A) > 0.1, "the mean of two different rotations is one of them")
 
 

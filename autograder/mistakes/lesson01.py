@@ -12,7 +12,7 @@ def rot_z(a):
 def rot_y(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, 0.0, -s], [0.0, 1.0, 0.0], [s, 0.0, c]])
-'''),
+''', hint='transpose', public_hint='transpose'),
     Mistake("rot_x_degrees", "rot_x", "treats the angle as degrees", hint="degrees", public_hint="degrees", source='''
 def rot_x(a):
     c, s = np.cos(np.deg2rad(a)), np.sin(np.deg2rad(a))
@@ -31,7 +31,7 @@ def rot_z(a):
     Mistake("rot2d_clockwise", "rot2d", "clockwise instead of counter-clockwise", '''
 def rot2d(theta):
     return np.array([[np.cos(theta), np.sin(theta)], [-np.sin(theta), np.cos(theta)]])
-'''),
+''', hint='transpose', public_hint='transpose'),
     Mistake("is_rotation_no_det", "is_rotation_matrix", "checks orthogonality only, so accepts reflections",
             hint="det(M) > 0", public_hint="det = +1", source='''
 def is_rotation_matrix(M, tol=1e-9):
@@ -44,7 +44,7 @@ def is_rotation_matrix(M, tol=1e-9):
 def is_rotation_matrix(M, tol=1e-9):
     M = np.asarray(M, dtype=float)
     return bool(np.max(np.abs(M.T @ M - np.eye(3))) <= tol and np.linalg.det(M) > 0)
-'''),
+''', hint="check M's shape first", public_hint="check M's shape first"),
     Mistake("rotate_point_transposed", "rotate_point", "uses R_wb.T (the inverse rotation)", '''
 def rotate_point(R_wb, p_b):
     return np.asarray(p_b, dtype=float) @ np.asarray(R_wb, dtype=float)
@@ -54,7 +54,7 @@ def rotate_point(R_wb, p_b):
     R_wb = np.asarray(R_wb, dtype=float)
     p_b = np.asarray(p_b, dtype=float)
     return R_wb @ p_b
-'''),
+''', hint='works for one point', public_hint='works for one point'),
     Mistake("compose_reversed", "compose", "multiplies in the wrong order", '''
 def compose(R_ab, R_bc):
     return np.asarray(R_bc, dtype=float) @ np.asarray(R_ab, dtype=float)
@@ -62,7 +62,7 @@ def compose(R_ab, R_bc):
     Mistake("invert_rotation_identity", "invert_rotation", "returns the rotation itself", '''
 def invert_rotation(R_ab):
     return np.array(R_ab, dtype=float)
-'''),
+''', hint='returned R itself', public_hint='returned R itself'),
     Mistake("nearest_rotation_reflection", "nearest_rotation", "U Vᵀ without the determinant fix", '''
 def nearest_rotation(M):
     U, _, Vt = np.linalg.svd(np.asarray(M, dtype=float))
@@ -77,12 +77,12 @@ def rot2d(theta):
 def rot2d(theta):
     c, s = np.cos(theta), np.sin(theta)
     return np.array([[s, -c], [c, s]])
-'''),
+''', hint='swapped', public_hint='swapped'),
     Mistake("rot2d_no_minus", "rot2d", "forgets the minus sign", '''
 def rot2d(theta):
     c, s = np.cos(theta), np.sin(theta)
     return np.array([[c, s], [s, c]])
-'''),
+''', hint='same sign', public_hint='same sign'),
     Mistake("rot_x_transposed", "rot_x", "minus sign on the lower sine (the transpose)", '''
 def rot_x(a):
     c, s = np.cos(a), np.sin(a)
@@ -92,32 +92,32 @@ def rot_x(a):
 def rot_x(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-'''),
+''', hint='is a rotation about z', public_hint='is a rotation about z'),
     Mistake("rot_x_no_minus", "rot_x", "both sines positive", '''
 def rot_x(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[1.0, 0.0, 0.0], [0.0, c, s], [0.0, s, c]])
-'''),
+''', hint='same sign', public_hint='same sign'),
     Mistake("rot_y_no_minus", "rot_y", "both sines positive", '''
 def rot_y(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [s, 0.0, c]])
-'''),
+''', hint='same sign', public_hint='same sign'),
     Mistake("rot_y_about_x", "rot_y", "the block in the wrong place: a rotation about x", '''
 def rot_y(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
-'''),
+''', hint='is a rotation about x', public_hint='is a rotation about x'),
     Mistake("rot_z_no_minus", "rot_z", "both sines positive", '''
 def rot_z(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-'''),
+''', hint='same sign', public_hint='same sign'),
     Mistake("rot_z_corner_zero", "rot_z", "a zero where the 1 of the z axis belongs", '''
 def rot_z(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 0.0]])
-'''),
+''', hint='must be 1', public_hint='must be 1'),
     Mistake("is_rotation_allclose_rtol", "is_rotation_matrix",
             "np.allclose(MᵀM, I, atol=tol): the default rtol accepts diag(1, 1, 1 + 1e-6)", '''
 def is_rotation_matrix(M, tol=1e-9):
@@ -139,7 +139,7 @@ def is_rotation_matrix(M, tol=1e-9):
     if M.ndim != 2 or M.shape[0] != M.shape[1]:
         return False
     return bool(abs(np.linalg.det(M) - 1.0) <= tol)
-'''),
+''', hint='a shear has det 1', public_hint='a shear has det 1'),
     Mistake("rotate_point_no_asarray", "rotate_point", "R_wb @ p_b without np.asarray: fails on lists", '''
 def rotate_point(R_wb, p_b):
     return p_b @ R_wb.T
@@ -147,15 +147,15 @@ def rotate_point(R_wb, p_b):
     Mistake("rotate_point_elementwise", "rotate_point", "R * p (elementwise) instead of R @ p", '''
 def rotate_point(R_wb, p_b):
     return (np.asarray(R_wb, dtype=float) * np.asarray(p_b, dtype=float)).sum(axis=-1)
-'''),
+''', hint='could not broadcast R * P', public_hint='could not broadcast R * P'),
     Mistake("compose_elementwise", "compose", "R_ab * R_bc (elementwise) instead of @", '''
 def compose(R_ab, R_bc):
     return np.asarray(R_ab, dtype=float) * np.asarray(R_bc, dtype=float)
-'''),
+''', hint='elementwise product', public_hint='elementwise product'),
     Mistake("compose_transposes_first", "compose", "R_abᵀ R_bc (inverts the first)", '''
 def compose(R_ab, R_bc):
     return np.asarray(R_ab, dtype=float).T @ np.asarray(R_bc, dtype=float)
-'''),
+''', hint='first factor is transposed', public_hint='first factor is transposed'),
     Mistake("compose_no_asarray", "compose", "np.matmul on lists of lists... then .T.T", '''
 def compose(R_ab, R_bc):
     return (R_ab @ R_bc).T.T
@@ -163,7 +163,7 @@ def compose(R_ab, R_bc):
     Mistake("invert_rotation_negated", "invert_rotation", "returns -R", '''
 def invert_rotation(R_ab):
     return -np.asarray(R_ab, dtype=float)
-'''),
+''', hint='every entry negated', public_hint='every entry negated'),
     Mistake("invert_rotation_no_asarray", "invert_rotation", "R_ab.T without np.asarray: fails on lists", '''
 def invert_rotation(R_ab):
     return R_ab.T.copy()
@@ -171,24 +171,24 @@ def invert_rotation(R_ab):
     Mistake("invert_rotation_flipped", "invert_rotation", "reverses the rows instead of transposing", '''
 def invert_rotation(R_ab):
     return np.asarray(R_ab, dtype=float)[::-1].copy()
-'''),
+''', hint='order of the rows', public_hint='order of the rows'),
     Mistake("nearest_rotation_normalised_columns", "nearest_rotation", "divides each column by its length", '''
 def nearest_rotation(M):
     M = np.asarray(M, dtype=float)
     return M / np.linalg.norm(M, axis=0)
-'''),
+''', hint='dividing each column', public_hint='dividing each column'),
     Mistake("nearest_rotation_transposed", "nearest_rotation", "V Uᵀ instead of U Vᵀ", '''
 def nearest_rotation(M):
     U, _, Vt = np.linalg.svd(np.asarray(M, dtype=float))
     D = np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))])
     return (U @ D @ Vt).T
-'''),
+''', hint='V Uᵀ', public_hint='V Uᵀ'),
     Mistake("nearest_rotation_qr", "nearest_rotation", "the Q of a QR decomposition (orthogonal, not nearest)", '''
 def nearest_rotation(M):
     Q, R = np.linalg.qr(np.asarray(M, dtype=float))
     Q = Q @ np.diag(np.sign(np.diag(R)))
     return Q * np.sign(np.linalg.det(Q))
-'''),
+''', hint='QR decomposition', public_hint='QR decomposition'),
     Mistake("rot2d_endless_loop", "rot2d", "an endless loop", '''
 def rot2d(theta):
     while theta == theta:

@@ -16,7 +16,7 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
     associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
     return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
             "associativity": associative}
-'''),
+''', hint='@ instead of the op you are given', public_hint='@ instead of the op you are given'),
     Mistake("group_identity_one_sided", "check_group_axioms",
             "checks only identity ∘ a = a and a ∘ inverse(a) = e (one side each)", '''
 def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
@@ -28,7 +28,7 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
     associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
     return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
             "associativity": associative}
-'''),
+''', hint='op(a, identity) as well', public_hint='op(a, identity) as well'),
     Mistake("group_no_membership", "check_group_axioms",
             "never asks whether the identity and the inverses belong to the set", '''
 def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
@@ -41,7 +41,7 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
     associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
     return {"closure": bool(closure), "identity": has_identity, "inverse": has_inverses,
             "associativity": associative}
-'''),
+''', hint='is_member(identity)', public_hint='is_member(identity)'),
     Mistake("group_associativity_assumed", "check_group_axioms",
             "assumes associativity always holds instead of testing the triples", '''
 def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
@@ -54,7 +54,7 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
                        and equal(op(inverse(a), a), identity) for a in samples)
     return {"closure": bool(closure), "identity": has_identity, "inverse": bool(has_inverses),
             "associativity": True}
-'''),
+''', hint='every ordered triple', public_hint='every ordered triple'),
     Mistake("group_allclose_rtol", "check_group_axioms",
             "compares with np.allclose(atol=tol), whose default rtol=1e-5 swamps tol",
             hint="rtol=1e-5", public_hint="rtol=1e-5", source='''
@@ -86,7 +86,7 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
     Mistake("commutes_exact_equality", "commutes", "compares the two products with exact equality", '''
 def commutes(a, b, op, tol=1e-9):
     return bool(np.array_equal(op(a, b), op(b, a)))
-''', classic=True),
+''', hint='never with ==', public_hint='never with ==', classic=True),
     Mistake("commutes_allclose_rtol", "commutes", "np.allclose(op(a, b), op(b, a), atol=tol): rtol hides 1e-6", '''
 def commutes(a, b, op, tol=1e-9):
     return bool(np.allclose(op(a, b), op(b, a), atol=tol))
@@ -94,16 +94,16 @@ def commutes(a, b, op, tol=1e-9):
     Mistake("commutes_fixed_tol", "commutes", "ignores tol and uses 1e-6", '''
 def commutes(a, b, op, tol=1e-9):
     return bool(np.max(np.abs(np.asarray(op(a, b)) - np.asarray(op(b, a)))) <= 1e-6)
-'''),
+''', hint='does not change with tol', public_hint='does not change with tol'),
     Mistake("commutes_ignores_op", "commutes", "always uses the matrix product instead of op", '''
 def commutes(a, b, op, tol=1e-9):
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     return bool(np.max(np.abs(a @ b - b @ a)) <= tol)
-'''),
+''', hint='whatever op is given', public_hint='whatever op is given'),
     Mistake("commutes_same_order", "commutes", "compares op(a, b) with itself (arguments never swapped)", '''
 def commutes(a, b, op, tol=1e-9):
     return bool(np.max(np.abs(np.asarray(op(a, b)) - np.asarray(op(a, b)))) <= tol)
-'''),
+''', hint='swap the arguments', public_hint='swap the arguments'),
 ]
 
 ALTERNATIVES = [

@@ -9,11 +9,11 @@ def make_pose(R, t):
     T[:3, :3] = np.asarray(R, dtype=float)
     T[3, :3] = np.asarray(t, dtype=float)
     return T
-'''),
+''', hint='not the bottom row', public_hint='not the bottom row'),
     Mistake("pose_inverse_transpose", "pose_inverse", "inverts a pose with the plain transpose of T", '''
 def pose_inverse(T):
     return np.asarray(T, dtype=float).T.copy()
-''', classic=True),
+''', hint='plain transpose of T', public_hint='plain transpose of T', classic=True),
     Mistake("pose_inverse_negates_t", "pose_inverse", "transposes R but negates t without turning it", '''
 def pose_inverse(T):
     T = np.asarray(T, dtype=float)
@@ -21,20 +21,20 @@ def pose_inverse(T):
     T_inv[:3, :3] = T[:3, :3].T
     T_inv[:3, 3] = -T[:3, 3]
     return T_inv
-'''),
+''', hint='turned as well as negated', public_hint='turned as well as negated'),
     Mistake("pose_compose_reversed", "pose_compose", "multiplies the poses in the wrong order", '''
 def pose_compose(T_ab, T_bc):
     return np.asarray(T_bc, dtype=float) @ np.asarray(T_ab, dtype=float)
-'''),
+''', hint='order is reversed', public_hint='order is reversed'),
     Mistake("to_homogeneous_appends_zero", "to_homogeneous", "appends 0 (a direction) where a point needs 1", '''
 def to_homogeneous(P):
     P = np.asarray(P, dtype=float)
     return np.concatenate([P, np.zeros(P.shape[:-1] + (1,))], axis=-1)
-'''),
+''', hint='marks a direction', public_hint='marks a direction'),
     Mistake("from_homogeneous_no_divide", "from_homogeneous", "drops the last coordinate without dividing", '''
 def from_homogeneous(P_h):
     return np.asarray(P_h, dtype=float)[..., :3]
-'''),
+''', hint='before dropping it', public_hint='before dropping it'),
     Mistake("transform_points_T_transposed", "transform_points", "uses T.T: multiplies rows by T instead of T.T", '''
 def transform_points(T, P):
     T = np.asarray(T, dtype=float)
@@ -42,12 +42,12 @@ def transform_points(T, P):
     P_h = np.concatenate([P, np.ones(P.shape[:-1] + (1,))], axis=-1)
     moved = P_h @ T
     return moved[..., :3] / moved[..., 3:]
-'''),
+''', hint='P_h @ T.T', public_hint='P_h @ T.T'),
     Mistake("transform_points_no_translation", "transform_points", "rotates the points but forgets the shift", '''
 def transform_points(T, P):
     T = np.asarray(T, dtype=float)
     return np.asarray(P, dtype=float) @ T[:3, :3].T
-'''),
+''', hint='translation is missing', public_hint='translation is missing'),
     Mistake("exp_se3_forgets_V", "exp_se3", "uses rho as the translation (forgets V)", '''
 def exp_se3(xi):
     xi = np.asarray(xi, dtype=float)
@@ -55,7 +55,7 @@ def exp_se3(xi):
     T[:3, :3] = Exp(xi[3:])
     T[:3, 3] = xi[:3]
     return T
-''', classic=True),
+''', hint='V(phi) @ rho, not rho', public_hint='V(phi) @ rho, not rho', classic=True),
     Mistake("exp_se3_phi_first", "exp_se3", "reads xi as [phi, rho] (rotation part first)", '''
 def exp_se3(xi):
     xi = np.asarray(xi, dtype=float)
@@ -70,7 +70,7 @@ def exp_se3(xi):
     T[:3, :3] = Exp(phi)
     T[:3, 3] = (np.eye(3) + a * W + b * W @ W) @ rho
     return T
-'''),
+''', hint='xi = [rho, phi]', public_hint='xi = [rho, phi]'),
     Mistake("exp_se3_nan_at_zero", "exp_se3", "no small-angle branch: 0/0 at phi = 0", '''
 def exp_se3(xi):
     xi = np.asarray(xi, dtype=float)
@@ -82,12 +82,12 @@ def exp_se3(xi):
     T[:3, :3] = Exp(phi)
     T[:3, 3] = V @ rho
     return T
-'''),
+''', hint='below θ = 1e-2', public_hint='below θ = 1e-2'),
     Mistake("log_se3_forgets_V_inverse", "log_se3", "returns t itself as rho (forgets V⁻¹)", '''
 def log_se3(T):
     T = np.asarray(T, dtype=float)
     return np.concatenate([T[:3, 3], Log(T[:3, :3])])
-'''),
+''', hint='V(phi)⁻¹ t, not t itself', public_hint='V(phi)⁻¹ t, not t itself'),
     Mistake("log_se3_phi_first", "log_se3", "returns [phi, rho] (rotation part first)", '''
 def log_se3(T):
     T = np.asarray(T, dtype=float)
@@ -97,7 +97,7 @@ def log_se3(T):
     c = 1.0 / 12.0 if theta < 1e-2 else (1.0 - (theta / 2.0) / np.tan(theta / 2.0)) / theta**2
     rho = (np.eye(3) - 0.5 * W + c * W @ W) @ T[:3, 3]
     return np.concatenate([phi, rho])
-'''),
+''', hint='xi = [rho, phi]', public_hint='xi = [rho, phi]'),
     Mistake("log_se3_cancellation", "log_se3", "closed form of c with 1 - cos θ everywhere except θ = 0", '''
 def log_se3(T):
     T = np.asarray(T, dtype=float)
@@ -110,25 +110,25 @@ def log_se3(T):
         c = (1.0 - theta * np.sin(theta) / (2.0 * (1.0 - np.cos(theta)))) / theta**2
     rho = (np.eye(3) - 0.5 * W + c * W @ W) @ T[:3, 3]
     return np.concatenate([rho, phi])
-'''),
+''', hint='use the series c = 1/12', public_hint='use the series c = 1/12'),
     Mistake("make_pose_R_transposed", "make_pose", "puts Rᵀ in the top-left block", '''
 def make_pose(R, t):
     T = np.eye(4)
     T[:3, :3] = np.asarray(R, dtype=float).T
     T[:3, 3] = t
     return T
-'''),
+''', hint='not its transpose', public_hint='not its transpose'),
     Mistake("make_pose_bottom_zero", "make_pose", "a zero matrix with R and t, bottom-right 0", '''
 def make_pose(R, t):
     T = np.zeros((4, 4))
     T[:3, :3] = R
     T[:3, 3] = t
     return T
-'''),
+''', hint='np.eye(4)', public_hint='np.eye(4)'),
     Mistake("make_pose_integer_lists", "make_pose", "np.hstack of lists without dtype: fails on a list t", '''
 def make_pose(R, t):
     return np.vstack([np.hstack([R, t.reshape(3, 1)]), [0.0, 0.0, 0.0, 1.0]])
-''', hint="np.asarray", public_hint="np.asarray"),
+''', hint='np.asarray', public_hint='np.asarray'),
     Mistake("pose_inverse_t_unchanged", "pose_inverse", "transposes R and keeps t", '''
 def pose_inverse(T):
     T = np.asarray(T, dtype=float)
@@ -136,7 +136,7 @@ def pose_inverse(T):
     out[:3, :3] = T[:3, :3].T
     out[:3, 3] = T[:3, 3]
     return out
-'''),
+''', hint='kept t unchanged', public_hint='kept t unchanged'),
     Mistake("pose_inverse_R_not_transposed", "pose_inverse", "keeps R, uses -R t", '''
 def pose_inverse(T):
     T = np.asarray(T, dtype=float)
@@ -144,11 +144,11 @@ def pose_inverse(T):
     out[:3, :3] = T[:3, :3]
     out[:3, 3] = -T[:3, :3] @ T[:3, 3]
     return out
-'''),
+''', hint='is Rᵀ, not R', public_hint='is Rᵀ, not R'),
     Mistake("pose_compose_elementwise", "pose_compose", "T_ab * T_bc entry by entry", '''
 def pose_compose(T_ab, T_bc):
     return np.asarray(T_ab, dtype=float) * np.asarray(T_bc, dtype=float)
-'''),
+''', hint='entry by entry', public_hint='entry by entry'),
     Mistake("pose_compose_adds_translations", "pose_compose", "R_ab R_bc and t_ab + t_bc (forgets to turn t_bc)", '''
 def pose_compose(T_ab, T_bc):
     A, B = np.asarray(T_ab, dtype=float), np.asarray(T_bc, dtype=float)
@@ -156,52 +156,52 @@ def pose_compose(T_ab, T_bc):
     out[:3, :3] = A[:3, :3] @ B[:3, :3]
     out[:3, 3] = A[:3, 3] + B[:3, 3]
     return out
-'''),
+''', hint='turned by R_ab', public_hint='turned by R_ab'),
     Mistake("pose_compose_inverts_first", "pose_compose", "T_abᵀ T_bc", '''
 def pose_compose(T_ab, T_bc):
     return np.asarray(T_ab, dtype=float).T @ np.asarray(T_bc, dtype=float)
-'''),
+''', hint='transposes T_ab', public_hint='transposes T_ab'),
     Mistake("to_homogeneous_prepends", "to_homogeneous", "puts the 1 first", '''
 def to_homogeneous(P):
     P = np.asarray(P, dtype=float)
     return np.concatenate([np.ones(P.shape[:-1] + (1,)), P], axis=-1)
-'''),
+''', hint='the 1 goes last', public_hint='the 1 goes last'),
     Mistake("to_homogeneous_rows_only", "to_homogeneous", "np.column_stack: a single point becomes a column", '''
 def to_homogeneous(P):
     P = np.atleast_2d(np.asarray(P, dtype=float))
     return np.column_stack([P, np.ones(len(P))])
-'''),
+''', hint='became a batch', public_hint='became a batch'),
     Mistake("to_homogeneous_appends_row", "to_homogeneous", "appends a row of ones instead of a column", '''
 def to_homogeneous(P):
     P = np.asarray(P, dtype=float)
     if P.ndim == 1:
         return np.append(P, 1.0)
     return np.vstack([P, np.ones(P.shape[1])])
-'''),
+''', hint='append a column', public_hint='append a column'),
     Mistake("from_homogeneous_divides_all", "from_homogeneous", "divides by the first coordinate", '''
 def from_homogeneous(P_h):
     P_h = np.asarray(P_h, dtype=float)
     return P_h[..., 1:] / P_h[..., :1]
-'''),
+''', hint='divided by the first coordinate', public_hint='divided by the first coordinate'),
     Mistake("from_homogeneous_multiplies", "from_homogeneous", "multiplies by the last coordinate", '''
 def from_homogeneous(P_h):
     P_h = np.asarray(P_h, dtype=float)
     return P_h[..., :-1] * P_h[..., -1:]
-'''),
+''', hint='multiplied by the last coordinate', public_hint='multiplied by the last coordinate'),
     Mistake("from_homogeneous_single_only", "from_homogeneous", "P_h[:3] / P_h[3]: right for one point only", '''
 def from_homogeneous(P_h):
     P_h = np.asarray(P_h, dtype=float)
     return P_h[:3] / P_h[3]
-'''),
+''', hint='one point only', public_hint='one point only'),
     Mistake("transform_points_translation_first", "transform_points", "R (p + t): shifts before turning", '''
 def transform_points(T, P):
     T, P = np.asarray(T, dtype=float), np.asarray(P, dtype=float)
     return (P + T[:3, 3]) @ T[:3, :3].T
-'''),
+''', hint='rotate first, then shift', public_hint='rotate first, then shift'),
     Mistake("transform_points_no_asarray", "transform_points", "T[:3, :3] on a list fails", '''
 def transform_points(T, P):
     return np.asarray(P, dtype=float) @ T[:3, :3].T + T[:3, 3]
-''', hint="np.asarray"),
+''', hint='np.asarray', public_hint='np.asarray'),
     Mistake("exp_se3_guarded_only_at_zero", "exp_se3", "V's closed form everywhere except θ = 0 (W coefficient 0 at tiny θ)", '''
 def exp_se3(xi):
     xi = np.asarray(xi, dtype=float)
@@ -216,14 +216,14 @@ def exp_se3(xi):
     T[:3, :3] = Exp(phi)
     T[:3, 3] = V @ rho
     return T
-''', hint="below θ = 1e-2", public_hint="below θ = 1e-2"),
+''', hint='below θ = 1e-2', public_hint='below θ = 1e-2'),
     Mistake("log_se3_c_constant", "log_se3", "c = 1/12 at every angle", '''
 def log_se3(T):
     T = np.asarray(T, dtype=float)
     phi = Log(T[:3, :3])
     W = skew(phi)
     return np.concatenate([(np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3], phi])
-'''),
+''', hint='only its value at θ = 0', public_hint='only its value at θ = 0'),
 ]
 
 ALTERNATIVES = [

@@ -7,18 +7,18 @@ MISTAKES = [
 def align_svd(P, Q):
     U, _, Vt = np.linalg.svd(np.asarray(Q, dtype=float).T @ np.asarray(P, dtype=float))
     return U @ Vt
-''', classic=True),
+''', hint="determinant fix", public_hint="determinant fix", classic=True),
     Mistake("align_svd_transposed", "align_svd", "correlation matrix Pᵀ Q instead of Qᵀ P (returns Rᵀ)", '''
 def align_svd(P, Q):
     U, _, Vt = np.linalg.svd(np.asarray(P, dtype=float).T @ np.asarray(Q, dtype=float))
     d = np.sign(np.linalg.det(U @ Vt))
     return U @ np.diag([1.0, 1.0, d]) @ Vt
-'''),
+''', hint="Pᵀ Q gives Rᵀ", public_hint="Pᵀ Q gives Rᵀ"),
     Mistake("align_svd_least_squares", "align_svd", "unconstrained least squares: not a rotation", '''
 def align_svd(P, Q):
     X, *_ = np.linalg.lstsq(np.asarray(P, dtype=float), np.asarray(Q, dtype=float), rcond=None)
     return X.T
-'''),
+''', hint="unconstrained least-squares", public_hint="unconstrained least-squares"),
     Mistake("align_gauss_newton_left_jacobian", "align_gauss_newton",
             "left Jacobian -[R p]× with the right update R Exp(δ)", '''
 def align_gauss_newton(P, Q, R0, iters=10):
@@ -31,7 +31,7 @@ def align_gauss_newton(P, Q, R0, iters=10):
             g += J.T @ (R @ p - q)
         R = R @ Exp(np.linalg.solve(H, -g))
     return R
-'''),
+''', hint="mixes two conventions", public_hint="mixes two conventions"),
     Mistake("align_gauss_newton_additive", "align_gauss_newton", "additive update R + R [δ]× (leaves SO(3))", '''
 def align_gauss_newton(P, Q, R0, iters=10):
     R = np.array(R0, dtype=float)
@@ -43,7 +43,7 @@ def align_gauss_newton(P, Q, R0, iters=10):
             g += J.T @ (R @ p - q)
         R = R + R @ skew(np.linalg.solve(H, -g))
     return R
-'''),
+''', hint="by adding R [δ]×", public_hint="by adding R [δ]×"),
     Mistake("align_gauss_newton_wrong_sign", "align_gauss_newton", "steps uphill: δ = +H⁻¹ g", '''
 def align_gauss_newton(P, Q, R0, iters=10):
     R = np.array(R0, dtype=float)
@@ -55,29 +55,29 @@ def align_gauss_newton(P, Q, R0, iters=10):
             g += J.T @ (R @ p - q)
         R = R @ Exp(np.linalg.solve(H, g))
     return R
-'''),
+''', hint="uphill", public_hint="uphill"),
     Mistake("rotation_mean_chordal", "rotation_mean", "chordal mean (projected arithmetic mean) instead of geodesic", '''
 def rotation_mean(Rs):
     U, _, Vt = np.linalg.svd(np.mean(np.asarray(Rs, dtype=float), axis=0))
     return U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt
-''', classic=True),
+''', hint="chordal mean", public_hint="chordal mean", classic=True),
     Mistake("rotation_mean_one_step", "rotation_mean", "stops after one iteration", '''
 def rotation_mean(Rs):
     Rs = np.asarray(Rs, dtype=float)
     M = Rs[0]
     delta = np.mean([Log(M.T @ R) for R in Rs], axis=0)
     return M @ Exp(delta)
-'''),
+''', hint="single step from Rs[0]", public_hint="single step from Rs[0]"),
     Mistake("rotation_mean_log_average", "rotation_mean", "averages Log(R_i) about the identity", '''
 def rotation_mean(Rs):
     return Exp(np.mean([Log(R) for R in np.asarray(Rs, dtype=float)], axis=0))
-'''),
+''', hint="about the identity", public_hint="about the identity"),
     Mistake("align_svd_ignores_Q", "align_svd", "SVD of Pᵀ P (ignores Q)", '''
 def align_svd(P, Q):
     P = np.asarray(P, dtype=float)
     U, _, Vt = np.linalg.svd(P.T @ P)
     return U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt
-'''),
+''', hint="as if Q were ignored", public_hint="as if Q were ignored"),
     Mistake("align_gauss_newton_one_step", "align_gauss_newton", "takes one Gauss-Newton step, whatever iters says", '''
 def align_gauss_newton(P, Q, R0, iters=10):
     R = np.array(R0, dtype=float)
@@ -87,11 +87,11 @@ def align_gauss_newton(P, Q, R0, iters=10):
         H += J.T @ J
         g += J.T @ (R @ p - q)
     return R @ Exp(np.linalg.solve(H, -g))
-''', classic=True),
+''', hint="whatever iters says", public_hint="whatever iters says", classic=True),
     Mistake("rotation_mean_first_sample", "rotation_mean", "returns the first rotation", '''
 def rotation_mean(Rs):
     return np.array(Rs[0], dtype=float)
-'''),
+''', hint="first rotation Rs[0]", public_hint="first rotation Rs[0]"),
 ]
 
 ALTERNATIVES = [

@@ -132,7 +132,7 @@ def rotation_hint(got, expected, tol=1e-6, degrees_version=None):
         return "looks like the transpose (the inverse rotation): check the signs of the sine terms"
     if degrees_version is not None and close(got, degrees_version, tol):
         return "looks like the angle was taken in degrees: the course works in radians (np.cos takes radians)"
-    if np.linalg.det(got) < 0:
+    if np.linalg.det(got) < 0 and close(got.T @ got, np.eye(len(got)), tol):
         return "det < 0: a reflection, not a rotation; check the signs"
     if close(got, -expected, tol):
         return "every entry has the wrong sign"
@@ -228,7 +228,10 @@ def rotation_vector_hint(got, expected):
         if angle > 3.0:
             return ("returned (almost) zero near θ = π, where R - Rᵀ vanishes: "
                     "take the axis from the symmetric part (R + Rᵀ)/2 there")
-        return "returned (almost) zero for a small rotation: arccos rounds tiny angles to 0; use atan2(sin θ, cos θ)"
+        if np.arccos(np.clip(np.cos(angle), -1.0, 1.0)) == 0.0:  # cos θ rounds to 1: arccos really gives 0 here
+            return ("returned (almost) zero for a small rotation: arccos rounds tiny angles to 0; "
+                    "use atan2(sin θ, cos θ)")
+        return "returned (almost) zero for a rotation that is not zero: check how the angle and the axis are found"
     if np.linalg.norm(got + expected) <= 1e-3 * angle:
         return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
     if np.linalg.norm(got - np.rad2deg(expected)) <= 1e-3 * np.rad2deg(angle):

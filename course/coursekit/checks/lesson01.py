@@ -6,21 +6,48 @@ entries are 0 and ±1) and properties that any correct answer has.
 
 import numpy as np
 
-from ..checking import Mismatch, public_check
-from ..diagnose import ALLCLOSE_HINT, close
-from .common import fmt, require_rotation, require_same_with_lists, require_shape
+from ..checking import Mismatch, _where_in_student_code, public_check
+from ..diagnose import ALLCLOSE_HINT, close, rotation_problem
+from ..lie import Exp
+from .common import fmt, off_by, require_rotation, require_same_with_lists, require_shape
 
 # A quarter turn about z, written out: x goes to y, y goes to -x.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 # A quarter turn about x: y goes to z.
 QUARTER_TURN_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 E = np.eye(3)
+# Generic rotations (no zero entries), for naming a mistake from its value.
+GENERIC_A, GENERIC_B = Exp([0.3, -0.8, 0.5]), Exp([-0.6, 0.2, 0.9])
+SAME_SIGN_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
+                  "carries the minus")
+
+
+def _first_match(got, candidates, otherwise=None):
+    """The hint of the first (value a typical mistake returns, hint) that ``got`` equals, else ``otherwise``."""
+    for candidate, hint in candidates:
+        if close(got, candidate, 1e-9):
+            return hint
+    return otherwise
+
+
+def _crash(error, hint):
+    """A Mismatch for an exception raised by the student's code, naming its likely cause."""
+    return Mismatch(f"raised {type(error).__name__}: {error}{_where_in_student_code(error)}", hint)
+
+
+def _same_sign_sines(R, i, j, angle):
+    """True when the sine entries (i, j) and (j, i) of R are ±sin(angle) with the same sign."""
+    s = np.sin(angle)
+    return abs(R[i, j] - R[j, i]) <= 1e-9 and abs(abs(R[i, j]) - abs(s)) <= 1e-9 and abs(s) > 1e-3
 
 
 # ---------------------------------------------------------------- rot2d
 @public_check("rot2d", "returns a 2×2 rotation matrix")
 def _(rot2d):
-    require_rotation(require_shape(rot2d(0.7), (2, 2)))
+    R = require_shape(rot2d(0.7), (2, 2))
+    if _same_sign_sines(R, 0, 1, 0.7) and rotation_problem(R):
+        raise Mismatch(f"rot2d(0.7) is not a rotation: {rotation_problem(R)}", SAME_SIGN_HINT)
+    require_rotation(R)
 
 
 @public_check("rot2d", "a positive angle turns x counter-clockwise (quarter turn: x → y)")
@@ -35,21 +62,36 @@ def _(rot2d):
     if close(image, [np.cos(np.deg2rad(np.pi / 2)), np.sin(np.deg2rad(np.pi / 2))], 1e-9):
         raise Mismatch(f"rot2d(pi/2) barely moves x: {fmt(image)}",
                        "looks like degrees: angles in this course are radians")
-    raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}, expected [0, 1]")
+    c, s = np.cos(0.7), np.sin(0.7)
+    hint = _first_match(require_shape(rot2d(0.7), (2, 2)), [
+        (np.array([[s, -c], [c, s]]), "sine and cosine are swapped: cos θ goes on the diagonal, ±sin θ off it")])
+    raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}, expected [0, 1]", hint)
 
 
 # ---------------------------------------------------------------- rot_x, rot_y, rot_z
 def _elementary_checks(name, axis, quarter_from, quarter_to):
+    i, j = [k for k in range(3) if k != axis]
+
     @public_check(name, "returns a 3×3 rotation matrix")
     def _(fn):
-        require_rotation(require_shape(fn(0.9), (3, 3)))
+        R = require_shape(fn(0.9), (3, 3))
+        if _same_sign_sines(R, i, j, 0.9):
+            raise Mismatch(f"{name}(0.9): the two sine entries are equal, {R[i, j]:.3f}, so RᵀR ≠ I "
+                           f"({off_by(R.T @ R, E)})", SAME_SIGN_HINT)
+        require_rotation(R)
 
     @public_check(name, f"leaves its own axis ({'xyz'[axis]}) where it is")
     def _(fn):
         R = require_shape(fn(0.9), (3, 3))
         if not close(R @ E[axis], E[axis], 1e-9):
-            raise Mismatch(f"{name}(0.9) moves the {'xyz'[axis]} axis to {fmt(R @ E[axis])}",
-                           f"row and column {axis} of {name} should be the unit vector e_{'xyz'[axis]}")
+            hint = f"row and column {axis} of {name} should be the unit vector e_{'xyz'[axis]}"
+            if close(R[axis], 0.0 * E[axis], 1e-9) and close(R[:, axis], 0.0 * E[axis], 1e-9):
+                hint = f"the diagonal entry of the {'xyz'[axis]} axis is 0: it must be 1 (the axis does not move)"
+            for other in {i, j}:
+                if close(R @ E[other], E[other], 1e-9):
+                    hint = (f"this is a rotation about {'xyz'[other]}, not {'xyz'[axis]}: the cos/sin block of "
+                            f"{name} sits in the rows and columns of the other two axes")
+            raise Mismatch(f"{name}(0.9) moves the {'xyz'[axis]} axis to {fmt(R @ E[axis])}", hint)
 
     src, dst = "xyz"[quarter_from], "xyz"[quarter_to]
 
@@ -93,21 +135,33 @@ def _(is_rotation_matrix):
                        "orthogonal is not enough: a rotation also needs det = +1")
     if is_rotation_matrix(2.0 * np.eye(3)):
         raise Mismatch("accepted 2·I", "check RᵀR = I, not only that the columns are orthogonal")
-    if is_rotation_matrix(QUARTER_TURN_Z @ np.diag([1.0, 1.0, 1.0 + 1e-6])):
-        raise Mismatch("accepted a quarter turn with its last column stretched by 1e-6 (tol is 1e-9)",
-                       ALLCLOSE_HINT)
+    stretched = QUARTER_TURN_Z @ np.diag([1.0, 1.0, 1.0 + 1e-6])
+    if is_rotation_matrix(stretched):
+        gram = stretched.T @ stretched
+        raise Mismatch(f"accepted a quarter turn with its last column stretched by 1e-6: max |MᵀM - I| = "
+                       f"{np.max(np.abs(gram - E)):.2g}, tol is 1e-9",
+                       ALLCLOSE_HINT if np.allclose(gram, E, atol=1e-9) else "compare max |MᵀM - I| with tol")
     if is_rotation_matrix(np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])):
         raise Mismatch("accepted a shear (det = 1, but the columns are not orthogonal)",
-                       "det = +1 is not enough: also check MᵀM = I")
-    if not is_rotation_matrix(QUARTER_TURN_Z + 1e-6, tol=1e-4) or is_rotation_matrix(QUARTER_TURN_X + 1e-6):
-        raise Mismatch("ignores tol: R + 1e-6 must pass with tol=1e-4 and fail with the default tol=1e-9",
-                       "compare with the tol argument, not a fixed number")
+                       "a shear has det 1 too: also check max |MᵀM - I| <= tol")
+    ignores = "the verdict does not follow tol: compare with the tol argument, not a fixed number"
+    if not is_rotation_matrix(QUARTER_TURN_Z + 1e-6, tol=1e-4):
+        raise Mismatch("rejected R + 1e-6 (max |MᵀM - I| ≈ 2e-6) with tol=1e-4",
+                       ignores if not is_rotation_matrix(QUARTER_TURN_Z + 1e-6, tol=0.1) else None)
+    if is_rotation_matrix(QUARTER_TURN_X + 1e-6):
+        raise Mismatch("accepted R + 1e-6 (max |MᵀM - I| ≈ 2e-6) with the default tol=1e-9",
+                       ignores if is_rotation_matrix(QUARTER_TURN_X + 1e-6, tol=1e-15) else None)
 
 
 @public_check("is_rotation_matrix", "rejects a matrix of the wrong shape without crashing")
 def _(is_rotation_matrix):
-    if is_rotation_matrix(np.eye(4)[:3]):
-        raise Mismatch("accepted a 3×4 matrix", "check the shape first")
+    try:
+        verdict = is_rotation_matrix(np.eye(4)[:3])
+    except Exception as error:
+        raise _crash(error, "check M's shape first (2-D and square, else return False) and compare MᵀM with "
+                            "np.eye(M.shape[0]), not np.eye(3)") from None
+    if verdict:
+        raise Mismatch("accepted a 3×4 matrix", "check the shape first: a rotation matrix is square")
 
 
 # ---------------------------------------------------------------- rotate_point
@@ -124,10 +178,17 @@ def _(rotate_point):
 @public_check("rotate_point", "handles N points at once (shape (N, 3))")
 def _(rotate_point):
     points = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 3.0], [1.0, 1.0, 1.0]])
-    got = require_shape(rotate_point(QUARTER_TURN_Z, points), (4, 3))
+    try:
+        value = rotate_point(QUARTER_TURN_Z, points)
+    except Exception as error:
+        if "broadcast" in str(error):
+            raise _crash(error, "numpy could not broadcast R * P: an elementwise product is not a rotation of "
+                                "the rows; use the matrix product, P @ R.T") from None
+        raise _crash(error, "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T") from None
+    got = require_shape(value, (4, 3))
     one_by_one = np.array([QUARTER_TURN_Z @ p for p in points])
     if not close(got, one_by_one, 1e-9):
-        raise Mismatch("rows do not match rotating each point on its own",
+        raise Mismatch(f"rows do not match rotating each point on its own ({off_by(got, one_by_one)})",
                        "for rows, use P @ R.T (each row p becomes (R p)ᵀ = pᵀ Rᵀ)")
 
 
@@ -147,7 +208,12 @@ def _(compose):
     if close(R_ac, R_bc @ R_ab, 1e-9):
         raise Mismatch("the two rotations are multiplied in the wrong order",
                        "subscripts must chain: R_ac = R_ab R_bc (b meets b)")
-    raise Mismatch("compose(R_ab, R_bc) @ p_c differs from R_ab @ (R_bc @ p_c)")
+    A, B = GENERIC_A, GENERIC_B
+    hint = _first_match(require_shape(compose(A, B), (3, 3)), [
+        (A * B, "looks like A * B, the elementwise product: compose with the matrix product @"),
+        (A.T @ B, "looks like R_abᵀ R_bc: the first factor is transposed (inverted); multiply them as they are")])
+    raise Mismatch(f"compose(R_ab, R_bc) @ p_c differs from R_ab @ (R_bc @ p_c) "
+                   f"({off_by(R_ac @ p_c, R_ab @ (R_bc @ p_c))})", hint)
 
 
 @public_check("compose", "accepts plain lists")
@@ -159,10 +225,15 @@ def _(compose):
 @public_check("invert_rotation", "R_ab composed with its inverse is the identity")
 def _(invert_rotation):
     R_ba = require_shape(invert_rotation(QUARTER_TURN_Z), (3, 3))
-    if close(R_ba, QUARTER_TURN_Z, 1e-9):
-        raise Mismatch("returned the same rotation", "the inverse of a rotation is its transpose")
     if not close(QUARTER_TURN_Z @ R_ba, E, 1e-9):
-        raise Mismatch("R_ab @ invert_rotation(R_ab) is not the identity")
+        R = GENERIC_A
+        hint = _first_match(require_shape(invert_rotation(R), (3, 3)), [
+            (R, "returned R itself: the inverse of a rotation is its transpose"),
+            (-R, "returned -R (every entry negated): the inverse of a rotation is its transpose, not its negative"),
+            (R[::-1], "reversed the order of the rows (R[::-1]): the inverse is the transpose R.T "
+                      "(rows become columns)")], "the inverse of a rotation is its transpose")
+        raise Mismatch(f"R_ab @ invert_rotation(R_ab) is not the identity ({off_by(QUARTER_TURN_Z @ R_ba, E)})",
+                       hint)
 
 
 @public_check("invert_rotation", "accepts plain lists")
@@ -175,13 +246,26 @@ def _(invert_rotation):
 def _(nearest_rotation):
     got = require_shape(nearest_rotation(QUARTER_TURN_Z), (3, 3))
     if not close(got, QUARTER_TURN_Z, 1e-9):
-        raise Mismatch("changed a matrix that was already a rotation")
+        raise Mismatch(f"changed a matrix that was already a rotation ({off_by(got, QUARTER_TURN_Z)})",
+                       _first_match(got, [(QUARTER_TURN_Z.T, "returned the transpose, V Uᵀ: R = U Vᵀ")]))
 
 
 @public_check("nearest_rotation", "turns a slightly wrong matrix into a rotation close to it")
 def _(nearest_rotation):
     noisy = QUARTER_TURN_Z + 0.01 * np.array([[0.3, -0.2, 0.5], [0.1, 0.4, -0.3], [-0.2, 0.2, 0.1]])
     got = require_shape(nearest_rotation(noisy), (3, 3))
+    Q, upper = np.linalg.qr(noisy)
+    Q = Q @ np.diag(np.sign(np.diag(upper)))
+    hint = _first_match(got, [
+        (noisy / np.linalg.norm(noisy, axis=0), "dividing each column by its length does not make the columns "
+                                                "orthogonal: project with the SVD M = U Σ Vᵀ, R = U Vᵀ"),
+        (Q * np.sign(np.linalg.det(Q)), "looks like the Q of a QR decomposition: orthogonal, but it keeps the first "
+                                        "column's direction, so it is not the nearest rotation; use the SVD")])
+    if hint:
+        problem = rotation_problem(got)
+        raise Mismatch(f"not the nearest rotation: {problem}" if problem else
+                       f"the result is a rotation near the input, but not the nearest: RᵀM is not symmetric "
+                       f"(off by {np.max(np.abs(got.T @ noisy - noisy.T @ got)):.2g})", hint)
     require_rotation(got)
     if np.max(np.abs(got - noisy)) > 0.02:
         raise Mismatch("the result is a rotation, but far from the input")
@@ -193,8 +277,13 @@ def _(nearest_rotation):
 
 @public_check("nearest_rotation", "never returns a mirror, even for a mirror-like input")
 def _(nearest_rotation):
-    got = require_shape(nearest_rotation(np.diag([1.0, 1.0, -0.9])), (3, 3))
+    M = np.diag([1.0, 1.0, -0.9]) + 0.2 * np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]])
+    got = require_shape(nearest_rotation(M), (3, 3))
     if np.linalg.det(got) < 0:
-        raise Mismatch(f"det of the result is {np.linalg.det(got):.3f}",
-                       "U Vᵀ can be a reflection: flip the sign of the last column of U when det(U Vᵀ) < 0")
+        U, _, Vt = np.linalg.svd(M)
+        raise Mismatch(f"det of the result is {np.linalg.det(got):.3f}", _first_match(got, [
+            (U @ Vt, "U Vᵀ can be a reflection: flip the sign of the last column of U when det(U Vᵀ) < 0"),
+            (M / np.linalg.norm(M, axis=0), "dividing each column by its length keeps the mirror (det -1): "
+                                            "project with the SVD, and flip the last column of U when det(U Vᵀ) < 0")],
+            "the result must be a rotation, det = +1"))
     require_rotation(got)

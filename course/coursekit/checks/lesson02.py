@@ -44,6 +44,25 @@ def _is_rotation(M):
     return bool(np.max(np.abs(M.T @ M - np.eye(3))) <= 1e-9 and np.linalg.det(M) > 0)
 
 
+def _is_reflection(M):
+    M = np.asarray(M, dtype=float)
+    if M.shape != (3, 3) or not np.all(np.isfinite(M)):
+        return False
+    return bool(np.max(np.abs(M.T @ M - np.eye(3))) <= 1e-9 and np.linalg.det(M) < 0)
+
+
+def _closure_uses_matmul(check_group_axioms):
+    """True when closure looks computed with @ instead of op: mirrors under a ∘ b = b are closed
+    (b is a mirror), but their matrix products are rotations."""
+    mirrors = [np.diag([1.0, 1.0, -1.0]), np.diag([-1.0, 1.0, 1.0])]
+    try:
+        value = check_group_axioms(mirrors, lambda a, b: np.array(b, dtype=float), np.eye(3),
+                                   lambda a: np.asarray(a).T, _is_reflection)
+    except Exception:
+        return False
+    return isinstance(value, dict) and value.get("closure") is False
+
+
 def _verdict(result):
     """The dict returned by check_group_axioms, validated."""
     if not isinstance(result, dict):
@@ -85,9 +104,13 @@ def _(check_group_axioms):
 def _(check_group_axioms):
     got = _verdict(check_group_axioms([QUARTER_TURN_Z, QUARTER_TURN_X], _add, np.zeros((3, 3)),
                                       lambda a: -np.asarray(a), _is_rotation))
+    closure_hint = "closure asks is_member(op(a, b)) for every ordered pair: here R₁ + R₂ is not a rotation"
+    if got["closure"] and _closure_uses_matmul(check_group_axioms):
+        closure_hint = ("closure was tested with @ instead of the op you are given (R₁ @ R₂ is a rotation, "
+                        "R₁ + R₂ is not): use is_member(op(a, b))")
     _expect(got, {"closure": False, "identity": False, "inverse": False, "associativity": True},
             "rotations under +", {
-                "closure": "closure must test is_member(op(a, b)) with the op you are given (here +)",
+                "closure": closure_hint,
                 "identity": "the identity must belong to the set: also check is_member(identity)",
                 "inverse": "each inverse must belong to the set: also check is_member(inverse(a)) (-R has det -1)",
                 "associativity": "compare op(op(a, b), c) with op(a, op(b, c)) using op"})
@@ -107,7 +130,7 @@ def _(check_group_axioms):
     got = _verdict(check_group_axioms([1.0, 2.0, 3.0], lambda a, b: b, 1.0, lambda a: 1.0, _is_real))
     if got["identity"]:
         raise Mismatch("with a ∘ b = b, 1 is only a left identity (2 ∘ 1 = 1), yet identity came out True",
-                       "check both op(identity, a) and op(a, identity)")
+                       "1 ∘ a = a, but a ∘ 1 = 1: check op(a, identity) as well as op(identity, a)")
     if got["inverse"]:
         raise Mismatch("with a ∘ b = b and inverse(a) = 1, inverse(2) ∘ 2 = 2 ≠ 1, yet inverse came out True",
                        "check both op(a, inverse(a)) and op(inverse(a), a)")
@@ -133,11 +156,53 @@ def _(check_group_axioms):
     if not _verdict(check_group_axioms(*args, tol=1e-5))["identity"]:
         raise Mismatch("with identity 1 + 2e-7 and tol=1e-5, identity came out False", "compare with the tol argument")
     if _verdict(check_group_axioms(*args, tol=1e-9))["identity"]:
+        allclose = all(np.allclose((1.0 + 2e-7) * a, a, atol=1e-9) for a in args[0])
         raise Mismatch("with identity 1 + 2e-7 and tol=1e-9, identity came out True although 8·(1 + 2e-7) "
-                       "differs from 8 by 1.6e-6", ALLCLOSE_HINT)
+                       "differs from 8 by 1.6e-6",
+                       ALLCLOSE_HINT if allclose else "compare max |op(identity, a) - a| with tol")
 
 
 # ---------------------------------------------------------------- commutes
+SAME_ORDER_HINT = "op(a, b) looks compared with itself: swap the arguments in the second product, op(b, a)"
+IGNORES_OP_HINT = "the verdict follows a @ b whatever op is given: compare op(a, b) with op(b, a)"
+EXACT_HINT = "the two products differ by ~1e-16: compare with tol, never with =="
+FIXED_TOL_HINT = "the verdict does not change with tol: compare with the tol argument, not a fixed number"
+GENERAL_HINT = "compare max |op(a, b) - op(b, a)| with tol"
+
+
+def _commutes_slip(commutes):
+    """Name the typical slip behind a wrong commutes from a few more calls, or GENERAL_HINT when none fits.
+
+    Quarter turns and e_x, e_y under × do not commute (all True: the arguments were never swapped; only ×
+    wrong: op ignored); rotations about one axis commute up to ~1e-16 (rejected: ==); products differing by
+    1e-7 where the entries are 0 (rtol cannot help) accepted at tol=1e-9 too: tol ignored; dense products
+    differing by 1e-6 accepted at tol=1e-9 while that pair is right: np.allclose's rtol.
+    """
+    tiny_a, tiny_b = np.zeros((3, 3)), np.zeros((3, 3))
+    tiny_a[0, 1], tiny_b[1, 0] = 1e-3, 1e-4                 # products 1e-7·E₀₀ and 1e-7·E₁₁
+    dense = np.ones((3, 3)) + np.diag([1.0, 2.0, 3.0])
+    axis = np.array([2.0, -1.0, 2.0]) / 3.0
+    try:
+        big = commutes(QUARTER_TURN_X, QUARTER_TURN_Z, _matmul)
+        cross = commutes(np.eye(3)[0], np.eye(3)[1], np.cross)
+        rounding = commutes(Exp(0.4 * axis), Exp(1.3 * axis), _matmul)
+        loose = commutes(tiny_a, tiny_b, _matmul, tol=1e-5)
+        strict = commutes(tiny_a, tiny_b, _matmul, tol=1e-9)
+        rtol = commutes(dense, dense + 1e-6 * np.eye(3)[[1, 0, 2]], _matmul, tol=1e-9)
+    except Exception:
+        return GENERAL_HINT
+    if big and cross:
+        return SAME_ORDER_HINT
+    if cross:
+        return IGNORES_OP_HINT
+    if not rounding and not loose:
+        return EXACT_HINT
+    if loose and strict:
+        return FIXED_TOL_HINT
+    if loose and not strict and rtol:
+        return ALLCLOSE_HINT
+    return GENERAL_HINT
+
 @public_check("commutes", "rotations about one axis commute, even though rounding differs")
 def _(commutes):
     axis = np.array([2.0, -1.0, 2.0]) / 3.0
@@ -146,34 +211,40 @@ def _(commutes):
         raise Mismatch(f"returned {verdict!r} ({type(verdict).__name__}), not True or False",
                        "return bool(...) of one comparison, not an array")
     if not verdict:
-        raise Mismatch("said two rotations about the same axis do not commute",
-                       "the two products differ by ~1e-16: compare with tol, never with ==")
+        gap = np.max(np.abs(Exp(0.4 * axis) @ Exp(1.3 * axis) - Exp(1.3 * axis) @ Exp(0.4 * axis)))
+        raise Mismatch(f"said two rotations about the same axis do not commute (their products differ by "
+                       f"{gap:.2g})", _commutes_slip(commutes))
 
 
 @public_check("commutes", "quarter turns about x and z do not commute")
 def _(commutes):
     if commutes(QUARTER_TURN_X, QUARTER_TURN_Z, _matmul):
-        raise Mismatch("said the quarter turns about x and z commute",
-                       "compare op(a, b) with op(b, a) — swap the arguments in the second product")
+        raise Mismatch("said the quarter turns about x and z commute (their products differ by 2)",
+                       _commutes_slip(commutes))
 
 
 @public_check("commutes", "uses the op it is given (numbers under *, vectors under ×)")
 def _(commutes):
-    if not commutes(2.0, -3.5, _multiply):
-        raise Mismatch("said 2 and -3.5 do not commute under multiplication", "call op(a, b) and op(b, a)")
+    try:
+        numbers = commutes(2.0, -3.5, _multiply)
+    except Exception as error:
+        raise Mismatch(f"commutes(2.0, -3.5, multiply) raised {type(error).__name__}: {error}",
+                       _commutes_slip(commutes)) from None
+    if not numbers:
+        raise Mismatch("said 2 and -3.5 do not commute under multiplication", _commutes_slip(commutes))
     e_x, e_y = np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])
     if commutes(e_x, e_y, np.cross):
         raise Mismatch("said e_x and e_y commute under the cross product (e_x × e_y = -(e_y × e_x))",
-                       "use the op argument, not the matrix product")
+                       _commutes_slip(commutes))
 
 
 @public_check("commutes", "uses the tol argument")
 def _(commutes):
     A, B = Exp([0.0, 0.0, 0.3]), Exp([1e-7, 0.0, 0.5])   # their products differ by about 3e-8
     if not commutes(A, B, _matmul, tol=1e-5):
-        raise Mismatch("with tol=1e-5, a difference of 3e-8 was not accepted", "compare with the tol argument")
+        raise Mismatch("with tol=1e-5, a difference of 3e-8 was not accepted", _commutes_slip(commutes))
     if commutes(A, B, _matmul, tol=1e-9):
-        raise Mismatch("with tol=1e-9, a difference of 3e-8 was accepted", "compare with the tol argument")
+        raise Mismatch("with tol=1e-9, a difference of 3e-8 was accepted", _commutes_slip(commutes))
 
 
 @public_check("commutes", "tol is an absolute tolerance, also for large entries")
@@ -183,4 +254,4 @@ def _(commutes):
     gap = np.max(np.abs(M @ B - B @ M))
     if commutes(M, B, _matmul, tol=1e-9):
         raise Mismatch(f"with tol=1e-9, said two matrices commute whose products differ by {gap:.2g}",
-                       ALLCLOSE_HINT)
+                       _commutes_slip(commutes))

@@ -22,10 +22,34 @@ R_SAMPLE = Exp([0.4, -0.7, 1.1])
 D_SAMPLE = np.array([0.2, -0.3, 0.25])
 
 
-def _first_order_hint(R):
-    if close(R, R_SAMPLE @ (E + skew(D_SAMPLE)), 1e-9):
-        return "looks like R (I + [δ]×), the first-order approximation: use Exp(δ), which stays a rotation"
-    return None
+def _is(got, candidate, truth, tol=1e-9):
+    """True when ``got`` is the candidate mistake's value (and that value is not also the right one)."""
+    return close(got, candidate, tol) and not close(candidate, truth, 100 * tol)
+
+
+def _boxplus_hint(got, R, d, right, fallback=None):
+    """Name the typical wrong versions of R ⊞ δ when ``got`` is one of them."""
+    R, d = np.asarray(R, dtype=float), np.asarray(d, dtype=float)
+    if right:
+        truth = R @ Exp(d)
+        candidates = [(Exp(d) @ R, "that is the left perturbation Exp(δ) R; the right one is R @ Exp(δ)"),
+                      (R @ (E + skew(d)), "looks like R (I + [δ]×), only the first-order approximation: use "
+                       "R @ Exp(δ), which stays a rotation"),
+                      (R @ Exp(-d), "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)"),
+                      (R.T @ Exp(d), "that is Rᵀ Exp(δ): R got transposed; the right perturbation is R @ Exp(δ)")]
+    else:
+        truth = Exp(d) @ R
+        candidates = [(R @ Exp(d), "that is the right perturbation R Exp(δ); the left one is Exp(δ) @ R"),
+                      ((E + skew(d)) @ R, "looks like (I + [δ]×) R, only the first-order approximation: use "
+                       "Exp(δ) @ R, which stays a rotation"),
+                      (Exp(-d) @ R, "turned by -δ: check the sign (Exp(δ) @ R, not Exp(δ)ᵀ @ R)"),
+                      (Exp(d) @ R.T, "that is Exp(δ) Rᵀ: R got transposed; the left perturbation is Exp(δ) @ R")]
+    candidates.append((R + skew(d), "that is R + [δ]×: rotations do not add, the sum is not a rotation; "
+                       "compose with Exp(δ) instead"))
+    for value, hint in candidates:
+        if _is(got, value, truth):
+            return hint
+    return fallback
 
 
 # ---------------------------------------------------------------- boxplus_right
@@ -34,10 +58,13 @@ def _(boxplus_right):
     got = require_shape(boxplus_right(R_SAMPLE, D_SAMPLE), (3, 3))
     problem = rotation_problem(got)
     if problem:
-        raise Mismatch(problem, _first_order_hint(got))
+        raise Mismatch(problem, _boxplus_hint(got, R_SAMPLE, D_SAMPLE, True,
+                                              "Exp(δ) is a rotation and so is R @ Exp(δ): build the result from it"))
     same = require_shape(boxplus_right(R_SAMPLE, np.zeros(3)), (3, 3))
     if not close(same, R_SAMPLE, 1e-12):
-        raise Mismatch("boxplus_right(R, 0) differs from R", "Exp(0) is the identity: nothing should move")
+        raise Mismatch(f"boxplus_right(R, 0) differs from R, {off_by(same, R_SAMPLE)}",
+                       _boxplus_hint(same, R_SAMPLE, np.zeros(3), True, "Exp(0) is the identity: nothing should move")
+                       if not close(same, R_SAMPLE.T, 1e-9) else "boxplus_right(R, 0) returned Rᵀ: R got transposed")
 
 
 @public_check("boxplus_right", "turns about the body's own axis: R ⊞ (0, 0, π/2) keeps the body z axis")
@@ -46,14 +73,19 @@ def _(boxplus_right):
     expected = QUARTER_TURN_X @ QUARTER_TURN_Z
     if close(got, expected, 1e-9):
         return
+    d = [0.0, 0.0, np.pi / 2]
     if rotation_problem(got):
         raise Mismatch(f"R ⊞ (0, 0, π/2) is not a rotation: {rotation_problem(got)}",
-                       "R (I + [δ]×) is only a first-order approximation: use R @ Exp(δ)")
+                       _boxplus_hint(got, QUARTER_TURN_X, d, True, "a product of rotations, R @ Exp(δ), stays a rotation"))
     if close(got, QUARTER_TURN_Z @ QUARTER_TURN_X, 1e-9):
         raise Mismatch("turned about the world z axis instead of the body's z axis",
                        "that is the left perturbation Exp(δ) R; the right one is R @ Exp(δ)")
-    raise Mismatch(f"R ⊞ δ moved the body z axis from {fmt(QUARTER_TURN_X[:, 2])} to {fmt(got[:, 2])}",
-                   "the right perturbation is R @ Exp(δ)")
+    if close(got, QUARTER_TURN_X @ QUARTER_TURN_Z.T, 1e-9):
+        raise Mismatch("turned a quarter turn about the body's z axis, but the wrong way (x went to -y)",
+                       "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)")
+    raise Mismatch(f"R ⊞ (0, 0, π/2) is {off_by(got, expected)} from R Q_z; its body x axis went to {fmt(got[:, 0])}, "
+                   f"expected {fmt(expected[:, 0])}", _boxplus_hint(got, QUARTER_TURN_X, d, True,
+                                                                      "the right perturbation is R @ Exp(δ)"))
 
 
 # ---------------------------------------------------------------- boxplus_left
@@ -62,10 +94,15 @@ def _(boxplus_left):
     got = require_shape(boxplus_left(R_SAMPLE, D_SAMPLE), (3, 3))
     problem = rotation_problem(got)
     if problem:
-        raise Mismatch(problem, "use Exp(δ), which is always a rotation")
+        raise Mismatch(problem, _boxplus_hint(got, R_SAMPLE, D_SAMPLE, False,
+                                              "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"))
     same = require_shape(boxplus_left(R_SAMPLE, np.zeros(3)), (3, 3))
     if not close(same, R_SAMPLE, 1e-12):
-        raise Mismatch("boxplus_left(R, 0) differs from R", "Exp(0) is the identity: nothing should move")
+        if close(same, R_SAMPLE.T, 1e-9):
+            raise Mismatch("boxplus_left(R, 0) returned Rᵀ instead of R",
+                           "that is Exp(δ) Rᵀ: R got transposed; the left perturbation is Exp(δ) @ R")
+        raise Mismatch(f"boxplus_left(R, 0) differs from R, {off_by(same, R_SAMPLE)}",
+                       "Exp(0) is the identity: nothing should move")
 
 
 @public_check("boxplus_left", "turns about the world axis: (0, 0, π/2) sends the body z axis from -y to x")
@@ -77,8 +114,9 @@ def _(boxplus_left):
     if close(got, QUARTER_TURN_X @ QUARTER_TURN_Z, 1e-9):
         raise Mismatch("turned about the body's z axis instead of the world z axis",
                        "that is the right perturbation R Exp(δ); the left one is Exp(δ) @ R")
-    raise Mismatch(f"the body z axis went to {fmt(got[:, 2])}, expected [1, 0, 0]",
-                   "the left perturbation is Exp(δ) @ R")
+    raise Mismatch(f"the body z axis went to {fmt(got[:, 2])}, expected [1, 0, 0] ({off_by(got, expected)} overall)",
+                   _boxplus_hint(got, QUARTER_TURN_X, [0.0, 0.0, np.pi / 2], False,
+                                 "the left perturbation is Exp(δ) @ R"))
 
 
 # ---------------------------------------------------------------- boxminus
@@ -91,13 +129,23 @@ def _(boxminus):
 
 @public_check("boxminus", "a quarter turn about the body's z axis: (R Q_z) ⊟ R = (0, 0, π/2)")
 def _(boxminus):
-    got = require_shape(boxminus(R_SAMPLE @ QUARTER_TURN_Z, R_SAMPLE), (3,))
-    if close(got, [0.0, 0.0, np.pi / 2], 1e-9):
+    R_a = R_SAMPLE @ QUARTER_TURN_Z
+    got = require_shape(boxminus(R_a, R_SAMPLE), (3,))
+    expected = [0.0, 0.0, np.pi / 2]
+    if close(got, expected, 1e-9):
         return
     if close(got, [0.0, 0.0, -np.pi / 2], 1e-9):
         raise Mismatch(f"got {fmt(got)}, the step back",
                        "arguments swapped? boxminus(R_a, R_b) = Log(R_bᵀ R_a), the step from R_b to R_a")
-    raise Mismatch(f"got {fmt(got)}, expected [0, 0, 1.571]",
+    if close(got, [0.0, 0.0, 1.0], 1e-9):
+        raise Mismatch(f"got {fmt(got)}: the length is sin(π/2) = 1 instead of the angle π/2",
+                       "that is the axis times sin θ (the vee of R_bᵀ R_a - I), right only to first order: take "
+                       "Log(R_bᵀ R_a), whose length is the angle θ itself")
+    if close(got, Log(R_a) - Log(R_SAMPLE), 1e-9):
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from (0, 0, π/2)",
+                       "that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not commute); "
+                       "the difference is Log(R_bᵀ R_a)")
+    raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from (0, 0, π/2)",
                    "boxminus(R_a, R_b) = Log(R_bᵀ R_a): the body-frame step from R_b to R_a")
 
 
@@ -121,13 +169,20 @@ def _(quat_boxplus):
     if close(got, [half, 0.0, 0.0, half], 1e-9) or close(got, [-half, 0.0, 0.0, -half], 1e-9):
         return
     if close(np.abs(got), [0.0, 0.0, 0.0, 1.0], 1e-9):
-        raise Mismatch(f"got {fmt(got)}: a half turn", "a quaternion holds the half angle: cos(|δ|/2), sin(|δ|/2) u")
+        raise Mismatch(f"got {fmt(got)}: a half turn", "turned twice as far: a quaternion holds the half angle, "
+                       "cos(|δ|/2) and sin(|δ|/2)")
     if close(got, [1.0, 0.0, 0.0, np.pi / 4], 1e-9):
-        raise Mismatch(f"got {fmt(got)}: the shortcut [1, δ/2] without normalising",
-                       "use the exact Exp_q(δ), or at least divide by the norm")
+        raise Mismatch(f"got {fmt(got)}, of norm {np.linalg.norm(got):.4f}",
+                       "that is [1, δ/2] without normalising: not a unit quaternion; use the exact Exp_q(δ) = "
+                       "[cos(|δ|/2), sin(|δ|/2) δ/|δ|]")
+    shortcut = np.array([1.0, 0.0, 0.0, np.pi / 4])
+    if close(got, shortcut / np.linalg.norm(shortcut), 1e-9):
+        raise Mismatch(f"got {fmt(got)}: a turn of 2·atan(π/4) = {2 * np.arctan(np.pi / 4):.4f} rad, not π/2",
+                       "that is [1, δ/2] rescaled to unit length: a unit quaternion, but it turns by 2·atan(|δ|/2) "
+                       "instead of |δ|; use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]")
     if close(got, [0.0, 0.0, half, half], 1e-9) or close(got, [half, half, 0.0, 0.0], 1e-9):
         raise Mismatch(f"got {fmt(got)}", "scalar first: [w, x, y, z]")
-    raise Mismatch(f"got {fmt(got)}, expected [0.707, 0, 0, 0.707]")
+    raise Mismatch(f"got {fmt(got)}, {off_by(got, [half, 0.0, 0.0, half])} from [0.707, 0, 0, 0.707]")
 
 
 @public_check("quat_boxplus", "the result has unit norm, even for a large δ")
@@ -136,8 +191,11 @@ def _(quat_boxplus):
     got = require_shape(quat_boxplus(q, [0.6, -0.8, 0.5]), (4,))
     norm = np.linalg.norm(got)
     if abs(norm - 1.0) > 1e-9:
-        raise Mismatch(f"|q ⊞ δ| = {norm:.6f}",
-                       "q ⊗ [1, δ/2] is not a unit quaternion: use the exact Exp_q(δ) or normalise")
+        d = np.array([0.6, -0.8, 0.5])
+        if close(got, quat_product(q, np.concatenate([[1.0], d / 2.0])), 1e-9):
+            raise Mismatch(f"|q ⊞ δ| = {norm:.6f}", "that is q ⊗ [1, δ/2] without normalising: its norm is "
+                           "√(1 + |δ|²/4), not 1; use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]")
+        raise Mismatch(f"|q ⊞ δ| = {norm:.6f}", "q ⊗ Exp_q(δ) is a product of unit quaternions, so its norm is 1")
 
 
 @public_check("quat_boxplus", "perturbs on the right (q ⊗ Exp_q(δ)), and δ = 0 returns q")
@@ -151,9 +209,15 @@ def _(quat_boxplus):
         if abs(np.linalg.norm(got) - 1.0) > 1e-9:
             raise Mismatch(f"got {fmt(got)}, of norm {np.linalg.norm(got):.4f}",
                            "use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|] and return a unit quaternion")
-        if close(np.abs(got), np.abs(quat_product(exp_z, q)), 1e-9):
-            raise Mismatch("got Exp_q(δ) ⊗ q", "the right perturbation multiplies on the right: q ⊗ Exp_q(δ)")
-        raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}")
+        left = quat_product(exp_z, q)
+        if close(got, left, 1e-9) or close(got, -left, 1e-9):
+            raise Mismatch("got Exp_q(δ) ⊗ q", "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the "
+                           "right: q ⊗ Exp_q(δ)")
+        twice = quat_product(q, [0.0, 0.0, 0.0, 1.0])
+        if close(got, twice, 1e-9) or close(got, -twice, 1e-9):
+            raise Mismatch(f"got {fmt(got)}: a half turn about the body z axis instead of a quarter turn",
+                           "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and sin(|δ|/2)")
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from {fmt(expected)} (sign aside)")
     same = require_shape(quat_boxplus(q, np.zeros(3)), (4,))
     if not (close(same, q, 1e-12) or close(same, -q, 1e-12)):
         raise Mismatch(f"quat_boxplus(q, 0) returned {fmt(same)}",
@@ -163,6 +227,56 @@ def _(quat_boxplus):
 # ---------------------------------------------------------------- numerical_jacobian
 def _polynomial(x):
     return np.array([x[0] * x[1], x[2] ** 2])
+
+
+def _fixed_step(f, x, h, plus=None):
+    """Forward differences with one fixed step ``h``: the value of a too-large or too-small step, to name it."""
+    if plus is None:
+        x = np.asarray(x, dtype=float)
+        f0 = np.asarray(f(x), dtype=float)
+        columns = []
+        for j in range(x.size):
+            moved = x.copy()
+            moved[j] += h
+            columns.append((np.asarray(f(moved), dtype=float) - f0) / h)
+        return np.column_stack(columns)
+    f0 = np.asarray(f(x), dtype=float)
+    return np.column_stack([(np.asarray(f(plus(x, h * e)), dtype=float) - f0) / h for e in E])
+
+
+def _step_hint(got, exact, f, x, plus=None, fallback=JACOBIAN_STEP_HINT):
+    """Name a fixed step far too large (1e-1 … 1e-4) or far too small (1e-10 … 1e-15) when ``got`` is exactly
+    the forward differences with it; the transpose; else ``fallback``."""
+    got, exact = np.asarray(got, dtype=float), np.asarray(exact, dtype=float)
+    if got.shape != exact.shape or not np.all(np.isfinite(got)):
+        return fallback
+    error = np.max(np.abs(got - exact))
+    if got.shape[0] == got.shape[1] and np.max(np.abs(got.T - exact)) <= 1e-3 * error:
+        return "row i is output f_i, column j is the direction δ_j: that is the transpose of the Jacobian"
+    for k in [1, 2, 3, 4, 10, 11, 12, 13, 14, 15]:
+        h = 10.0 ** -k
+        if np.max(np.abs(got - _fixed_step(f, x, h, plus))) <= 1e-3 * error:
+            if h >= 1e-4:
+                return (f"that is forward differences with a fixed step h = {h:g}, a step far too large: the slope is "
+                        "biased by about h/2 · f'' (the right side of the V-curve); use δ_j = max(|1e-4 x_j|, 1e-6), "
+                        "a step near √ε ≈ 1e-8, or central differences")
+            return (f"that is forward differences with a fixed step h = {h:g}, a step far too small: rounding noise "
+                    "of about ε·|f|/h swamps the slope (the left side of the V-curve); use δ_j = max(|1e-4 x_j|, "
+                    "1e-6) or a step near √ε ≈ 1e-8")
+    return fallback
+
+
+def _floor_hint(x):
+    """Said when NaN or inf sit exactly in the columns where x_j = 0 (a relative step with no floor)."""
+    x = np.asarray(x, dtype=float)
+
+    def hint(value):
+        bad = ~np.all(np.isfinite(value), axis=0)
+        if value.ndim == 2 and value.shape[1] == x.size and np.any(bad) and np.array_equal(bad, x == 0.0):
+            return ("NaN exactly in the columns where x_j = 0: the relative step 1e-4·|x_j| is 0 there and the slope "
+                    "0/0; keep the floor, δ_j = max(|1e-4 x_j|, 1e-6)")
+        return None
+    return hint
 
 
 @public_check("numerical_jacobian", "shape (len(f(x)), n) and the slopes of a small polynomial")
@@ -175,7 +289,8 @@ def _(numerical_jacobian):
     expected = np.array([[2.0, 1.0, 0.0], [0.0, 0.0, 6.0]])
     if not close(got, expected, 1e-3):
         raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from the slopes",
-                       "column j: (f(x + δ_j e_j) - f(x)) / δ_j, e.g. with δ_j = max(|1e-4 x_j|, 1e-6)")
+                       _step_hint(got, expected, _polynomial, np.array([1.0, 2.0, 3.0]), fallback="column j: "
+                                  "(f(x + δ_j e_j) - f(x)) / δ_j, e.g. with δ_j = max(|1e-4 x_j|, 1e-6)"))
 
 
 def _wavy(x):
@@ -194,21 +309,22 @@ _LECTURE_ERRORS = ((np.array([1.2, -3.0, 2.5]), 1.68e-4), (np.array([0.0, 0.5, -
 @public_check("numerical_jacobian", "at least as accurate as the lecture's forward steps δ_j = max(|1e-4 x_j|, 1e-6)")
 def _(numerical_jacobian):
     for x, lecture_error in _LECTURE_ERRORS:
-        got = require_shape(numerical_jacobian(_wavy, x), (2, 3))
+        got = require_shape(numerical_jacobian(_wavy, x), (2, 3), nan_hint=_floor_hint(x))
         exact = _wavy_jacobian(x)
         allowed = jacobian_error_allowed(lecture_error, exact)
         error = np.max(np.abs(got - exact))
         if error > allowed:
             raise Mismatch(f"at x = {fmt(x)} the Jacobian is off by {error:.2g}, more than the {allowed:.2g} allowed "
-                           "(twice the error of the lecture's forward steps)", JACOBIAN_STEP_HINT)
+                           "(twice the error of the lecture's forward steps)", _step_hint(got, exact, _wavy, x))
 
 
 @public_check("numerical_jacobian", "works where x_j = 0 (the floor 1e-6 of the step rule)")
 def _(numerical_jacobian):
-    got = require_shape(numerical_jacobian(np.sin, np.zeros(3)), (3, 3))
+    got = require_shape(numerical_jacobian(np.sin, np.zeros(3)), (3, 3), nan_hint=_floor_hint(np.zeros(3)))
     if not close(got, E, 1e-5):
-        raise Mismatch(f"the Jacobian of sin at 0 came out as {fmt(got)}, expected the identity",
-                       "at x_j = 0 the relative step 1e-4·|x_j| is 0: keep the floor, max(..., 1e-6)")
+        raise Mismatch(f"the Jacobian of sin at 0 is {off_by(got, E)} from the identity (tolerance 1e-05)",
+                       _step_hint(got, E, np.sin, np.zeros(3), fallback="at x_j = 0 the lecture's step is its floor, "
+                                  "δ_j = 1e-6: the slope of sin there is 1"))
 
 
 @public_check("numerical_jacobian", "with a boxplus: 3 columns, one per turning direction of δ")
@@ -228,7 +344,8 @@ def _(numerical_jacobian):
     expected = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
     if not close(got, expected, 1e-4):
         raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from the turning directions",
-                       "column j: (f(boxplus(x, h e_j)) - f(x)) / h with a small h (e.g. 1e-6)")
+                       _step_hint(got, expected, rotate_x_axis, np.eye(3), plus, fallback="column j: "
+                                  "(f(boxplus(x, h e_j)) - f(x)) / h with a small h (e.g. 1e-6)"))
 
 
 # ---------------------------------------------------------------- jacobian_rotate_point
@@ -237,7 +354,10 @@ def _(jacobian_rotate_point):
     got = require_shape(jacobian_rotate_point(np.eye(3), [1.0, 0.0, 0.0]), (3, 3))
     expected = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
     if not close(got, expected, 1e-12):     # antisymmetric here: a sign slip and a transpose look alike
-        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)}; expected {fmt(expected)}")
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)}; expected {fmt(expected)}",
+                       "got exactly minus the expected matrix: a flipped sign or the transpose (here, with R = I "
+                       "and p = x, the two look alike); the next check tells them apart"
+                       if close(got, -expected, 1e-12) else None)
 
 
 @public_check("jacobian_rotate_point", "first order: R Exp(δ) p - R p - J δ shrinks like |δ|²")
@@ -256,6 +376,10 @@ def _(jacobian_rotate_point):
                 hint = "the sign is flipped: R [δ]× p = -R [p]× δ"
             elif close(J, (-R_SAMPLE @ skew(p)).T, 1e-9):
                 hint = "that is the transpose of -R [p]×: row i is output i, column j is δ_j"
+            elif close(J, -skew(p), 1e-9):
+                hint = "R is missing: the Jacobian is -R [p]×"
+            elif close(J, -skew(p) @ R_SAMPLE, 1e-9):
+                hint = "the factors are in the wrong order: -R [p]×, not -[p]× R"
             raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²", hint)
 
 
@@ -266,22 +390,46 @@ def _(right_jacobian_so3):
     problem = shape_problem(got, (3, 3))
     if problem:
         raise Mismatch(f"right_jacobian_so3(0) {problem}",
-                       "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle")
+                       "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle"
+                       if problem == "returned NaN or inf values" else None)
     if not close(got, E, 1e-12):
         raise Mismatch(f"right_jacobian_so3(0) returned {fmt(got)}")
 
 
-@public_check("right_jacobian_so3", "tiny angle |w| = 1e-9: Jr ≈ I - [w]×/2 to full precision")
+def _wx_coefficient(J, w):
+    """The coefficient c of [w]× in J = I + c [w]× + …, read from J's antisymmetric part."""
+    anti = 0.5 * (J - J.T)
+    return float(np.dot([anti[2, 1], anti[0, 2], anti[1, 0]], w) / np.dot(w, w))
+
+
+@public_check("right_jacobian_so3", "tiny angles |w| = 1e-9 and 1e-6: Jr ≈ I - [w]×/2 to full precision")
 def _(right_jacobian_so3):
-    w = 1e-9 * np.array([0.6, 0.0, 0.8])
-    got = require_shape(right_jacobian_so3(w), (3, 3))
-    expected = E - 0.5 * skew(w)
-    if close(got, E + 0.5 * skew(w), 1e-14):
-        raise Mismatch("got I + [w]×/2: the sign of the [w]× term is flipped",
-                       "that is the left Jacobian; Jr = I - a [w]× + b [w]×²")
-    if not close(got, expected, 1e-14):
-        raise Mismatch(f"off by {np.max(np.abs(got - expected)):.1e} at θ = 1e-9",
-                       "(1 - cos θ)/θ² loses its digits at tiny θ: use the series 1/2 - θ²/24 below a threshold")
+    u = np.array([0.6, 0.0, 0.8])
+    for theta in (1e-9, 1e-6):
+        w = theta * u
+        got = require_shape(right_jacobian_so3(w), (3, 3))
+        expected = E - 0.5 * skew(w) + skew(w) @ skew(w) / 6.0
+        error = np.max(np.abs(got - expected))
+        if error <= 1e-14 + 1e-6 * theta:
+            continue
+        c = _wx_coefficient(got, w)
+        seen = f"off by {error:.1e} at θ = {theta:g}: the coefficient of [w]× is {c:.9g}, expected -0.5"
+        if abs(c - 0.5) < 1e-6:
+            raise Mismatch(seen, "that is the left Jacobian (the sign of the [w]× term is flipped); "
+                           "Jr = I - a [w]× + b [w]×²")
+        if abs(c + 1.0 / 6.0) < 1e-6:
+            raise Mismatch(seen, "the coefficients are swapped: (1 - cos θ)/θ² multiplies [w]× and (θ - sin θ)/θ³ "
+                           "multiplies [w]×²")
+        naive = [-(1.0 - np.cos(t)) / t**2 for t in (1e-9, 1e-6)]
+        if all(abs(_wx_coefficient(require_shape(right_jacobian_so3(t * u), (3, 3)), t * u) - a) <= 1e-12
+               for t, a in zip((1e-9, 1e-6), naive)):
+            raise Mismatch(seen, "the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, "
+                           "so (1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a threshold")
+        if close(got, E, 1e-300):
+            raise Mismatch(seen, f"returned I at θ = {theta:g}: the first-order term -[w]×/2 is missing; below a "
+                           "small angle use the series I - [w]×/2 + [w]×²/6")
+        raise Mismatch(seen, "below a small angle use the series a = 1/2 - θ²/24, b = 1/6 - θ²/120 of "
+                       "Jr = I - a [w]× + b [w]×²")
 
 
 @public_check("right_jacobian_so3", "first order: Exp(w + dw) ≈ Exp(w) Exp(Jr dw) with an error of order |dw|²")
@@ -304,7 +452,8 @@ def _(right_jacobian_inv_so3):
     problem = shape_problem(got, (3, 3))
     if problem:
         raise Mismatch(f"right_jacobian_inv_so3(0) {problem}",
-                       "the closed form is 0/0 at θ = 0: use the series 1/12 + θ²/720 below a small angle")
+                       "the closed form is 0/0 at θ = 0: use the series 1/12 + θ²/720 below a small angle"
+                       if problem == "returned NaN or inf values" else None)
     if not close(got, E, 1e-12):
         raise Mismatch(f"right_jacobian_inv_so3(0) returned {fmt(got)}")
 
@@ -317,8 +466,18 @@ def _(right_jacobian_inv_so3):
     error = np.linalg.norm(Log(Exp(w) @ Exp(v)) - w - J @ v)
     if error > 1e-8:
         hint = "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²"
+        # Jr measured here by central differences of dw ↦ Log(Exp(w)ᵀ Exp(w + dw)), to name the usual slips.
+        h = 1e-6
+        Jr = np.column_stack([(Log(Exp(w).T @ Exp(w + h * e)) - Log(Exp(w).T @ Exp(w - h * e))) / (2 * h) for e in E])
         if np.linalg.norm(Log(Exp(v) @ Exp(w)) - w - J @ v) < 1e-8:
             hint = "this is the inverse of the left Jacobian (it works for Exp(v) Exp(w)): flip the sign of [w]×/2"
+        elif close(J, Jr.T, 1e-7):
+            hint = "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
+        elif close(J, Jr, 1e-7):
+            hint = "that is Jr(w) itself, not its inverse"
+        elif close(J, E + 0.5 * skew(w), 1e-12):
+            hint = ("that is I + [w]×/2, only the first-order part: add the [w]×² term with the coefficient "
+                    "1/θ² - (1 + cos θ)/(2θ sin θ)")
         raise Mismatch(f"for |v| = 1e-4 the error is {error:.1e}, expected below 1e-8", hint)
 
 
@@ -327,5 +486,9 @@ def _(right_jacobian_inv_so3):
     w = 1e-9 * np.array([0.0, 0.6, 0.8])
     got = require_shape(right_jacobian_inv_so3(w), (3, 3))
     if not close(got, E + 0.5 * skew(w), 1e-14):
-        raise Mismatch(f"off by {np.max(np.abs(got - E - 0.5 * skew(w))):.1e} at θ = 1e-9",
-                       "use the series of the [w]×² coefficient (1/12 + θ²/720) below a small angle")
+        c = _wx_coefficient(got, w)
+        seen = f"off by {np.max(np.abs(got - E - 0.5 * skew(w))):.1e} at θ = 1e-9: the coefficient of [w]× is {c:.9g}"
+        if abs(c + 0.5) < 1e-6:
+            raise Mismatch(seen, "the [w]× term has the wrong sign: -[w]×/2 belongs to Jr; its inverse has +[w]×/2")
+        raise Mismatch(seen, "Jr⁻¹ ≈ I + [w]×/2 + [w]×²/12 at tiny angles: use the series of the [w]×² coefficient "
+                       "(1/12 + θ²/720) below a small angle")

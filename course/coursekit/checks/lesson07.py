@@ -11,7 +11,7 @@ from scipy.linalg import expm
 
 from ..checking import Mismatch, public_check
 from ..diagnose import close
-from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape
+from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape  # noqa: F401
 
 # A quarter turn about z (x goes to y) followed by a shift of (1, 2, 3) m, written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -27,6 +27,14 @@ T_QUARTER_X = np.array([[1.0, 0.0, 0.0, 0.0],
                         [0.0, 0.0, 0.0, 1.0]])
 
 
+MIRROR_HINT = "xi = [rho, phi]: translation part first (xi[:3]), rotation part last (xi[3:])"
+FORGETS_V_HINT = "the translation of exp(xi) is V(phi) @ rho, not rho"
+SERIES_NAN_HINT_V = ("NaN or inf: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
+                     "below θ = 1e-2 use their series (1/2 - θ²/24, 1/6 - θ²/120)")
+SERIES_HINT_C = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: the closed form is 0/0 at θ = 0 "
+                 "and cancels catastrophically just above it")
+
+
 def _twist_matrix(xi):
     rho, phi = np.asarray(xi[:3], dtype=float), np.asarray(xi[3:], dtype=float)
     return np.array([[0.0, -phi[2], phi[1], rho[0]],
@@ -35,19 +43,41 @@ def _twist_matrix(xi):
                      [0.0, 0.0, 0.0, 0.0]])
 
 
+def _first_match(got, candidates):
+    """The (reason, hint) of the first candidate (a mistake's value computed from the inputs) that got equals."""
+    for candidate, reason, hint in candidates:
+        if close(got, candidate, 1e-9):
+            return reason, hint
+    return None
+
+
+def _pose(R, t):
+    T = np.eye(4)
+    T[:3, :3], T[:3, 3] = R, t
+    return T
+
+
 # ---------------------------------------------------------------- make_pose
 @public_check("make_pose", "puts R top-left, t in the last column and [0, 0, 0, 1] below")
 def _(make_pose):
     T = require_shape(make_pose(QUARTER_TURN_Z, SHIFT), (4, 4))
-    if close(T, T_QUARTER.T, 1e-12):
-        raise Mismatch("got the transpose of the pose matrix",
-                       "t goes in the last column (T[:3, 3]), not in the bottom row")
-    if not close(T[:3, 3], SHIFT, 1e-12):
-        raise Mismatch(f"the last column holds {fmt(T[:3, 3])}, expected t = [1, 2, 3]")
-    if not close(T[:3, :3], QUARTER_TURN_Z, 1e-12):
-        raise Mismatch("the top-left 3×3 block is not R", "copy R itself, not its transpose")
-    if not close(T[3], [0.0, 0.0, 0.0, 1.0], 1e-12):
-        raise Mismatch(f"the bottom row is {fmt(T[3])}, expected [0, 0, 0, 1]")
+    if close(T, T_QUARTER, 1e-12):
+        return
+    bottom_row = np.eye(4)
+    bottom_row[:3, :3], bottom_row[3, :3] = QUARTER_TURN_Z, SHIFT
+    no_one = T_QUARTER.copy()
+    no_one[3, 3] = 0.0
+    found = _first_match(T, [
+        (T_QUARTER.T, "got the transpose of the pose matrix", "t goes in the last column (T[:3, 3]), not the bottom row"),
+        (bottom_row, "t ended up in the bottom row", "t goes in the last column (T[:3, 3]), not the bottom row"),
+        (_pose(QUARTER_TURN_Z.T, SHIFT), "the top-left 3×3 block is Rᵀ", "copy R itself, not its transpose"),
+        (no_one, "the bottom row is [0, 0, 0, 0], expected [0, 0, 0, 1]",
+         "T[3, 3] must be 1: start from np.eye(4), not np.zeros((4, 4))"),
+    ])
+    if found:
+        raise Mismatch(*found)
+    raise Mismatch(f"got {fmt(T)}, expected {fmt(T_QUARTER)} ({off_by(T, T_QUARTER)})",
+                   "T = [[R, t], [0, 0, 0, 1]]: R in T[:3, :3], t in T[:3, 3]")
 
 
 @public_check("make_pose", "accepts plain lists")
@@ -58,9 +88,16 @@ def _(make_pose):
 # ---------------------------------------------------------------- to_homogeneous / from_homogeneous
 @public_check("to_homogeneous", "appends a 1 to one point: shape (3,) → (4,)")
 def _(to_homogeneous):
-    got = require_shape(to_homogeneous([1.0, 2.0, 3.0]), (4,))
+    got = to_homogeneous([1.0, 2.0, 3.0])
+    if np.shape(got) == (1, 4):
+        raise Mismatch("returned shape 1×4, expected 4",
+                       "one point of shape (3,) became a batch of shape (1, 4): append along the last axis, "
+                       "np.concatenate([P, ones], axis=-1), so (3,) gives (4,)")
+    got = require_shape(got, (4,))
     if close(got, [1.0, 2.0, 3.0, 0.0], 1e-12):
         raise Mismatch("appended a 0", "a 0 marks a direction; points get a 1")
+    if close(got, [1.0, 1.0, 2.0, 3.0], 1e-12):
+        raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3, 1]", "the 1 goes last: [x, y, z] becomes [x, y, z, 1]")
     if not close(got, [1.0, 2.0, 3.0, 1.0], 1e-12):
         raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3, 1]")
 
@@ -73,27 +110,52 @@ def _(to_homogeneous):
         raise Mismatch("returned shape 3×3: a row of ones was added below the points",
                        "append a column: the new coordinate belongs to every point (axis=-1)")
     got = require_shape(got, (2, 4))
+    if close(got, np.column_stack([P, np.zeros(2)]), 1e-12):
+        raise Mismatch(f"got {fmt(got)}", "a 0 marks a direction; points get a 1")
+    if close(got, np.column_stack([np.ones(2), P]), 1e-12):
+        raise Mismatch(f"got {fmt(got)}", "the 1 goes last: [x, y, z] becomes [x, y, z, 1]")
     if not close(got, np.column_stack([P, np.ones(2)]), 1e-12):
         raise Mismatch(f"got {fmt(got)}", "each row should be the point followed by a 1")
 
 
 @public_check("from_homogeneous", "divides by the last coordinate: [2, 4, 6, 2] → [1, 2, 3]")
 def _(from_homogeneous):
-    got = require_shape(from_homogeneous([2.0, 4.0, 6.0, 2.0]), (3,))
-    if close(got, [2.0, 4.0, 6.0], 1e-12):
-        raise Mismatch("got [2, 4, 6]: the last coordinate was dropped without dividing",
-                       "[x, y, z, w] is the point [x/w, y/w, z/w]")
-    if not close(got, [1.0, 2.0, 3.0], 1e-12):
-        raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3]")
+    P_h = np.array([2.0, 4.0, 6.0, 2.0])
+    got = require_shape(from_homogeneous(P_h.tolist()), (3,))
+    if close(got, [1.0, 2.0, 3.0], 1e-12):
+        return
+    found = _dehomogeneous_mistake(got, P_h)
+    raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3]", found or "[x, y, z, w] is the point [x/w, y/w, z/w]")
+
+
+def _dehomogeneous_mistake(got, P_h):
+    found = _first_match(got, [
+        (P_h[..., :3], "", "divide by the last coordinate before dropping it: [x, y, z, w] is [x/w, y/w, z/w]"),
+        (P_h[..., 1:] / P_h[..., :1], "", "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"),
+        (P_h[..., :3] * P_h[..., 3:], "", "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"),
+    ])
+    return found[1] if found else None
 
 
 @public_check("from_homogeneous", "works on rows: shape (N, 4) → (N, 3)")
 def _(from_homogeneous):
     P_h = np.array([[2.0, 4.0, 6.0, 2.0], [1.0, -1.0, 0.5, 0.5], [3.0, 0.0, 0.0, 1.0]])
-    got = require_shape(from_homogeneous(P_h), (3, 3))
     expected = np.array([[1.0, 2.0, 3.0], [2.0, -2.0, 1.0], [3.0, 0.0, 0.0]])
+    single_ok = close(from_homogeneous(P_h[0].copy()), expected[0], 1e-12)
+    single_only = ("works for one point only (P_h[:3] / P_h[3] indexes rows): index the last axis, "
+                   "P_h[..., :3] / P_h[..., 3:]")
+    try:
+        got = from_homogeneous(P_h.copy())
+    except IndexError as error:
+        if single_ok:
+            raise Mismatch(f"rows of shape (3, 4) raised IndexError: {error}", single_only) from None
+        raise
+    if single_ok and np.shape(got) == (3, 4) and close(got, P_h[:3] / P_h[3:4], 1e-12):
+        raise Mismatch("returned shape 3×4, expected 3×3", single_only)
+    got = require_shape(got, (3, 3))
     if not close(got, expected, 1e-12):
         raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}",
+                       _dehomogeneous_mistake(got, P_h) or
                        "divide each row by its own last coordinate (P_h[..., -1:] keeps the shape)")
 
 
@@ -105,21 +167,34 @@ def _(transform_points):
     expected = np.array([[1.0, 3.0, 3.0], [1.0, 2.0, 3.0], [-1.0, 2.0, 2.0]])
     if close(got, expected, 1e-12):
         return
-    if close(got, P @ QUARTER_TURN_Z.T, 1e-12):
-        raise Mismatch("the points were turned but not shifted", "add the translation t = T[:3, 3]")
-    if close(got, P @ QUARTER_TURN_Z + SHIFT, 1e-12):
-        raise Mismatch("the points were turned the wrong way",
-                       "for rows use P @ R.T (or P_h @ T.T), not P @ R")
-    if close(got, (P + SHIFT) @ QUARTER_TURN_Z.T, 1e-12):
-        raise Mismatch("the points were shifted, then turned", "rotate first, then shift: R p + t")
-    raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}")
+    found = _transform_mistake(got, T_QUARTER, P)
+    if found:
+        raise Mismatch(*found)
+    raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)} ({off_by(got, expected)})",
+                   "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t")
+
+
+def _transform_mistake(got, T, P):
+    R, t = T[:3, :3], T[:3, 3]
+    moved = np.concatenate([P, np.ones(P.shape[:-1] + (1,))], axis=-1) @ T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        divided = moved[..., :3] / moved[..., 3:]
+    return _first_match(got, [
+        (P @ R.T, "the points were turned but not shifted", "the translation is missing: add t = T[:3, 3]"),
+        (P @ R + t, "the points were turned the wrong way", "for rows use P @ R.T (or P_h @ T.T), not P @ R"),
+        (moved[..., :3], "the points were multiplied by T instead of T.T", "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
+        (divided, "the points were multiplied by T instead of T.T", "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
+        ((P + t) @ R.T, "the points were shifted, then turned", "rotate first, then shift: R p + t"),
+    ])
 
 
 @public_check("transform_points", "accepts a single point of shape (3,)")
 def _(transform_points):
     got = require_shape(transform_points(T_QUARTER, [1.0, 0.0, 0.0]), (3,))
     if not close(got, [1.0, 3.0, 3.0], 1e-12):
-        raise Mismatch(f"got {fmt(got)} for the point [1, 0, 0], expected [1, 3, 3]")
+        found = _transform_mistake(got, T_QUARTER, np.array([1.0, 0.0, 0.0]))
+        raise Mismatch(f"got {fmt(got)} for the point [1, 0, 0], expected [1, 3, 3]",
+                       found[1] if found else "p_a = R p_b + t")
 
 
 # ---------------------------------------------------------------- pose_compose
@@ -135,25 +210,49 @@ def _(pose_compose):
     p_c = np.array([0.3, -1.2, 2.0, 1.0])
     if close(T_ac @ p_c, T_QUARTER @ (T_QUARTER_X @ p_c), 1e-12):
         return
-    if close(T_ac, T_QUARTER_X @ T_QUARTER, 1e-12):
-        raise Mismatch("the two poses are multiplied in the wrong order",
-                       "inner letters must match: T_ac = T_ab @ T_bc")
-    raise Mismatch("pose_compose(T_ab, T_bc) @ p differs from T_ab @ (T_bc @ p)")
+    A, B = T_QUARTER, T_QUARTER_X
+    added = A @ B
+    added[:3, 3] = A[:3, 3] + B[:3, 3]
+    found = _first_match(T_ac, [
+        (B @ A, "the two poses are multiplied in the wrong order",
+         "the order is reversed: inner letters must match, T_ac = T_ab @ T_bc"),
+        (A * B, "the poses were multiplied entry by entry", "* multiplies entry by entry: use the matrix product @"),
+        (added, "the translations were added", "t_bc must be turned by R_ab first: t_ac = R_ab t_bc + t_ab"),
+        (A.T @ B, "T_ab was transposed", "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"),
+    ])
+    if found:
+        raise Mismatch(*found)
+    raise Mismatch(f"pose_compose(T_ab, T_bc) @ p differs from T_ab @ (T_bc @ p) "
+                   f"({off_by(T_ac @ p_c, T_QUARTER @ (T_QUARTER_X @ p_c))})", "T_ac = T_ab @ T_bc")
 
 
 # ---------------------------------------------------------------- pose_inverse
 @public_check("pose_inverse", "a pose times its inverse is the identity")
 def _(pose_inverse):
     got = require_shape(pose_inverse(T_QUARTER), (4, 4))
-    if close(got, T_QUARTER.T, 1e-12):
-        raise Mismatch("returned the transpose of T",
-                       "a pose is not orthogonal: transpose the rotation block and use -Rᵀ t")
+    if close(T_QUARTER @ got, np.eye(4), 1e-12):
+        return
+    found = _inverse_mistake(got, T_QUARTER)
+    if found:
+        raise Mismatch(*found)
     require_pose(got)
-    if close(got[:3, 3], -SHIFT, 1e-12):
-        raise Mismatch(f"the translation of the inverse is -t = {fmt(-SHIFT)}",
-                       "turn it too: the inverse translation is -Rᵀ t")
-    if not close(T_QUARTER @ got, np.eye(4), 1e-12):
-        raise Mismatch("T @ pose_inverse(T) is not the identity")
+    raise Mismatch(f"T @ pose_inverse(T) is not the identity ({off_by(T_QUARTER @ got, np.eye(4))})",
+                   "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
+
+
+def _inverse_mistake(got, T):
+    R, t = T[:3, :3], T[:3, 3]
+    return _first_match(got, [
+        (T.T, "returned the transpose of T",
+         "the plain transpose of T is not its inverse (a pose is not orthogonal): transpose the rotation block "
+         "and use -Rᵀ t"),
+        (_pose(R.T, -t), f"the translation of the inverse is -t = {fmt(-t)}",
+         "-t must be turned as well as negated: the inverse translation is -Rᵀ t"),
+        (_pose(R.T, t), "the translation of the inverse is t itself",
+         "kept t unchanged: the inverse translation is -Rᵀ t (undo the shift, then the turn)"),
+        (_pose(R, -R @ t), "the rotation block of the inverse is R",
+         "the rotation block of the inverse is Rᵀ, not R (and its translation -Rᵀ t)"),
+    ])
 
 
 @public_check("pose_inverse", "takes a point back: T_ba (T_ab p) = p")
@@ -161,7 +260,9 @@ def _(pose_inverse):
     got = require_shape(pose_inverse(T_QUARTER_X), (4, 4))
     p = np.array([0.7, 0.1, -2.0, 1.0])
     if not close(got @ (T_QUARTER_X @ p), p, 1e-12):
-        raise Mismatch(f"got {fmt((got @ (T_QUARTER_X @ p))[:3])} back instead of {fmt(p[:3])}")
+        found = _inverse_mistake(got, T_QUARTER_X)
+        raise Mismatch(f"got {fmt((got @ (T_QUARTER_X @ p))[:3])} back instead of {fmt(p[:3])}",
+                       found[1] if found else "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
 
 
 # ---------------------------------------------------------------- exp_se3
@@ -169,11 +270,10 @@ def _(pose_inverse):
 def _(exp_se3):
     T = exp_se3([1.0, 2.0, 3.0, 0.0, 0.0, 0.0])
     if np.shape(T) == (4, 4) and not np.all(np.isfinite(np.asarray(T, dtype=float))):
-        raise Mismatch("returned NaN or inf at phi = 0", "below θ = 1e-2 use the series for V: no 0/0")
+        raise Mismatch("returned NaN or inf at phi = 0", SERIES_NAN_HINT_V)
     T = require_shape(T, (4, 4))
     if close(T[:3, :3], expm(_twist_matrix([0.0, 0.0, 0.0, 1.0, 2.0, 3.0]))[:3, :3], 1e-9):
-        raise Mismatch("rho was used as the rotation vector",
-                       "xi = [rho, phi]: translation part first (xi[:3]), rotation part last (xi[3:])")
+        raise Mismatch("rho was used as the rotation vector", MIRROR_HINT)
     expected = np.eye(4)
     expected[:3, 3] = [1.0, 2.0, 3.0]
     if not close(T, expected, 1e-12):
@@ -182,11 +282,14 @@ def _(exp_se3):
 
 @public_check("exp_se3", "xi = [0, 0, 0, 0, 0, π/2] is a quarter turn about z")
 def _(exp_se3):
-    T = require_shape(exp_se3([0.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2]), (4, 4))
+    xi = np.array([0.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
+    T = require_shape(exp_se3(xi), (4, 4))
     expected = np.eye(4)
     expected[:3, :3] = QUARTER_TURN_Z
     if not close(T, expected, 1e-12):
-        raise Mismatch(f"got {fmt(T)}", "the rotation block is Exp(phi) with phi = xi[3:]")
+        if close(T, expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), 1e-9):
+            raise Mismatch(f"got {fmt(T)}: phi was used as the translation", MIRROR_HINT)
+        raise Mismatch(f"got {fmt(T)} ({off_by(T, expected)})", "the rotation block is Exp(phi) with phi = xi[3:]")
 
 
 @public_check("exp_se3", "agrees with scipy's matrix exponential (expm) of the 4×4 twist matrix")
@@ -197,9 +300,11 @@ def _(exp_se3):
     if close(T, expected, 1e-9):
         return
     if close(T[:3, 3], xi[:3], 1e-9):
-        raise Mismatch(f"the translation equals rho = {fmt(xi[:3])}, expected {fmt(expected[:3, 3])}",
-                       "the translation of exp(xi) is V(phi) @ rho, not rho")
-    raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])}")
+        raise Mismatch(f"the translation equals rho = {fmt(xi[:3])}, expected {fmt(expected[:3, 3])}", FORGETS_V_HINT)
+    if close(T, expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), 1e-9):
+        raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])}", MIRROR_HINT)
+    raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])} ({off_by(T, expected)})",
+                   "T = [[Exp(phi), V(phi) rho], [0, 1]] with V = I + (1 - cos θ)/θ² W + (θ - sin θ)/θ³ W²")
 
 
 def _tiny_twist(angle):
@@ -209,15 +314,28 @@ def _tiny_twist(angle):
 
 @public_check("exp_se3", "tiny rotation parts keep their accuracy: |phi| = 1e-9 and 1e-6 with |rho| = 50")
 def _(exp_se3):
+    failures = []
     for angle in (1e-9, 1e-6):
         rho, phi = _tiny_twist(angle)
         xi = np.concatenate([rho, phi])
-        T = require_shape(exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {angle:g}")
+        T = require_shape(exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {angle:g}",
+                          nan_hint=lambda _: SERIES_NAN_HINT_V)
         expected = expm(_twist_matrix(xi))
         if not close(T, expected, 1e-12 * 50.0):
-            raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the pose is {off_by(T, expected)} (allowed 5e-11)",
-                           "below θ = 1e-2 use the series of V's coefficients (1/2 - θ²/24, 1/6 - θ²/120): "
-                           "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2")
+            failures.append((angle, T, expected, xi))
+    if not failures:
+        return
+    # At |phi| = 1e-9 a V whose coefficients round to 0 is I exactly, like a forgotten V: look at every failure.
+    is_rho = [close(T[:3, 3], xi[:3], 1e-3 * np.max(np.abs(expected[:3, 3] - xi[:3]))) for _, T, expected, xi in failures]
+    angle, T, expected, xi = failures[0]
+    if close(T, expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), 1e-9):
+        hint = MIRROR_HINT
+    elif all(is_rho):
+        hint = FORGETS_V_HINT
+    else:
+        hint = ("below θ = 1e-2 use the series of V's coefficients (1/2 - θ²/24, 1/6 - θ²/120): "
+                "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2")
+    raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the pose is {off_by(T, expected)} (allowed 5e-11)", hint)
 
 
 # ---------------------------------------------------------------- log_se3
@@ -225,8 +343,7 @@ def _(exp_se3):
 def _(log_se3):
     xi = log_se3(np.eye(4))
     if np.shape(xi) == (6,) and not np.all(np.isfinite(np.asarray(xi, dtype=float))):
-        raise Mismatch("returned NaN or inf for the identity",
-                       "below θ = 1e-2 use the series for c(θ): 1/12 + θ²/720 + θ⁴/30240")
+        raise Mismatch("returned NaN or inf for the identity", SERIES_HINT_C)
     xi = require_shape(xi, (6,))
     if not close(xi, np.zeros(6), 1e-12):
         raise Mismatch(f"got {fmt(xi)}")
@@ -238,7 +355,7 @@ def _(log_se3):
     T[:3, 3] = SHIFT
     xi = require_shape(log_se3(T), (6,))
     if close(xi, [0.0, 0.0, 0.0, 1.0, 2.0, 3.0], 1e-12):
-        raise Mismatch("got [0, 0, 0, 1, 2, 3]", "xi = [rho, phi]: translation part first")
+        raise Mismatch("got [0, 0, 0, 1, 2, 3]", MIRROR_HINT)
     if not close(xi, [1.0, 2.0, 3.0, 0.0, 0.0, 0.0], 1e-9):
         raise Mismatch(f"got {fmt(xi)}, expected [1, 2, 3, 0, 0, 0]")
 
@@ -248,11 +365,11 @@ def _(log_se3):
     for angle in (1e-9, 1e-6):
         rho, phi = _tiny_twist(angle)
         xi = np.concatenate([rho, phi])
-        got = require_shape(log_se3(expm(_twist_matrix(xi))), (6,), f"log_se3 at |phi| = {angle:g}")
+        T = expm(_twist_matrix(xi))
+        got = require_shape(log_se3(T), (6,), f"log_se3 at |phi| = {angle:g}", nan_hint=lambda _: SERIES_HINT_C)
         if not close(got, xi, 1e-11 * 50.0):
             raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the twist is {off_by(got, xi)} (allowed 5e-10)",
-                           "below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: "
-                           "the closed form cancels catastrophically there")
+                           _log_mistake(got, T, xi) or SERIES_HINT_C)
 
 
 @public_check("log_se3", "round trip: expm of the twist matrix of log_se3(T) gives T back")
@@ -260,9 +377,29 @@ def _(log_se3):
     for T in (T_QUARTER, T_QUARTER_X):
         xi = require_shape(log_se3(T), (6,))
         if close(xi[:3], T[:3, 3], 1e-9):
-            raise Mismatch(f"rho equals t = {fmt(T[:3, 3])} although T rotates",
-                           "rho = V(phi)⁻¹ t: the translation must be undone through V")
+            raise Mismatch(f"rho equals t = {fmt(T[:3, 3])} although T rotates", FORGETS_V_INV_HINT)
         if close(expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), T, 1e-9):
-            raise Mismatch("rho and phi are swapped", "xi = [rho, phi]: translation part first")
-        if not close(expm(_twist_matrix(xi)), T, 1e-9):
-            raise Mismatch(f"expm(twist(log_se3(T))) differs from T for T = {fmt(T)}")
+            raise Mismatch("rho and phi are swapped", MIRROR_HINT)
+        rebuilt = expm(_twist_matrix(xi))
+        if not close(rebuilt, T, 1e-9):
+            raise Mismatch(f"expm(twist(log_se3(T))) differs from T for T = {fmt(T)} ({off_by(rebuilt, T)})",
+                           _log_mistake(xi, T) or "xi = [V(phi)⁻¹ t, phi] with phi = Log(R)")
+
+
+FORGETS_V_INV_HINT = "rho = V(phi)⁻¹ t, not t itself: the translation must be undone through V"
+
+
+def _log_mistake(got, T, xi=None):
+    """The mistake behind the twist ``got`` of T (each candidate computed from T), or None."""
+    phi = got[3:] if xi is None else xi[3:]
+    if xi is not None and close(np.concatenate([got[3:], got[:3]]), xi, 1e-6):
+        return MIRROR_HINT
+    if xi is not None:
+        gap = np.max(np.abs(T[:3, 3] - xi[:3]))
+        if gap > 0.0 and close(got[:3], T[:3, 3], 1e-3 * gap):
+            return FORGETS_V_INV_HINT
+    W = _twist_matrix(np.concatenate([np.zeros(3), phi]))[:3, :3]
+    if np.linalg.norm(phi) > 1e-2 and close(got[:3], (np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3], 1e-9):
+        return ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use "
+                "c(θ) = (1 - (θ/2) cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
+    return None

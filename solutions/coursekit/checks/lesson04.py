@@ -36,22 +36,43 @@ def _conjugate(q):
 
 
 # ---------------------------------------------------------------- quat_multiply
+JPL_HINT = ("the sign of the cross product is flipped (that is the JPL product, ij = -k): "
+            "the vector part is p_w q_v + q_w p_v + p_v × q_v")
+NO_CROSS_HINT = ("your product is commutative (p ⊗ q = q ⊗ p for every pair tried): the cross product is missing "
+                 "from the vector part p_w q_v + q_w p_v + p_v × q_v")
+DOT_PLUS_HINT = "the scalar part is p_w q_w - p_v · q_v (minus the dot product): i ⊗ i = -1"
+ELEMENTWISE_HINT = "multiplied entry by entry: every component of p ⊗ q mixes all four components of p and q"
+PRODUCT_GENERIC = "check each of the 16 terms of the product against the formula"
+
+
+def _product_diagnosis(quat_multiply):
+    """The hint for the typical wrong product that ``quat_multiply`` computes (judged on a few products)."""
+    pq = require_shape(quat_multiply(LONG, GENERIC), (4,))
+    if close(pq, LONG * GENERIC, 1e-12):
+        return ELEMENTWISE_HINT
+    if close(require_shape(quat_multiply(I_, I_), (4,)), ONE, 1e-12):
+        return DOT_PLUS_HINT
+    qp = require_shape(quat_multiply(GENERIC, LONG), (4,))
+    if close(require_shape(quat_multiply(I_, J_), (4,)), -K_, 1e-12):
+        return JPL_HINT
+    if close(pq, qp, 1e-12):
+        return NO_CROSS_HINT
+    return PRODUCT_GENERIC
+
+
 @public_check("quat_multiply", "follows Hamilton's rules: i ⊗ j = k, j ⊗ i = -k, i ⊗ i = -1")
 def _(quat_multiply):
     got = require_shape(quat_multiply(I_, J_), (4,))
     if close(got, -K_, 1e-12):
-        raise Mismatch("i ⊗ j gave -k",
-                       "the sign of the cross product is flipped (that is the JPL product): "
-                       "the vector part is p_w q_v + q_w p_v + p_v × q_v")
+        raise Mismatch("i ⊗ j gave -k", JPL_HINT)
     if not close(got, K_, 1e-12):
-        raise Mismatch(f"i ⊗ j gave {fmt(got)}, expected k = [0, 0, 0, 1]")
+        raise Mismatch(f"i ⊗ j gave {fmt(got)}, expected k = [0, 0, 0, 1]", _product_diagnosis(quat_multiply))
     got = require_shape(quat_multiply(J_, I_), (4,))
     if not close(got, -K_, 1e-12):
         raise Mismatch(f"j ⊗ i gave {fmt(got)}, expected -k = [0, 0, 0, -1]", "the product is not commutative")
     got = require_shape(quat_multiply(I_, I_), (4,))
     if not close(got, -ONE, 1e-12):
-        raise Mismatch(f"i ⊗ i gave {fmt(got)}, expected -1 = [-1, 0, 0, 0]",
-                       "the scalar part is p_w q_w - p_v · q_v (minus the dot product)")
+        raise Mismatch(f"i ⊗ i gave {fmt(got)}, expected -1 = [-1, 0, 0, 0]", _product_diagnosis(quat_multiply))
 
 
 @public_check("quat_multiply", "[1, 0, 0, 0] is the identity on both sides, for any quaternion")
@@ -59,24 +80,39 @@ def _(quat_multiply):
     for name, got in (("1 ⊗ q", quat_multiply(ONE, LONG)), ("q ⊗ 1", quat_multiply(LONG, ONE))):
         got = require_shape(got, (4,))
         if not close(got, LONG, 1e-12):
-            raise Mismatch(f"{name} gave {fmt(got)} for q = {fmt(LONG)}")
+            raise Mismatch(f"{name} gave {fmt(got)} for q = {fmt(LONG)}, {off_by(got, LONG)}",
+                           _product_diagnosis(quat_multiply))
 
 
 @public_check("quat_multiply", "the norm is multiplicative: |p ⊗ q| = |p| |q|")
 def _(quat_multiply):
     got = require_shape(quat_multiply(LONG, GENERIC), (4,))
-    if abs(np.linalg.norm(got) - np.linalg.norm(LONG)) > 1e-12:
-        raise Mismatch(f"|p ⊗ q| = {np.linalg.norm(got):.6f}, expected {np.linalg.norm(LONG):.6f}",
-                       "check each of the 16 terms of the product against the formula")
+    error = abs(np.linalg.norm(got) - np.linalg.norm(LONG))
+    if error > 1e-12:
+        raise Mismatch(f"|p ⊗ q| = {np.linalg.norm(got):.6f}, expected {np.linalg.norm(LONG):.6f} "
+                       f"(off by {error:.2g})",
+                       _product_diagnosis(quat_multiply))
 
 
 # ---------------------------------------------------------------- quat_left, quat_right
+def _layout_diagnosis(M, q, mine):
+    """A hint when the first row and column of ``M`` show a transpose or a scalar-last reading of ``q``."""
+    if close(M[:, 0], _conjugate(q), 1e-12) and close(M[0, :], q, 1e-12):
+        return f"looks like the transpose of [q]_{mine}: its first column must be q and its first row [w, -x, -y, -z]"
+    if close(M[:, 0], np.roll(q, 1), 1e-12):
+        return "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
+    return None
+
+
 def _matrix_checks(name, side):
+    mine, theirs = ("L", "R") if side == "left" else ("R", "L")
+
     @public_check(name, "returns a 4×4 matrix whose first column is q (q ⊗ 1 = 1 ⊗ q = q)")
     def _(fn):
         M = require_shape(fn(LONG), (4, 4))
         if not close(M @ ONE, LONG, 1e-12):
-            raise Mismatch(f"{name}(q) @ [1, 0, 0, 0] = {fmt(M @ ONE)}, expected q = {fmt(LONG)}")
+            raise Mismatch(f"{name}(q) @ [1, 0, 0, 0] = {fmt(M @ ONE)}, expected q = {fmt(LONG)}, "
+                           f"{off_by(M @ ONE, LONG)}", _layout_diagnosis(M, LONG, mine))
 
     if side == "left":
         factor, other, description = I_, J_, "[i]_L @ j = i ⊗ j = k"
@@ -85,19 +121,26 @@ def _matrix_checks(name, side):
 
     @public_check(name, description)
     def _(fn):
-        got = require_shape(fn(factor), (4, 4)) @ other
-        if close(got, -K_, 1e-12):
-            raise Mismatch("got -k instead of k",
-                           "the [v]× block has the wrong sign: +[v]× in [q]_L, -[v]× in [q]_R")
-        if not close(got, K_, 1e-12):
-            raise Mismatch(f"got {fmt(got)}, expected k = [0, 0, 0, 1]")
+        M = require_shape(fn(factor), (4, 4))
+        got = M @ other
+        if close(got, K_, 1e-12):
+            return
+        hint = _layout_diagnosis(M, factor, mine)
+        if hint is None and close(got, -K_, 1e-12) and close(M[:, 0], factor, 1e-12):
+            hint = (f"the [v]× block has the wrong sign: this is [q]_{theirs}; "
+                    "+[v]× belongs in [q]_L, -[v]× in [q]_R")
+        raise Mismatch("got -k instead of k" if close(got, -K_, 1e-12) else
+                       f"got {fmt(got)}, expected k = [0, 0, 0, 1]", hint)
 
     @public_check(name, "is orthogonal for a unit quaternion (MᵀM = I)")
     def _(fn):
         M = require_shape(fn(GENERIC), (4, 4))
         error = np.max(np.abs(M.T @ M - np.eye(4)))
         if error > 1e-12:
-            raise Mismatch(f"max |MᵀM - I| = {error:.2g}", "compare your entries with the matrix in §4, one sign at a time")
+            hint = ("the first row is [w, -x, -y, -z]: its minus signs are missing"
+                    if close(M[0, :], GENERIC, 1e-12) and close(M[:, 0], GENERIC, 1e-12) else
+                    "compare your entries with the matrix in §4, one sign at a time")
+            raise Mismatch(f"max |MᵀM - I| = {error:.2g}", hint)
 
 
 _matrix_checks("quat_left", "left")
@@ -108,12 +151,16 @@ _matrix_checks("quat_right", "right")
 @public_check("quat_conjugate", "flips the vector part: [1, 2, 3, 4]* = [1, -2, -3, -4]")
 def _(quat_conjugate):
     q = np.array([1.0, 2.0, 3.0, 4.0])
-    got = require_shape(quat_conjugate(q), (4,))
+    got = require_shape(quat_conjugate(q.copy()), (4,))        # a copy: an in-place answer is accepted
     if close(got, [-1.0, 2.0, 3.0, 4.0], 1e-12):
         raise Mismatch("negated the scalar part instead of the vector part",
                        "q* = [w, -x, -y, -z]; the result is -q*, the same rotation but not the conjugate")
+    if close(got, q, 1e-12):
+        raise Mismatch("got [1, 2, 3, 4], the input itself", "returned q unchanged: negate the vector part x, y, z")
+    if close(got, -q, 1e-12):
+        raise Mismatch("got [-1, -2, -3, -4]", "returned -q: keep the scalar w, negate only x, y, z")
     if not close(got, [1.0, -2.0, -3.0, -4.0], 1e-12):
-        raise Mismatch(f"got {fmt(got)}, expected [1, -2, -3, -4]")
+        raise Mismatch(f"got {fmt(got)}, expected [1, -2, -3, -4], {off_by(got, [1.0, -2.0, -3.0, -4.0])}")
 
 
 @public_check("quat_conjugate", "accepts a plain list")
@@ -122,69 +169,111 @@ def _(quat_conjugate):
 
 
 # ---------------------------------------------------------------- quat_inverse
+def _inverse_diagnosis(got, q):
+    """A hint when ``got`` is -q / |q|² or 1/q entry by entry."""
+    q = np.asarray(q, dtype=float)
+    if close(got, -q / (q @ q), 1e-12):
+        return "returned -q / |q|²: only the vector part changes sign, q⁻¹ = q* / |q|²"
+    if close(got, 1.0 / q, 1e-12):
+        return "took 1/q entry by entry: the inverse of a quaternion is q* / |q|²"
+    return None
+
+
 @public_check("quat_inverse", "for a unit quaternion the inverse is the conjugate")
 def _(quat_inverse):
     got = require_shape(quat_inverse(GENERIC), (4,))
     if not close(got, _conjugate(GENERIC), 1e-12):
-        raise Mismatch(f"got {fmt(got)} for q = {fmt(GENERIC)}, expected its conjugate")
+        raise Mismatch(f"got {fmt(got)} for q = {fmt(GENERIC)}, expected its conjugate, "
+                       f"{off_by(got, _conjugate(GENERIC))}", _inverse_diagnosis(got, GENERIC))
 
 
 @public_check("quat_inverse", "works for quaternions that are not unit: [1, 1, 1, 1]⁻¹ = [1, -1, -1, -1] / 4")
 def _(quat_inverse):
-    got = require_shape(quat_inverse([1.0, 1.0, 1.0, 1.0]), (4,))
+    q = np.array([1.0, 1.0, 1.0, 1.0])
+    got = require_shape(quat_inverse(q.tolist()), (4,))
     if close(got, [1.0, -1.0, -1.0, -1.0], 1e-12):
-        raise Mismatch("returned the conjugate without dividing", "q⁻¹ = q* / |q|², with |q|² = w² + x² + y² + z²")
+        raise Mismatch("got [1, -1, -1, -1], 4 times too long",
+                       "returned the conjugate: divide it by |q|², with |q|² = w² + x² + y² + z²")
     if close(got, [0.5, -0.5, -0.5, -0.5], 1e-12):
-        raise Mismatch("divided by |q| = 2 instead of |q|² = 4", "q⁻¹ = q* / |q|²: the norm squared")
+        raise Mismatch("got [0.5, -0.5, -0.5, -0.5]", "divided by |q| = 2, not by |q|² = 4: q⁻¹ = q* / |q|²")
     if not close(got, [0.25, -0.25, -0.25, -0.25], 1e-12):
-        raise Mismatch(f"got {fmt(got)}, expected [0.25, -0.25, -0.25, -0.25]")
+        raise Mismatch(f"got {fmt(got)}, expected [0.25, -0.25, -0.25, -0.25], "
+                       f"{off_by(got, [0.25, -0.25, -0.25, -0.25])}", _inverse_diagnosis(got, q))
 
 
 # ---------------------------------------------------------------- quat_from_axis_angle
+HALF_ANGLE_HINT = "the quaternion uses the half angle: [cos(θ/2), u sin(θ/2)]"
+DEGREES_HINT = "looks like degrees: angles in this course are radians"
+SWAPPED_HINT = "sin and cos are swapped: the scalar is cos(θ/2), the vector part u sin(θ/2)"
+
+
+def _axis_angle_diagnosis(got, axis, theta):
+    """The hint for the typical wrong quaternion of (axis, θ) that ``got`` equals, else None."""
+    axis = np.asarray(axis, dtype=float)
+    u = axis / np.linalg.norm(axis)
+    half_degrees = np.deg2rad(theta) / 2
+    for c, s, direction, hint in ((np.cos(theta), np.sin(theta), u, HALF_ANGLE_HINT),
+                                  (np.cos(half_degrees), np.sin(half_degrees), u, DEGREES_HINT),
+                                  (np.sin(theta / 2), np.cos(theta / 2), u, SWAPPED_HINT),
+                                  (np.cos(theta / 2), np.sin(theta / 2), axis,
+                                   "divide u by its norm first: the axis must be a unit vector")):
+        if close(got, np.concatenate([[c], s * direction]), 1e-9):
+            return hint
+    return None
+
+
 @public_check("quat_from_axis_angle", "a quarter turn about z is [cos 45°, 0, 0, sin 45°]")
 def _(quat_from_axis_angle):
     got = require_shape(quat_from_axis_angle([0.0, 0.0, 1.0], np.pi / 2), (4,))
     if close(got, [0.0, 0.0, 0.0, 1.0], 1e-9):
-        raise Mismatch("got [0, 0, 0, 1], the quaternion of a half turn",
-                       "the quaternion uses half the angle: [cos(θ/2), u sin(θ/2)]")
+        raise Mismatch("got [0, 0, 0, 1], the quaternion of a half turn", HALF_ANGLE_HINT)
     if close(got, [0.0, 0.0, HALF, HALF], 1e-9):
         raise Mismatch(f"got {fmt(got)}", "scalar last? this course stores [w, x, y, z]")
-    half_degrees = np.deg2rad(np.pi / 2) / 2       # what np.cos(θ/2) gives when θ = π/2 is read as degrees
-    if close(got, [np.cos(half_degrees), 0.0, 0.0, np.sin(half_degrees)], 1e-9):
-        raise Mismatch(f"got {fmt(got)}, barely a turn", "looks like degrees: angles in this course are radians")
     if not close(got, QUARTER_Z, 1e-9):
-        raise Mismatch(f"got {fmt(got)}, expected [0.7071, 0, 0, 0.7071]")
+        raise Mismatch(f"got {fmt(got)}, expected [0.7071, 0, 0, 0.7071], {off_by(got, QUARTER_Z)}",
+                       _axis_angle_diagnosis(got, [0.0, 0.0, 1.0], np.pi / 2))
 
 
 @public_check("quat_from_axis_angle", "normalises the axis and returns a unit quaternion")
 def _(quat_from_axis_angle):
     got = require_shape(quat_from_axis_angle([0.0, 3.0, 4.0], 1.2), (4,))
+    hint = _axis_angle_diagnosis(got, [0.0, 3.0, 4.0], 1.2)
     if abs(np.linalg.norm(got) - 1.0) > 1e-9:
-        raise Mismatch(f"|q| = {np.linalg.norm(got):.4f} for the axis [0, 3, 4]", "divide u by its norm first")
+        raise Mismatch(f"|q| = {np.linalg.norm(got):.4f} for the axis [0, 3, 4]",
+                       hint or "a unit axis u and the half angle give |q|² = cos² + sin² = 1")
     expected = np.array([np.cos(0.6), 0.0, 0.6 * np.sin(0.6), 0.8 * np.sin(0.6)])
     if not close(got, expected, 1e-9):
-        raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}")
+        raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}, {off_by(got, expected)}", hint)
 
 
 @public_check("quat_from_axis_angle", "θ = 0 gives the identity [1, 0, 0, 0]")
 def _(quat_from_axis_angle):
     got = require_shape(quat_from_axis_angle([1.0, 0.0, 0.0], 0.0), (4,))
     if not close(got, ONE, 1e-12):
-        raise Mismatch(f"got {fmt(got)}")
+        raise Mismatch(f"got {fmt(got)}, {off_by(got, ONE)}", _axis_angle_diagnosis(got, [1.0, 0.0, 0.0], 0.0))
 
 
 # ---------------------------------------------------------------- quat_rotate
 @public_check("quat_rotate", "a quarter turn about z sends x to y, and leaves z where it is")
 def _(quat_rotate):
     got = require_shape(quat_rotate(QUARTER_Z, [1.0, 0.0, 0.0]), (3,))
+    axis = require_shape(quat_rotate(QUARTER_Z, [0.0, 0.0, 2.0]), (3,))
     if close(got, [0.0, -1.0, 0.0], 1e-9):
         raise Mismatch("x went to -y: the rotation runs backwards",
-                       "use q ⊗ [0, v] ⊗ q*, with the conjugate on the right")
+                       "rotated the opposite way: use q ⊗ [0, v] ⊗ q*, with the conjugate on the right")
     if not close(got, [0.0, 1.0, 0.0], 1e-9):
-        raise Mismatch(f"x went to {fmt(got)}, expected [0, 1, 0]")
-    got = require_shape(quat_rotate(QUARTER_Z, [0.0, 0.0, 2.0]), (3,))
-    if not close(got, [0.0, 0.0, 2.0], 1e-9):
-        raise Mismatch(f"the axis z went to {fmt(got)}", "vectors along the axis must not move")
+        # What the typical mistakes give for this q = [cos 45°, 0, 0, sin 45°], worked out by hand:
+        if close(got, [1.0, 0.0, 0.0], 1e-9) and close(axis, [0.0, -2.0, 0.0], 1e-9):
+            hint = "q was read as scalar last [x, y, z, w] (a quarter turn about x): this course stores [w, x, y, z]"
+        elif close(got, [1.0, 0.0, 0.0], 1e-9) and close(axis, [0.0, 0.0, 0.0], 1e-9):
+            hint = "the conjugate is missing: q ⊗ [0, v] ⊗ q does not rotate v; use q ⊗ [0, v] ⊗ q*"
+        elif close(got, [1.0, 1.0, 0.0], 1e-9):
+            hint = "the second-order term is missing: with u = q_v, v' = v + 2w (u × v) + 2 u × (u × v)"
+        else:
+            hint = None
+        raise Mismatch(f"x went to {fmt(got)}, expected [0, 1, 0], {off_by(got, [0.0, 1.0, 0.0])}", hint)
+    if not close(axis, [0.0, 0.0, 2.0], 1e-9):
+        raise Mismatch(f"the axis z went to {fmt(axis)}", "vectors along the axis must not move")
 
 
 @public_check("quat_rotate", "keeps lengths and gives the same result for q and -q")
@@ -193,7 +282,7 @@ def _(quat_rotate):
     got = require_shape(quat_rotate(GENERIC, v), (3,))
     if abs(np.linalg.norm(got) - np.linalg.norm(v)) > 1e-9:
         raise Mismatch(f"|v| = {np.linalg.norm(v):.4f} became {np.linalg.norm(got):.4f}",
-                       "use the conjugate of q (and a unit q) on the right of the sandwich")
+                       "a rotation keeps lengths: check the sandwich q ⊗ [0, v] ⊗ q* term by term")
     other = require_shape(quat_rotate(-GENERIC, v), (3,))
     if not close(got, other, 1e-9):
         raise Mismatch("q and -q rotate the vector differently", "the sandwich uses q twice, so the signs cancel")
@@ -215,11 +304,14 @@ def _(quat_to_matrix):
     R = require_shape(quat_to_matrix(QUARTER_Z), (3, 3))
     if close(R, QUARTER_TURN_Z.T, 1e-9):
         raise Mismatch("got the transpose (the inverse rotation)",
-                       "check the sign of the 2w[v]× part: R[1, 0] = 2(xy + wz)")
+                       "looks like the transpose: check the sign of the 2w[v]× part, R[1, 0] = 2(xy + wz)")
     if close(R, np.array([[1.0, 0, 0], [0, 0, -1.0], [0, 1.0, 0]]), 1e-9):
         raise Mismatch("got a quarter turn about x", "scalar last? this course stores q = [w, x, y, z]")
+    # Without the factor 2, w = z = sin 45° gives 1 - z² = 0.5 on the diagonal and ±wz = ±0.5 off it.
+    if close(R, [[0.5, -0.5, 0.0], [0.5, 0.5, 0.0], [0.0, 0.0, 1.0]], 1e-9):
+        raise Mismatch(f"got\n{fmt(R)}", "the factor 2 is missing: R = I + 2w[v]× + 2[v]×²")
     if not close(R, QUARTER_TURN_Z, 1e-9):
-        raise Mismatch(f"got\n{fmt(R)}")
+        raise Mismatch(f"got\n{fmt(R)}\n{off_by(R, QUARTER_TURN_Z)}")
     R = require_shape(quat_to_matrix(ONE), (3, 3))
     if not close(R, np.eye(3), 1e-12):
         raise Mismatch("R([1, 0, 0, 0]) is not the identity")
@@ -242,11 +334,16 @@ def _(matrix_to_quat):
 def _(matrix_to_quat):
     got = matrix_to_quat(np.diag([1.0, -1.0, -1.0]))
     problem = shape_problem(got, (4,))
-    if problem:
-        raise Mismatch(problem, "at θ = π, w = 0: start from the largest of w², x², y², z² (Shepperd)")
+    if problem == "returned NaN or inf values":
+        raise Mismatch(problem, "at θ = π, w = 0 and dividing by 4w fails: start from the largest of "
+                                "w², x², y², z² (Shepperd's method)")
+    got = require_shape(got, (4,))
     if not same_rotation_quat(got, I_, 1e-12):
-        raise Mismatch(f"got {fmt(got)}, expected ±[0, 1, 0, 0]",
-                       "at θ = π, w = 0: start from the largest of w², x², y², z² (Shepperd)")
+        hint = quaternion_hint(got, I_)
+        if hint is None and np.max(np.abs(got[1:])) < 1e-6:
+            hint = ("the vector part vanished at θ = π, where R - Rᵀ = 0: start from the largest of "
+                    "w², x², y², z² (Shepperd's method)")
+        raise Mismatch(f"got {fmt(got)}, expected ±[0, 1, 0, 0]", hint)
 
 
 @public_check("matrix_to_quat", "returns a unit quaternion with w >= 0 (a turn by 5 rad about y)")
@@ -260,7 +357,8 @@ def _(matrix_to_quat):
     if close(got, expected, 1e-9):
         raise Mismatch(f"got w = {got[0]:.4f} < 0", "negate the whole quaternion when w < 0 (canonical sign)")
     if not close(got, -expected, 1e-9):
-        raise Mismatch(f"got {fmt(got)}, expected {fmt(-expected)}", quaternion_hint(got, -expected))
+        raise Mismatch(f"got {fmt(got)}, expected {fmt(-expected)}, {off_by(got, -expected)}",
+                       quaternion_hint(got, -expected))
 
 
 @public_check("matrix_to_quat", "the canonical sign holds in every branch (a turn by 3 rad about (-0.8, 0.6, 0))")
@@ -278,40 +376,44 @@ def _(matrix_to_quat):
 
 
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz
-@public_check("wxyz_to_xyzw", "[w, x, y, z] = [1, 2, 3, 4] becomes [x, y, z, w] = [2, 3, 4, 1]")
-def _(wxyz_to_xyzw):
-    got = require_shape(wxyz_to_xyzw([1.0, 2.0, 3.0, 4.0]), (4,))
-    if close(got, [4.0, 3.0, 2.0, 1.0], 0.0):
-        raise Mismatch("got [4, 3, 2, 1]: the array was reversed", "move only the scalar: the vector keeps x, y, z order")
-    if not close(got, [2.0, 3.0, 4.0, 1.0], 0.0):
-        raise Mismatch(f"got {fmt(got)}, expected [2, 3, 4, 1]")
+def _layout_hint(got, q, to_end):
+    """The hint for the typical wrong reordering of ``q`` (one quaternion or a stack) that ``got`` equals."""
+    q = np.asarray(q, dtype=float)
+    shift, where, index = ((-1, "end", "q[..., 1:] and q[..., :1]") if to_end else
+                           (1, "front", "q[..., 3:] and q[..., :3]"))
+    for value, hint in (
+            (q[..., ::-1], "the array was reversed: only the scalar moves, x, y, z keep their order"),
+            (q, f"returned q unchanged: the scalar must move to the {where}"),
+            (np.roll(q, -shift, axis=-1), f"rolled the wrong way: the scalar must move to the {where}"),
+            (np.roll(q.ravel(), shift).reshape(q.shape),
+             f"the whole stack was rolled as one flat array: roll along the last axis (axis=-1) or index {index}")):
+        if close(got, value, 0.0):
+            return hint
+    return None
 
 
-@public_check("wxyz_to_xyzw", "converts a stack of quaternions, shape (N, 4), row by row")
-def _(wxyz_to_xyzw):
-    stack = np.array([[1.0, 2.0, 3.0, 4.0], [5.0, 6.0, 7.0, 8.0]])
-    got = require_shape(wxyz_to_xyzw(stack), (2, 4))
-    if not close(got, [[2.0, 3.0, 4.0, 1.0], [6.0, 7.0, 8.0, 5.0]], 0.0):
-        raise Mismatch(f"got {fmt(got)}", "index the last axis: q[..., 1:] and q[..., :1]")
+def _layout_checks(name, to_end):
+    wxyz = np.array([[1.0, 2.0, 3.0, 4.0], [5.0, 6.0, 7.0, 8.0]])
+    xyzw = np.roll(wxyz, -1, axis=-1)
+    given, wanted = (wxyz, xyzw) if to_end else (xyzw, wxyz)
+    description = ("[w, x, y, z] = [1, 2, 3, 4] becomes [x, y, z, w] = [2, 3, 4, 1]" if to_end else
+                   "[x, y, z, w] = [2, 3, 4, 1] becomes [w, x, y, z] = [1, 2, 3, 4]")
+
+    @public_check(name, description)
+    def _(fn):
+        got = require_shape(fn(given[0].tolist()), (4,))
+        if not close(got, wanted[0], 0.0):
+            raise Mismatch(f"got {fmt(got)}, expected {fmt(wanted[0])}", _layout_hint(got, given[0], to_end))
+
+    @public_check(name, "converts a stack of quaternions, shape (N, 4), row by row")
+    def _(fn):
+        got = require_shape(fn(given.copy()), (2, 4))
+        if not close(got, wanted, 0.0):
+            raise Mismatch(f"got {fmt(got)}, expected {fmt(wanted)}", _layout_hint(got, given, to_end))
 
 
-@public_check("xyzw_to_wxyz", "[x, y, z, w] = [2, 3, 4, 1] becomes [w, x, y, z] = [1, 2, 3, 4]")
-def _(xyzw_to_wxyz):
-    got = require_shape(xyzw_to_wxyz([2.0, 3.0, 4.0, 1.0]), (4,))
-    if close(got, [1.0, 4.0, 3.0, 2.0], 0.0):
-        raise Mismatch("got [1, 4, 3, 2]: the array was reversed", "move only the scalar: the vector keeps x, y, z order")
-    if close(got, [3.0, 4.0, 1.0, 2.0], 0.0):
-        raise Mismatch("got [3, 4, 1, 2]", "the scalar is the last entry: move it to the front")
-    if not close(got, [1.0, 2.0, 3.0, 4.0], 0.0):
-        raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3, 4]")
-
-
-@public_check("xyzw_to_wxyz", "converts a stack of quaternions, shape (N, 4), row by row")
-def _(xyzw_to_wxyz):
-    stack = np.array([[2.0, 3.0, 4.0, 1.0], [6.0, 7.0, 8.0, 5.0]])
-    got = require_shape(xyzw_to_wxyz(stack), (2, 4))
-    if not close(got, [[1.0, 2.0, 3.0, 4.0], [5.0, 6.0, 7.0, 8.0]], 0.0):
-        raise Mismatch(f"got {fmt(got)}", "index the last axis: q[..., 3:] and q[..., :3]")
+_layout_checks("wxyz_to_xyzw", to_end=True)
+_layout_checks("xyzw_to_wxyz", to_end=False)
 
 
 # ---------------------------------------------------------------- quat_slerp
@@ -325,23 +427,40 @@ def _(quat_slerp):
         raise Mismatch(f"t = 1 gave {fmt(got)}, expected q1 = {fmt(GENERIC)}")
 
 
+def _lerp_hint(got, q0, q1, t):
+    """A hint when ``got`` is the plain linear blend (1 - t) q0 + t q1 (with or without the sign flip)."""
+    for target in (q1, -q1):
+        if close(got, (1 - t) * q0 + t * target, 1e-9):
+            return ("plain linear interpolation (1 - t) q0 + t q1 leaves the unit sphere: "
+                    "use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+    return "slerp stays on the unit sphere: the sine weights keep it there"
+
+
 @public_check("quat_slerp", "halfway from the identity to a quarter turn about z is an eighth turn")
 def _(quat_slerp):
     got = require_shape(quat_slerp(ONE, QUARTER_Z, 0.5), (4,))
     eighth = np.array([np.cos(np.pi / 8), 0.0, 0.0, np.sin(np.pi / 8)])
     if abs(np.linalg.norm(got) - 1.0) > 1e-9:
-        raise Mismatch(f"|q| = {np.linalg.norm(got):.4f}", "slerp stays on the unit sphere; plain averaging does not")
+        raise Mismatch(f"|q| = {np.linalg.norm(got):.4f}", _lerp_hint(got, ONE, QUARTER_Z, 0.5))
     if not same_rotation_quat(got, eighth, 1e-9):
-        raise Mismatch(f"got {fmt(got)}, expected {fmt(eighth)}")
+        raise Mismatch(f"got {fmt(got)}, expected {fmt(eighth)}, "
+                       f"off by {min(np.max(np.abs(got - eighth)), np.max(np.abs(got + eighth))):.2g} even up to sign")
 
 
 @public_check("quat_slerp", "takes the shorter arc when q1 is given with the opposite sign")
 def _(quat_slerp):
     eighth = np.array([np.cos(np.pi / 8), 0.0, 0.0, np.sin(np.pi / 8)])
+    # The longer way from 1 to -q1 turns by -3π/2 about z; its midpoint is a turn by -3π/4.
+    long_way = np.array([np.cos(3 * np.pi / 8), 0.0, 0.0, -np.sin(3 * np.pi / 8)])
     got = require_shape(quat_slerp(ONE, -QUARTER_Z, 0.5), (4,))
     if not same_rotation_quat(got, eighth, 1e-9):
-        raise Mismatch(f"with q1 = -(quarter turn) the midpoint is {fmt(got)}, not an eighth turn",
-                       "q1 and -q1 are one rotation: if q0 · q1 < 0, use -q1 (the shorter arc)")
+        if abs(np.linalg.norm(got) - 1.0) > 1e-9:
+            hint = _lerp_hint(got, ONE, -QUARTER_Z, 0.5)
+        elif same_rotation_quat(got, long_way, 1e-9):
+            hint = "took the longer arc: q1 and -q1 are one rotation; if q0 · q1 < 0, use -q1 (the shorter arc)"
+        else:
+            hint = None
+        raise Mismatch(f"with q1 = -(quarter turn) the midpoint is {fmt(got)}, not an eighth turn", hint)
 
 
 @public_check("quat_slerp", "turns at constant speed: at t = 0.25 of a 2.5 rad turn it has turned 0.625 rad")
@@ -350,17 +469,25 @@ def _(quat_slerp):
     q1 = np.concatenate([[np.cos(1.25)], np.sin(1.25) * u])
     got = require_shape(quat_slerp(ONE, q1, 0.25), (4,))
     if abs(np.linalg.norm(got) - 1.0) > 1e-9:
-        raise Mismatch(f"|q| = {np.linalg.norm(got):.4f}", "slerp stays on the unit sphere; plain averaging does not")
+        raise Mismatch(f"|q| = {np.linalg.norm(got):.4f}", _lerp_hint(got, ONE, q1, 0.25))
     turned = 2.0 * np.arccos(min(abs(got[0]), 1.0))
     if abs(turned - 0.625) > 1e-9:
-        raise Mismatch(f"at t = 0.25 it has turned {turned:.6f} rad, off by {abs(turned - 0.625):.2g}",
-                       "not at constant speed: a normalised linear blend (nlerp) runs fast in the middle; use the "
-                       "weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+        blend = 0.75 * ONE + 0.25 * q1
+        if same_rotation_quat(got, blend / np.linalg.norm(blend), 1e-9):
+            hint = ("not at constant speed: a normalised linear blend (nlerp) runs fast in the middle; use the "
+                    "weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+        else:
+            hint = ("not at constant speed: the turn from q0 must grow as t × the whole angle; use the weights "
+                    "sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+        raise Mismatch(f"at t = 0.25 it has turned {turned:.6f} rad, off by {abs(turned - 0.625):.2g}", hint)
 
 
 @public_check("quat_slerp", "nearly identical inputs do not divide by zero")
 def _(quat_slerp):
     tiny = np.array([np.cos(1e-10), np.sin(1e-10), 0.0, 0.0])
-    got = require_shape(quat_slerp(ONE, tiny, 0.5), (4,))
+    got = require_shape(quat_slerp(ONE, tiny, 0.5), (4,),
+                        nan_hint=lambda _: "sin Ω = 0 for equal inputs; when sin Ω is tiny, fall back to "
+                                           "(normalised) linear interpolation")
     if not same_rotation_quat(got, ONE, 1e-9):
-        raise Mismatch(f"got {fmt(got)}", "when sin Ω is tiny, fall back to (normalised) linear interpolation")
+        raise Mismatch(f"got {fmt(got)}, off by {min(np.max(np.abs(got - ONE)), np.max(np.abs(got + ONE))):.2g} "
+                       "even up to sign", "between nearly identical inputs the result is (nearly) q0")

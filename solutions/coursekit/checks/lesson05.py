@@ -13,7 +13,7 @@ from scipy.spatial.transform import Rotation
 from ..checking import Mismatch, public_check
 from ..diagnose import as_float_array, close, rotation_problem, shape_problem
 from ..lie import Exp, unskew
-from .common import fmt, require_shape
+from .common import fmt, off_by, require_shape
 
 E = np.eye(3)
 HALF_PI = np.pi / 2
@@ -46,6 +46,7 @@ def _rebuild_error(angles, R):
 
 
 def _angles_hint(angles, R):
+    """The mistake whose angles these are (each candidate rebuilt and compared with R), or None."""
     yaw, pitch, roll = angles
     if _rebuild_error((roll, pitch, yaw), R) < 1e-6:
         return "the angles come back as (roll, pitch, yaw): return (yaw, pitch, roll)"
@@ -54,6 +55,48 @@ def _angles_hint(angles, R):
     if _rebuild_error(np.deg2rad(angles), R) < 1e-6:
         return "looks like degrees: return radians"
     return None
+
+
+ANGLES_GENERAL_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
+                       "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
+NO_LOCK_BRANCH_HINT = ("no separate gimbal-lock branch: at |pitch| = π/2 the entries R[0, 0], R[1, 0], R[2, 1], "
+                       "R[2, 2] are rounding noise, so atan2 of them is arbitrary; there set roll = 0 and "
+                       "yaw = atan2(-R[0, 1], R[1, 1])")
+LOCK_CONVENTION_HINT = ("at the lock only yaw ∓ roll is defined and these angles do give R: the course sets "
+                        "roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
+
+
+def _wrapped(difference):
+    return (np.asarray(difference, dtype=float) + np.pi) % (2 * np.pi) - np.pi
+
+
+def _naive_angles(R):
+    """The textbook formulas without a lock branch: atan2 of the entries that vanish at the lock."""
+    return np.array([np.arctan2(R[1, 0], R[0, 0]), np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])),
+                     np.arctan2(R[2, 1], R[2, 2])])
+
+
+def _extraction_hint(angles, R, near=False):
+    """At or next to the lock: which extraction gave these angles (each candidate computed from R)."""
+    hint = _angles_hint(angles, R)
+    if hint:
+        return hint
+    good_pitch = float(np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])))
+    with np.errstate(invalid="ignore"):
+        asin = float(np.arcsin(-R[2, 0]))
+    if np.isfinite(asin) and abs(asin - good_pitch) > 1e-13 and \
+            abs(angles[1] - asin) <= 1e-15 + 1e-3 * abs(asin - good_pitch):
+        return ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by √(2ε)): "
+                "get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
+    if np.max(np.abs(_wrapped(angles - _naive_angles(R)))) <= 1e-12:
+        if not near:
+            return NO_LOCK_BRANCH_HINT
+        return ("next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
+                "get yaw first, then roll from the large entries (undo Rz(yaw))")
+    if near and angles[2] == 0.0:
+        return "treated a matrix 1e-9 rad from the lock as locked: call it gimbal lock only when cos(pitch) < 1e-12"
+    return ("take pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), call it locked only when cos(pitch) < 1e-12, "
+            "and get roll from the large entries once yaw is known")
 
 
 def _random_attitudes(seed, count=5):
@@ -78,14 +121,18 @@ def _(euler_zyx_to_matrix):
         image = R @ E[source]
         if close(image, E[target], 1e-9):
             continue
+        seen = f"{name} = π/2 sends {words.split()[0]} to {fmt(image)}, expected {words.split()[-1]}"
         if name != "pitch" and close(R, _zyx(*args[::-1]), 1e-9):
             raise Mismatch(f"a quarter turn of {name} turns about the wrong axis",
                            "yaw and roll are swapped: yaw turns about z, roll about x")
-        if close(image, -E[target], 1e-9):
-            raise Mismatch(f"{name} = π/2 sends {words.split()[0]} to {fmt(image)}, expected {words.split()[-1]}",
-                           "looks like the transpose: check the signs of the sines")
-        if close(image, E[source], 0.05):
-            raise Mismatch(f"{name} = π/2 barely moves anything", "looks like degrees: angles are in radians")
+        if close(R, _zyx(*np.deg2rad(args)), 1e-9):
+            raise Mismatch(f"{name} = π/2 barely moves anything (a turn of π/2 degrees)",
+                           "looks like degrees: angles are in radians")
+        if close(R, _zyx(*args).T, 1e-9):
+            if name == "pitch":
+                raise Mismatch(seen, "the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], "
+                                     "[-sin, 0, cos]] (about y the minus sign sits bottom-left)")
+            raise Mismatch(seen, f"{name} turns the wrong way: looks like the transpose, check the signs of the sines")
         raise Mismatch(f"{name} = π/2 should send {words}; it sends {words.split()[0]} to {fmt(image)}")
 
 
@@ -98,11 +145,17 @@ def _(euler_zyx_to_matrix):
     Rx = require_shape(euler_zyx_to_matrix(0.0, 0.0, roll), (3, 3))
     if close(R, Rz @ Ry @ Rx, 1e-9):
         return
-    if close(R, Rx @ Ry @ Rz, 1e-9):
+    truth = _zyx(yaw, pitch, roll)
+    if close(R, Rx @ Ry @ Rz, 1e-9) and close(R, _zyx(0.0, 0.0, roll) @ _zyx(0.0, pitch, 0.0) @ _zyx(yaw, 0.0, 0.0),
+                                              1e-9):
         raise Mismatch("the three turns are multiplied in the x-y-z order, Rx(roll) Ry(pitch) Rz(yaw)",
-                       "that is the extrinsic reading (scipy's lowercase 'zyx'); the course uses "
+                       "the x-y-z order is the extrinsic reading (scipy's lowercase 'zyx'); the course uses "
                        "R = Rz(yaw) @ Ry(pitch) @ Rx(roll)")
-    raise Mismatch("euler_zyx_to_matrix(yaw, pitch, roll) differs from the product of its three single-angle turns")
+    if close(R, truth.T, 1e-9):
+        raise Mismatch(f"euler_zyx_to_matrix(yaw, pitch, roll) is the transpose of Rz Ry Rx ({off_by(R, truth)})",
+                       "looks like the transpose (the inverse rotation): check the signs of the sines")
+    raise Mismatch(f"euler_zyx_to_matrix(yaw, pitch, roll) differs from the product of its three single-angle turns "
+                   f"({off_by(R, Rz @ Ry @ Rx)})", "return Rz(yaw) @ Ry(pitch) @ Rx(roll)")
 
 
 # ---------------------------------------------------------------- matrix_to_euler_zyx
@@ -112,7 +165,8 @@ def _(matrix_to_euler_zyx):
         angles = _require_angles(matrix_to_euler_zyx(R))
         error = _rebuild_error(angles, R)
         if error > REBUILD_TOL:
-            raise Mismatch(f"the angles {fmt(angles)} rebuild R only to {error:.2g}", _angles_hint(angles, R))
+            raise Mismatch(f"the angles {fmt(angles)} rebuild R only to {error:.2g}",
+                           _angles_hint(angles, R) or ANGLES_GENERAL_HINT)
 
 
 @public_check("matrix_to_euler_zyx", "yaw and roll lie in (-π, π], pitch in [-π/2, π/2]")
@@ -126,7 +180,8 @@ def _(matrix_to_euler_zyx):
         if max(abs(got[0]), abs(got[2])) > np.pi + 1e-12:
             raise Mismatch(f"yaw = {got[0]:.4f}, roll = {got[2]:.4f}: outside (-π, π]")
         if _rebuild_error(got, R) > REBUILD_TOL:
-            raise Mismatch(f"the angles {fmt(got)} do not rebuild R", _angles_hint(got, R))
+            raise Mismatch(f"the angles {fmt(got)} rebuild R only to {_rebuild_error(got, R):.2g}",
+                           _angles_hint(got, R) or ANGLES_GENERAL_HINT)
 
 
 @public_check("matrix_to_euler_zyx", "at gimbal lock (pitch = ±π/2): no NaN, roll = 0, the same matrix")
@@ -137,13 +192,18 @@ def _(matrix_to_euler_zyx):
         rounded[2, 0] = -sign * (1.0 + 2.0 ** -52)     # rounding can push |R[2, 0]| a hair above 1
         for matrix in (R, rounded):
             got = _require_angles(matrix_to_euler_zyx(matrix))
+            error = _rebuild_error(got, matrix)
             if abs(got[2]) > 1e-12:
-                raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the roll is {got[2]:.4f}",
-                               "at the lock only yaw ∓ roll is defined: the course sets roll = 0 "
-                               "and yaw = atan2(-R[0, 1], R[1, 1])")
-            if _rebuild_error(got, matrix) > REBUILD_TOL:
-                raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the angles {fmt(got)} do not rebuild R",
-                               _angles_hint(got, matrix))
+                if np.max(np.abs(_wrapped(got - _naive_angles(matrix)))) <= 1e-12:
+                    hint = NO_LOCK_BRANCH_HINT
+                elif error <= REBUILD_TOL:
+                    hint = LOCK_CONVENTION_HINT
+                else:
+                    hint = _extraction_hint(got, matrix)
+                raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the roll is {got[2]:.4f}", hint)
+            if error > REBUILD_TOL:
+                raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the angles {fmt(got)} rebuild R only "
+                               f"to {error:.2g}", _extraction_hint(got, matrix))
 
 
 @public_check("matrix_to_euler_zyx", "stays exact just next to the lock (pitch = ±(π/2 - 1e-9))")
@@ -153,9 +213,7 @@ def _(matrix_to_euler_zyx):
         got = _require_angles(matrix_to_euler_zyx(R))
         error = _rebuild_error(got, R)
         if error > REBUILD_TOL:
-            raise Mismatch(f"the angles {fmt(got)} rebuild R only to {error:.2g}",
-                           "take pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), call it locked only when "
-                           "cos(pitch) < 1e-12, and get roll from the large entries once yaw is known")
+            raise Mismatch(f"the angles {fmt(got)} rebuild R only to {error:.2g}", _extraction_hint(got, R, near=True))
 
 
 # ---------------------------------------------------------------- euler_zyx_to_quat
@@ -163,11 +221,26 @@ def _same_quat(got, expected, tol=1e-9):
     return close(got, expected, tol) or close(got, -np.asarray(expected), tol)
 
 
+def _all_plus_quat(yaw, pitch, roll):
+    """The z-y-x formula with every mixed product added (the minus signs lost)."""
+    cy, sy, cp, sp, cr, sr = (f(a / 2) for a in (yaw, pitch, roll) for f in (np.cos, np.sin))
+    return np.array([cy * cp * cr + sy * sp * sr, cy * cp * sr + sy * sp * cr,
+                     cy * sp * cr + sy * cp * sr, sy * cp * cr + cy * sp * sr])
+
+
+def _norm_hint(q, angles):
+    if _same_quat(q, _all_plus_quat(*angles)):
+        return ("the mixed products lost their minus signs: w = c c c + s s s, x = c c s - s s c, "
+                "y = c s c + s c s, z = s c c - c s s (c, s of yaw/2, pitch/2, roll/2 in that order)")
+    return "a rotation quaternion has unit length: q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) is a product of unit quaternions"
+
+
 @public_check("euler_zyx_to_quat", "returns a unit quaternion [w, x, y, z]")
 def _(euler_zyx_to_quat):
     q = require_shape(euler_zyx_to_quat(0.3, -0.4, 1.1), (4,))
     if abs(np.linalg.norm(q) - 1.0) > 1e-9:
-        raise Mismatch(f"|q| = {np.linalg.norm(q):.6f}", "a rotation quaternion has unit length: check the half angles")
+        raise Mismatch(f"|q| = {np.linalg.norm(q):.6f} (off by {abs(np.linalg.norm(q) - 1.0):.2g})",
+                       _norm_hint(q, (0.3, -0.4, 1.1)))
 
 
 @public_check("euler_zyx_to_quat", "a single angle a gives [cos(a/2), sin(a/2) × its axis]")
@@ -184,10 +257,13 @@ def _(euler_zyx_to_quat):
         full = np.zeros(4)
         full[0], full[axis] = np.cos(a), np.sin(a)
         if _same_quat(q, full):
-            raise Mismatch(f"{name} = {a} gives {fmt(q)}", "use half angles: cos(angle / 2), sin(angle / 2)")
+            raise Mismatch(f"{name} = {a} gives {fmt(q)}",
+                           "full angles: a quaternion uses half angles, cos(angle / 2), sin(angle / 2)")
         if _same_quat(q, np.roll(expected, -1)):
-            raise Mismatch(f"{name} = {a} gives {fmt(q)}", "scalar first: the course's quaternions are [w, x, y, z]")
-        raise Mismatch(f"{name} = {a} gives {fmt(q)}, expected ±{fmt(expected)}")
+            raise Mismatch(f"{name} = {a} gives {fmt(q)}",
+                           "looks scalar-last [x, y, z, w]: the course's quaternions are [w, x, y, z]")
+        raise Mismatch(f"{name} = {a} gives {fmt(q)}, expected ±{fmt(expected)}",
+                       "a single angle a about an axis u is the quaternion [cos(a/2), sin(a/2) u]")
 
 
 @public_check("euler_zyx_to_quat", "the same rotation as Rz(yaw) Ry(pitch) Rx(roll)")
@@ -195,24 +271,56 @@ def _(euler_zyx_to_quat):
     for yaw, pitch, roll in [(0.9, -0.5, 1.3), (-2.4, 1.1, 0.2)]:
         q = require_shape(euler_zyx_to_quat(yaw, pitch, roll), (4,))
         if abs(np.linalg.norm(q) - 1.0) > 1e-9:
-            raise Mismatch(f"|q| = {np.linalg.norm(q):.6f}")
+            raise Mismatch(f"|q| = {np.linalg.norm(q):.6f} (off by {abs(np.linalg.norm(q) - 1.0):.2g})",
+                           _norm_hint(q, (yaw, pitch, roll)))
         R = _quat_to_matrix(q)
         if close(R, _zyx(yaw, pitch, roll), 1e-9):
             continue
         if close(R, Exp([roll, 0.0, 0.0]) @ Exp([0.0, pitch, 0.0]) @ Exp([0.0, 0.0, yaw]), 1e-9):
             raise Mismatch("the factors are multiplied as q_x ⊗ q_y ⊗ q_z",
-                           "the course's order is q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll), like the matrices")
-        raise Mismatch(f"euler_zyx_to_quat({yaw}, {pitch}, {roll}) is a different rotation")
+                           "q_x ⊗ q_y ⊗ q_z is the extrinsic reading; the course's order is "
+                           "q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll), like the matrices")
+        if _same_quat(q, np.roll(Rotation.from_matrix(_zyx(yaw, pitch, roll)).as_quat(scalar_first=True), -1)):
+            raise Mismatch(f"euler_zyx_to_quat({yaw}, {pitch}, {roll}) is a different rotation",
+                           "looks scalar-last [x, y, z, w]: the course's quaternions are [w, x, y, z]")
+        raise Mismatch(f"euler_zyx_to_quat({yaw}, {pitch}, {roll}) is a different rotation "
+                       f"(its matrix is {off_by(R, _zyx(yaw, pitch, roll))})",
+                       "q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll)")
 
 
 # ---------------------------------------------------------------- quat_to_euler_zyx
-def _quat_hint(angles, q):
+QUAT_NO_LOCK_HINT = ("no gimbal-lock branch: at |pitch| = π/2 both arguments of the atan2 formulas for yaw and roll "
+                     "are rounding noise; there set roll = 0 and give the whole turn to yaw")
+QUAT_ASIN_HINT = ("the lecture's formulas lose digits next to the lock: asin(2(wy - xz)) near ±1, and the atan2 "
+                  "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums w ± y, x + z, z - x")
+
+
+def _lecture_angles(q, normalise=True):
+    """(yaw, pitch, roll) of the lecture's atan2/asin formulas (asin clipped)."""
+    q = np.asarray(q, dtype=float)
+    w, x, y, z = q / np.linalg.norm(q) if normalise else q
+    return np.array([np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)),
+                     np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
+                     np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))])
+
+
+def _quat_hint(angles, q, at_lock=False):
+    """The mistake behind these angles of q (each candidate computed from q), or a general hint."""
     hint = _angles_hint(angles, _quat_to_matrix(q))
     if hint:
         return hint
     if _rebuild_error(angles, Rotation.from_quat(q).as_matrix()) < 1e-6:
         return "q was read as scalar-last [x, y, z, w]: the course's quaternions are [w, x, y, z]"
-    return None
+    for lecture in (_lecture_angles(q), _lecture_angles(q, normalise=False)):
+        if np.max(np.abs(_wrapped(np.asarray(angles)[::-1] - lecture))) <= 1e-9:
+            return "the angles come back as (roll, pitch, yaw): return (yaw, pitch, roll)"
+        if np.max(np.abs(_wrapped(angles - lecture))) <= 1e-9:
+            return QUAT_NO_LOCK_HINT if at_lock else QUAT_ASIN_HINT
+    if not at_lock and angles[2] == 0.0:
+        return ("treated a rotation next to the lock as locked (roll = 0): call it gimbal lock only when "
+                "cos(pitch) is below about 1e-12")
+    return ("pitch = 2 atan2(hypot(w + y, z - x), hypot(w - y, x + z)) - π/2, then yaw ± roll from 2 atan2 "
+            "of the same half-angle sums")
 
 
 @public_check("quat_to_euler_zyx", "returns (yaw, pitch, roll) that rebuild the rotation, for q and for -q")
@@ -236,11 +344,15 @@ def _(quat_to_euler_zyx):
         q = Rotation.from_euler("ZYX", [-1.9, sign * HALF_PI, 0.6]).as_quat(scalar_first=True)
         R = _quat_to_matrix(q)
         got = _require_angles(quat_to_euler_zyx(q))
+        error = _rebuild_error(got, R)
         if abs(got[2]) > 1e-12:
-            raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the roll is {got[2]:.4f}",
-                           "at the lock only yaw ∓ roll is defined: set roll = 0 and give the whole turn to yaw")
-        if _rebuild_error(got, R) > REBUILD_TOL:
-            raise Mismatch(f"the angles {fmt(got)} do not rebuild the rotation", _quat_hint(got, q))
+            hint = ("at the lock only yaw ∓ roll is defined and these angles do give the rotation: the course sets "
+                    "roll = 0 and gives the whole turn to yaw") if error <= REBUILD_TOL else \
+                _quat_hint(got, q, at_lock=True)
+            raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the roll is {got[2]:.4f}", hint)
+        if error > REBUILD_TOL:
+            raise Mismatch(f"the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
+                           _quat_hint(got, q, at_lock=True))
 
 
 @public_check("quat_to_euler_zyx", "stays exact just next to the lock (pitch = ±(π/2 - 1e-9))")
@@ -250,8 +362,7 @@ def _(quat_to_euler_zyx):
         got = _require_angles(quat_to_euler_zyx(q))
         error = _rebuild_error(got, _quat_to_matrix(q))
         if error > REBUILD_TOL:
-            raise Mismatch(f"the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
-                           "asin(2(wy - xz)) loses digits near ±1: use the half-angle sums w ± y, x + z, z - x")
+            raise Mismatch(f"the angles {fmt(got)} rebuild the rotation only to {error:.2g}", _quat_hint(got, q))
 
 
 # ---------------------------------------------------------------- euler_rates_matrix
@@ -280,8 +391,22 @@ def _(euler_rates_matrix):
     if close(E_got @ rates, world, 1e-7):
         raise Mismatch("E @ rates gives the angular velocity in the world frame",
                        "the course's E gives body rates: [ω_b]× = Rᵀ dR/dt")
-    raise Mismatch(f"E @ rates = {fmt(E_got @ rates)}, but the body rates are {fmt(body)}",
-                   "ω_b = roll_rate e_x + pitch_rate Rx(roll)ᵀ e_y + yaw_rate Rx(roll)ᵀ Ry(pitch)ᵀ e_z")
+    pitch, roll = angles[1], angles[2]
+    cp, sp, cr, sr = np.cos(pitch), np.sin(pitch), np.cos(roll), np.sin(roll)
+    right = np.array([[-sp, 0.0, 1.0], [cp * sr, cr, 0.0], [cp * cr, -sr, 0.0]])
+    candidates = [
+        (right[:, ::-1], "the columns are in the order [roll, pitch, yaw]: E multiplies [yaw_rate, pitch_rate, roll_rate]"),
+        (np.array([[-sp, 0.0, 1.0], [-cp * sr, cr, 0.0], [cp * cr, sr, 0.0]]),
+         "the roll signs are flipped: express the axes in the body frame with Rx(roll)ᵀ, not Rx(roll)"),
+        (right.T, "looks like the transpose of E"),
+        (np.eye(3), "E = I treats the Euler-angle rates as body rates; they are not: each rate spins about "
+                    "its own axis, seen in the body frame"),
+    ]
+    seen = f"E @ rates = {fmt(E_got @ rates)}, but the body rates are {fmt(body)} ({off_by(E_got @ rates, body)})"
+    for candidate, hint in candidates:
+        if close(E_got, candidate, 1e-9):
+            raise Mismatch(seen, hint)
+    raise Mismatch(seen, "ω_b = roll_rate e_x + pitch_rate Rx(roll)ᵀ e_y + yaw_rate Rx(roll)ᵀ Ry(pitch)ᵀ e_z")
 
 
 @public_check("euler_rates_matrix", "|det E| = cos(pitch): it vanishes at pitch = ±π/2")

@@ -10,7 +10,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, shape_problem
+from ..diagnose import close, rotation_problem
 from ..lie import Exp, Log
 from .common import require_rotation, require_shape
 
@@ -20,72 +20,156 @@ POINTS = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 1.5], [1.0, -1.0
 TURNED = POINTS @ QUARTER_TURN_Z.T
 
 
-def _rotation_of(value, what):
-    return require_rotation(require_shape(value, (3, 3), what), what)
+def _rotation_of(value, what, hint=None):
+    R = require_shape(value, (3, 3), what)
+    if hint is not None and rotation_problem(R):
+        raise Mismatch(f"{what} is not a rotation: {rotation_problem(R)}", hint)
+    return require_rotation(R, what)
 
 
 def _cost(R, P, Q):
     return float(np.sum((Q - P @ R.T) ** 2))
 
 
+def _explains(got, candidate, truth):
+    """True when ``candidate`` (what a known slip returns) accounts for ``got``'s error from ``truth``."""
+    got, candidate, truth = (np.asarray(x, dtype=float) for x in (got, candidate, truth))
+    if got.shape != candidate.shape or not np.all(np.isfinite(candidate)):
+        return False
+    gap = float(np.max(np.abs(candidate - truth)))
+    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + 1e-12
+
+
+def _hat(v):
+    x, y, z = v
+    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+
+
 # ---------------------------------------------------------------- align_svd
+def _svd_hint(got, P, Q, expected):
+    U, _, Vt = np.linalg.svd(Q.T @ P)
+    if np.linalg.det(U @ Vt) < 0 and _explains(got, U @ Vt, expected):
+        return ("that is U Vᵀ without the determinant fix: a reflection (det = -1); "
+                "use U diag(1, 1, d) Vᵀ with d = det(U Vᵀ)")
+    if _explains(got, expected.T, expected):
+        return "that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q gives Rᵀ)"
+    if _explains(got, np.linalg.lstsq(P, Q, rcond=None)[0].T, expected):
+        return ("that is the unconstrained least-squares matrix, which need not be a rotation: "
+                "take R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P")
+    if _explains(got, np.eye(3), expected):
+        return "returned the identity, as if Q were ignored (the SVD of Pᵀ P gives I): M = Qᵀ P = Σ q_i p_iᵀ"
+    return "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
+
+
 @public_check("align_svd", "recovers a quarter turn about z from four exact point pairs")
 def _(align_svd):
-    got = align_svd(POINTS, TURNED)
-    if shape_problem(got, (3, 3)) is None and close(got, QUARTER_TURN_Z.T, 1e-9):
-        raise Mismatch("got the inverse rotation (the transpose)",
-                       "use M = Qᵀ P = Σ q_i p_iᵀ; Pᵀ Q gives Rᵀ")
-    R = _rotation_of(got, "align_svd(P, Q)")
-    if not close(R, QUARTER_TURN_Z, 1e-9):
-        raise Mismatch(f"got {np.round(R, 3).tolist()}, expected the quarter turn about z")
+    got = require_shape(align_svd(POINTS, TURNED), (3, 3), "align_svd(P, Q)")
+    if not close(got, QUARTER_TURN_Z, 1e-9):
+        raise Mismatch(f"got {np.round(got, 3).tolist()}, expected the quarter turn about z "
+                       f"(off by {np.max(np.abs(got - QUARTER_TURN_Z)):.2g})",
+                       _svd_hint(got, POINTS, TURNED, QUARTER_TURN_Z))
+    _rotation_of(got, "align_svd(P, Q)")
 
 
 @public_check("align_svd", "returns a rotation (det = +1), never a reflection, for mirrored data")
 def _(align_svd):
-    mirrored = TURNED * np.array([1.0, 1.0, -1.0])
-    got = align_svd(POINTS, mirrored)
-    problem = shape_problem(got, (3, 3))
-    if problem:
-        raise Mismatch(f"align_svd(P, Q) {problem}")
-    det = np.linalg.det(np.asarray(got, dtype=float))
+    # mirrored, and moved a little off any rigid image so that no matrix fits exactly
+    mirrored = TURNED * np.array([1.0, 1.0, -1.0]) + 0.01 * np.array(
+        [[1.0, -2.0, 0.0], [0.0, 1.0, 2.0], [-1.0, 0.0, 1.0], [2.0, 1.0, -1.0]])
+    got = require_shape(align_svd(POINTS, mirrored), (3, 3), "align_svd(P, Q)")
+    best = Rotation.align_vectors(mirrored, POINTS)[0].as_matrix()
+    det = np.linalg.det(got)
     if det < 0:
-        raise Mismatch(f"det = {det:.3f}: a reflection",
-                       "U Vᵀ can be a reflection: use U diag(1, 1, det(U Vᵀ)) Vᵀ")
-    _rotation_of(got, "align_svd(P, Q)")
+        raise Mismatch(f"det = {det:.3f}: a reflection", _svd_hint(got, POINTS, mirrored, best))
+    _rotation_of(got, "align_svd(P, Q)", _svd_hint(got, POINTS, mirrored, best))
 
 
 # ---------------------------------------------------------------- align_gauss_newton
+def _gauss_newton(P, Q, R0, iters, jacobian="right", update="exp", sign=-1.0):
+    """Gauss-Newton with one known slip, to recognise it in an answer (hints only)."""
+    R = np.array(R0, dtype=float)
+    for _ in range(iters):
+        H, g = np.zeros((3, 3)), np.zeros(3)
+        for p, q in zip(P, Q):
+            J = -R @ _hat(p) if jacobian == "right" else -_hat(R @ p)
+            H += J.T @ J
+            g += J.T @ (R @ p - q)
+        delta = np.linalg.solve(H, sign * g)
+        R = R @ Exp(delta) if update == "exp" else R + R @ _hat(delta)
+    return R
+
+
+def _gn_hint(got, R0, iters, expected):
+    if np.max(np.abs(got - R0)) == 0.0:
+        return "returned R0 unchanged: do iters updates R ← R Exp(δ)"
+    slips = [
+        (dict(jacobian="left"), "the left Jacobian -[R p_i]× with the right update R Exp(δ) mixes two conventions: "
+                                "J_i = -R [p_i]× goes with R ← R Exp(δ) (-[R p_i]× would need Exp(δ) R)"),
+        (dict(sign=1.0), "steps uphill: δ solves H δ = -g (mind the minus sign)"),
+        (dict(update="add"), "updated by adding R [δ]× to R, which leaves SO(3): use R ← R Exp(δ)"),
+    ]
+    for options, hint in slips:
+        try:
+            candidate = _gauss_newton(POINTS, TURNED, R0, iters, **options)
+        except np.linalg.LinAlgError:
+            continue
+        if _explains(got, candidate, expected):
+            return hint
+    if iters > 1 and _explains(got, _gauss_newton(POINTS, TURNED, R0, 1), expected):
+        return f"that is one Gauss-Newton step, whatever iters says: repeat the update iters times (here {iters})"
+    return "J_i = -R [p_i]×, solve H δ = -g, then R ← R Exp(δ): the same side for both"
+
+
 @public_check("align_gauss_newton", "finds a quarter turn about z from R0 = I with exact data")
 def _(align_gauss_newton):
-    R = _rotation_of(align_gauss_newton(POINTS, TURNED, np.eye(3), iters=10),
-                                "align_gauss_newton(P, Q, I, iters=10)")
-    if close(R, QUARTER_TURN_Z.T, 1e-6):
-        raise Mismatch("converged to the inverse rotation", "the residual is r_i = R p_i - q_i")
+    got = require_shape(align_gauss_newton(POINTS, TURNED, np.eye(3), iters=10), (3, 3),
+                        "align_gauss_newton(P, Q, I, iters=10)")
+    hint = _gn_hint(got, np.eye(3), 10, QUARTER_TURN_Z)
+    R = _rotation_of(got, "align_gauss_newton(P, Q, I, iters=10)", hint)
     if not close(R, QUARTER_TURN_Z, 1e-8):
-        raise Mismatch(f"got {np.round(R, 3).tolist()} after 10 iterations, expected the quarter turn",
-                       "J_i = -R [p_i]×, solve H δ = -g, then R ← R Exp(δ): the same side for both")
+        raise Mismatch(f"got {np.round(R, 3).tolist()} after 10 iterations, expected the quarter turn "
+                       f"(off by {np.max(np.abs(R - QUARTER_TURN_Z)):.2g})", hint)
 
 
 @public_check("align_gauss_newton", "one iteration lowers the cost and stays a rotation")
 def _(align_gauss_newton):
     R0 = QUARTER_TURN_Z @ Exp([0.3, -0.2, 0.4])
-    R1 = _rotation_of(align_gauss_newton(POINTS, TURNED, R0, iters=1),
-                                 "align_gauss_newton(..., iters=1)")
+    got = require_shape(align_gauss_newton(POINTS, TURNED, R0, iters=1), (3, 3), "align_gauss_newton(..., iters=1)")
+    hint = _gn_hint(got, R0, 1, QUARTER_TURN_Z)
+    R1 = _rotation_of(got, "align_gauss_newton(..., iters=1)", hint)
     before, after = _cost(R0, POINTS, TURNED), _cost(R1, POINTS, TURNED)
     if close(R1, R0, 1e-12):
         raise Mismatch("one iteration did not move R0", "use the iters argument: do exactly iters updates")
     if not after < 0.1 * before:
-        raise Mismatch(f"one step only took the cost from {before:.3g} to {after:.3g}",
-                       "a right step needs J_i = -R [p_i]× with the update R @ Exp(δ), and δ = -H⁻¹ g")
+        raise Mismatch(f"one step only took the cost from {before:.3g} to {after:.3g}", hint)
 
 
 # ---------------------------------------------------------------- rotation_mean
+def _mean_hint(M, Rs, truth=None):
+    """The slip behind a wrong mean M (known to be wrong): compared with each slip's value, relative to the
+    truth when it is known, else to 1e-9."""
+    Rs = np.asarray(Rs, dtype=float)
+
+    def matches(candidate):
+        return close(M, candidate, 1e-9) if truth is None else _explains(M, candidate, truth)
+
+    if matches(Rotation.from_matrix(Rs).mean().as_matrix()):   # scipy's mean is the chordal one
+        return "that is the chordal mean (the projected arithmetic mean); the geodesic mean needs the iteration"
+    if matches(Rs[0] @ Exp(np.mean([Log(Rs[0].T @ R) for R in Rs], axis=0))):
+        return "that is a single step from Rs[0]: repeat until the step is tiny (|δ| < 1e-12)"
+    if matches(Exp(np.mean([Log(R) for R in Rs], axis=0))):
+        return "averaging Log(R_i) about the identity is not the mean: average Log(Mᵀ R_i) about the current M"
+    if matches(Rs[0]):
+        return "returned the first rotation Rs[0]: the mean must weigh all of them"
+    return "iterate M ← M Exp(mean of Log(Mᵀ R_i)) until |δ| < 1e-12 (at most 100 iterations)"
+
+
 @public_check("rotation_mean", "the mean of one rotation repeated is that rotation")
 def _(rotation_mean):
     R = Exp([0.4, -1.1, 0.7])
     got = _rotation_of(rotation_mean([R, R, R]), "rotation_mean([R, R, R])")
     if not close(got, R, 1e-9):
-        raise Mismatch("the mean of three copies of R is not R")
+        raise Mismatch(f"the mean of three copies of R is not R (off by {np.max(np.abs(got - R)):.2g})")
 
 
 @public_check("rotation_mean", "the mean of two rotations is the midpoint of the arc between them")
@@ -95,8 +179,8 @@ def _(rotation_mean):
     got = _rotation_of(rotation_mean(np.array([A, B])), "rotation_mean([A, B])")
     midpoint = A @ Exp([0.0, 0.6, 0.0])
     if not close(got, midpoint, 1e-8):
-        raise Mismatch(f"it is {np.rad2deg(np.linalg.norm(Log(midpoint.T @ got))):.3f}° away from the midpoint",
-                       "iterate M ← M Exp(mean of Log(Mᵀ R_i)) until the step is tiny")
+        raise Mismatch(f"it is {np.rad2deg(np.linalg.norm(Log(midpoint.T @ got))):.3g}° away from the midpoint",
+                       _mean_hint(got, [A, B], midpoint))
 
 
 @public_check("rotation_mean", "the residuals balance at the mean: Σ Log(Mᵀ R_i) ≈ 0")
@@ -107,8 +191,4 @@ def _(rotation_mean):
     M = _rotation_of(rotation_mean(Rs), "rotation_mean(Rs)")
     imbalance = np.linalg.norm(sum(Log(M.T @ R) for R in Rs)) / len(Rs)
     if imbalance > 1e-7:
-        chordal = Rotation.from_matrix(Rs).mean().as_matrix()  # scipy's mean is the chordal one
-        hint = ("that is the chordal mean (the projected arithmetic mean); the geodesic mean needs the iteration"
-                if close(M, chordal, 1e-9) else
-                "keep iterating until |δ| < 1e-12 (at most 100 iterations), and step from M: M ← M Exp(δ)")
-        raise Mismatch(f"|Σ Log(Mᵀ R_i)| / N = {imbalance:.2g}", hint)
+        raise Mismatch(f"|Σ Log(Mᵀ R_i)| / N = {imbalance:.2g}", _mean_hint(M, Rs))
