@@ -20,7 +20,7 @@ handout --out course.zip
     Pack what students get: the released notebooks, coursekit, their install
     list (no instructor tools) and a README.
 export --out DIR --to canvas [--roster roster.csv] [--file PATH]
-    Write the saved grades as an LMS import file (Canvas; see autograder/exports/).
+    Write the saved grades as an LMS import file (Canvas; see autograder/reports/exports/).
 canary [--lessons NN ...] [--no-nbval]
     Grade the reference solutions through the whole pipeline; exit 3 unless
     they get full marks. ``grade`` runs it first (cached per grader fingerprint).
@@ -39,11 +39,11 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-from .exports import EXPORTERS
+from autograder.reports.exports import EXPORTERS
 
 
 def _cmd_release(args):
-    from .release import release, stale_files
+    from autograder.authoring.release import release, stale_files
 
     if args.check:
         problems = stale_files()
@@ -62,7 +62,7 @@ def _cmd_release(args):
 
 
 def _cmd_record(args):
-    from .record import RecordingFailed, record_outputs
+    from autograder.authoring.record import RecordingFailed, record_outputs
 
     try:
         changed = record_outputs(only=args.only)
@@ -91,18 +91,18 @@ def _print_table(results, problems_shown=3):
 
 
 def _read_roster(path):
-    """Roster ids from ``path`` (plain ids or a CSV; see autograder/roster.py)."""
-    from .roster import read_roster
+    """Roster ids from ``path`` (plain ids or a CSV; see autograder/reports/roster.py)."""
+    from autograder.reports.roster import read_roster
 
     return tuple(entry.student_id for entry in read_roster(path))
 
 
 def _cmd_canary(args):
-    from .batch import _prewarm
-    from .canary import CanaryFailed, describe_canary, ensure_reference_passes
-    from .fingerprint import fingerprint_parts
-    from .grading import GradingOptions
-    from .sandbox import launcher
+    from autograder.batch.class_run import _prewarm
+    from autograder.grading.canary import CanaryFailed, describe_canary, ensure_reference_passes
+    from autograder.grading.fingerprint import fingerprint_parts
+    from autograder.grading.pipeline import GradingOptions
+    from autograder.sandbox import launcher
 
     print(launcher.describe_isolation())
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
@@ -116,18 +116,18 @@ def _cmd_canary(args):
 
 
 def _cmd_grade(args):
-    from .batch import UnknownStudents, grade_class
-    from .canary import CanaryFailed
-    from .cluster import ClusterError
-    from .lateness import ConfigError, load_config
-    from .grading import GradingOptions
-    from .progress import Progress
-    from .sandbox import launcher
+    from autograder.batch.class_run import UnknownStudents, grade_class
+    from autograder.batch.progress import Progress
+    from autograder.grading.canary import CanaryFailed
+    from autograder.grading.pipeline import GradingOptions
+    from autograder.integrations.cluster import ClusterError
+    from autograder.reports.lateness import ConfigError, load_config
+    from autograder.sandbox import launcher
 
     out = Path(args.out)
     path = args.path
     if path is None:
-        from .sample_class import build_sample_class
+        from autograder.authoring.sample_class import build_sample_class
 
         path = out / "sample_class"
         build_sample_class(path, lessons=tuple(args.lessons))
@@ -144,8 +144,8 @@ def _cmd_grade(args):
         print(f"error: {error}", file=sys.stderr)
         return 2
     runner = None
-    if args.cluster:  # students become Dask tasks (autograder/cluster.py, docs/CLUSTER.md)
-        from .cluster import connect
+    if args.cluster:  # students become Dask tasks (autograder/integrations/cluster.py, docs/CLUSTER.md)
+        from autograder.integrations.cluster import connect
 
         try:
             runner = connect(args.cluster, options, announce=lambda line: print(line, flush=True))
@@ -181,7 +181,7 @@ def _cmd_grade(args):
         print(f"  {len(summary.kept)} graded earlier and not under {path}, kept as they were: "
               + ", ".join(summary.kept[:10]) + (" ..." if len(summary.kept) > 10 else ""))
     if args.nbgrader_db:
-        from .nbgrader_export import export_to_gradebook
+        from autograder.integrations.nbgrader_export import export_to_gradebook
 
         rows = export_to_gradebook(summary.results, args.nbgrader_db)
         print(f"nbgrader gradebook: {rows} exercise score(s) written to {args.nbgrader_db}")
@@ -193,8 +193,8 @@ def _cmd_grade(args):
 
 
 def _cmd_status(args):
-    from .batch import Outputs, collect_results, load_saved, saved_student_ids
-    from .sandbox.launcher import LIMITS_ONLY_WARNING
+    from autograder.batch.class_run import Outputs, collect_results, load_saved, saved_student_ids
+    from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
 
     outputs = Outputs(Path(args.out))
     ids = saved_student_ids(outputs)
@@ -226,8 +226,8 @@ def _cmd_status(args):
 def _cmd_preview(args):
     import time
 
-    from .execute import errors, execute_notebook, save_figures
-    from .notebook_files import read_master
+    from autograder.authoring.execute import errors, execute_notebook, save_figures
+    from autograder.lessons.notebook_files import read_master
 
     path = Path(args.notebook)
     nb = read_master(path)
@@ -249,7 +249,7 @@ def _cmd_preview(args):
 
 
 def _cmd_book(args):
-    from .book import BookFailed, build_book
+    from autograder.authoring.book import BookFailed, build_book
 
     try:
         out, pages, warnings = build_book(args.out)
@@ -263,7 +263,7 @@ def _cmd_book(args):
 
 
 def _cmd_gradescope(args):
-    from .gradescope import build_bundle
+    from autograder.integrations.gradescope import build_bundle
 
     path = build_bundle(args.out, lessons=tuple(args.lessons), visibility=args.visibility, nbval=not args.no_nbval)
     print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): upload it as the autograder of a "
@@ -272,7 +272,7 @@ def _cmd_gradescope(args):
 
 
 def _cmd_gradescope_run(args):
-    from .gradescope import run_in_container
+    from autograder.integrations.gradescope import run_in_container
 
     data = run_in_container(args.root)
     print(f"score {data['score']:g}; results written to {Path(args.root) / 'results' / 'results.json'}")
@@ -280,7 +280,7 @@ def _cmd_gradescope_run(args):
 
 
 def _cmd_nbgrader_course(args):
-    from .nbgrader_course import build_course
+    from autograder.integrations.nbgrader_course import build_course
 
     root = build_course(args.out, lessons=tuple(args.lessons))
     print(f"wrote the nbgrader course {root}: source/lessonNN/ for each lesson, with coursekit beside it.\n"
@@ -290,7 +290,7 @@ def _cmd_nbgrader_course(args):
 
 
 def _cmd_handout(args):
-    from .handout import build_handout
+    from autograder.authoring.handout import build_handout
 
     path = build_handout(args.out)
     print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): the course notebooks, coursekit, a student "
@@ -299,9 +299,9 @@ def _cmd_handout(args):
 
 
 def _cmd_export(args):
-    from .batch import Outputs, collect_results, saved_student_ids
-    from .catalog import load_catalog
-    from .roster import RosterError, read_roster
+    from autograder.batch.class_run import Outputs, collect_results, saved_student_ids
+    from autograder.lessons.catalog import load_catalog
+    from autograder.reports.roster import RosterError, read_roster
 
     try:
         roster = read_roster(args.roster)
@@ -316,7 +316,7 @@ def _cmd_export(args):
     expected = sorted(set(ids) | {entry.student_id for entry in roster})
     results, _ = collect_results(outputs, expected, submitted=set(ids))
     target = Path(args.file) if args.file else outputs.root / f"{args.to}.csv"
-    from .batch import write_atomically
+    from autograder.batch.class_run import write_atomically
 
     write_atomically(target, EXPORTERS[args.to](results, load_catalog(), roster))
     print(f"wrote {target}: {len(results)} students, {args.to} gradebook import format")
@@ -347,7 +347,7 @@ def build_parser():
                        help="also write the scores into this nbgrader gradebook (e.g. nbgrader-course/gradebook.db)")
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
     grade.add_argument("--config", metavar="TOML",
-                       help="course config with due dates and the late policy (see autograder/lateness.py)")
+                       help="course config with due dates and the late policy (see autograder/reports/lateness.py)")
     grade.add_argument("--student", nargs="+", default=(), metavar="ID",
                        help="re-grade only these students; everyone else keeps their saved grade")
     grade.add_argument("--cluster", metavar="ADDRESS",
@@ -372,7 +372,7 @@ def build_parser():
     export = commands.add_parser("export", help="write the saved grades in a learning-management system's format")
     export.add_argument("--out", required=True, help="the results folder of `grade`")
     export.add_argument("--to", required=True, choices=sorted(EXPORTERS), help="the format")
-    export.add_argument("--roster", help="CSV roster with names, sections, SIS ids (see autograder/roster.py)")
+    export.add_argument("--roster", help="CSV roster with names, sections, SIS ids (see autograder/reports/roster.py)")
     export.add_argument("--file", help="where to write (default: OUT/<format>.csv)")
     export.set_defaults(run=_cmd_export)
 

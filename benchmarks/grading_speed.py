@@ -32,9 +32,9 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests"))
 
-from autograder.catalog import load_catalog  # noqa: E402
+from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit)  # noqa: E402
+from autograder.lessons.catalog import load_catalog  # noqa: E402
 from autograder.mistakes import all_mistakes  # noqa: E402
-from autograder.nbgrader_course import assignment_name, build_course, run_nbgrader, submit  # noqa: E402
 from support import STUB, build_submission  # noqa: E402
 
 

@@ -19,7 +19,7 @@ set ``needs_namespaces``.
 import json
 from dataclasses import dataclass, field
 
-from autograder.paths import SOLUTIONS
+from autograder.lessons.paths import SOLUTIONS
 
 TARGET = "rot_z"
 
@@ -92,7 +92,7 @@ def cases(context):
              "import sys\n"
              f"sys.path.insert(0, {str(SOLUTIONS.parent)!r})\n"
              "def rot_z(a):\n"
-             "    from autograder.reference import load_reference\n"
+             "    from autograder.lessons.reference import load_reference\n"
              "    return load_reference().rot_z(a)\n",
              twin="def rot_z(a):\n    raise RuntimeError('no answer')\n", needs_namespaces=True),
         Case("symlink_to_solutions", "hands in a symbolic link to the instructor's master", "lesson_zero",
@@ -190,7 +190,7 @@ def cases(context):
 
 def damage_notebook(case, nb, text):
     """Return the text to write for a notebook-level ``damage`` (None: no file, handled elsewhere)."""
-    from autograder import cells
+    from autograder.lessons import cells
 
     if case.damage == "truncate":
         return text[: len(text) // 2]
@@ -225,6 +225,6 @@ def damage_notebook(case, nb, text):
                 wrong["id"] = "rot_z_first_try"
                 nb.cells.insert(index, type(cell)(wrong))
                 break
-    from autograder.notebook_files import canonical_text
+    from autograder.lessons.notebook_files import canonical_text
 
     return canonical_text(nb)

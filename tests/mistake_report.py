@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parent.parent
 for entry in (ROOT, ROOT / "tests", ROOT / "solutions"):
     sys.path.insert(0, str(entry))
 
-from autograder.catalog import load_catalog  # noqa: E402
+from autograder.lessons.catalog import load_catalog  # noqa: E402
 from autograder.mistakes import all_mistakes  # noqa: E402
 from public_runner import run_public_checks  # noqa: E402
 from support import build_submission, grade, points_by_exercise  # noqa: E402

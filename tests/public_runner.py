@@ -15,10 +15,10 @@ import contextlib
 import io
 from functools import lru_cache
 
-from autograder.catalog import load_catalog
-from autograder.notebook_files import read_master
-from autograder.paths import SOLUTIONS
-from autograder.reference import lesson_namespace
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import SOLUTIONS
+from autograder.lessons.reference import lesson_namespace
 
 
 @lru_cache(maxsize=None)

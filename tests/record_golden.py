@@ -35,7 +35,7 @@ def grade_sample_class(out):
 def verdict_columns():
     """The gradebook columns that hold verdicts: one per exercise, then ``notebook_NN`` per lesson."""
     sys.path.insert(0, str(ROOT))
-    from autograder.catalog import load_catalog
+    from autograder.lessons.catalog import load_catalog
 
     catalog = load_catalog()
     return [e.name for e in catalog.exercises] + [f"notebook_{l.number}" for l in catalog.graded_lessons]

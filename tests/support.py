@@ -9,13 +9,13 @@ Examples
 from functools import lru_cache
 from pathlib import Path
 
-from autograder import cells
-from autograder.catalog import load_catalog
-from autograder.grading import GradingOptions, grade_student
+from autograder.grading.pipeline import GradingOptions, grade_student
+from autograder.lessons import cells
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.notebook_files import canonical_text, read_master
+from autograder.lessons.paths import COURSE
+from autograder.lessons.reference import answer_sources
 from autograder.mistakes import all_mistakes
-from autograder.notebook_files import canonical_text, read_master
-from autograder.paths import COURSE
-from autograder.reference import answer_sources
 
 STUB = "stub"
 

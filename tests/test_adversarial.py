@@ -20,11 +20,11 @@ from pathlib import Path
 import pytest
 
 from adversarial_corpus import cases, damage_notebook
-from autograder.batch import safe_name
-from autograder.catalog import load_catalog
-from autograder.notebook_files import read_master
-from autograder.paths import PROJECT_ROOT, SOLUTIONS
-from autograder.results import StudentResult
+from autograder.batch.class_run import safe_name
+from autograder.grading.results import StudentResult
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import PROJECT_ROOT, SOLUTIONS
 from autograder.sandbox import launcher
 from support import build_submission
 

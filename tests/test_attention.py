@@ -1,7 +1,7 @@
 """The class report's warnings: a stage that failed for most of the class points at the grader."""
 
-from autograder.attention import stage_warnings, worth_a_look
-from autograder.results import CheckResult, ExerciseResult, LessonResult, NotebookRun, StudentResult
+from autograder.grading.results import CheckResult, ExerciseResult, LessonResult, NotebookRun, StudentResult
+from autograder.reports.attention import stage_warnings, worth_a_look
 
 
 def _student(student_id, notebook_status, full=True, note=""):

@@ -11,14 +11,14 @@ import time
 
 import pytest
 
-from autograder.batch import grade_class, safe_name
-from autograder.catalog import load_catalog
-from autograder.gradebook import spreadsheet_safe
-from autograder.grading import GradingOptions
-from autograder.paths import PROJECT_ROOT
-from autograder.progress import Progress
-from autograder.report import class_report_html
-from autograder.results import CheckResult, ExerciseResult, LessonResult, StudentResult
+from autograder.batch.class_run import grade_class, safe_name
+from autograder.batch.progress import Progress
+from autograder.grading.pipeline import GradingOptions
+from autograder.grading.results import CheckResult, ExerciseResult, LessonResult, StudentResult
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.paths import PROJECT_ROOT
+from autograder.reports.class_report import class_report_html
+from autograder.reports.gradebook import spreadsheet_safe
 from support import STUB, build_submission
 
 FIRST = load_catalog().graded_lessons[0].number

@@ -15,7 +15,7 @@ from urllib.parse import unquote, urlparse
 
 import pytest
 
-from autograder.paths import PROJECT_ROOT, SOLUTIONS
+from autograder.lessons.paths import PROJECT_ROOT, SOLUTIONS
 from browser_support import BOOK_SELECTORS, Browser, open_book_page, page_problems, require_chromium
 
 LESSONS = sorted(p.stem for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))

@@ -18,7 +18,7 @@ import time
 import nbformat
 import pytest
 
-from autograder.paths import COURSE, PROJECT_ROOT, SOLUTIONS
+from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from browser_support import (LAB_SELECTORS, Browser, JupyterLab, changed_figures, figure_pictures, open_and_run_all,
                              page_problems, require_chromium)
 

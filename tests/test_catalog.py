@@ -5,10 +5,10 @@ import re
 
 import pytest
 
-from autograder import cells
-from autograder.catalog import load_catalog
-from autograder.notebook_files import read_master
-from autograder.paths import PROJECT_ROOT, SOLUTIONS
+from autograder.lessons import cells
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import PROJECT_ROOT, SOLUTIONS
 
 SPEC = PROJECT_ROOT.parent / "shared" / "COURSE_SPEC.md"
 SIGNATURE = re.compile(r"`([a-z_0-9]+)\(([^`]*)\)`")

@@ -1,4 +1,4 @@
-"""Grading on a Dask cluster (``grade --cluster``, autograder/cluster.py): the same results as local grading,
+"""Grading on a Dask cluster (``grade --cluster``, autograder/integrations/cluster.py): the same results as local grading,
 and faults that cost nothing or are recorded.
 
 Oracle: local grading of the same class (``grade --jobs 2``, the forked pool). Each student's saved result,
@@ -29,10 +29,10 @@ from pathlib import Path
 import psutil
 import pytest
 
-from autograder import submissions
-from autograder.cluster import pack_submission, unpack_submission
-from autograder.lateness import submission_time
-from autograder.paths import PROJECT_ROOT
+from autograder.grading import submissions
+from autograder.integrations.cluster import pack_submission, unpack_submission
+from autograder.lessons.paths import PROJECT_ROOT
+from autograder.reports.lateness import submission_time
 from autograder.sandbox import launcher
 from support import STUB, build_submission, mistakes
 

@@ -14,8 +14,8 @@ from packaging.specifiers import SpecifierSet
 from packaging.version import Version
 
 from autograder import MINIMUM_PYTHON
-from autograder.gradescope import SETUP_SH
-from autograder.paths import PROJECT_ROOT
+from autograder.integrations.gradescope import SETUP_SH
+from autograder.lessons.paths import PROJECT_ROOT
 
 
 def _pins():

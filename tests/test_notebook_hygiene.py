@@ -19,10 +19,10 @@ import time
 import nbformat
 import pytest
 
-from autograder import cells
-from autograder.execute import execute_notebook
-from autograder.notebook_files import read_master
-from autograder.paths import COURSE, SOLUTIONS
+from autograder.authoring.execute import execute_notebook
+from autograder.lessons import cells
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import COURSE, SOLUTIONS
 
 MASTERS = sorted(p.name for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
 

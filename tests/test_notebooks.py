@@ -14,8 +14,8 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from autograder.catalog import load_catalog
-from autograder.paths import COURSE, PROJECT_ROOT, SOLUTIONS
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 
 MASTERS = sorted(p.name for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
 

@@ -4,8 +4,8 @@ import time
 
 import pytest
 
-from autograder.catalog import load_catalog
-from autograder.reference import load_reference
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.reference import load_reference
 
 EXERCISES = [e.name for e in load_catalog().exercises]
 

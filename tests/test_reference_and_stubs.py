@@ -2,7 +2,7 @@
 
 import pytest
 
-from autograder.catalog import load_catalog
+from autograder.lessons.catalog import load_catalog
 from support import STUB, build_submission, grade
 
 LESSONS = [lesson.number for lesson in load_catalog().graded_lessons]

@@ -4,10 +4,10 @@ import ast
 import shutil
 from pathlib import Path
 
-from autograder import cells
-from autograder.notebook_files import read_master
-from autograder.paths import COURSE, HIDDEN_SUITE, SOLUTIONS
-from autograder.release import stale_files
+from autograder.authoring.release import stale_files
+from autograder.lessons import cells
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import COURSE, HIDDEN_SUITE, SOLUTIONS
 
 
 def _course_line_pairs(folder=COURSE):
@@ -128,7 +128,7 @@ def test_release_check_notices_an_edited_master(tmp_path):
 
 
 def test_release_command_exits_nonzero_when_stale(tmp_path, monkeypatch):
-    import autograder.release as release_module
+    import autograder.authoring.release as release_module
     from autograder.cli import main
 
     monkeypatch.setattr(release_module, "stale_files", lambda *a, **k: [("course/x.ipynb", "missing")])

@@ -14,9 +14,9 @@ import sys
 
 import pytest
 
-from autograder.catalog import load_catalog
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.paths import PROJECT_ROOT
 from autograder.mistakes import all_mistakes, sample_assignments
-from autograder.paths import PROJECT_ROOT
 
 FORMULA_ID = '=HYPERLINK("evil","click me")'
 

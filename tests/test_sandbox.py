@@ -7,7 +7,7 @@ import time
 
 import pytest
 
-from autograder.paths import SOLUTIONS
+from autograder.lessons.paths import SOLUTIONS
 from autograder.sandbox import launcher
 from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
 

@@ -9,10 +9,10 @@
 - The class report counts the notebooks that ran and those that were not run.
 """
 
-from autograder import grading, nbval_stage
-from autograder.catalog import load_catalog
-from autograder.report import class_report_html
-from autograder.results import ExerciseResult, LessonResult, NotebookRun, StudentResult
+from autograder.grading import nbval_stage, pipeline as grading
+from autograder.grading.results import ExerciseResult, LessonResult, NotebookRun, StudentResult
+from autograder.lessons.catalog import load_catalog
+from autograder.reports.class_report import class_report_html
 from support import STUB, build_submission
 
 

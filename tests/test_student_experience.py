@@ -12,10 +12,10 @@ import nbformat
 import pytest
 from nbclient import NotebookClient
 
-from autograder import cells
-from autograder.catalog import load_catalog
-from autograder.grading import GradingOptions
-from autograder.paths import COURSE, SOLUTIONS
+from autograder.grading.pipeline import GradingOptions
+from autograder.lessons import cells
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.paths import COURSE, SOLUTIONS
 
 LESSON = "01_frames_and_rotations.ipynb"
 EXERCISES = [e.name for e in load_catalog().lesson("01").exercises]

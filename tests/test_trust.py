@@ -14,7 +14,7 @@ import sys
 
 import pytest
 
-from autograder.paths import PROJECT_ROOT
+from autograder.lessons.paths import PROJECT_ROOT
 from autograder.sandbox import launcher
 from support import build_submission
 
@@ -98,7 +98,7 @@ def test_any_change_to_the_grader_regrades_and_status_says_why(small_class, tmp_
     assert "graded 0 student(s), 2 unchanged and reused" in again.stdout
     assert "(cached)" in again.stdout
 
-    feedback = project / "autograder" / "feedback.py"
+    feedback = project / "autograder" / "reports" / "feedback.py"
     feedback.write_text(feedback.read_text(encoding="utf-8") + "\n# a change to the grader\n", encoding="utf-8")
     after_code = _grade(project, small_class, out, *flags, cache=cache)
     assert "graded 2 student(s)" in after_code.stdout

@@ -2,7 +2,7 @@
 
 import pytest
 
-from autograder import suite
+from autograder.grading import suite
 
 
 @pytest.fixture

@@ -37,8 +37,8 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..paths import PROJECT_ROOT
-from . import cgroups
+from autograder.lessons.paths import PROJECT_ROOT
+from autograder.sandbox import cgroups
 
 NOBODY = 65534
 
@@ -285,7 +285,7 @@ def prepare_dirs(base):
     for name in ("worker.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py"):
         if (child_dir / name).exists():
             shutil.copy2(child_dir / name, sandbox_dir / name)
-    from ..paths import SOLUTIONS, SUPPORT_PACKAGE
+    from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE
 
     shutil.copytree(SOLUTIONS / SUPPORT_PACKAGE, sandbox_dir / SUPPORT_PACKAGE,
                     ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True)

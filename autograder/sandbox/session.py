@@ -24,8 +24,8 @@ import tempfile
 import time
 from dataclasses import dataclass, field
 
-from . import launcher
-from .child import wire
+from autograder.sandbox import launcher
+from autograder.sandbox.child import wire
 
 _SIGNAL_REASONS = {
     signal.SIGKILL: "was killed (memory or time limit, or a kill signal)",

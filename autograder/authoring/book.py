@@ -1,0 +1,168 @@
+"""The book: a static website of the solved lessons, for readers without Python.
+
+``python -m autograder book --out _build/book`` copies the masters of
+``solutions/`` (the reference answers, without nbgrader's solution markers)
+and the ``coursekit`` package they import into a staging folder, executes
+every notebook with Sphinx, myst-nb and sphinx-book-theme, and writes the
+HTML to ``--out``. The front page is ``00_start_here``; open
+``OUT/index.html`` in any browser: math is typeset by a copy of MathJax inside
+the book, so it reads offline, from disk, with no server and no Python.
+
+What the book never holds: the course's stubs (``course/``), the hidden
+tests and the grader (``autograder/``), the public checks' source or the
+notebooks' sources (only the executed pages).
+
+Examples
+--------
+>>> out, pages, warnings = build_book("_build/book")          # doctest: +SKIP
+"""
+
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import nbformat
+
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import SOLUTIONS
+
+FRONT_PAGE = "00_start_here"
+SUPPORT_PACKAGE = "coursekit"
+SOLUTION_MARKERS = ("### BEGIN SOLUTION", "### END SOLUTION")
+
+CONF_PY = '''\
+project = "Rotations, hands on"
+author = "the course authors"
+copyright = "the course authors"
+extensions = ["myst_nb"]
+root_doc = "index"
+exclude_patterns = ["_build", "coursekit", "**.ipynb_checkpoints", "jupyter_execute"]
+myst_enable_extensions = ["dollarmath", "amsmath"]
+myst_heading_anchors = 3
+# "$$ ... $$" inside a paragraph or a list item (as the lessons write it), display math as in JupyterLab
+myst_dmath_double_inline = True
+nb_execution_mode = "force"
+nb_execution_timeout = {timeout}
+nb_execution_raise_on_error = True
+nb_execution_show_tb = True
+nb_merge_streams = True
+html_theme = "sphinx_book_theme"
+html_title = "Rotations, hands on"
+html_copy_source = False
+html_show_sourcelink = False
+html_static_path = ["_static"]
+html_theme_options = {{"show_toc_level": 2, "use_download_button": False, "use_fullscreen_button": False,
+                      "use_repository_button": False, "home_page_in_toc": True}}
+# The theme reads its colour mode from localStorage or else from default_mode; without one it logs
+# "Got invalid theme mode" as a console error on every page of a book opened from disk. Light mode also
+# suits the figures, which are drawn on white.
+html_context = {{"default_mode": "light"}}
+html_last_updated_fmt = None
+mathjax_path = "mathjax/tex-svg-full.js"
+mathjax3_config = {{"tex": {{"inlineMath": [["\\\\(", "\\\\)"]], "displayMath": [["\\\\[", "\\\\]"]]}}}}
+suppress_warnings = ["mystnb.unknown_mime_type", "myst.header"]
+'''
+
+
+class BookFailed(RuntimeError):
+    """Sphinx could not build the book (a lesson raised, or a page could not be written)."""
+
+
+def _mathjax_file():
+    """MathJax 3's self-contained SVG build, shipped by the ``django-static-mathjax`` wheel (no Django needed)."""
+    import mathjax
+
+    path = Path(mathjax.__file__).parent / "static" / "mathjax" / "es5" / "tex-svg-full.js"
+    if not path.is_file():
+        raise BookFailed(f"MathJax is missing ({path}): pip install -r environment.txt")
+    return path
+
+
+def _reader_copy(nb):
+    """The master as a reader sees it: answers in place, without nbgrader's solution markers."""
+    for cell in nb.cells:
+        if cell.cell_type == "code":
+            lines = cell.source.splitlines()
+            kept = [line for line in lines if line.strip() not in SOLUTION_MARKERS]
+            if len(kept) != len(lines):
+                cell.source = "\n".join(kept)
+            cell.outputs, cell.execution_count = [], None
+    return nb
+
+
+def stage(solutions_dir, staging):
+    """Write the book's sources into ``staging``: the solved lessons, coursekit, conf.py and MathJax."""
+    solutions_dir, staging = Path(solutions_dir), Path(staging)
+    masters = sorted(solutions_dir.glob("[0-9][0-9]_*.ipynb"))
+    names = [path.stem for path in masters]
+    if FRONT_PAGE not in names:
+        raise BookFailed(f"{solutions_dir} has no {FRONT_PAGE}.ipynb")
+    for path in masters:
+        nb = _reader_copy(read_master(path))
+        target = staging / path.name
+        if path.stem == FRONT_PAGE:
+            lessons = "\n".join(name for name in names if name != FRONT_PAGE)
+            nb.cells.append(nbformat.v4.new_markdown_cell(
+                f"```{{toctree}}\n:hidden:\n:maxdepth: 1\n:caption: Lessons\n\n{lessons}\n```"))
+        nbformat.write(nb, target)
+    # index.html is what a reader opens: it is the start page itself.
+    shutil.copyfile(staging / f"{FRONT_PAGE}.ipynb", staging / "index.ipynb")
+    (staging / f"{FRONT_PAGE}.ipynb").unlink()
+    shutil.copytree(solutions_dir / SUPPORT_PACKAGE, staging / SUPPORT_PACKAGE,
+                    ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+    (staging / "_static" / "mathjax").mkdir(parents=True)
+    shutil.copyfile(_mathjax_file(), staging / "_static" / "mathjax" / "tex-svg-full.js")
+    return names
+
+
+def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=None):
+    """Build the book into ``out`` (replaced); return (out, the lesson names, Sphinx's warnings as text).
+
+    Raises BookFailed with Sphinx's own report when a lesson raises or the
+    build fails. Warnings are also written to ``OUT/../book-warnings.txt`` when there are any.
+    """
+    out = Path(out).resolve()
+    with tempfile.TemporaryDirectory(prefix="book-") as tmp:
+        staging = Path(keep_staging) if keep_staging else Path(tmp) / "src"
+        if staging.exists():
+            shutil.rmtree(staging)
+        staging.mkdir(parents=True)
+        names = stage(solutions_dir, staging)
+        (staging / "conf.py").write_text(CONF_PY.format(timeout=timeout), encoding="utf-8")
+        # Links between lessons point at NN_topic.ipynb; the start page is index now.
+        for path in staging.glob("*.ipynb"):
+            text = path.read_text(encoding="utf-8")
+            if f"({FRONT_PAGE}.ipynb" in text:
+                path.write_text(text.replace(f"({FRONT_PAGE}.ipynb", "(index.ipynb"), encoding="utf-8")
+        html = Path(tmp) / "html"
+        env = {key: value for key, value in os.environ.items()
+               if key not in ("JPY_SESSION_NAME", "MPLBACKEND", "PYDEVD_DISABLE_FILE_VALIDATION")}
+        env["PYTHONHASHSEED"] = "0"
+        env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
+        warnings = Path(tmp) / "warnings.txt"
+        run = subprocess.run(
+            [sys.executable, "-m", "sphinx", "-b", "html", "-q", "-j", str(jobs), "-d", str(Path(tmp) / "doctrees"),
+             "-w", str(warnings), str(staging), str(html)],
+            env=env, cwd=staging, capture_output=True, text=True)
+        if run.returncode != 0 or not (html / "index.html").is_file():
+            raise BookFailed(f"sphinx-build failed (exit {run.returncode}):\n{run.stderr[-4000:]}")
+        for leftover in (".buildinfo", ".doctrees", "_sources", "jupyter_execute", ".jupyter_cache", "objects.inv"):
+            target = html / leftover
+            if target.is_dir():
+                shutil.rmtree(target)
+            elif target.exists():
+                target.unlink()
+        if out.exists():
+            shutil.rmtree(out)
+        out.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copytree(html, out)
+        report = out.parent / "book-warnings.txt"
+        text = warnings.read_text(encoding="utf-8") if warnings.exists() else ""
+        if text.strip():
+            report.write_text(text, encoding="utf-8")
+        elif report.exists():
+            report.unlink()
+    return out, names, text

@@ -1,0 +1,145 @@
+"""A small class of students to grade when no submissions are given.
+
+``python -m autograder grade --out DIR`` with no PATH writes these
+submissions to ``DIR/sample_class/`` and grades them, so an instructor can see
+the whole pipeline — and its gradebook and feedback pages — in one command.
+
+Each student starts from the released notebooks in ``course/`` (exactly what
+a real student downloads) and fills in answers: the reference answer, the
+untouched stub, or one of the typical mistakes of :mod:`autograder.mistakes`.
+Two students cheat, one crashes and hangs, one hands in a damaged notebook,
+and one has an id that a spreadsheet would evaluate as a formula.
+"""
+
+import json
+import shutil
+from dataclasses import dataclass
+from pathlib import Path
+
+from autograder.lessons import cells
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.notebook_files import canonical_text, read_master
+from autograder.lessons.paths import COURSE
+from autograder.lessons.reference import answer_sources
+from autograder.mistakes import all_mistakes, sample_assignments
+
+# A numpy monkeypatch that gives full marks in a grader that compares inside the student's kernel.
+MONKEYPATCH = '''import numpy as np
+np.allclose = lambda *args, **kwargs: True
+np.testing.assert_allclose = lambda *args, **kwargs: None
+np.isclose = lambda a, b, *args, **kwargs: np.ones(np.shape(a), dtype=bool)
+np.array_equal = lambda *args, **kwargs: True
+'''
+WRONG_ANSWER = "    return None\n"
+
+
+@dataclass(frozen=True)
+class SampleStudent:
+    student_id: str
+    story: str
+    answers: str = "reference"  # "reference", "stub", "first_half" or "wrong"
+    cheat: str = ""  # "", "monkeypatch" or "edit_checks"
+    damage: str = ""  # "": none; "corrupt_first": the first lesson's notebook is not valid JSON
+
+
+STUDENTS = [
+    SampleStudent("ada", "every answer right: full marks"),
+    SampleStudent("ben", "hands in the untouched release: zero", answers="stub"),
+    SampleStudent("chloe", "did the first half of each lesson", answers="first_half"),
+    SampleStudent("dev", "transposes matrices (passive/active mix-up)"),
+    SampleStudent("emma", "works in degrees"),
+    SampleStudent("farid", "lets reflections through"),
+    SampleStudent("gina", "wrong answers, then monkeypatches numpy so every comparison passes",
+                  answers="wrong", cheat="monkeypatch"),
+    SampleStudent("hugo", "wrong answers, and rewrote the check cells to print success",
+                  answers="wrong", cheat="edit_checks"),
+    SampleStudent("ivy", "right answers, except one endless loop, one os._exit and one infinite recursion"),
+    SampleStudent("kim", "right answers, but the first notebook was damaged by a text editor",
+                  damage="corrupt_first"),
+    SampleStudent('=HYPERLINK("evil","click me")', "an id a spreadsheet would run as a formula"),
+]
+
+
+def _wrong(source):
+    """Keep the signature and docstring of a stub, return None instead of raising."""
+    lines = source.splitlines()
+    kept = [line for line in lines if "NotImplementedError" not in line and "Your code here" not in line]
+    return "\n".join(kept).rstrip() + "\n" + WRONG_ANSWER
+
+
+def _answer_for(student, exercise_name, index, count, stub, references, mistakes, chosen):
+    for name in chosen:
+        if mistakes[name].exercise == exercise_name:
+            return mistakes[name].source.strip("\n")
+    if student.answers == "stub" or (student.answers == "first_half" and index >= (count + 1) // 2):
+        return stub
+    if student.answers == "wrong":
+        return _wrong(stub)
+    return references[exercise_name]
+
+
+def student_notebook(student, lesson, references, mistakes, chosen):
+    """The notebook ``student`` hands in for ``lesson`` (a NotebookNode)."""
+    nb = read_master(COURSE / lesson.filename)
+    names = [e.name for e in lesson.exercises]
+    patched = False
+    for cell in nb.cells:
+        if cells.is_answer_cell(cell):
+            name = cells.grade_id(cell)
+            cell.source = _answer_for(student, name, names.index(name), len(names), cells.source_text(cell),
+                                      references, mistakes, chosen)
+            if student.cheat == "monkeypatch" and not patched:
+                cell.source = MONKEYPATCH + "\n\n" + cell.source
+                patched = True
+        elif cells.is_check_cell(cell) and student.cheat == "edit_checks":
+            name = cells.grade_id(cell)[len(cells.CHECK_PREFIX):]
+            cell.source = f'print("{name}: all public checks passed.")'
+    return nb
+
+
+def build_reference_submission(folder, lessons=()):
+    """Write the reference answers into the released notebooks, in ``folder``, as a student would hand them in.
+
+    This is the canary's submission (:mod:`autograder.grading.canary`): it must get full marks.
+    """
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    reference = STUDENTS[0]
+    references = answer_sources()
+    for lesson in load_catalog().graded_lessons:
+        if not lessons or lesson.number in lessons:
+            nb = student_notebook(reference, lesson, references, {}, [])
+            (folder / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
+    return folder
+
+
+def build_sample_class(target, lessons=()):
+    """Write every sample student's notebooks to ``target/<student_id>/``; return the ids.
+
+    ``lessons``: only these lesson numbers (default: every graded lesson).
+    """
+    target = Path(target)
+    if target.exists():
+        shutil.rmtree(target)
+    catalog = load_catalog()
+    references = answer_sources()
+    mistakes = all_mistakes()
+    assignments = sample_assignments()
+    unknown = sorted(set(assignments) - {s.student_id for s in STUDENTS})
+    if unknown:
+        raise ValueError(f"mistakes assigned to students who are not in the sample class: {unknown}")
+    for student in STUDENTS:
+        folder = target / student.student_id
+        folder.mkdir(parents=True)
+        chosen = assignments.get(student.student_id, [])
+        chosen_lessons = [l for l in catalog.graded_lessons if not lessons or l.number in lessons]
+        for number, lesson in enumerate(chosen_lessons):
+            text = canonical_text(student_notebook(student, lesson, references, mistakes, chosen))
+            if student.damage == "corrupt_first" and number == 0:
+                text = text[: len(text) // 2]  # cut in the middle: no longer valid JSON
+            (folder / lesson.filename).write_text(text, encoding="utf-8")
+        for extra in sorted(COURSE.glob("00_*.ipynb")):
+            shutil.copy2(extra, folder / extra.name)
+    (target / "README.json").write_text(json.dumps(
+        {s.student_id: s.story for s in STUDENTS}, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+    return [s.student_id for s in STUDENTS]

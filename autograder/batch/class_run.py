@@ -1,0 +1,330 @@
+"""Grade a whole class: a pool of forked graders, one student per process.
+
+The parent imports everything once (numpy, scipy, pytest, the hidden suite,
+the reference solutions) and then forks a fresh grader per student
+(:mod:`autograder.sandbox.forking`), so starting a student costs a fork, not a Python
+start-up, and no state survives from one student to the next. A grader that
+dies is reported as "could not grade" with the reason; the batch goes on.
+
+Before any student, the canary (:mod:`autograder.grading.canary`) grades the
+reference solutions through the same pipeline; if they do not get full marks
+the batch stops and nothing is written.
+
+Each student's result is written atomically to ``OUT/students/<id>.json``
+as soon as it is ready, with the content hash of the submission and the
+grader's fingerprint (:mod:`autograder.grading.fingerprint`: its code, the masters,
+the hidden suite, coursekit, the options, the isolation mode, the library
+versions). A re-run skips students whose submission and fingerprint did not
+change (``force`` re-grades) and records why it re-graded the others, so an
+interrupted run loses nothing already graded.
+"""
+
+import hashlib
+import json
+import os
+import signal
+import time
+import traceback
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from autograder.grading import submissions
+from autograder.grading.canary import describe_canary, ensure_reference_passes
+from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_changed
+from autograder.grading.pipeline import GradingOptions, grade_student
+from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
+from autograder.grading.suite import preload_hidden_suite
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.reference import load_reference
+from autograder.reports import feedback
+from autograder.reports.gradebook import gradebook_csv
+from autograder.reports.gradescope_results import results_json
+from autograder.reports.lateness import apply_late_policy
+from autograder.sandbox import launcher, process_tree
+from autograder.sandbox.forking import fork_each
+
+STUDENT_TIMEOUT = 900
+
+
+def safe_name(student_id):
+    """A file name for a student id: letters, digits, ``._-`` kept, the rest %-escaped.
+
+    Examples
+    --------
+    >>> safe_name("=cmd|' /C calc'!A0")
+    '%3Dcmd%7C%27%20%2FC%20calc%27%21A0'
+    """
+    out = []
+    for char in student_id:
+        if char.isascii() and (char.isalnum() or char in "._-"):
+            out.append(char)
+        else:
+            out.append("".join(f"%{b:02X}" for b in char.encode("utf-8")))
+    name = "".join(out)
+    return name if name not in ("", ".", "..") else f"%{name}"
+
+
+def write_atomically(path, text):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    with open(tmp, "w", encoding="utf-8") as handle:
+        handle.write(text)
+        handle.flush()
+        os.fsync(handle.fileno())
+    os.replace(tmp, path)
+
+
+@dataclass
+class Outputs:
+    """Where a run writes; all under one directory."""
+
+    root: Path
+
+    def student_json(self, student_id):
+        return self.root / "students" / f"{safe_name(student_id)}.json"
+
+    def feedback_html(self, student_id):
+        return self.root / "feedback" / f"{safe_name(student_id)}.html"
+
+    def gradescope_json(self, student_id):
+        return self.root / "results" / f"{safe_name(student_id)}.json"
+
+    @property
+    def gradebook(self):
+        return self.root / "grades.csv"
+
+    @property
+    def report(self):
+        return self.root / "report.html"
+
+
+@dataclass(frozen=True)
+class Stamp:
+    """What a saved result says about how it was graded: the grader's fingerprint and why it was graded."""
+
+    fingerprint: str
+    parts: dict
+    because: str = ""
+
+
+@dataclass
+class Saved:
+    stamp: Stamp
+    result: StudentResult
+
+
+def load_saved(outputs, student_id):
+    """The :class:`Saved` result of a student, or None."""
+    path = outputs.student_json(student_id)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        stamp = Stamp(data["fingerprint"], data.get("fingerprint_parts") or {}, data.get("graded_because", ""))
+        return Saved(stamp, StudentResult.from_json(json.dumps(data["result"])))
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def regrade_reason(saved, stamp, submission_hash, force=False):
+    """Why a student must be graded now, or ``None`` when the saved result can be reused."""
+    if force:
+        return "re-graded on request (--force or --student)"
+    if saved is None:
+        return "first grading"
+    if saved.result.status == COULD_NOT_GRADE:
+        return "the last attempt could not grade"
+    if saved.result.submission_hash != submission_hash:
+        return "the submission changed"
+    if saved.stamp.fingerprint != stamp.fingerprint:
+        changed = what_changed(saved.stamp.parts, stamp.parts) if saved.stamp.parts else []
+        return "changed since the last grading: " + (", ".join(changed) or "the grader (an older version)")
+    return None
+
+
+def save_result(outputs, result, stamp, graded_at):
+    payload = {"fingerprint": stamp.fingerprint, "fingerprint_parts": stamp.parts,
+               "graded_because": stamp.because, "graded_at": graded_at, "result": json.loads(result.to_json())}
+    write_atomically(outputs.feedback_html(result.student_id), feedback.feedback_html(result))
+    write_atomically(outputs.gradescope_json(result.student_id),
+                     json.dumps(results_json(result, seconds=result.seconds), indent=1, ensure_ascii=False))
+    write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
+
+
+def _grade_task(task):
+    """Runs in a forked child: grade one student and save the result."""
+    student_id, folder, options, out_root, stamp, config = task
+    process_tree.become_subreaper()
+    outputs = Outputs(Path(out_root))
+
+    def on_alarm(signum, frame):
+        raise TimeoutError(f"grading this student took longer than {STUDENT_TIMEOUT} s")
+
+    signal.signal(signal.SIGALRM, on_alarm)
+    signal.alarm(STUDENT_TIMEOUT)
+    try:
+        result = apply_late_policy(grade_student(student_id, Path(folder), options), folder, config)
+    except Exception as error:  # our fault, not the student's: report, keep the batch going
+        result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
+                               reason=f"{type(error).__name__}: {error}",
+                               submission_hash=submissions.submission_hash(folder))
+        result.problems.append(traceback.format_exc(limit=3).strip().splitlines()[-1])
+    finally:
+        signal.alarm(0)
+        process_tree.kill_descendants()
+    save_result(outputs, result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
+
+
+def _record_death(task, problem):
+    """The child grading a student died: save a 'could not grade' result that says why."""
+    student_id, folder, _, out_root, stamp, _ = task
+    result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
+                           reason=f"{problem}; nothing else was affected, run grade again to retry",
+                           submission_hash=submissions.submission_hash(folder))
+    save_result(Outputs(Path(out_root)), result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
+    return result
+
+
+@dataclass
+class RunSummary:
+    graded: list = field(default_factory=list)  # (student_id, score, max, status, seconds)
+    skipped: list = field(default_factory=list)  # student ids whose saved result was reused
+    results: list = field(default_factory=list)  # StudentResult of everyone in the gradebook
+    reasons: dict = field(default_factory=dict)  # student id -> why it was (re-)graded
+    kept: list = field(default_factory=list)  # graded earlier, not under this run's path: kept as saved
+    canary: object = None  # CanaryResult
+    seconds: float = 0.0
+
+
+def _prewarm():
+    """Import and compute, once, everything the forked graders share read-only."""
+    load_catalog()
+    load_reference()
+    preload_hidden_suite()
+    launcher.isolation()
+    launcher.limits_mode_can_drop_root()
+
+
+class UnknownStudents(ValueError):
+    """``only`` named students who have no folder under the submissions path."""
+
+
+def saved_student_ids(outputs):
+    """Ids of every student with a saved result in ``outputs``."""
+    ids = []
+    for path in sorted((outputs.root / "students").glob("*.json")):
+        try:
+            ids.append(json.loads(path.read_text(encoding="utf-8"))["result"]["student_id"])
+        except (OSError, ValueError, KeyError, TypeError):
+            continue
+    return ids
+
+
+def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=(),
+                only=(), announce=None, config=None, runner=None):
+    """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
+
+    ``roster``: student ids expected; those without a folder are reported missing.
+    ``only``: grade just these students (always re-graded); everyone else keeps their saved result.
+    ``announce``: called with a line of text when a step worth telling starts or ends (the canary).
+    ``config``: a :class:`~autograder.reports.lateness.CourseConfig` with due dates and the late policy.
+    ``runner``: how the students' tasks run, with the signature of
+    :func:`~autograder.sandbox.forking.fork_each` (default: forks of this process, ``jobs`` at a time); a
+    runner calls ``_grade_task(task)`` somewhere and ``on_done(task, problem)`` here, as each ends.
+    The gradebook never shrinks: students graded earlier into ``out_dir`` stay in it, with their
+    saved results, even when ``path`` no longer holds their folder (``RunSummary.kept`` names them).
+
+    Raises
+    ------
+    CanaryFailed
+        The reference solutions did not get full marks on this machine; nothing was written.
+    UnknownStudents
+        A student of ``only`` has no folder under ``path``; nothing was written.
+    """
+    started = time.monotonic()
+    outputs = Outputs(Path(out_dir))
+    students = submissions.student_folders(path)
+    unknown = sorted(set(only) - {student_id for student_id, _ in students})
+    if unknown:
+        raise UnknownStudents(f"no submission folder under {path} for: {', '.join(unknown)}")
+    _prewarm()
+    parts = fingerprint_parts(options)
+    summary = RunSummary()
+    if announce:
+        announce("canary: grading the reference solutions first (once per grader version)...")
+    summary.canary = ensure_reference_passes(options, parts)
+    if announce:
+        announce(describe_canary(summary.canary))
+    outputs.root.mkdir(parents=True, exist_ok=True)
+    for stale in outputs.root.glob("*/.*.tmp"):  # left by a run that was killed mid-write
+        stale.unlink(missing_ok=True)
+    if config is not None:
+        parts["course config"] = hashlib.sha256(config.source.encode()).hexdigest()[:16]
+    stamp = Stamp(fingerprint(parts), parts)
+    tasks = []
+    for student_id, folder in students:
+        if only and student_id not in only:
+            summary.skipped.append(student_id)
+            continue
+        because = regrade_reason(load_saved(outputs, student_id), stamp, submissions.submission_hash(folder),
+                                 force or bool(only))
+        if because is None:
+            summary.skipped.append(student_id)
+            continue
+        summary.reasons[student_id] = because
+        tasks.append((student_id, str(folder), options, str(outputs.root), replace(stamp, because=because), config))
+    jobs = max(1, jobs or os.cpu_count() or 1)
+    if progress:
+        progress.start(len(tasks))
+
+    def on_done(task, problem):
+        saved = None if problem else load_saved(outputs, task[0])
+        if saved is None:
+            result = _record_death(task, problem or "the grading process ended without saving a result")
+        else:
+            result = saved.result
+        row = (result.student_id, result.score, result.max_score, result.status, result.seconds)
+        summary.graded.append(row)
+        if progress:
+            progress.advance(row)
+
+    (runner or fork_each)(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
+    if progress:
+        progress.finish()
+    submitted = {sid for sid, _ in students}
+    earlier = set(saved_student_ids(outputs))
+    summary.kept = sorted(earlier - submitted)
+    everyone = submitted | earlier
+    summary.results = write_reports(outputs, sorted(everyone | set(roster)), everyone)
+    summary.seconds = time.monotonic() - started
+    return summary
+
+
+def collect_results(outputs, student_ids, submitted=None):
+    """Saved results for ``student_ids``; a student without one is missing or not finished."""
+    results, graded_at = [], {}
+    for student_id in student_ids:
+        path = outputs.student_json(student_id)
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+            results.append(StudentResult.from_json(json.dumps(data["result"])))
+            graded_at[student_id] = data.get("graded_at", "")
+        except (OSError, ValueError, KeyError, TypeError):
+            if submitted is not None and student_id not in submitted:
+                results.append(StudentResult(student_id=student_id, status=MISSING,
+                                             reason="no submission folder"))
+            else:
+                results.append(StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
+                                             reason="no saved result: the run was interrupted before "
+                                                    "this student was graded; run grade again"))
+    return results, graded_at
+
+
+def write_reports(outputs, student_ids, submitted=None):
+    """Write grades.csv and report.html for ``student_ids``; return their results."""
+    from autograder.reports.class_report import class_report_html
+
+    results, graded_at = collect_results(outputs, student_ids, submitted)
+    catalog = load_catalog()
+    write_atomically(outputs.gradebook, gradebook_csv(results, catalog, graded_at))
+    write_atomically(outputs.report, class_report_html(results, catalog))
+    return results

@@ -1,0 +1,87 @@
+"""What decides a grade besides the submission, so that a saved grade is reused only when all of it is unchanged.
+
+:func:`fingerprint_parts` names each ingredient and gives it a short digest
+(or a readable value, for the isolation mode and library versions);
+:func:`fingerprint` hashes them all. A saved result carries both, so a re-run
+can say *why* it re-grades a student (:func:`what_changed`).
+
+Examples
+--------
+>>> parts = fingerprint_parts(GradingOptions())                          # doctest: +SKIP
+>>> sorted(parts)                                                        # doctest: +SKIP
+['coursekit', 'grader code', 'grading options', 'hidden suite', 'isolation mode', 'libraries',
+ 'reference solutions']
+>>> what_changed(dict(parts, **{"isolation mode": "limits"}), parts)     # doctest: +SKIP
+['isolation mode (limits → namespaces)']
+"""
+
+import hashlib
+import json
+import platform
+from importlib import metadata
+from pathlib import Path
+
+from autograder.lessons.paths import HIDDEN_SUITE, PACKAGE, SOLUTIONS, SUPPORT_PACKAGE
+from autograder.sandbox import launcher
+
+GRADER = PACKAGE
+# Parts whose value is readable as it is (shown as "old → new" when it changes); the others are digests.
+READABLE = ("isolation mode", "libraries")
+LIBRARIES = ("numpy", "scipy", "nbval", "pytest", "ipykernel")
+
+
+def _digest_files(files, root):
+    digest = hashlib.sha256()
+    for path in sorted(files):
+        digest.update(str(path.relative_to(root)).encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()[:16]
+
+
+def _grader_files():
+    """The grader's own code: every module except the hidden suite (its own part) and the mistakes corpus
+    (fixtures for the project's tests and the sample class, never run while grading)."""
+    skipped = (GRADER / "hidden", GRADER / "mistakes")
+    return [p for p in GRADER.rglob("*.py") if "__pycache__" not in p.parts
+            and not any(parent in skipped for parent in p.parents)]
+
+
+def _versions():
+    found = [f"Python {platform.python_version()}"]
+    for name in LIBRARIES:
+        try:
+            found.append(f"{name} {metadata.version(name)}")
+        except metadata.PackageNotFoundError:
+            found.append(f"{name} missing")
+    return ", ".join(found)
+
+
+def fingerprint_parts(options, solutions_dir=SOLUTIONS):
+    """``{ingredient: digest or readable value}`` for everything besides the submission that decides a grade."""
+    solutions_dir = Path(solutions_dir)
+    support = solutions_dir / SUPPORT_PACKAGE
+    hidden = [p for p in HIDDEN_SUITE.rglob("*") if p.is_file() and "__pycache__" not in p.parts]
+    return {
+        "grader code": _digest_files(_grader_files(), GRADER),
+        "reference solutions": _digest_files(solutions_dir.glob("[0-9][0-9]_*.ipynb"), solutions_dir),
+        "coursekit": _digest_files([p for p in support.rglob("*.py") if "__pycache__" not in p.parts], support),
+        "hidden suite": _digest_files(hidden, HIDDEN_SUITE),
+        "grading options": hashlib.sha256(repr(options).encode()).hexdigest()[:16],
+        "isolation mode": launcher.isolation()[0],
+        "libraries": _versions(),
+    }
+
+
+def fingerprint(parts):
+    """One digest for all the parts."""
+    return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
+
+
+def what_changed(old_parts, new_parts):
+    """The ingredients that differ, as phrases (``"isolation mode (limits → namespaces)"``)."""
+    changed = []
+    for name, value in new_parts.items():
+        old = (old_parts or {}).get(name)
+        if old == value:
+            continue
+        changed.append(f"{name} ({old} → {value})" if name in READABLE and old else name)
+    return changed

@@ -1,0 +1,167 @@
+"""Grade one student: notebooks → answers → sandbox → hidden suite (→ nbval) → result.
+
+nbval runs after the hidden suite, and only on the lessons whose exercises all
+got full hidden marks: the notebook point needs them (:func:`nbval_stage.award`),
+so for any other lesson nbval could not change the grade; its run is
+``skipped``, worth 0, with the reason.
+
+This is GUIDE's "Grading, end to end" for a single student. Each lesson and
+each exercise is graded on its own: a notebook that cannot be read costs that
+lesson's points (with the reason), a function that crashes or hangs costs
+that exercise's points, and everything else is still graded.
+"""
+
+import ast
+import time
+from dataclasses import dataclass
+
+from autograder.grading import extract, submissions
+from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
+from autograder.grading.results import (GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult, LessonResult,
+                                        NotebookRun, StudentResult)
+from autograder.grading.suite import StudentProxy, run_hidden_suite
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.notebook_files import UnreadableNotebook, read_submission
+from autograder.lessons.reference import load_reference
+from autograder.sandbox import launcher
+from autograder.sandbox.session import StudentError, StudentSandbox
+
+
+@dataclass(frozen=True)
+class GradingOptions:
+    """Knobs of a grading run."""
+
+    nbval: bool = True
+    limits: launcher.Limits = launcher.Limits()
+    lessons: tuple = ()  # lesson numbers to grade, e.g. ("01", "03"); empty means all
+    notebook_points: float = 1.0  # per lesson, for "runs top to bottom and reproduces the reference"
+
+
+def _score(max_points, checks):
+    total = sum(c.weight for c in checks)
+    if not total:
+        return 0.0
+    passed = sum(c.weight for c in checks if c.passed)
+    return round(max_points * passed / total, 2)
+
+
+def _calls_to_other_exercises(source, names):
+    """Exercise names (from ``names``) that a student's answer cell refers to."""
+    try:
+        tree = ast.parse(source)
+    except (SyntaxError, ValueError):
+        return set()
+    return {node.id for node in ast.walk(tree) if isinstance(node, ast.Name) and node.id in names}
+
+
+def _note_failed_prerequisites(shell, program):
+    """Say plainly when an exercise that lost points calls another exercise that lost points."""
+    if program is None:
+        return
+    sources = dict(program.cells)
+    lost = {e.name for e in shell.exercises if e.points < e.max_points}
+    for exercise in shell.exercises:
+        if exercise.name not in lost or exercise.name not in sources:
+            continue
+        used = _calls_to_other_exercises(sources[exercise.name], lost - {exercise.name})
+        for other in sorted(used):
+            exercise.notes.append(f"your {exercise.name} calls your {other}, which also lost points: "
+                                  f"fix {other} first, its mistake may be the cause here")
+
+
+def _read_lessons(folder, catalog, only=()):
+    """For each graded lesson: (LessonResult shell, notebook path, program or None); and notes on the files
+    (which of several notebooks was graded, notebooks that belong to no lesson)."""
+    files = submissions.match_lessons(folder, catalog)
+    notes = [files.notes[number] for number in sorted(files.notes) if not only or number in only]
+    notes += [f"{path.relative_to(folder)} was not graded: it holds no exercise of the course "
+              "(no answer cell and no exercise function)" for path in files.unmatched]
+    found = []
+    for lesson in catalog.graded_lessons:
+        if only and lesson.number not in only:
+            continue
+        shell = LessonResult(number=lesson.number, title=lesson.title, notebook=lesson.filename, status="graded")
+        path = files.chosen.get(lesson.number)
+        if path is None:
+            shell.status, shell.reason = "missing", f"no notebook {lesson.filename} in the submission"
+            found.append((shell, None, None))
+            continue
+        shell.notebook = str(path.relative_to(folder))
+        try:
+            nb = read_submission(path, root=folder)
+        except UnreadableNotebook as error:
+            shell.status, shell.reason = "unreadable", str(error)
+            found.append((shell, path, None))
+            continue
+        found.append((shell, path, extract.lesson_program(nb, lesson)))
+    return found, notes
+
+
+def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=None):
+    """Grade the submission in ``folder``; never raises for anything the student did."""
+    started = time.monotonic()
+    catalog = load_catalog() if solutions_dir is None else load_catalog(solutions_dir)
+    reference = load_reference() if solutions_dir is None else load_reference(solutions_dir)
+    result = StudentResult(student_id=student_id, status=GRADED,
+                           submission_hash=submissions.submission_hash(folder),
+                           isolation=launcher.isolation()[0])
+    lessons, file_notes = _read_lessons(folder, catalog, options.lessons)
+    result.problems.extend(file_notes)
+    programs = {shell.number: program for shell, _, program in lessons if program is not None}
+    unavailable = {shell.number: f"{shell.notebook}: {shell.reason}" for shell, _, program in lessons
+                   if program is None}
+
+    checks, suite_problems = [], []
+    with StudentSandbox(programs, limits=options.limits) as sandbox:
+        proxy = StudentProxy(sandbox, catalog, unavailable)
+        try:
+            checks, suite_problems = run_hidden_suite(proxy, reference,
+                                                      lessons=[shell.number for shell, _, _ in lessons])
+        except StudentError as error:  # e.g. the sandbox crashed too many times
+            result.problems.append(f"grading stopped early: {error.message}")
+        outcomes = {(o.lesson, o.label): o for o in sandbox.outcomes}
+
+    for shell, path, program in lessons:
+        lesson = catalog.lesson(shell.number)
+        if program is not None:
+            result.problems.extend(f"{shell.notebook}: {p}" for p in program.problems)
+        elif shell.status != "graded":
+            result.problems.append(f"lesson {shell.number}: {shell.reason}")
+        for exercise in lesson.exercises:
+            own = [c for c in checks if c.exercise == exercise.name]
+            entry = ExerciseResult(name=exercise.name, lesson=lesson.number, max_points=exercise.points,
+                                   points=_score(exercise.points, own), checks=own)
+            outcome = outcomes.get((lesson.number, exercise.name))
+            if outcome is not None and not outcome.ok:
+                entry.notes.append(f"running the answer cell failed: {outcome.message}")
+            setup = outcomes.get((lesson.number, "setup"))
+            if setup is not None and not setup.ok:
+                entry.notes.append(f"the lesson's setup cell failed: {setup.message}")
+            if program is None:
+                entry.notes.append(shell.reason)
+            shell.exercises.append(entry)
+        _note_failed_prerequisites(shell, program)
+        result.lessons.append(shell)
+
+    if options.nbval:
+        # The notebook point needs full hidden marks on the lesson (nbval_stage.award), so nbval
+        # runs only where it can still change the grade; the other lessons say why it did not run.
+        worth_running = [(shell, path, program) for shell, path, program in lessons
+                         if program is not None and full_hidden_marks(shell)]
+        runs = run_notebooks(folder, worth_running, options, catalog) if worth_running else {}
+        for shell, _, program in lessons:
+            if program is not None and not full_hidden_marks(shell):
+                shell.run = not_run_for_lost_points(options.notebook_points)
+            else:
+                shell.run = runs.get(shell.number) or NotebookRun(
+                    status="failed", max_points=options.notebook_points,
+                    failures=[shell.reason or "the notebook stage did not run"])
+            award(shell)
+
+    result.problems.extend(suite_problems)
+    if all(shell.status == "missing" for shell, _, _ in lessons):
+        result.status, result.reason = MISSING, "the submission holds none of the course's notebooks"
+    elif result.problems:
+        result.status = GRADED_WITH_PROBLEMS
+    result.seconds = round(time.monotonic() - started, 2)
+    return result

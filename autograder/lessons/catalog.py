@@ -1,0 +1,120 @@
+"""The lessons and their exercises, read from the masters in ``solutions/``.
+
+The masters are the single source of truth: an exercise exists because its
+answer cell exists, and it is worth what its check cell's ``points`` say.
+
+Examples
+--------
+>>> catalog = load_catalog()
+>>> catalog.exercise("rot_z").lesson
+'01'
+"""
+
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from autograder.lessons import cells
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import SOLUTIONS
+
+LESSON_FILE = re.compile(r"^(\d\d)_[a-z0-9_]+\.ipynb$")
+
+
+@dataclass(frozen=True)
+class Exercise:
+    name: str
+    lesson: str
+    points: float
+
+
+@dataclass(frozen=True)
+class Lesson:
+    number: str
+    filename: str
+    title: str
+    exercises: tuple
+    setup_source: str
+    hand_in_points: float = 0.0  # the notebook point, as the hand-in grade cell records it for nbgrader
+
+    @property
+    def points(self):
+        return sum(exercise.points for exercise in self.exercises)
+
+
+@dataclass(frozen=True)
+class Catalog:
+    lessons: tuple
+
+    @property
+    def exercises(self):
+        return tuple(e for lesson in self.lessons for e in lesson.exercises)
+
+    @property
+    def graded_lessons(self):
+        return tuple(lesson for lesson in self.lessons if lesson.exercises)
+
+    def lesson(self, number):
+        for lesson in self.lessons:
+            if lesson.number == number:
+                return lesson
+        raise KeyError(f"no lesson {number!r}")
+
+    def exercise(self, name):
+        for exercise in self.exercises:
+            if exercise.name == name:
+                return exercise
+        raise KeyError(f"no exercise {name!r}")
+
+
+class CatalogError(ValueError):
+    """A master notebook breaks the conventions of :mod:`autograder.lessons.cells`."""
+
+
+def lesson_from_notebook(path, nb):
+    """Read one master's lesson number, title, exercises and setup cell."""
+    match = LESSON_FILE.match(Path(path).name)
+    if not match:
+        raise CatalogError(f"{path}: lesson files are named NN_words.ipynb")
+    number = match.group(1)
+    title = ""
+    for cell in nb.cells:
+        if cell.cell_type == "markdown":
+            first = cells.source_text(cell).strip().splitlines()[0] if cells.source_text(cell).strip() else ""
+            if first.startswith("# "):
+                title = re.sub(r"^Lesson\s+\d+\s*[—:-]\s*", "", first[2:].strip())
+                break
+    exercises, setup_source, pending, hand_in_points = [], "", None, 0.0
+    for cell in nb.cells:
+        if cells.is_setup_cell(cell):
+            setup_source = cells.source_text(cell)
+        elif cells.is_hand_in_cell(cell):
+            hand_in_points = cells.points(cell)
+        elif cells.is_answer_cell(cell):
+            if pending:
+                raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")
+            pending = cells.grade_id(cell)
+        elif cells.is_check_cell(cell):
+            name = (cells.grade_id(cell) or "")[len(cells.CHECK_PREFIX):]
+            if name != pending:
+                raise CatalogError(f"{path}: check cell {cells.grade_id(cell)!r} does not follow its answer cell")
+            exercises.append(Exercise(name=name, lesson=number, points=cells.points(cell)))
+            pending = None
+    if pending:
+        raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")
+    return Lesson(number=number, filename=Path(path).name, title=title,
+                  exercises=tuple(exercises), setup_source=setup_source, hand_in_points=hand_in_points)
+
+
+@lru_cache(maxsize=4)
+def load_catalog(solutions_dir=SOLUTIONS):
+    """Build the catalog from every ``NN_*.ipynb`` master, in lesson order."""
+    lessons = []
+    for path in sorted(Path(solutions_dir).glob("[0-9][0-9]_*.ipynb")):
+        lessons.append(lesson_from_notebook(path, read_master(path)))
+    names = [e.name for lesson in lessons for e in lesson.exercises]
+    duplicates = sorted({n for n in names if names.count(n) > 1})
+    if duplicates:
+        raise CatalogError(f"exercise names used twice: {duplicates}")
+    return Catalog(lessons=tuple(lessons))

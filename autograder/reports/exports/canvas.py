@@ -1,0 +1,53 @@
+"""Canvas: the CSV that Canvas's Gradebook → Import accepts.
+
+Columns ``Student, ID, SIS User ID, SIS Login ID, Section``, then one column
+per lesson (each lesson is its own Canvas assignment, named
+``Lesson 01: Frames and rotations``; Canvas offers to create assignments it
+does not know). The second row, ``Points Possible``, gives each lesson's
+maximum. Scores are the lesson totals after late penalties, as in
+``grades.csv``. Students are matched in Canvas by ``SIS User ID``: the
+roster's ``sis_id`` when given, else the grader's student id; ``ID`` is the
+roster's ``canvas_id`` (Canvas's own number) when known.
+
+Examples
+--------
+>>> text = write(results, load_catalog(), read_roster("roster.csv"))      # doctest: +SKIP
+>>> text.splitlines()[0]                                                   # doctest: +SKIP
+'Student,ID,SIS User ID,SIS Login ID,Section,Lesson 01: Frames and rotations,...'
+"""
+
+import csv
+import io
+
+from autograder.reports.gradebook import spreadsheet_safe
+
+FIXED = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
+
+
+def assignment_name(lesson):
+    return f"Lesson {lesson.number}: {lesson.title}" if lesson.title else f"Lesson {lesson.number}"
+
+
+def write(results, catalog, roster=()):
+    """The import file's text for ``results`` (StudentResult), with names and sections from ``roster``."""
+    people = {entry.student_id: entry for entry in roster}
+    lessons = catalog.graded_lessons
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(FIXED + [assignment_name(lesson) for lesson in lessons])
+    possible = {lesson.number: lesson.points for lesson in lessons}
+    for result in results:  # the graded maximum includes the notebook point when the stage ran
+        for lesson in result.lessons:
+            possible[lesson.number] = max(possible[lesson.number], lesson.max_points)
+    writer.writerow(["Points Possible", "", "", "", ""] + [f"{possible[lesson.number]:g}" for lesson in lessons])
+    for result in sorted(results, key=lambda r: r.student_id):
+        person = people.get(result.student_id)
+        earned = {lesson.number: lesson.points for lesson in result.lessons if lesson.status != "missing"}
+        writer.writerow([spreadsheet_safe(value) for value in (
+            (person.name if person and person.name else result.student_id),
+            person.canvas_id if person else "",
+            (person.sis_id if person and person.sis_id else result.student_id),
+            result.student_id,
+            person.section if person else "")]
+            + [f"{earned[lesson.number]:g}" if lesson.number in earned else "" for lesson in lessons])
+    return buffer.getvalue()

@@ -1,0 +1,132 @@
+"""One self-contained HTML feedback page per student.
+
+It shows the score per lesson and exercise, every failed check with its
+one-line reason and hint, what the student's code printed (truncated), and
+the notebook stage. It never shows a hidden test's source: only the
+sentence that describes each check. Everything that came from a student
+(ids, messages, printed text) is HTML-escaped.
+"""
+
+from html import escape
+
+from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
+
+STYLE = """
+body { font-family: system-ui, -apple-system, Segoe UI, Roboto, sans-serif; max-width: 60rem;
+       margin: 2rem auto; padding: 0 1rem; color: #1d1d1f; line-height: 1.45; }
+h1 { font-size: 1.6rem; margin-bottom: .2rem; } h2 { margin-top: 2rem; border-bottom: 1px solid #ddd; }
+h3 { margin: 1.2rem 0 .3rem; font-size: 1.05rem; }
+.score { font-size: 1.25rem; } .muted { color: #666; } .ok { color: #1a7f37; } .bad { color: #b42318; }
+.partial { color: #9a6700; }
+table { border-collapse: collapse; margin: .6rem 0; } td, th { padding: .25rem .8rem; text-align: left; }
+tr:nth-child(even) { background: #f6f8fa; } th { border-bottom: 2px solid #ddd; }
+ul.checks { list-style: none; padding-left: .5rem; } ul.checks li { margin: .35rem 0; }
+.hint { display: block; margin-left: 1.4rem; color: #555; }
+pre { background: #f6f8fa; padding: .6rem; overflow-x: auto; max-height: 18rem; white-space: pre-wrap; }
+details { margin: .3rem 0 .3rem .5rem; } .note { background: #fff8c5; padding: .4rem .6rem; }
+"""
+
+
+def _e(text):
+    return escape(str(text), quote=True)
+
+
+def _points(points, max_points):
+    return f"{points:g} / {max_points:g}"
+
+
+def _css_class(points, max_points):
+    if max_points and points >= max_points:
+        return "ok"
+    return "bad" if points <= 0 else "partial"
+
+
+def _exercise_html(exercise):
+    klass = _css_class(exercise.points, exercise.max_points)
+    parts = [f'<h3 id="{_e(exercise.name)}"><code>{_e(exercise.name)}</code> '
+             f'<span class="{klass}">{_points(exercise.points, exercise.max_points)}</span></h3>']
+    for note in exercise.notes:
+        parts.append(f'<p class="note">{_e(note)}</p>')
+    failed = [c for c in exercise.checks if not c.passed]
+    passed = [c for c in exercise.checks if c.passed]
+    if failed:
+        items = []
+        for check in failed:
+            item = f'<li><span class="bad">✗</span> {_e(check.description)}'
+            if check.reason:
+                item += f": {_e(check.reason)}"
+            if check.hint:
+                item += f'<span class="hint">hint: {_e(check.hint)}</span>'
+            items.append(item + "</li>")
+        parts.append('<ul class="checks">' + "".join(items) + "</ul>")
+    if passed:
+        items = "".join(f'<li><span class="ok">✓</span> {_e(c.description)}</li>' for c in passed)
+        label = "1 check passed" if len(passed) == 1 else f"{len(passed)} checks passed"
+        parts.append(f'<details><summary>{label}</summary><ul class="checks">{items}</ul></details>')
+    if not exercise.checks and not exercise.notes:
+        parts.append('<p class="muted">No checks ran for this exercise.</p>')
+    printed = "".join(dict.fromkeys(c.printed for c in exercise.checks if c.printed))
+    if printed:
+        parts.append("<details><summary>what your code printed while being checked</summary>"
+                     f"<pre>{_e(printed[:4000])}</pre></details>")
+    return "\n".join(parts)
+
+
+def _lesson_html(lesson):
+    title = f"Lesson {lesson.number}" + (f" — {lesson.title}" if lesson.title else "")
+    parts = [f'<h2 id="lesson-{_e(lesson.number)}">{_e(title)} '
+             f'<span class="{_css_class(lesson.points, lesson.max_points)}">'
+             f'{_points(lesson.points, lesson.max_points)}</span></h2>',
+             f'<p class="muted">notebook: <code>{_e(lesson.notebook)}</code></p>']
+    if lesson.late_penalty:
+        parts.append(f'<p class="note">Late: {_e(lesson.late_note)}. Points before the penalty: '
+                     f'{_points(lesson.raw_points, lesson.max_points)}.</p>')
+    if lesson.status == "missing":
+        return "\n".join(parts[:1] + [f'<p class="note">{_e(lesson.reason)}: its {len(lesson.exercises)} '
+                                      "exercises were not graded.</p>"])
+    if lesson.status != "graded":
+        parts.append(f'<p class="note">This notebook could not be graded: {_e(lesson.reason)}</p>')
+    for exercise in lesson.exercises:
+        parts.append(_exercise_html(exercise))
+    if lesson.run is not None:
+        run = lesson.run
+        verdict = {"passed": "ran top to bottom and reproduced the reference outputs",
+                   "failed": "did not run cleanly", "skipped": "was not run"}.get(run.status, run.status)
+        parts.append(f"<h3>Notebook run <span class=\"{_css_class(run.points, run.max_points)}\">"
+                     f"{_points(run.points, run.max_points)}</span></h3>"
+                     f"<p>Your answers, placed in the reference notebook, {_e(verdict)}.</p>")
+        if run.failures:
+            parts.append('<ul class="checks">' + "".join(f"<li>{_e(f)}</li>" for f in run.failures) + "</ul>")
+    return "\n".join(parts)
+
+
+def feedback_html(result):
+    """The feedback page for one :class:`~autograder.grading.results.StudentResult`."""
+    rows = "".join(
+        f'<tr><td><a href="#lesson-{_e(l.number)}">{_e(l.number)}</a></td><td>{_e(l.title)}</td>'
+        f'<td class="{_css_class(l.points, l.max_points)}">{_points(l.points, l.max_points)}</td></tr>'
+        for l in result.lessons)
+    problems = ""
+    if result.reason or result.problems:
+        items = "".join(f"<li>{_e(p)}</li>" for p in ([result.reason] if result.reason else []) + result.problems)
+        problems = f"<h2>Worth a look</h2><ul>{items}</ul>"
+    lessons = "\n".join(_lesson_html(lesson) for lesson in result.lessons)
+    isolation = f'<p class="note">{_e(LIMITS_ONLY_WARNING)}</p>' if result.isolation == "limits" else ""
+    raw = (f' <span class="muted">({_points(result.raw_score, result.max_score)} before late penalties)</span>'
+           if result.raw_score != result.score else "")
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>Feedback — {_e(result.student_id)}</title><style>{STYLE}</style></head>
+<body>
+<h1>Feedback for {_e(result.student_id)}</h1>
+<p class="score">Score: <strong>{_points(result.score, result.max_score)}</strong>{raw}
+<span class="muted">— status: {_e(result.status)}</span></p>
+{isolation}
+<table><tr><th>lesson</th><th>title</th><th>points</th></tr>{rows}</table>
+{problems}
+{lessons}
+<p class="muted">Each check is described by what it tests; the hidden tests themselves are not shown.
+Re-run the check cells in your notebook after fixing an exercise.</p>
+</body></html>
+"""

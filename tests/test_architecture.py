@@ -1,0 +1,98 @@
+"""The tree shows the grader's stages, and imports point one way (docs/ARCHITECTURE.md).
+
+Each stage package of ``autograder/`` says in its ``__init__`` docstring what it
+does and, on a line ``May import: a, b.``, which other parts of ``autograder``
+its modules may import. This test reads every module of every stage, lazy
+imports inside functions included, and fails on an import the rule does not
+allow, so ``integrations → batch → reports → grading → sandbox → lessons``
+cannot quietly grow a cycle. Only the entry points (``cli.py``,
+``__main__.py``) sit at the top.
+"""
+
+import ast
+import re
+
+import pytest
+
+from autograder.lessons.paths import PACKAGE
+
+STAGES = ("lessons", "authoring", "sandbox", "grading", "reports", "batch", "integrations")
+DATA = ("hidden", "mistakes")  # the hidden suite and the mistake corpus: content, not stages
+
+
+def _allowed(stage):
+    doc = ast.get_docstring(ast.parse((PACKAGE / stage / "__init__.py").read_text(encoding="utf-8"))) or ""
+    found = re.search(r"^May import: (.+?)\.?$", doc, re.M)
+    assert found, f"autograder/{stage}/__init__.py does not say what it may import ('May import: ...')"
+    words = found[1].strip()
+    return set() if words.startswith("nothing") else {w.strip() for w in words.split(",")}
+
+
+def _imported_names(path):
+    """The dotted ``autograder...`` names a module imports, relative imports resolved."""
+    module = ".".join(path.relative_to(PACKAGE.parent).with_suffix("").parts)
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            names = [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = module.split(".")[: -node.level]
+                name = ".".join(base + ([node.module] if node.module else []))
+            else:
+                name = node.module or ""
+            names = [name] + ([f"{name}.{alias.name}" for alias in node.names] if name == "autograder" else [])
+        else:
+            continue
+        found.update(name for name in names if name.split(".")[0] == "autograder")
+    return found
+
+
+def _imported_parts(path):
+    """The ``autograder`` sub-packages a module imports (``"autograder"`` itself for the root package)."""
+    return {(name.split(".") + ["autograder"])[1] if "." in name else "autograder" for name in _imported_names(path)}
+
+
+@pytest.mark.parametrize("stage", STAGES)
+def test_a_stage_imports_only_what_its_init_allows(stage):
+    allowed = _allowed(stage) | {stage, "autograder", "MINIMUM_PYTHON"}
+    wrong = {}
+    for path in sorted((PACKAGE / stage).rglob("*.py")):
+        if "child" in path.parts:  # runs inside the sandbox with its own sys.path; imports no autograder code
+            continue
+        extra = _imported_parts(path) - allowed
+        if extra:
+            wrong[str(path.relative_to(PACKAGE.parent))] = sorted(extra)
+    assert not wrong, f"imports that autograder/{stage}/__init__.py does not allow: {wrong}"
+
+
+def test_the_rule_has_no_cycle():
+    graph = {stage: _allowed(stage) & set(STAGES) for stage in STAGES}
+    done, active = set(), []
+
+    def visit(stage):
+        assert stage not in active, f"the stages' import rules form a cycle: {' → '.join(active + [stage])}"
+        if stage in done:
+            return
+        active.append(stage)
+        for other in graph[stage]:
+            visit(other)
+        active.pop()
+        done.add(stage)
+
+    for stage in STAGES:
+        visit(stage)
+
+
+def test_only_entry_points_sit_at_the_top():
+    top = sorted(p.name for p in PACKAGE.glob("*.py"))
+    assert top == ["__init__.py", "__main__.py", "cli.py"], top
+    packages = sorted(p.name for p in PACKAGE.iterdir() if (p / "__init__.py").exists())
+    assert packages == sorted(STAGES + DATA), packages
+
+
+def test_the_sandbox_child_imports_no_grader_code():
+    """The worker runs student code; it must not be able to reach the grader's modules."""
+    for path in sorted((PACKAGE / "sandbox" / "child").glob("*.py")):
+        outside = {n for n in _imported_names(path) if not n.startswith("autograder.sandbox.child")}
+        assert not outside, f"{path.name} imports grader code: {outside}"
