@@ -34,25 +34,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 
 from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit)  # noqa: E402
 from autograder.lessons.catalog import load_catalog  # noqa: E402
-from autograder.mistakes import all_mistakes  # noqa: E402
-from support import STUB, build_submission  # noqa: E402
-
-
-def build_class(target, count):
-    """``count`` students: even ones hand in the reference answers, odd ones stubs or mistakes."""
-    mistakes = [m for m in all_mistakes().values() if m.kind == "mistake"]
-    target.mkdir(parents=True, exist_ok=True)
-    for index in range(count):
-        if index % 2 == 0:
-            build_submission(target / f"student{index:03d}")
-        elif index % 4 == 1:
-            build_submission(target / f"student{index:03d}", default=STUB)
-        else:  # a handful of typical mistakes, different for each student
-            chosen = {}
-            for mistake in mistakes[index % len(mistakes)::7]:
-                chosen.setdefault(mistake.exercise, mistake.source)
-            build_submission(target / f"student{index:03d}", chosen)
-    return sorted(p for p in target.iterdir() if p.is_dir())
+from support import benchmark_class  # noqa: E402
 
 
 class PeakMemory:
@@ -139,7 +121,7 @@ def run_ours(class_dir, out, extra=()):
 
 def warm_canary(work):
     """Grade a one-student class in both modes, untimed: the canary is cached from then on."""
-    build_class(work / "class_warm", 1)
+    benchmark_class(work / "class_warm", 1)
     for extra in ((), ("--no-nbval",)):
         timed([sys.executable, "-m", "autograder", "grade", str(work / "class_warm"),
                "--out", str(work / "ours_warm"), "--force", *extra], ROOT)
@@ -157,7 +139,7 @@ def main():
     lessons = load_catalog().graded_lessons
     print(f"{os.cpu_count()} cores; {len(lessons)} lessons; N = {args.students} and {args.large}")
 
-    students = build_class(work / "class_small", args.students)
+    students = benchmark_class(work / "class_small", args.students)
     print(f"built {len(students)} students × {len(lessons)} notebooks")
     nbgrader_seconds = run_nbgrader_baseline(students, work)
     warm_canary(work)
@@ -167,7 +149,7 @@ def main():
     fast_seconds, fast_memory = run_ours(work / "class_small", work / "ours_fast", ["--no-nbval"])
     print(f"ours, --no-nbval:               {fast_seconds:8.1f} s   peak memory {fast_memory / 2**20:6.0f} MiB")
 
-    large = build_class(work / "class_large", args.large)
+    large = benchmark_class(work / "class_large", args.large)
     large_full, large_full_memory = run_ours(work / "class_large", work / "ours_large_full")
     large_fast, large_fast_memory = run_ours(work / "class_large", work / "ours_large_fast", ["--no-nbval"])
 

@@ -1,15 +1,21 @@
-"""Record the golden gradebook of the bundled sample class: the verdicts that speed work must not move.
+"""Record the golden gradebooks: the verdicts that speed work must not move.
+
+Two classes: the bundled sample class (``tests/golden/sample_class_grades.csv``)
+and the benchmark's class of ``BENCHMARK_STUDENTS`` students
+(``tests/golden/benchmark_class_grades.csv``, built by
+``support.benchmark_class`` as ``benchmarks/grading_speed.py`` builds it).
 
 Usage, from the project root::
 
-    .venv/bin/python -m tests.record_golden       # grades the sample class, writes tests/golden/sample_class_grades.csv
+    .venv/bin/python -m tests.record_golden       # grades both classes, writes both files
 
-The file holds, per student, the points of every exercise and the notebook
+Each file holds, per student, the points of every exercise and the notebook
 point of every lesson (nothing else: timing, problems and wording may change).
-``tests/test_speed_verdicts.py`` grades the sample class with the current
-grader and requires exactly these points. Re-record only when verdicts are
-*meant* to change (a new hidden check, a changed mistake or master), and look
-at the diff of the file when you do; never re-record to make a speed change pass.
+``tests/test_sample_class.py`` and ``tests/test_speed_verdicts.py`` grade the
+classes with the current grader and require exactly these points. Re-record
+only when verdicts are *meant* to change (a new hidden check, a changed
+mistake or master), and look at the diff of the files when you do; never
+re-record to make a speed change pass.
 """
 
 import csv
@@ -21,12 +27,16 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden" / "sample_class_grades.csv"
+BENCHMARK_GOLDEN = ROOT / "tests" / "golden" / "benchmark_class_grades.csv"
+BENCHMARK_STUDENTS = 8
 
 
-def grade_sample_class(out):
-    """Grade the sample class (full pipeline, nbval included) into ``out``; return grades.csv's path."""
-    result = subprocess.run([sys.executable, "-m", "autograder", "grade", "--out", str(out), "--force"],
-                            cwd=ROOT, capture_output=True, text=True, timeout=1800)
+def grade_sample_class(out, klass=None):
+    """Grade the sample class, or the class in folder ``klass`` (full pipeline, nbval included) into
+    ``out``; return grades.csv's path."""
+    command = [sys.executable, "-m", "autograder", "grade", *([str(klass)] if klass else []),
+               "--out", str(out), "--force"]
+    result = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=1800)
     if result.returncode != 0:
         raise RuntimeError("grading the sample class failed:\n" + result.stdout[-2000:] + result.stderr[-2000:])
     return Path(out) / "grades.csv"
@@ -88,12 +98,22 @@ def differences(expected, actual):
     return lines
 
 
+def grade_benchmark_class(work):
+    """Build the benchmark's class in ``work/class`` and grade it into ``work/out``; return grades.csv's path."""
+    sys.path.insert(0, str(ROOT / "tests"))
+    from support import benchmark_class
+
+    benchmark_class(Path(work) / "class", BENCHMARK_STUDENTS)
+    return grade_sample_class(Path(work) / "out", klass=Path(work) / "class")
+
+
 def main():
-    with tempfile.TemporaryDirectory(prefix="golden-") as out:
-        columns, table = verdicts(grade_sample_class(out))
     GOLDEN.parent.mkdir(parents=True, exist_ok=True)
-    GOLDEN.write_text(golden_text(columns, table), encoding="utf-8")
-    print(f"wrote {GOLDEN.relative_to(ROOT)}: {len(table)} students, {len(columns)} columns")
+    for path, grade_it in ((GOLDEN, grade_sample_class), (BENCHMARK_GOLDEN, grade_benchmark_class)):
+        with tempfile.TemporaryDirectory(prefix="golden-") as work:
+            columns, table = verdicts(grade_it(work))
+        path.write_text(golden_text(columns, table), encoding="utf-8")
+        print(f"wrote {path.relative_to(ROOT)}: {len(table)} students, {len(columns)} columns")
 
 
 if __name__ == "__main__":

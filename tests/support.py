@@ -52,6 +52,30 @@ def build_submission(folder, overrides=None, default="reference", lessons=None):
     return folder
 
 
+def benchmark_class(target, count):
+    """``count`` students for every lesson: even ones hand in the reference answers, every fourth from
+    the second on untouched stubs, the rest a handful of typical mistakes, different for each student.
+
+    The class of ``benchmarks/grading_speed.py`` and of the golden gradebook
+    ``tests/golden/benchmark_class_grades.csv``. Returns the student folders, sorted.
+    """
+    wrong = [m for m in all_mistakes().values() if m.kind == "mistake"]
+    target = Path(target)
+    target.mkdir(parents=True, exist_ok=True)
+    for index in range(count):
+        folder = target / f"student{index:03d}"
+        if index % 2 == 0:
+            build_submission(folder)
+        elif index % 4 == 1:
+            build_submission(folder, default=STUB)
+        else:
+            chosen = {}
+            for mistake in wrong[index % len(wrong)::7]:
+                chosen.setdefault(mistake.exercise, mistake.source)
+            build_submission(folder, chosen)
+    return sorted(p for p in target.iterdir() if p.is_dir())
+
+
 def grade(folder, lessons=(), nbval=False):
     """Grade one folder in this process and return its StudentResult."""
     return grade_student(Path(folder).name, Path(folder), GradingOptions(nbval=nbval, lessons=tuple(lessons)))

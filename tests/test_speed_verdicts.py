@@ -4,6 +4,9 @@
   gradebook (``tests/golden/sample_class_grades.csv``, recorded by
   ``python -m tests.record_golden``): every exercise, every notebook point.
   That check is in ``tests/test_sample_class.py``, on the class it grades anyway.
+- So does the benchmark's class (``support.benchmark_class``, 8 students:
+  reference answers, stubs and mixed typical mistakes), against
+  ``tests/golden/benchmark_class_grades.csv``.
 - nbval runs only where it can change the grade: a lesson that lost hidden
   points gets a ``skipped`` run worth 0 that says why, and never reaches nbval.
 - The class report counts the notebooks that ran and those that were not run.
@@ -80,3 +83,12 @@ def test_class_report_counts_notebooks_run_and_not_run():
     html = class_report_html([student("passed"), student("failed"), student("skipped")], load_catalog())
     row = html[html.index("Notebook stage"):]
     assert '<tr><td>01</td><td class="num">1 / 2</td><td class="num">2</td><td class="num">1</td></tr>' in row
+
+
+def test_the_benchmark_class_keeps_its_golden_verdicts(tmp_path):
+    import record_golden
+
+    graded = record_golden.verdicts(record_golden.grade_benchmark_class(tmp_path))
+    changed = record_golden.differences(record_golden.read_golden(record_golden.BENCHMARK_GOLDEN), graded)
+    assert not changed, ("verdicts moved on the benchmark's class:\n" + "\n".join(changed[:30])
+                         + "\n(re-record with `python -m tests.record_golden` only if the change is intended)")

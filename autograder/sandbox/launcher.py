@@ -282,7 +282,7 @@ def prepare_dirs(base):
     sandbox_dir.mkdir(parents=True, exist_ok=True)
     scratch_dir.mkdir(parents=True, exist_ok=True)
     child_dir = Path(__file__).resolve().parent / "child"
-    for name in ("worker.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py"):
+    for name in ("worker.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py", "fork_kernel.py"):
         if (child_dir / name).exists():
             shutil.copy2(child_dir / name, sandbox_dir / name)
     from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE

@@ -5,10 +5,13 @@ notebooks. The kernels nbval starts inherit ``/dev/null`` as their output;
 the summary goes out on the original stdout as one JSON line:
 ``{"notebooks": {name: {"cells": n, "failures": ["cell 7: ...", ...]}}}``.
 
-Speed: the kernels use matplotlib's non-interactive ``agg`` backend (no figure
-is rasterised; the outputs nbval compares are display text), and the runner
-does not import ``rfc3987_syntax`` (a grammar built at import time that only
-checks a string format no notebook uses).
+Speed: the kernels are forks of one warm process that has imported ipykernel,
+numpy, scipy and matplotlib once (``fork_kernel.py``; each lesson still gets a
+fresh kernel, and ordinary kernels are used if that process cannot start);
+they use matplotlib's non-interactive ``agg`` backend (no figure is
+rasterised; the outputs nbval compares are display text); and the runner does
+not import ``rfc3987_syntax`` (a grammar built at import time that only checks
+a string format no notebook uses).
 
 Nothing here is trusted by the grader: a student's kernel shares this
 sandbox, so the summary can only lower a grade, never raise it.
@@ -29,6 +32,7 @@ import pytest  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
+import fork_kernel  # noqa: E402
 import jail  # noqa: E402
 
 if "--keep-user" in sys.argv:
@@ -91,6 +95,40 @@ class Summary:
             entry["failures"].append(describe_failure(source, str(report.longrepr)))
 
 
+def use_forked_kernels(timeout=30.0):
+    """Start the fork server and make nbval's kernels come from it; return its process, or None.
+
+    None (nbval then starts ordinary kernels) when the server cannot start or
+    is not ready within ``timeout`` seconds.
+    """
+    import select
+    import subprocess
+
+    import ipykernel.kernelspec
+
+    socket_path = os.path.join(os.getcwd(), ".kernels")
+    if len(socket_path) > 100:  # a Unix socket's path must be short
+        return None
+    try:
+        server = subprocess.Popen([sys.executable, fork_kernel.__file__, "serve", socket_path],
+                                  stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+    except OSError:
+        return None
+    ready, _, _ = select.select([server.stdout], [], [], timeout)
+    if not ready or server.stdout.readline().strip() != b"ready":
+        server.kill()
+        return None
+    ordinary = ipykernel.kernelspec.get_kernel_dict
+
+    def forked_kernel_dict(*args, **kwargs):
+        spec = ordinary(*args, **kwargs)
+        spec["argv"] = fork_kernel.kernel_argv(socket_path)
+        return spec
+
+    ipykernel.kernelspec.get_kernel_dict = forked_kernel_dict  # read by nbval for --nbval-current-env
+    return server
+
+
 def main(notebooks):
     # No rasterising: figures are never compared, so the kernels draw nothing. With a
     # non-interactive backend plt.show() is a no-op, where ipykernel's default (inline) would
@@ -101,6 +139,7 @@ def main(notebooks):
     devnull = os.open(os.devnull, os.O_RDWR)
     for fd in (0, 1, 2):
         os.dup2(devnull, fd)
+    server = use_forked_kernels()
     summary = Summary()
     args = ["--nbval-lax", "--nbval-current-env", "--nbval-cell-timeout=10",
             "--nbval-kernel-startup-timeout=60", "-p", "no:cacheprovider", "-q",
@@ -108,6 +147,8 @@ def main(notebooks):
     if os.path.exists(os.path.join(HERE, "nbval_sanitize.cfg")):
         args += ["--nbval-sanitize-with", os.path.join(HERE, "nbval_sanitize.cfg")]
     pytest.main(args + notebooks, plugins=[summary])
+    if server is not None:
+        server.stdin.close()  # the fork server exits, and takes any kernel still running with it
     out.write(json.dumps({"notebooks": summary.notebooks}) + "\n")
     out.flush()
     os._exit(0)
