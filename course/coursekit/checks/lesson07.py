@@ -2,15 +2,16 @@
 
 The checks use poses written out by hand (a quarter turn about z and a shift
 by (1, 2, 3)), definitional facts (a pose times its inverse is the identity,
-a pure translation has V = I) and scipy's general matrix exponential ``expm``
-as an independent oracle for the exponential map of SE(3).
+a pure translation has V = I), and the values of the exponential map and of
+the usual slips at the checks' fixed inputs, stored as numbers (worked out
+once; ``tests/test_public_check_constants_lesson07.py`` recomputes them).
 """
 
 import numpy as np
-from scipy.linalg import expm
 
 from ..checking import Mismatch, public_check
 from ..diagnose import close
+from ..lie import Exp
 from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape  # noqa: F401
 
 # A quarter turn about z (x goes to y) followed by a shift of (1, 2, 3) m, written out.
@@ -35,14 +36,6 @@ SERIES_HINT_C = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/302
                  "and cancels catastrophically just above it")
 
 
-def _twist_matrix(xi):
-    rho, phi = np.asarray(xi[:3], dtype=float), np.asarray(xi[3:], dtype=float)
-    return np.array([[0.0, -phi[2], phi[1], rho[0]],
-                     [phi[2], 0.0, -phi[0], rho[1]],
-                     [-phi[1], phi[0], 0.0, rho[2]],
-                     [0.0, 0.0, 0.0, 0.0]])
-
-
 def _first_match(got, candidates):
     """The (reason, hint) of the first candidate (a mistake's value computed from the inputs) that got equals."""
     for candidate, reason, hint in candidates:
@@ -51,26 +44,26 @@ def _first_match(got, candidates):
     return None
 
 
-def _pose(R, t):
-    T = np.eye(4)
-    T[:3, :3], T[:3, 3] = R, t
-    return T
-
-
 # ---------------------------------------------------------------- make_pose
+# [[Qᵀ, t]] for the quarter turn Q and t = (1, 2, 3), written out: the slip "copies Rᵀ".
+MAKE_POSE_R_TRANSPOSED = np.array([[0.0, 1.0, 0.0, 1.0], [-1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 3.0],
+                                   [0.0, 0.0, 0.0, 1.0]])
+# t = (1, 2, 3) in the bottom row under the quarter turn, written out: the slip "t in the bottom row".
+MAKE_POSE_T_IN_BOTTOM_ROW = np.array([[0.0, -1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0],
+                                      [1.0, 2.0, 3.0, 1.0]])
+
+
 @public_check("make_pose", "puts R top-left, t in the last column and [0, 0, 0, 1] below")
 def _(make_pose):
     T = require_shape(make_pose(QUARTER_TURN_Z, SHIFT), (4, 4))
     if close(T, T_QUARTER, 1e-12):
         return
-    bottom_row = np.eye(4)
-    bottom_row[:3, :3], bottom_row[3, :3] = QUARTER_TURN_Z, SHIFT
     no_one = T_QUARTER.copy()
     no_one[3, 3] = 0.0
     found = _first_match(T, [
         (T_QUARTER.T, "got the transpose of the pose matrix", "t goes in the last column (T[:3, 3]), not the bottom row"),
-        (bottom_row, "t ended up in the bottom row", "t goes in the last column (T[:3, 3]), not the bottom row"),
-        (_pose(QUARTER_TURN_Z.T, SHIFT), "the top-left 3×3 block is Rᵀ", "copy R itself, not its transpose"),
+        (MAKE_POSE_T_IN_BOTTOM_ROW, "t ended up in the bottom row", "t goes in the last column (T[:3, 3]), not the bottom row"),
+        (MAKE_POSE_R_TRANSPOSED, "the top-left 3×3 block is Rᵀ", "copy R itself, not its transpose"),
         (no_one, "the bottom row is [0, 0, 0, 0], expected [0, 0, 0, 1]",
          "T[3, 3] must be 1: start from np.eye(4), not np.zeros((4, 4))"),
     ])
@@ -110,11 +103,11 @@ def _(to_homogeneous):
         raise Mismatch("returned shape 3×3: a row of ones was added below the points",
                        "append a column: the new coordinate belongs to every point (axis=-1)")
     got = require_shape(got, (2, 4))
-    if close(got, np.column_stack([P, np.zeros(2)]), 1e-12):
+    if close(got, [[1.0, 2.0, 3.0, 0.0], [-4.0, 0.5, 0.0, 0.0]], 1e-12):
         raise Mismatch(f"got {fmt(got)}", "a 0 marks a direction; points get a 1")
-    if close(got, np.column_stack([np.ones(2), P]), 1e-12):
+    if close(got, [[1.0, 1.0, 2.0, 3.0], [1.0, -4.0, 0.5, 0.0]], 1e-12):
         raise Mismatch(f"got {fmt(got)}", "the 1 goes last: [x, y, z] becomes [x, y, z, 1]")
-    if not close(got, np.column_stack([P, np.ones(2)]), 1e-12):
+    if not close(got, [[1.0, 2.0, 3.0, 1.0], [-4.0, 0.5, 0.0, 1.0]], 1e-12):
         raise Mismatch(f"got {fmt(got)}", "each row should be the point followed by a 1")
 
 
@@ -124,16 +117,23 @@ def _(from_homogeneous):
     got = require_shape(from_homogeneous(P_h.tolist()), (3,))
     if close(got, [1.0, 2.0, 3.0], 1e-12):
         return
-    found = _dehomogeneous_mistake(got, P_h)
+    found = _dehomogeneous_mistake(got, DEHOMOGENEOUS_SLIPS_ONE)
     raise Mismatch(f"got {fmt(got)}, expected [1, 2, 3]", found or "[x, y, z, w] is the point [x/w, y/w, z/w]")
 
 
-def _dehomogeneous_mistake(got, P_h):
-    found = _first_match(got, [
-        (P_h[..., :3], "", "divide by the last coordinate before dropping it: [x, y, z, w] is [x/w, y/w, z/w]"),
-        (P_h[..., 1:] / P_h[..., :1], "", "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"),
-        (P_h[..., :3] * P_h[..., 3:], "", "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"),
-    ])
+_NO_DIVIDE = "divide by the last coordinate before dropping it: [x, y, z, w] is [x/w, y/w, z/w]"
+_DIVIDES_FIRST = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
+_MULTIPLIES = "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"
+# The slips at the checks' points, written out: [2, 4, 6, 2] and the rows of P_h in the second check.
+DEHOMOGENEOUS_SLIPS_ONE = [([2.0, 4.0, 6.0], _NO_DIVIDE), ([2.0, 3.0, 1.0], _DIVIDES_FIRST),
+                           ([4.0, 8.0, 12.0], _MULTIPLIES)]
+DEHOMOGENEOUS_SLIPS_ROWS = [([[2.0, 4.0, 6.0], [1.0, -1.0, 0.5], [3.0, 0.0, 0.0]], _NO_DIVIDE),
+                            ([[2.0, 3.0, 1.0], [-1.0, 0.5, 0.5], [0.0, 0.0, 1.0 / 3.0]], _DIVIDES_FIRST),
+                            ([[4.0, 8.0, 12.0], [0.5, -0.5, 0.25], [3.0, 0.0, 0.0]], _MULTIPLIES)]
+
+
+def _dehomogeneous_mistake(got, slips):
+    found = _first_match(got, [(value, "", hint) for value, hint in slips])
     return found[1] if found else None
 
 
@@ -155,7 +155,7 @@ def _(from_homogeneous):
     got = require_shape(got, (3, 3))
     if not close(got, expected, 1e-12):
         raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}",
-                       _dehomogeneous_mistake(got, P_h) or
+                       _dehomogeneous_mistake(got, DEHOMOGENEOUS_SLIPS_ROWS) or
                        "divide each row by its own last coordinate (P_h[..., -1:] keeps the shape)")
 
 
@@ -167,32 +167,40 @@ def _(transform_points):
     expected = np.array([[1.0, 3.0, 3.0], [1.0, 2.0, 3.0], [-1.0, 2.0, 2.0]])
     if close(got, expected, 1e-12):
         return
-    found = _transform_mistake(got, T_QUARTER, P)
+    found = _transform_mistake(got, TRANSFORM_SLIPS)
     if found:
         raise Mismatch(*found)
     raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)} ({off_by(got, expected)})",
                    "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t")
 
 
-def _transform_mistake(got, T, P):
-    R, t = T[:3, :3], T[:3, 3]
-    moved = np.concatenate([P, np.ones(P.shape[:-1] + (1,))], axis=-1) @ T
-    with np.errstate(divide="ignore", invalid="ignore"):
-        divided = moved[..., :3] / moved[..., 3:]
-    return _first_match(got, [
-        (P @ R.T, "the points were turned but not shifted", "the translation is missing: add t = T[:3, 3]"),
-        (P @ R + t, "the points were turned the wrong way", "for rows use P @ R.T (or P_h @ T.T), not P @ R"),
-        (moved[..., :3], "the points were multiplied by T instead of T.T", "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
-        (divided, "the points were multiplied by T instead of T.T", "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
-        ((P + t) @ R.T, "the points were shifted, then turned", "rotate first, then shift: R p + t"),
-    ])
+_MULTIPLIED_BY_T = ("the points were multiplied by T instead of T.T",
+                    "P_h @ T applies the transpose of T; rows need P_h @ T.T")
+# The slips of transform_points(T_QUARTER, P) for P = [[1, 0, 0], [0, 0, 0], [0, 2, -1]], written out (each row
+# is the slip for that one point; the constants test recomputes them).
+TRANSFORM_SLIPS = [
+    ([[0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [-2.0, 0.0, -1.0]],             # R p, no shift
+     "the points were turned but not shifted", "the translation is missing: add t = T[:3, 3]"),
+    ([[1.0, 1.0, 3.0], [1.0, 2.0, 3.0], [3.0, 2.0, 2.0]],              # P @ R + t
+     "the points were turned the wrong way", "for rows use P @ R.T (or P_h @ T.T), not P @ R"),
+    ([[0.0, -1.0, 0.0], [0.0, 0.0, 0.0], [2.0, 0.0, -1.0]], *_MULTIPLIED_BY_T),    # (P_h @ T)[:, :3]
+    ([[0.0, -0.5, 0.0], [0.0, 0.0, 0.0], [1.0, 0.0, -0.5]], *_MULTIPLIED_BY_T),    # P_h @ T, divided by its w
+    ([[-2.0, 2.0, 3.0], [-2.0, 1.0, 3.0], [-4.0, 1.0, 2.0]],           # R (p + t)
+     "the points were shifted, then turned", "rotate first, then shift: R p + t"),
+]
+
+
+def _transform_mistake(got, slips, row=None):
+    """The (reason, hint) of the slip ``got`` is; ``row`` picks one point's row of the stored slips."""
+    return _first_match(got, [(np.asarray(value)[row] if row is not None else value, reason, hint)
+                              for value, reason, hint in slips])
 
 
 @public_check("transform_points", "accepts a single point of shape (3,)")
 def _(transform_points):
     got = require_shape(transform_points(T_QUARTER, [1.0, 0.0, 0.0]), (3,))
     if not close(got, [1.0, 3.0, 3.0], 1e-12):
-        found = _transform_mistake(got, T_QUARTER, np.array([1.0, 0.0, 0.0]))
+        found = _transform_mistake(got, TRANSFORM_SLIPS, row=0)      # the point [1, 0, 0] is P's first row
         raise Mismatch(f"got {fmt(got)} for the point [1, 0, 0], expected [1, 3, 3]",
                        found[1] if found else "p_a = R p_b + t")
 
@@ -204,22 +212,27 @@ def _(transform_points):
                             "transform_points")
 
 
+# The slips of pose_compose(T_QUARTER, T_QUARTER_X), written out (the constants test recomputes them).
+COMPOSE_SLIPS = [
+    (np.array([[0.0, -1.0, 0.0, 1.0], [0.0, 0.0, -1.0, -4.0], [1.0, 0.0, 0.0, 2.5], [0.0, 0.0, 0.0, 1.0]]),      # T_bc T_ab
+     "the two poses are multiplied in the wrong order",
+     "the order is reversed: inner letters must match, T_ac = T_ab @ T_bc"),
+    (np.array([[0.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, -2.0], [0.0, 0.0, 0.0, 1.5], [0.0, 0.0, 0.0, 1.0]]),        # entry by entry
+     "the poses were multiplied entry by entry", "* multiplies entry by entry: use the matrix product @"),
+    (np.array([[0.0, 0.0, 1.0, 1.0], [1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 3.5], [0.0, 0.0, 0.0, 1.0]]),         # t_ab + t_bc
+     "the translations were added", "t_bc must be turned by R_ab first: t_ac = R_ab t_bc + t_ab"),
+    (np.array([[0.0, 0.0, -1.0, -1.0], [-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.5], [1.0, 3.0, -2.0, 0.5]]),
+     "T_ab was transposed", "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"),                # T_abᵀ T_bc
+]
+
+
 @public_check("pose_compose", "T_ac = T_ab T_bc: one step equals two steps for a point of c")
 def _(pose_compose):
     T_ac = require_shape(pose_compose(T_QUARTER, T_QUARTER_X), (4, 4))
     p_c = np.array([0.3, -1.2, 2.0, 1.0])
     if close(T_ac @ p_c, T_QUARTER @ (T_QUARTER_X @ p_c), 1e-12):
         return
-    A, B = T_QUARTER, T_QUARTER_X
-    added = A @ B
-    added[:3, 3] = A[:3, 3] + B[:3, 3]
-    found = _first_match(T_ac, [
-        (B @ A, "the two poses are multiplied in the wrong order",
-         "the order is reversed: inner letters must match, T_ac = T_ab @ T_bc"),
-        (A * B, "the poses were multiplied entry by entry", "* multiplies entry by entry: use the matrix product @"),
-        (added, "the translations were added", "t_bc must be turned by R_ab first: t_ac = R_ab t_bc + t_ab"),
-        (A.T @ B, "T_ab was transposed", "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"),
-    ])
+    found = _first_match(T_ac, COMPOSE_SLIPS)
     if found:
         raise Mismatch(*found)
     raise Mismatch(f"pose_compose(T_ab, T_bc) @ p differs from T_ab @ (T_bc @ p) "
@@ -232,7 +245,7 @@ def _(pose_inverse):
     got = require_shape(pose_inverse(T_QUARTER), (4, 4))
     if close(T_QUARTER @ got, np.eye(4), 1e-12):
         return
-    found = _inverse_mistake(got, T_QUARTER)
+    found = _inverse_mistake(got, T_QUARTER, INVERSE_SLIPS_QUARTER)
     if found:
         raise Mismatch(*found)
     require_pose(got)
@@ -240,17 +253,29 @@ def _(pose_inverse):
                    "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
 
 
-def _inverse_mistake(got, T):
-    R, t = T[:3, :3], T[:3, 3]
+# The slips of the inverse of T_QUARTER and of T_QUARTER_X, written out as [[R', t']] (the constants test
+# recomputes them): [[Rᵀ, -t]], [[Rᵀ, t]], [[R, -R t]].
+INVERSE_SLIPS_QUARTER = (
+    np.array([[0.0, 1.0, 0.0, -1.0], [-1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, -3.0], [0.0, 0.0, 0.0, 1.0]]),
+    np.array([[0.0, 1.0, 0.0, 1.0], [-1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]]),
+    np.array([[0.0, -1.0, 0.0, 2.0], [1.0, 0.0, 0.0, -1.0], [0.0, 0.0, 1.0, -3.0], [0.0, 0.0, 0.0, 1.0]]))
+INVERSE_SLIPS_QUARTER_X = (
+    np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 1.0], [0.0, -1.0, 0.0, -0.5], [0.0, 0.0, 0.0, 1.0]]),
+    np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, -1.0], [0.0, -1.0, 0.0, 0.5], [0.0, 0.0, 0.0, 1.0]]),
+    np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, -1.0, 0.5], [0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 0.0, 1.0]]))
+
+
+def _inverse_mistake(got, T, slips):
+    negated_t, kept_t, kept_R = slips
     return _first_match(got, [
         (T.T, "returned the transpose of T",
          "the plain transpose of T is not its inverse (a pose is not orthogonal): transpose the rotation block "
          "and use -Rᵀ t"),
-        (_pose(R.T, -t), f"the translation of the inverse is -t = {fmt(-t)}",
+        (negated_t, f"the translation of the inverse is -t = {fmt(-T[:3, 3])}",
          "-t must be turned as well as negated: the inverse translation is -Rᵀ t"),
-        (_pose(R.T, t), "the translation of the inverse is t itself",
+        (kept_t, "the translation of the inverse is t itself",
          "kept t unchanged: the inverse translation is -Rᵀ t (undo the shift, then the turn)"),
-        (_pose(R, -R @ t), "the rotation block of the inverse is R",
+        (kept_R, "the rotation block of the inverse is R",
          "the rotation block of the inverse is Rᵀ, not R (and its translation -Rᵀ t)"),
     ])
 
@@ -260,22 +285,49 @@ def _(pose_inverse):
     got = require_shape(pose_inverse(T_QUARTER_X), (4, 4))
     p = np.array([0.7, 0.1, -2.0, 1.0])
     if not close(got @ (T_QUARTER_X @ p), p, 1e-12):
-        found = _inverse_mistake(got, T_QUARTER_X)
+        found = _inverse_mistake(got, T_QUARTER_X, INVERSE_SLIPS_QUARTER_X)
         raise Mismatch(f"got {fmt((got @ (T_QUARTER_X @ p))[:3])} back instead of {fmt(p[:3])}",
                        found[1] if found else "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
 
 
 # ---------------------------------------------------------------- exp_se3
+# Poses of the checks' twists, worked out once and stored as numbers (tests/test_public_check_constants_lesson07.py
+# recomputes each from the exponential map and from scipy's expm of the 4×4 twist matrix).
+# xi = [0, 0, π/2, 1, 0, 0], the mirror of [1, 0, 0, 0, 0, π/2]: a turn of 1 rad about x.
+EXP_MIRRORED_QUARTER = np.array([[1.0, 0.0, 0.0, 0.0],
+                                 [0.0, 0.5403023058681398, -0.8414709848078965, -0.72209144937841],
+                                 [0.0, 0.8414709848078965, 0.5403023058681398, 1.321779532040728],
+                                 [0.0, 0.0, 0.0, 1.0]])
+# rho = (30, -40, 0), phi = angle (2, -1, 2)/3 (see _tiny_twist): the pose, and the pose of the mirrored twist.
+EXP_TINY = {
+    1e-9: np.array([[1.0, -6.666666667777779e-10, -3.3333333311111114e-10, 30.000000013333334],
+                    [6.666666665555556e-10, 1.0, -6.666666667777779e-10, -39.99999999],
+                    [3.333333335555556e-10, 6.666666665555556e-10, 1.0, -8.333333329629632e-09],
+                    [0.0, 0.0, 0.0, 1.0]]),
+    1e-6: np.array([[0.9999999999997222, -6.666667777776666e-07, -3.3333311111105554e-07, 30.00001333333204],
+                    [6.666665555554444e-07, 0.9999999999995556, -6.666667777776666e-07, -39.99998999999519],
+                    [3.333335555555e-07, 6.666665555554444e-07, 0.9999999999997222, -8.333329629628936e-06],
+                    [0.0, 0.0, 0.0, 1.0]])}
+EXP_TINY_MIRRORED = {
+    1e-9: np.array([[0.9775782582349525, -0.01681630632378563, 0.20989988296314305, 3.982269717508283e-10],
+                    [-0.01681630632378563, 0.9873877702571608, 0.15742491222235727, -5.346631045202122e-10],
+                    [-0.20989988296314305, -0.15742491222235727, 0.9649660284921133, -3.264771572666467e-12],
+                    [0.0, 0.0, 0.0, 1.0]]),
+    1e-6: np.array([[0.9775782582349525, -0.01681630632378563, 0.20989988296314305, 3.982269717508282e-07],
+                    [-0.01681630632378563, 0.9873877702571608, 0.15742491222235727, -5.34663104520212e-07],
+                    [-0.20989988296314305, -0.15742491222235727, 0.9649660284921133, -3.264771572666466e-09],
+                    [0.0, 0.0, 0.0, 1.0]])}
+
+
 @public_check("exp_se3", "a twist with phi = 0 is a pure translation by rho")
 def _(exp_se3):
     T = exp_se3([1.0, 2.0, 3.0, 0.0, 0.0, 0.0])
     if np.shape(T) == (4, 4) and not np.all(np.isfinite(np.asarray(T, dtype=float))):
         raise Mismatch("returned NaN or inf at phi = 0", SERIES_NAN_HINT_V)
     T = require_shape(T, (4, 4))
-    if close(T[:3, :3], expm(_twist_matrix([0.0, 0.0, 0.0, 1.0, 2.0, 3.0]))[:3, :3], 1e-9):
+    if close(T[:3, :3], Exp([1.0, 2.0, 3.0]), 1e-9):          # rho = (1, 2, 3) used as the rotation vector
         raise Mismatch("rho was used as the rotation vector", MIRROR_HINT)
-    expected = np.eye(4)
-    expected[:3, 3] = [1.0, 2.0, 3.0]
+    expected = np.array([[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
     if not close(T, expected, 1e-12):
         raise Mismatch(f"got translation {fmt(T[:3, 3])} and a non-identity rotation block")
 
@@ -284,24 +336,26 @@ def _(exp_se3):
 def _(exp_se3):
     xi = np.array([0.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
     T = require_shape(exp_se3(xi), (4, 4))
-    expected = np.eye(4)
-    expected[:3, :3] = QUARTER_TURN_Z
+    expected = np.array([[0.0, -1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
     if not close(T, expected, 1e-12):
-        if close(T, expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), 1e-9):
+        mirrored = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, np.pi / 2],
+                             [0.0, 0.0, 0.0, 1.0]])       # [phi, rho] read as [rho, phi]: a shift by (0, 0, π/2)
+        if close(T, mirrored, 1e-9):
             raise Mismatch(f"got {fmt(T)}: phi was used as the translation", MIRROR_HINT)
         raise Mismatch(f"got {fmt(T)} ({off_by(T, expected)})", "the rotation block is Exp(phi) with phi = xi[3:]")
 
 
-@public_check("exp_se3", "agrees with scipy's matrix exponential (expm) of the 4×4 twist matrix")
+@public_check("exp_se3", "xi = [1, 0, 0, 0, 0, π/2]: a quarter turn about z, shifted by V(phi) rho = (2/π, 2/π, 0)")
 def _(exp_se3):
     xi = np.array([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
     T = require_shape(exp_se3(xi), (4, 4))
-    expected = expm(_twist_matrix(xi))
+    expected = np.array([[0.0, -1.0, 0.0, 2.0 / np.pi], [1.0, 0.0, 0.0, 2.0 / np.pi], [0.0, 0.0, 1.0, 0.0],
+                         [0.0, 0.0, 0.0, 1.0]])
     if close(T, expected, 1e-9):
         return
     if close(T[:3, 3], xi[:3], 1e-9):
         raise Mismatch(f"the translation equals rho = {fmt(xi[:3])}, expected {fmt(expected[:3, 3])}", FORGETS_V_HINT)
-    if close(T, expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), 1e-9):
+    if close(T, EXP_MIRRORED_QUARTER, 1e-9):
         raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])}", MIRROR_HINT)
     raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])} ({off_by(T, expected)})",
                    "T = [[Exp(phi), V(phi) rho], [0, 1]] with V = I + (1 - cos θ)/θ² W + (θ - sin θ)/θ³ W²")
@@ -320,7 +374,7 @@ def _(exp_se3):
         xi = np.concatenate([rho, phi])
         T = require_shape(exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {angle:g}",
                           nan_hint=lambda _: SERIES_NAN_HINT_V)
-        expected = expm(_twist_matrix(xi))
+        expected = EXP_TINY[angle]
         if not close(T, expected, 1e-12 * 50.0):
             failures.append((angle, T, expected, xi))
     if not failures:
@@ -328,7 +382,7 @@ def _(exp_se3):
     # At |phi| = 1e-9 a V whose coefficients round to 0 is I exactly, like a forgotten V: look at every failure.
     is_rho = [close(T[:3, 3], xi[:3], 1e-3 * np.max(np.abs(expected[:3, 3] - xi[:3]))) for _, T, expected, xi in failures]
     angle, T, expected, xi = failures[0]
-    if close(T, expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), 1e-9):
+    if close(T, EXP_TINY_MIRRORED[angle], 1e-9):
         hint = MIRROR_HINT
     elif all(is_rho):
         hint = FORGETS_V_HINT
@@ -351,8 +405,7 @@ def _(log_se3):
 
 @public_check("log_se3", "a pure translation gives xi = [t, 0, 0, 0]")
 def _(log_se3):
-    T = np.eye(4)
-    T[:3, 3] = SHIFT
+    T = np.array([[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
     xi = require_shape(log_se3(T), (6,))
     if close(xi, [0.0, 0.0, 0.0, 1.0, 2.0, 3.0], 1e-12):
         raise Mismatch("got [0, 0, 0, 1, 2, 3]", MIRROR_HINT)
@@ -365,41 +418,48 @@ def _(log_se3):
     for angle in (1e-9, 1e-6):
         rho, phi = _tiny_twist(angle)
         xi = np.concatenate([rho, phi])
-        T = expm(_twist_matrix(xi))
+        T = EXP_TINY[angle]
         got = require_shape(log_se3(T), (6,), f"log_se3 at |phi| = {angle:g}", nan_hint=lambda _: SERIES_HINT_C)
         if not close(got, xi, 1e-11 * 50.0):
             raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the twist is {off_by(got, xi)} (allowed 5e-10)",
                            _log_mistake(got, T, xi) or SERIES_HINT_C)
 
 
-@public_check("log_se3", "round trip: expm of the twist matrix of log_se3(T) gives T back")
+# The twists of the two hand-written poses, worked out by hand: phi = Log(R) is a quarter turn, and
+# rho = V(phi)⁻¹ t with V = (2/π) [[1, -1], [1, 1]] in the plane of the turn and 1 along its axis.
+LOG_T_QUARTER = np.array([0.75 * np.pi, 0.25 * np.pi, 3.0, 0.0, 0.0, 0.5 * np.pi])
+LOG_T_QUARTER_X = np.array([0.0, -0.125 * np.pi, 0.375 * np.pi, 0.5 * np.pi, 0.0, 0.0])
+# rho with c(θ) = 1/12 at every angle, (I - W/2 + W²/12) t, for the same two poses (recomputed by the tests).
+RHO_C_CONSTANT = {"T_QUARTER": np.array([2.3651795684388683, 0.8033683198904951, 3.0]),
+                  "T_QUARTER_X": np.array([0.0, -0.40168415994524753, 1.1825897842194342])}
+
+
+@public_check("log_se3", "two quarter-turn poses: phi = Log(R) and rho = V(phi)⁻¹ t, as worked out by hand")
 def _(log_se3):
-    for T in (T_QUARTER, T_QUARTER_X):
+    for name, T, expected in (("T_QUARTER", T_QUARTER, LOG_T_QUARTER), ("T_QUARTER_X", T_QUARTER_X, LOG_T_QUARTER_X)):
         xi = require_shape(log_se3(T), (6,))
         if close(xi[:3], T[:3, 3], 1e-9):
             raise Mismatch(f"rho equals t = {fmt(T[:3, 3])} although T rotates", FORGETS_V_INV_HINT)
-        if close(expm(_twist_matrix(np.concatenate([xi[3:], xi[:3]]))), T, 1e-9):
+        if close(np.concatenate([xi[3:], xi[:3]]), expected, 1e-9):
             raise Mismatch("rho and phi are swapped", MIRROR_HINT)
-        rebuilt = expm(_twist_matrix(xi))
-        if not close(rebuilt, T, 1e-9):
-            raise Mismatch(f"expm(twist(log_se3(T))) differs from T for T = {fmt(T)} ({off_by(rebuilt, T)})",
-                           _log_mistake(xi, T) or "xi = [V(phi)⁻¹ t, phi] with phi = Log(R)")
+        if not close(xi, expected, 1e-9):
+            raise Mismatch(f"log_se3(T) for T = {fmt(T)} is {fmt(xi)}, expected {fmt(expected)} ({off_by(xi, expected)})",
+                           _log_mistake(xi, T, expected, RHO_C_CONSTANT[name]) or
+                           "xi = [V(phi)⁻¹ t, phi] with phi = Log(R)")
 
 
 FORGETS_V_INV_HINT = "rho = V(phi)⁻¹ t, not t itself: the translation must be undone through V"
 
 
-def _log_mistake(got, T, xi=None):
-    """The mistake behind the twist ``got`` of T (each candidate computed from T), or None."""
-    phi = got[3:] if xi is None else xi[3:]
-    if xi is not None and close(np.concatenate([got[3:], got[:3]]), xi, 1e-6):
+def _log_mistake(got, T, xi, rho_c_constant=None):
+    """The mistake behind the twist ``got`` of T (``xi``: the right twist; ``rho_c_constant``: the stored rho
+    of the slip c = 1/12), or None."""
+    if close(np.concatenate([got[3:], got[:3]]), xi, 1e-6):
         return MIRROR_HINT
-    if xi is not None:
-        gap = np.max(np.abs(T[:3, 3] - xi[:3]))
-        if gap > 0.0 and close(got[:3], T[:3, 3], 1e-3 * gap):
-            return FORGETS_V_INV_HINT
-    W = _twist_matrix(np.concatenate([np.zeros(3), phi]))[:3, :3]
-    if np.linalg.norm(phi) > 1e-2 and close(got[:3], (np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3], 1e-9):
+    gap = np.max(np.abs(T[:3, 3] - xi[:3]))
+    if gap > 0.0 and close(got[:3], T[:3, 3], 1e-3 * gap):
+        return FORGETS_V_INV_HINT
+    if rho_c_constant is not None and close(got[3:], xi[3:], 1e-9) and close(got[:3], rho_c_constant, 1e-9):
         return ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use "
                 "c(θ) = (1 - (θ/2) cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
     return None

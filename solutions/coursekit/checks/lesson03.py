@@ -4,6 +4,11 @@ The checks use rotations whose axis and angle are known by construction —
 quarter and half turns written out entry by entry, a tiny turn about z built
 from cos and sin, scipy's rotation through ``coursekit.lie.Exp`` — and defining properties: hat(w) @ v is the cross product,
 exp of a rotation vector fixes its axis, log undoes exp.
+
+The hints name a typical slip by comparing your answer with what that slip
+returns at the checks' fixed inputs. Those values are stored below as numbers
+(computed once, and rechecked by the course's own tests), so this file
+contains no way to compute the exercises' answers.
 """
 
 import numpy as np
@@ -20,6 +25,108 @@ HALF_TURN_DIAGONAL = 2.0 * np.outer(DIAGONAL, DIAGONAL) - np.eye(3)   # π about
 W_SAMPLE = np.array([0.3, -1.2, 0.5])
 V_SAMPLE = np.array([2.0, 0.1, -0.7])
 SKEW_SAMPLE = np.array([[0.0, -0.5, -1.2], [0.5, 0.0, -0.3], [1.2, 0.3, 0.0]])   # hat of (0.3, -1.2, 0.5)
+AXIS_221 = np.array([2.0, -1.0, 2.0]) / 3.0
+AXIS_BELOW_PI = np.array([0.0, -0.6, -0.8])            # its largest component is negative
+R_TWO_RAD = Exp(2.0 * AXIS_221)                        # 2 rad about (2, -1, 2)/3
+E_X_HAT = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])   # [e_x]×
+E_Y_HAT = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 0.0], [-1.0, 0.0, 0.0]])   # [e_y]×
+E_Z_HAT = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])   # [e_z]× = [e_x × e_y]×
+A_2X2 = np.array([[1.0, 2.0], [0.0, -1.0]])
+B_2X2 = np.array([[0.0, 1.0], [3.0, 0.5]])
+BRACKET_2X2 = np.array([[6.0, 3.0], [-6.0, -6.0]])    # [A_2X2, B_2X2], worked out by hand
+QUARTER_W = np.array([[0.0, -1.5707963267948966, 0.0],   # [π/2 e_z]×
+                      [1.5707963267948966, 0.0, 0.0], [0.0, 0.0, 0.0]])
+
+# ---- what typical slips return at the fixed inputs above (values only; see the module docstring)
+# hat(W_SAMPLE) without the minus signs: [[0, w3, w2], [w3, 0, w1], [w2, w1, 0]]
+HAT_SYMMETRIC_AT_W = np.array([[0.0, 0.5, -1.2], [0.5, 0.0, 0.3], [-1.2, 0.3, 0.0]])
+# hat of W_SAMPLE with its components permuted in these orders
+PERMUTATIONS = ((2, 1, 0), (1, 0, 2), (0, 2, 1), (1, 2, 0), (2, 0, 1))
+HAT_PERMUTED_AT_W = [np.array([[0.0, -0.3, -1.2], [0.3, 0.0, -0.5], [1.2, 0.5, 0.0]]),
+                     np.array([[0.0, -0.5, 0.3], [0.5, 0.0, 1.2], [-0.3, -1.2, 0.0]]),
+                     np.array([[0.0, 1.2, 0.5], [-1.2, 0.0, -0.3], [-0.5, 0.3, 0.0]]),
+                     np.array([[0.0, -0.3, 0.5], [0.3, 0.0, 1.2], [-0.5, -1.2, 0.0]]),
+                     np.array([[0.0, 1.2, 0.3], [-1.2, 0.0, -0.5], [-0.3, 0.5, 0.0]])]
+# vee(SKEW_SAMPLE) reading W[0, 1], W[0, 2], W[1, 2]
+VEE_UPPER_ENTRIES = np.array([-0.5, -1.2, -0.3])
+# bracket slips: AB + BA, A * B - B * A (entry-wise, always zero), AB alone, BA alone
+BRACKET_SLIPS = {
+    "e_x, e_y": {"anticommutator": np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]]),
+                 "entrywise": np.zeros((3, 3)),
+                 "AB": np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]]),
+                 "BA": np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])},
+    "2x2": {"anticommutator": np.array([[6.0, 1.0], [0.0, 5.0]]),
+            "entrywise": np.zeros((2, 2)),
+            "AB": np.array([[6.0, 2.0], [-3.0, -0.5]]),
+            "BA": np.array([[0.0, -1.0], [3.0, 5.5]])},
+}
+# exp_series(SKEW_SAMPLE, n) for n = 1 … 4: I, I + W, I + W + W²/2, I + W + W²/2 + W³/6
+SERIES_AT_SKEW = {
+    1: np.eye(3),
+    2: np.array([[1.0, -0.5, -1.2], [0.5, 1.0, -0.3], [1.2, 0.3, 1.0]]),
+    3: np.array([[0.15500000000000003, -0.6799999999999999, -1.125],
+                 [0.32, 0.8300000000000001, -0.6],
+                 [1.275, 0.0, 0.235]]),
+    4: np.array([[0.15500000000000003, -0.5316666666666666, -0.7689999999999999],
+                 [0.1716666666666667, 0.8300000000000001, -0.511],
+                 [0.9189999999999998, -0.08900000000000001, 0.235]]),
+}
+# the n-term slip with entry-wise powers W ** k / k!
+SERIES_ENTRYWISE_AT_SKEW = {
+    1: np.ones((3, 3)),
+    2: np.array([[1.0, 0.5, -0.19999999999999996], [1.5, 1.0, 0.7], [2.2, 1.3, 1.0]]),
+    3: np.array([[1.0, 0.625, 0.52], [1.625, 1.0, 0.745], [2.92, 1.345, 1.0]]),
+}
+# the n-term slip without the 1/k!
+SERIES_NO_FACTORIAL_AT_SKEW = {
+    1: np.eye(3),
+    2: np.array([[1.0, -0.5, -1.2], [0.5, 1.0, -0.3], [1.2, 0.3, 1.0]]),
+    3: np.array([[-0.69, -0.86, -1.05], [0.14, 0.66, -0.8999999999999999], [1.3499999999999999, -0.3, -0.53]]),
+}
+# the same two slips with 30 terms of QUARTER_W
+SERIES_ENTRYWISE_QUARTER_30 = np.array([[1.0, 0.20787957635069995, 1.0], [4.810477380965104, 1.0, 1.0],
+                                        [1.0, 1.0, 1.0]])
+SERIES_NO_FACTORIAL_QUARTER_30 = np.array([[220593.54299530966, -346507.52705170447, 0.0],
+                                           [346507.52705170447, 220593.54299530966, 0.0],
+                                           [0.0, 0.0, 1.0]])
+# exp_so3 slips at [0, 0, π/2], W_SAMPLE and [0, 0, 1e-8]: sin θ and (1 - cos θ) swapped; [w]× in place of [w/θ]×
+EXP_SLIPS = {
+    "quarter": {"swapped": np.array([[0.0, -0.9999999999999999, 0.0], [0.9999999999999999, 0.0, 0.0], [0.0, 0.0, 1.0]]),
+                "unnormalised": np.array([[-1.467401100272339, -1.5707963267948966, 0.0],
+                                          [1.5707963267948966, -1.467401100272339, 0.0],
+                                          [0.0, 0.0, 1.0]])},
+    "sample": {"swapped": np.array([[0.07701928498050536, -0.4835215899531728, -0.6066633868759179],
+                                    [0.09029903680877277, 0.8143115721262555, -0.4998316489822504],
+                                    [0.7705061173527512, -0.1555392729250831, 0.16440207456814993]]),
+               "unnormalised": np.array([[-0.29381702396980613, -0.761672760352947, -1.051724410465189],
+                                         [0.21046077380959766, 0.7397054507989739, -0.7509833823682213],
+                                         [1.281396071524918, -0.16770326187069445, -0.1713254714046173]])},
+    "tiny": {"swapped": np.array([[0.99999999, 0.0, 0.0], [0.0, 0.99999999, 0.0], [0.0, 0.0, 1.0]]),
+             "unnormalised": np.array([[1.0, -1.0000000000000001e-16, 0.0], [1.0000000000000001e-16, 1.0, 0.0],
+                                       [0.0, 0.0, 1.0]])},
+}
+# log_so3 slips at the checks' rotations: the angle from arccos of the clipped trace; vee(R - Rᵀ)/2 (= sin θ u)
+# for the tiny turns; θ/(2 sin θ)·vee(R - Rᵀ) with θ from atan2 and from arccos near π (no branch there)
+LOG_SLIPS = {
+    "quarter": {"arccos_angle": 1.5707963267948966},
+    "tiny_1e-08": {"arccos_angle": 0.0,
+                   "sin_angle_axis": np.array([6.666666666666667e-09, -3.3333333333333334e-09, 6.666666666666667e-09])},
+    "tiny_0.001": {"arccos_angle": 0.0009999999997701238,
+                   "sin_angle_axis": np.array([0.0006666665555555612, -0.0003333332777777806, 0.0006666665555555612])},
+    "half_z": {"arccos_angle": 3.141592653589793, "no_branch": [np.zeros(3), np.zeros(3)]},
+    "half_diagonal": {"arccos_angle": 3.1415926325163688, "no_branch": [np.zeros(3), np.zeros(3)]},
+    "below_pi": {"arccos_angle": 3.141591653545344,
+                 "no_branch": [np.array([0.0, -1.884954992153876, -2.5132733228718345]),
+                               np.array([0.0, -1.8848712116959343, -2.513161615594579])]},
+}
+# axis_from_eigen slips that miss the axis: a row of eig's vector matrix, the SVD null space of R itself,
+# eigh's vector (R_TWO_RAD); the first eigenvector and its eigenvalue (HALF_TURN_Z)
+EIGEN_SLIPS = {
+    "two_rad": {"row": np.array([-0.9428090415820635, 0.23570226039551567, 0.23570226039551567]),
+                "svd_of_R": np.array([0.0, -0.7071067811865472, 0.7071067811865475]),
+                "eigh": np.array([-0.6823480532366004, -0.2623018652019903, -0.6823480532366004])},
+    "half_z": {"first": np.array([1.0, 0.0, 0.0]), "first_eigenvalue": -1.0},
+}
 
 
 def _rot_z(angle):
@@ -35,24 +142,23 @@ def _explains(got, candidate, truth):
     return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + 1e-15
 
 
-def _skew(w):
-    x, y, z = np.asarray(w, dtype=float)
-    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+def _trace_outside(R):
+    """The trace of a rotation lies in [-1, 3]; rounding can push it just outside."""
+    return not -1.0 <= float(np.trace(np.asarray(R, dtype=float))) <= 3.0
 
 
 # ---------------------------------------------------------------- hat, vee
-def _hat_hint(W, w):
-    x, y, z = np.asarray(w, dtype=float)
-    truth = _skew(w)
+def _hat_hint(W):
+    """The slip behind a wrong hat(W_SAMPLE) = ``W``."""
+    truth = SKEW_SAMPLE
     if _explains(W, truth.T, truth):
         return "the signs are swapped (the transpose, -[w]×): the top row is [0, -w3, w2]"
-    if _explains(W, np.array([[0.0, z, y], [z, 0.0, x], [y, x, 0.0]]), truth):
+    if _explains(W, HAT_SYMMETRIC_AT_W, truth):
         return "the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
-    if _explains(W, np.diag([x, y, z]), truth):
+    if _explains(W, np.diag(W_SAMPLE), truth):
         return "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
-    for order in ((2, 1, 0), (1, 0, 2), (0, 2, 1), (1, 2, 0), (2, 0, 1)):
-        if _explains(W, _skew(np.array([x, y, z])[list(order)]), truth):
-            return "the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3"
+    if any(_explains(W, permuted, truth) for permuted in HAT_PERMUTED_AT_W):
+        return "the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3"
     return "compare entry by entry with [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
 
 
@@ -61,7 +167,7 @@ def _(hat):
     W = require_shape(hat(W_SAMPLE), (3, 3))
     got, want = W @ V_SAMPLE, np.cross(W_SAMPLE, V_SAMPLE)
     if not close(got, want, 1e-12):
-        raise Mismatch(f"hat(w) @ v = {fmt(got)}, but w × v = {fmt(want)} ({off_by(got, want)})", _hat_hint(W, W_SAMPLE))
+        raise Mismatch(f"hat(w) @ v = {fmt(got)}, but w × v = {fmt(want)} ({off_by(got, want)})", _hat_hint(W))
 
 
 @public_check("hat", "returns a skew-symmetric matrix (Wᵀ = -W)")
@@ -72,15 +178,17 @@ def _(hat):
                        "the diagonal is zero and W[j, i] = -W[i, j]")
 
 
-def _vee_hint(got, W, w):
+def _vee_hint(got):
+    """The slip behind a wrong vee(SKEW_SAMPLE) = ``got`` (the truth is W_SAMPLE)."""
+    w = W_SAMPLE
     if _explains(got, -w, w):
         return "the negative of w: read w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0] (the entries with a plus sign)"
-    if _explains(got, np.array([W[0, 1], W[0, 2], W[1, 2]]), w):
+    if _explains(got, VEE_UPPER_ENTRIES, w):
         return ("read the entries above the diagonal in row order (W[0, 1], W[0, 2], W[1, 2] = -w3, w2, -w1): "
                 "w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]")
     if _explains(got, 2.0 * w, w):
         return "twice w: W - Wᵀ = 2[w]×, so take half of it (or read the entries of W directly)"
-    if _explains(got, np.diag(W), w):
+    if _explains(got, np.diag(SKEW_SAMPLE), w):
         return "returned the diagonal of W, which is zero: w sits off the diagonal (w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0])"
     return "vee reads w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]"
 
@@ -90,7 +198,7 @@ def _(vee):
     got = require_shape(vee(SKEW_SAMPLE), (3,))
     if not close(got, W_SAMPLE, 1e-12):
         raise Mismatch(f"vee returned {fmt(got)}, expected {fmt(W_SAMPLE)} ({off_by(got, W_SAMPLE)})",
-                       _vee_hint(got, SKEW_SAMPLE, W_SAMPLE))
+                       _vee_hint(got))
 
 
 @public_check("vee", "accepts a nested list")
@@ -99,64 +207,62 @@ def _(vee):
 
 
 # ---------------------------------------------------------------- bracket
-def _bracket_hint(got, A, B):
-    truth = A @ B - B @ A
-    if _explains(got, A @ B + B @ A, truth):
+def _bracket_hint(got, truth, slips):
+    """The slip behind a wrong bracket = ``got``; ``slips`` holds what each slip returns for these A, B."""
+    if _explains(got, slips["anticommutator"], truth):
         return "that is AB + BA: the bracket is the difference AB - BA"
-    if _explains(got, B @ A - A @ B, truth):
+    if _explains(got, -truth, truth):
         return "the order is AB - BA, not BA - AB"
-    if _explains(got, A * B - B * A, truth):
+    if _explains(got, slips["entrywise"], truth):
         return "got zero: * multiplies entry by entry (A * B = B * A), use @ for the matrix product"
-    if _explains(got, A @ B, truth):
+    if _explains(got, slips["AB"], truth):
         return "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
-    if _explains(got, B @ A, truth):
+    if _explains(got, slips["BA"], truth):
         return "that is only BA: the bracket is AB - BA"
     return "[A, B] = A @ B - B @ A, with matrix products"
 
 
 @public_check("bracket", "[e_x^, e_y^] = e_z^ (the cross product e_x × e_y = e_z)")
 def _(bracket):
-    X = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
-    Y = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 0.0], [-1.0, 0.0, 0.0]])
-    Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
-    got = require_shape(bracket(X, Y), (3, 3))
-    if not close(got, Z, 1e-12):
-        raise Mismatch(f"bracket(X, Y) =\n{got}\nexpected [e_z]× ({off_by(got, Z)})", _bracket_hint(got, X, Y))
+    got = require_shape(bracket(E_X_HAT, E_Y_HAT), (3, 3))
+    if not close(got, E_Z_HAT, 1e-12):
+        raise Mismatch(f"bracket(X, Y) =\n{got}\nexpected [e_z]× ({off_by(got, E_Z_HAT)})",
+                       _bracket_hint(got, E_Z_HAT, BRACKET_SLIPS["e_x, e_y"]))
 
 
 @public_check("bracket", "works for square matrices of any size (2×2)")
 def _(bracket):
-    A = np.array([[1.0, 2.0], [0.0, -1.0]])
-    B = np.array([[0.0, 1.0], [3.0, 0.5]])
-    got = require_shape(bracket(A, B), (2, 2))
-    if not close(got, A @ B - B @ A, 1e-12):
-        raise Mismatch(f"bracket of two 2×2 matrices returned {fmt(got)} ({off_by(got, A @ B - B @ A)})",
-                       _bracket_hint(got, A, B))
+    got = require_shape(bracket(A_2X2, B_2X2), (2, 2))
+    if not close(got, BRACKET_2X2, 1e-12):
+        raise Mismatch(f"bracket of two 2×2 matrices returned {fmt(got)} ({off_by(got, BRACKET_2X2)})",
+                       _bracket_hint(got, BRACKET_2X2, BRACKET_SLIPS["2x2"]))
 
 
 # ---------------------------------------------------------------- exp_series
-def _partial(W, first, last, factorial=True):
-    term, total = np.eye(len(W)), np.zeros_like(W)
-    for k in range(last + 1):
-        if k >= first:
-            total = total + term
-        term = term @ W / (k + 1 if factorial else 1)
-    return total
-
-
-def _series_hint(got, W, n):
-    truth = _partial(W, 0, n - 1)
-    if _explains(got, _partial(W, 1, n), truth) or _explains(got, _partial(W, 1, n - 1), truth):
+def _series_hint(got, truth, slips):
+    """The slip behind a wrong exp_series = ``got``; ``slips`` holds what each slip returns for this W and n."""
+    if any(_explains(got, candidate, truth) for candidate in slips.get("no_identity", ())):
         return "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
-    if _explains(got, _partial(W, 0, n), truth):
+    if "one_extra" in slips and _explains(got, slips["one_extra"], truth):
         return "one term too many: n_terms terms means k = 0 … n_terms - 1"
-    if n >= 2 and _explains(got, _partial(W, 0, n - 2), truth):
+    if "one_short" in slips and _explains(got, slips["one_short"], truth):
         return "one term too few: n_terms terms means k = 0 … n_terms - 1"
-    if _explains(got, sum(W ** k / np.prod(np.arange(1, k + 1)) for k in range(n)), truth):
+    if _explains(got, slips["entrywise"], truth):
         return "W ** k is an entry-wise power: use the matrix product (term = term @ W / k)"
-    if _explains(got, _partial(W, 0, n - 1, factorial=False), truth):
+    if _explains(got, slips["no_factorial"], truth):
         return "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
     return "sum the terms W^k / k! for k = 0 … n_terms - 1, with matrix products"
+
+
+def _series_slips_at_sample(n):
+    """What each slip returns for exp_series(SKEW_SAMPLE, n), from the stored sums of 0 … 4 terms."""
+    sums = {0: np.zeros((3, 3)), **SERIES_AT_SKEW}
+    slips = {"no_identity": (sums[n + 1] - np.eye(3), sums[n] - np.eye(3)),   # k = 1 … n, k = 1 … n - 1
+             "one_extra": sums[n + 1],                                         # k = 0 … n
+             "entrywise": SERIES_ENTRYWISE_AT_SKEW[n], "no_factorial": SERIES_NO_FACTORIAL_AT_SKEW[n]}
+    if n >= 2:
+        slips["one_short"] = sums[n - 1]                                       # k = 0 … n - 2
+    return slips
 
 
 @public_check("exp_series", "n_terms = 1, 2, 3 give I, I + W, I + W + W²/2")
@@ -164,23 +270,26 @@ def _(exp_series):
     W = SKEW_SAMPLE
     for n in (1, 2, 3):
         got = require_shape(exp_series(W, n), (3, 3))
-        expected = _partial(W, 0, n - 1)
+        expected = SERIES_AT_SKEW[n]
         if not close(got, expected, 1e-12):
             raise Mismatch(f"exp_series(W, {n}) differs from the sum of its first {n} terms "
-                           f"({off_by(got, expected)})", _series_hint(got, W, n))
+                           f"({off_by(got, expected)})", _series_hint(got, expected, _series_slips_at_sample(n)))
 
 
 @public_check("exp_series", "many terms sum to a rotation: the quarter turn about z")
 def _(exp_series):
-    W = np.array([[0.0, -np.pi / 2, 0.0], [np.pi / 2, 0.0, 0.0], [0.0, 0.0, 0.0]])
-    got = require_shape(exp_series(W, 30), (3, 3))
+    got = require_shape(exp_series(QUARTER_W, 30), (3, 3))
     if not close(got, QUARTER_TURN_Z, 1e-12):
+        # 30 terms are the rotation to rounding, so one term more or less is invisible here
+        slips = {"no_identity": (QUARTER_TURN_Z - np.eye(3),), "entrywise": SERIES_ENTRYWISE_QUARTER_30,
+                 "no_factorial": SERIES_NO_FACTORIAL_QUARTER_30}
         raise Mismatch(f"30 terms of exp([π/2 e_z]×) give x → {fmt(got[:, 0])}, expected [0, 1, 0] "
-                       f"({off_by(got, QUARTER_TURN_Z)})", _series_hint(got, W, 30))
+                       f"({off_by(got, QUARTER_TURN_Z)})", _series_hint(got, QUARTER_TURN_Z, slips))
 
 
 # ---------------------------------------------------------------- exp_so3
-def _exp_hint(got, w):
+def _exp_hint(got, w, slips):
+    """The slip behind a wrong exp_so3(w) = ``got``; ``slips`` holds what each slip returns for this w."""
     w = np.asarray(w, dtype=float)
     angle = float(np.linalg.norm(w))
     expected = Exp(w)
@@ -188,12 +297,10 @@ def _exp_hint(got, w):
         return f"returned exactly I: the turn of {angle:.3g} rad was dropped; use the Taylor coefficients, never return I"
     if _explains(got, expected.T, expected):
         return "got the inverse rotation: check the sign of the sin θ term, R = I + sin θ K + ..."
-    if angle > 0.0:
-        K, W = _skew(w / angle), _skew(w)
-        if _explains(got, np.eye(3) + (1 - np.cos(angle)) * K + np.sin(angle) * K @ K, expected):
-            return "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
-        if _explains(got, np.eye(3) + np.sin(angle) * W + (1 - np.cos(angle)) * W @ W, expected):
-            return "Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin θ and cos θ)"
+    if _explains(got, slips["swapped"], expected):
+        return "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
+    if _explains(got, slips["unnormalised"], expected):
+        return "Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin θ and cos θ)"
     return "R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]× and θ = |w|"
 
 
@@ -202,7 +309,7 @@ def _(exp_so3):
     R = require_shape(exp_so3([0.0, 0.0, np.pi / 2]), (3, 3))
     if not close(R, QUARTER_TURN_Z, 1e-12):
         raise Mismatch(f"exp_so3([0, 0, π/2]) sends x to {fmt(R[:, 0])}, expected [0, 1, 0] "
-                       f"({off_by(R, QUARTER_TURN_Z)})", _exp_hint(R, [0.0, 0.0, np.pi / 2]))
+                       f"({off_by(R, QUARTER_TURN_Z)})", _exp_hint(R, [0.0, 0.0, np.pi / 2], EXP_SLIPS["quarter"]))
 
 
 @public_check("exp_so3", "returns a rotation that leaves its axis fixed")
@@ -210,9 +317,10 @@ def _(exp_so3):
     R = require_shape(exp_so3(W_SAMPLE), (3, 3))
     problem = rotation_problem(R, 1e-12)
     if problem:
-        raise Mismatch(f"exp_so3(w) is not a rotation: {problem}", _exp_hint(R, W_SAMPLE))
+        raise Mismatch(f"exp_so3(w) is not a rotation: {problem}", _exp_hint(R, W_SAMPLE, EXP_SLIPS["sample"]))
     if not close(R @ W_SAMPLE, W_SAMPLE, 1e-12):
-        raise Mismatch(f"exp_so3(w) moves its own axis w ({off_by(R @ W_SAMPLE, W_SAMPLE)})", _exp_hint(R, W_SAMPLE))
+        raise Mismatch(f"exp_so3(w) moves its own axis w ({off_by(R @ W_SAMPLE, W_SAMPLE)})",
+                       _exp_hint(R, W_SAMPLE, EXP_SLIPS["sample"]))
 
 
 @public_check("exp_so3", "w = 0 gives I, and a tiny turn (1e-8 rad) is not lost")
@@ -225,25 +333,16 @@ def _(exp_so3):
     got = require_shape(exp_so3(w), (3, 3))
     if not close(got, _rot_z(1e-8), 1e-15):
         raise Mismatch(f"exp_so3([0, 0, 1e-8]) is {off_by(got, _rot_z(1e-8))} (R[1, 0] = {got[1, 0]:.3g}, "
-                       "expected 1e-08)", _exp_hint(got, w))
+                       "expected 1e-08)", _exp_hint(got, w, EXP_SLIPS["tiny"]))
 
 
 # ---------------------------------------------------------------- log_so3
-def _log_parts(R):
-    """a = vee(R - Rᵀ)/2 = sin θ u, c = (tr R - 1)/2 = cos θ, and θ from atan2 and from (clipped) arccos."""
-    R = np.asarray(R, dtype=float)
-    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
-    c = 0.5 * (np.trace(R) - 1.0)
-    return a, c, float(np.arctan2(np.linalg.norm(a), c)), float(np.arccos(np.clip(c, -1.0, 1.0)))
-
-
-def _log_hint(got, R, expected):
-    """The slip behind a wrong log_so3(R) = ``got``, found by computing what each slip returns for this R."""
+def _log_hint(got, R, expected, slips):
+    """The slip behind a wrong log_so3(R) = ``got``; ``slips`` holds what each slip returns for this R."""
     got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
-    a, c, theta, theta_acos = _log_parts(R)
     angle = float(np.linalg.norm(expected))
     if not np.all(np.isfinite(got)):
-        if abs(c) > 1.0:
+        if _trace_outside(R):
             return "NaN: (tr R - 1)/2 is just outside [-1, 1] by rounding, and arccos of it is NaN: clip it first"
         if angle < 1e-3:
             return "NaN or inf at θ = 0: θ/sin θ is 0/0 there; use its series 1 + θ²/6 (or return 0) for tiny θ"
@@ -255,16 +354,16 @@ def _log_hint(got, R, expected):
         return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
     if _explains(got, 2.0 * expected, expected):
         return "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
-    if angle < 0.5 and _explains(got, a, expected):
+    if angle < 0.5 and _explains(got, slips["sin_angle_axis"], expected):
         return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle ** 3 / 6:.1e}: you dropped the θ²/6 term, "
                 "keep θ/sin θ ≈ 1 + θ²/6 for small θ")
+    theta_acos = slips["arccos_angle"]
     if _explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
             return "returned zero for a tiny rotation: arccos rounds tiny angles to 0; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
         return (f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
                 "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
-    no_branch = [t / np.sin(t) * a for t in (theta, theta_acos) if np.sin(t) != 0.0]
-    if any(_explains(got, candidate, expected) for candidate in no_branch) or (
+    if any(_explains(got, candidate, expected) for candidate in slips.get("no_branch", ())) or (
             angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
                 "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ")
@@ -279,52 +378,53 @@ def _(log_so3):
     want = np.array([0.0, 0.0, np.pi / 2])
     if not close(got, want, 1e-12):
         raise Mismatch(f"log_so3 of the quarter turn is {off_by(got, want)}: returned {fmt(got)}",
-                       _log_hint(got, QUARTER_TURN_Z, want))
+                       _log_hint(got, QUARTER_TURN_Z, want, LOG_SLIPS["quarter"]))
 
 
 @public_check("log_so3", "the identity gives 0, and tiny turns keep their relative accuracy")
 def _(log_so3):
-    got = require_shape(log_so3(np.eye(3)), (3,), "log_so3(I)", lambda got: _log_hint(got, np.eye(3), np.zeros(3)))
+    got = require_shape(log_so3(np.eye(3)), (3,), "log_so3(I)", lambda got: _log_hint(got, np.eye(3), np.zeros(3), {}))
     if not close(got, np.zeros(3), 1e-15):
-        raise Mismatch(f"log_so3(I) returned {fmt(got)}", _log_hint(got, np.eye(3), np.zeros(3)))
-    axis = np.array([2.0, -1.0, 2.0]) / 3.0
+        raise Mismatch(f"log_so3(I) returned {fmt(got)}", _log_hint(got, np.eye(3), np.zeros(3), {}))
     for angle in (1e-8, 1e-3):
-        want = angle * axis
+        want = angle * AXIS_221
         R = Exp(want)
-        got = require_shape(log_so3(R), (3,), f"log_so3 at θ = {angle:g}", lambda got: _log_hint(got, R, want))
+        slips = LOG_SLIPS[f"tiny_{angle:g}"]
+        got = require_shape(log_so3(R), (3,), f"log_so3 at θ = {angle:g}", lambda got: _log_hint(got, R, want, slips))
         if not close(got, want, 1e-15 + 1e-10 * angle):
             raise Mismatch(f"log_so3 of a {angle:g} rad turn is {off_by(got, want)} "
                            f"(relative {np.max(np.abs(got - want)) / angle:.2g}): returned {got}",
-                           _log_hint(got, R, want))
+                           _log_hint(got, R, want, slips))
 
 
 @public_check("log_so3", "exact at θ = π, also about (1, 1, 1)/√3 (either sign)")
 def _(log_so3):
-    for name, R, axis in [("the half turn about z", HALF_TURN_Z, np.array([0.0, 0.0, 1.0])),
-                          ("the half turn about (1, 1, 1)/√3", HALF_TURN_DIAGONAL, DIAGONAL)]:
-        got = require_shape(log_so3(R), (3,), f"log_so3 of {name}", lambda got: _log_hint(got, R, np.pi * axis))
+    for name, R, axis, key in [("the half turn about z", HALF_TURN_Z, np.array([0.0, 0.0, 1.0]), "half_z"),
+                               ("the half turn about (1, 1, 1)/√3", HALF_TURN_DIAGONAL, DIAGONAL, "half_diagonal")]:
+        got = require_shape(log_so3(R), (3,), f"log_so3 of {name}",
+                            lambda got: _log_hint(got, R, np.pi * axis, LOG_SLIPS[key]))
         want = np.pi * axis if np.linalg.norm(got - np.pi * axis) <= np.linalg.norm(got + np.pi * axis) \
             else -np.pi * axis
         if not close(got, want, 1e-10):
             raise Mismatch(f"log_so3 of {name} is {off_by(got, want)} (either sign accepted): returned {fmt(got)}",
-                           _log_hint(got, R, want))
+                           _log_hint(got, R, want, LOG_SLIPS[key]))
 
 
 @public_check("log_so3", "just below π the sign of the axis is right")
 def _(log_so3):
     angle = np.pi - 1e-6
-    axis = np.array([0.0, -0.6, -0.8])            # its largest component is negative
-    R = Exp(angle * axis)
+    R = Exp(angle * AXIS_BELOW_PI)
     got = require_shape(log_so3(R), (3,))
-    want = angle * axis
+    want = angle * AXIS_BELOW_PI
     if not close(got, want, 1e-8):
-        raise Mismatch(f"log_so3 is {off_by(got, want)} at θ = π - 1e-6 about {fmt(axis)}: returned {fmt(got)}",
-                       _log_hint(got, R, want))
+        raise Mismatch(f"log_so3 is {off_by(got, want)} at θ = π - 1e-6 about {fmt(AXIS_BELOW_PI)}: "
+                       f"returned {fmt(got)}",
+                       _log_hint(got, R, want, LOG_SLIPS["below_pi"]))
 
 
 # ---------------------------------------------------------------- axis_angle
-def _theta_hint(theta, R, true_angle):
-    _, _, _, theta_acos = _log_parts(R)
+def _theta_hint(theta, true_angle, theta_acos):
+    """The slip behind a wrong angle ``theta``; ``theta_acos`` is what arccos of the trace gives for this R."""
     if _explains(theta, np.degrees(true_angle), true_angle):
         return "θ is in degrees (57.3 × the value in radians): the course works in radians"
     if _explains(theta, theta_acos, true_angle):
@@ -336,10 +436,9 @@ def _theta_hint(theta, R, true_angle):
 def _pair(value, R):
     if not isinstance(value, (tuple, list)) or len(value) != 2:
         raise Mismatch(f"returned {type(value).__name__}, expected a pair (u, theta)", "return u, theta")
-    c = 0.5 * (np.trace(R) - 1.0)
     theta = require_shape(value[1], (), "θ", lambda _: (
         "(tr R - 1)/2 is just above 1 by rounding, so arccos gives NaN: clip (tr R - 1)/2 to [-1, 1] before "
-        "arccos (or use atan2)" if abs(c) > 1.0 else "θ must be a number"))
+        "arccos (or use atan2)" if _trace_outside(R) else "θ must be a number"))
     u = require_shape(value[0], (3,), "u", lambda _: (
         "u = vee(R - Rᵀ)/(2 sin θ) is 0/0 at θ = 0: the axis is arbitrary there, return [1, 0, 0]"
         if theta == 0.0 else "look for a division by a vanishing sin θ or norm"))
@@ -351,7 +450,7 @@ def _(axis_angle):
     u, theta = _pair(axis_angle(QUARTER_TURN_Z), QUARTER_TURN_Z)
     if not close(theta, np.pi / 2, 1e-12):
         raise Mismatch(f"θ = {theta:.6g}, expected π/2 ({off_by(theta, np.pi / 2)})",
-                       _theta_hint(theta, QUARTER_TURN_Z, np.pi / 2))
+                       _theta_hint(theta, np.pi / 2, LOG_SLIPS["quarter"]["arccos_angle"]))
     if not close(u, [0.0, 0.0, 1.0], 1e-12):
         raise Mismatch(f"got u = {fmt(u)}, expected u = [0, 0, 1] ({off_by(u, [0.0, 0.0, 1.0])})",
                        "u = vee(R - Rᵀ)/(2 sin θ) away from π")
@@ -371,12 +470,12 @@ def _(axis_angle):
     R = HALF_TURN_DIAGONAL
     u, theta = _pair(axis_angle(R), R)
     if not close(theta, np.pi, 1e-12):
-        raise Mismatch(f"θ = {theta:.12f} is {off_by(theta, np.pi)} from π", _theta_hint(theta, R, np.pi))
+        raise Mismatch(f"θ = {theta:.12f} is {off_by(theta, np.pi)} from π",
+                       _theta_hint(theta, np.pi, LOG_SLIPS["half_diagonal"]["arccos_angle"]))
     if not (close(u, DIAGONAL, 1e-10) or close(u, -DIAGONAL, 1e-10)):
-        a = _log_parts(R)[0]
         raise Mismatch(f"got u = {fmt(u)}, expected ±(1, 1, 1)/√3",
                        "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: take u from (R + I)/2, "
-                       "the column with the largest diagonal entry" if np.linalg.norm(a) <= 1e-9 else
+                       "the column with the largest diagonal entry" if np.max(np.abs(R - R.T)) <= 1e-9 else
                        "near π take the axis from the symmetric part (R + Rᵀ)/2")
 
 
@@ -392,49 +491,38 @@ def _real(value):
     return require_shape(value, (3,))
 
 
-def _eigen_hint(u, R):
-    """The slip behind a wrong axis u of R, found by computing what each slip returns (up to sign)."""
-    values, vectors = np.linalg.eig(R)
-    k = int(np.argmin(np.abs(values - 1.0)))
-
-    def unit(v):
-        v = np.real(np.asarray(v))
-        return v / np.linalg.norm(v)
-
+def _eigen_hint(u, axis, slips):
+    """The slip behind a wrong axis ``u`` (up to sign); ``slips`` holds what each slip returns for this R."""
     def same_line(v):
         return min(np.max(np.abs(u - v)), np.max(np.abs(u + v))) <= 1e-6
 
-    sym_values, sym_vectors = np.linalg.eigh(R)
-    candidates = [
-        (unit(vectors[k]), "that is a row of the eigenvector matrix: eigenvectors are its columns, vectors[:, k]"),
-        (unit(vectors[:, 0]), f"that is the first eigenvector, whose eigenvalue is {values[0]:.3g}, not 1: "
-                              "take k = argmin |λ - 1|"),
-        (np.linalg.svd(R)[2][-1], "that is the SVD null space of R, but R is invertible: the axis spans the "
-                                  "null space of R - I"),
-        (sym_vectors[:, int(np.argmin(np.abs(sym_values - 1.0)))],
-         "np.linalg.eigh assumes a symmetric matrix (it reads one triangle of R): use np.linalg.eig"),
-    ]
-    for candidate, hint in candidates:
-        if same_line(candidate) and not same_line(unit(vectors[:, k])):
+    messages = {
+        "row": "that is a row of the eigenvector matrix: eigenvectors are its columns, vectors[:, k]",
+        "first": f"that is the first eigenvector, whose eigenvalue is {slips.get('first_eigenvalue', 0.0):.3g}, not 1: "
+                 "take k = argmin |λ - 1|",
+        "svd_of_R": "that is the SVD null space of R, but R is invertible: the axis spans the null space of R - I",
+        "eigh": "np.linalg.eigh assumes a symmetric matrix (it reads one triangle of R): use np.linalg.eig",
+    }
+    for key, hint in messages.items():
+        if key in slips and same_line(slips[key]) and not same_line(axis):
             return hint
     return "u must be the eigenvector of the eigenvalue 1: the column vectors[:, k] with k = argmin |λ - 1|"
 
 
 @public_check("axis_from_eigen", "returns a real unit vector with R u = u")
 def _(axis_from_eigen):
-    angle = 2.0
-    axis = np.array([2.0, -1.0, 2.0]) / 3.0
-    R = Exp(angle * axis)
+    R = R_TWO_RAD
     u = _real(axis_from_eigen(R))
     if not close(np.linalg.norm(u), 1.0, 1e-12):
         raise Mismatch(f"|u| = {np.linalg.norm(u):.6g}", "normalise the eigenvector")
     if not close(R @ u, u, 1e-10):
         raise Mismatch(f"R u ≠ u for u = {fmt(u)} (|R u - u| up to {np.max(np.abs(R @ u - u)):.2g})",
-                       _eigen_hint(u, R))
+                       _eigen_hint(u, AXIS_221, EIGEN_SLIPS["two_rad"]))
 
 
 @public_check("axis_from_eigen", "a half turn about z: u = ±e_z")
 def _(axis_from_eigen):
     u = _real(axis_from_eigen(HALF_TURN_Z))
     if not (close(u, [0.0, 0.0, 1.0], 1e-12) or close(u, [0.0, 0.0, -1.0], 1e-12)):
-        raise Mismatch(f"got {fmt(u)}, expected ±e_z", _eigen_hint(u, HALF_TURN_Z))
+        raise Mismatch(f"got {fmt(u)}, expected ±e_z",
+                       _eigen_hint(u, np.array([0.0, 0.0, 1.0]), EIGEN_SLIPS["half_z"]))

@@ -1,10 +1,11 @@
 """Public checks for lesson 05: Euler angles and their singularities.
 
-The checks build attitudes from elementary rotations (``coursekit.lie.Exp``
-about one coordinate axis at a time, the definition of z-y-x angles) and from
-scipy, and test properties: a single angle turns about its own axis, angles
+The checks build attitudes with scipy (intrinsic 'ZYX' angles, a trusted
+oracle) and test properties: a single angle turns about its own axis, angles
 rebuild the matrix they came from, roll is zero at gimbal lock, and the rate
-matrix matches a finite difference of a moving attitude.
+matrix matches a finite difference of a moving attitude. The candidate
+mistakes behind a hint are stored as their values at the checks' fixed inputs
+(tests/test_public_check_constants_lesson05.py recomputes each of them).
 """
 
 import numpy as np
@@ -12,7 +13,7 @@ from scipy.spatial.transform import Rotation
 
 from ..checking import Mismatch, public_check
 from ..diagnose import as_float_array, close, rotation_problem, shape_problem
-from ..lie import Exp, unskew
+from ..lie import unskew
 from .common import fmt, off_by, require_shape
 
 E = np.eye(3)
@@ -23,8 +24,8 @@ NAN_HINT = ("np.arcsin of a number a hair beyond ±1 (rounding) is nan: get pitc
 
 
 def _zyx(yaw, pitch, roll):
-    """Rz(yaw) Ry(pitch) Rx(roll), each an elementary rotation (the definition)."""
-    return Exp([0.0, 0.0, yaw]) @ Exp([0.0, pitch, 0.0]) @ Exp([roll, 0.0, 0.0])
+    """Rz(yaw) Ry(pitch) Rx(roll), from scipy's intrinsic 'ZYX' angles (the oracle)."""
+    return Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix()
 
 
 def _quat_to_matrix(q):
@@ -70,25 +71,56 @@ def _wrapped(difference):
     return (np.asarray(difference, dtype=float) + np.pi) % (2 * np.pi) - np.pi
 
 
-def _naive_angles(R):
-    """The textbook formulas without a lock branch: atan2 of the entries that vanish at the lock."""
-    return np.array([np.arctan2(R[1, 0], R[0, 0]), np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])),
-                     np.arctan2(R[2, 1], R[2, 2])])
+# ---- Fixed matrices at and next to gimbal lock, stored bit for bit: there the entries that vanish at the lock
+# are rounding noise, and that noise decides what a mistaken extraction returns. Each mistake's angles at these
+# matrices are stored with them (recomputed by tests/test_public_check_constants_lesson05.py).
+# Rz(0.7) Ry(±π/2) Rx(-0.4), each factor built by coursekit.lie.Exp
+LOCK_MATRIX = {
+    1.0: np.array([[1.6982908130558103e-16, -0.8912073600614352, 0.45359612142557737],
+                   [1.4304506184841049e-16, 0.4535961214255774, 0.8912073600614353],
+                   [-1.0, -8.64682419684849e-17, 2.0451662452522725e-16]]),
+    -1.0: np.array([[1.6982908130558103e-16, -0.29552020666133955, -0.955336489125606],
+                    [1.4304506184841049e-16, 0.955336489125606, -0.2955202066613396],
+                    [1.0, -8.64682419684849e-17, 2.0451662452522725e-16]]),
+}
+# scipy's 'ZYX' [2.2, ±(π/2 - 1e-9), -0.9]
+NEAR_LOCK_MATRIX = {
+    1.0: np.array([[-5.885011888071869e-10, -0.04158066243329024, -0.9991351502732793],
+                   [8.084965856525184e-10, -0.9991351502732793, 0.04158066243329024],
+                   [-0.9999999999999998, -7.833270872226183e-10, 6.21610044633427e-10]]),
+    -1.0: np.array([[-5.885011922224237e-10, -0.963558185417193, -0.26749882862458735],
+                    [8.084966029997531e-10, 0.2674988286245873, -0.963558185417193],
+                    [1.0, -7.833269588530811e-10, 6.216100967293414e-10]]),
+}
+# mistake "no lock branch" (the general atan2 formulas used everywhere) at LOCK_MATRIX (the same with R[2, 0]
+# rounded past ∓1) and at NEAR_LOCK_MATRIX
+NO_BRANCH_AT_LOCK = {1.0: np.array([0.7, 1.5707963267948963, -0.39999999999999997]),
+                     -1.0: np.array([0.7, -1.5707963267948963, -0.39999999999999997])}
+NO_BRANCH_NEAR_LOCK = {1.0: np.array([2.1999999508405343, 1.5707963257948965, -0.90000005057789]),
+                       -1.0: np.array([2.1999999433928763, -1.5707963257948965, -0.8999999299739921])}
+# mistake "pitch = arcsin(-R[2, 0])" at NEAR_LOCK_MATRIX
+ASIN_PITCH_NEAR_LOCK = {1.0: 1.5707963057214724, -1.0: -1.5707963267948966}
 
 
-def _extraction_hint(angles, R, near=False):
-    """At or next to the lock: which extraction gave these angles (each candidate computed from R)."""
+def _rounded_past_one(R, sign):
+    """R with R[2, 0] a hair beyond ∓1, as rounding can leave it."""
+    rounded = R.copy()
+    rounded[2, 0] = -sign * (1.0 + 2.0 ** -52)
+    return rounded
+
+
+def _extraction_hint(angles, R, pitch, no_branch, asin=None, near=False):
+    """At or next to the lock: which extraction gave these angles of R (built with this pitch).
+
+    ``no_branch`` and ``asin`` are the angles without a lock branch and the arcsin pitch at R (stored values).
+    """
     hint = _angles_hint(angles, R)
     if hint:
         return hint
-    good_pitch = float(np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])))
-    with np.errstate(invalid="ignore"):
-        asin = float(np.arcsin(-R[2, 0]))
-    if np.isfinite(asin) and abs(asin - good_pitch) > 1e-13 and \
-            abs(angles[1] - asin) <= 1e-15 + 1e-3 * abs(asin - good_pitch):
+    if asin is not None and abs(asin - pitch) > 1e-13 and abs(angles[1] - asin) <= 1e-15 + 1e-3 * abs(asin - pitch):
         return ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by √(2ε)): "
                 "get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
-    if np.max(np.abs(_wrapped(angles - _naive_angles(R)))) <= 1e-12:
+    if np.max(np.abs(_wrapped(angles - no_branch))) <= 1e-12:
         if not near:
             return NO_LOCK_BRANCH_HINT
         return ("next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
@@ -187,33 +219,34 @@ def _(matrix_to_euler_zyx):
 @public_check("matrix_to_euler_zyx", "at gimbal lock (pitch = ±π/2): no NaN, roll = 0, the same matrix")
 def _(matrix_to_euler_zyx):
     for sign in (1.0, -1.0):
-        R = _zyx(0.7, sign * HALF_PI, -0.4)
-        rounded = R.copy()
-        rounded[2, 0] = -sign * (1.0 + 2.0 ** -52)     # rounding can push |R[2, 0]| a hair above 1
-        for matrix in (R, rounded):
-            got = _require_angles(matrix_to_euler_zyx(matrix))
+        R = LOCK_MATRIX[sign]                           # Rz(0.7) Ry(±π/2) Rx(-0.4)
+        no_branch = NO_BRANCH_AT_LOCK[sign]
+        for matrix in (R, _rounded_past_one(R, sign)):  # rounding can push |R[2, 0]| a hair above 1
+            got = _require_angles(matrix_to_euler_zyx(matrix.copy()))
             error = _rebuild_error(got, matrix)
             if abs(got[2]) > 1e-12:
-                if np.max(np.abs(_wrapped(got - _naive_angles(matrix)))) <= 1e-12:
+                if np.max(np.abs(_wrapped(got - no_branch))) <= 1e-12:
                     hint = NO_LOCK_BRANCH_HINT
                 elif error <= REBUILD_TOL:
                     hint = LOCK_CONVENTION_HINT
                 else:
-                    hint = _extraction_hint(got, matrix)
+                    hint = _extraction_hint(got, matrix, sign * HALF_PI, no_branch)
                 raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the roll is {got[2]:.4f}", hint)
             if error > REBUILD_TOL:
                 raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the angles {fmt(got)} rebuild R only "
-                               f"to {error:.2g}", _extraction_hint(got, matrix))
+                               f"to {error:.2g}", _extraction_hint(got, matrix, sign * HALF_PI, no_branch))
 
 
 @public_check("matrix_to_euler_zyx", "stays exact just next to the lock (pitch = ±(π/2 - 1e-9))")
 def _(matrix_to_euler_zyx):
     for sign in (1.0, -1.0):
-        R = Rotation.from_euler("ZYX", [2.2, sign * (HALF_PI - 1e-9), -0.9]).as_matrix()
-        got = _require_angles(matrix_to_euler_zyx(R))
+        R = NEAR_LOCK_MATRIX[sign]                      # scipy's 'ZYX' [2.2, ±(π/2 - 1e-9), -0.9]
+        got = _require_angles(matrix_to_euler_zyx(R.copy()))
         error = _rebuild_error(got, R)
         if error > REBUILD_TOL:
-            raise Mismatch(f"the angles {fmt(got)} rebuild R only to {error:.2g}", _extraction_hint(got, R, near=True))
+            raise Mismatch(f"the angles {fmt(got)} rebuild R only to {error:.2g}",
+                           _extraction_hint(got, R, sign * (HALF_PI - 1e-9), NO_BRANCH_NEAR_LOCK[sign],
+                                            ASIN_PITCH_NEAR_LOCK[sign], near=True))
 
 
 # ---------------------------------------------------------------- euler_zyx_to_quat
@@ -221,15 +254,18 @@ def _same_quat(got, expected, tol=1e-9):
     return close(got, expected, tol) or close(got, -np.asarray(expected), tol)
 
 
-def _all_plus_quat(yaw, pitch, roll):
-    """The z-y-x formula with every mixed product added (the minus signs lost)."""
-    cy, sy, cp, sp, cr, sr = (f(a / 2) for a in (yaw, pitch, roll) for f in (np.cos, np.sin))
-    return np.array([cy * cp * cr + sy * sp * sr, cy * cp * sr + sy * sp * cr,
-                     cy * sp * cr + sy * cp * sr, sy * cp * cr + cy * sp * sr])
+# mistake "every mixed product of the half-angle formula added (the minus signs lost)" at the checks' angles
+ALL_PLUS_QUAT = {
+    (0.3, -0.4, 1.1): np.array([0.8106307378338158, 0.4812056554334095, -0.09091621275834293,
+                                0.022184271872579528]),
+    (0.9, -0.5, 1.3): np.array([0.6294213612575311, 0.44232920676446297, 0.07770496842533611, 0.2006844453230425]),
+    (-2.4, 1.1, 0.2): np.array([0.2587402246826965, -0.4538907052376294, 0.10912730781794047, -0.7717081288877795]),
+}
 
 
 def _norm_hint(q, angles):
-    if _same_quat(q, _all_plus_quat(*angles)):
+    all_plus = ALL_PLUS_QUAT.get(tuple(angles))
+    if all_plus is not None and _same_quat(q, all_plus):
         return ("the mixed products lost their minus signs: w = c c c + s s s, x = c c s - s s c, "
                 "y = c s c + s c s, z = s c c - c s s (c, s of yaw/2, pitch/2, roll/2 in that order)")
     return "a rotation quaternion has unit length: q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) is a product of unit quaternions"
@@ -276,7 +312,7 @@ def _(euler_zyx_to_quat):
         R = _quat_to_matrix(q)
         if close(R, _zyx(yaw, pitch, roll), 1e-9):
             continue
-        if close(R, Exp([roll, 0.0, 0.0]) @ Exp([0.0, pitch, 0.0]) @ Exp([0.0, 0.0, yaw]), 1e-9):
+        if close(R, Rotation.from_euler("zyx", [yaw, pitch, roll]).as_matrix(), 1e-9):     # Rx Ry Rz, extrinsic
             raise Mismatch("the factors are multiplied as q_x ⊗ q_y ⊗ q_z",
                            "q_x ⊗ q_y ⊗ q_z is the extrinsic reading; the course's order is "
                            "q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll), like the matrices")
@@ -295,23 +331,43 @@ QUAT_ASIN_HINT = ("the lecture's formulas lose digits next to the lock: asin(2(w
                   "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums w ± y, x + z, z - x")
 
 
-def _lecture_angles(q, normalise=True):
-    """(yaw, pitch, roll) of the lecture's atan2/asin formulas (asin clipped)."""
-    q = np.asarray(q, dtype=float)
-    w, x, y, z = q / np.linalg.norm(q) if normalise else q
-    return np.array([np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)),
-                     np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
-                     np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))])
+# Fixed quaternions [w, x, y, z] at and next to the lock, stored bit for bit (as the matrices above):
+# scipy's 'ZYX' [-1.9, ±π/2, 0.6] and [0.5, ±(π/2 - 1e-9), 2.6]
+QUAT_AT_LOCK = {
+    1.0: np.array([0.22296658070945657, 0.6710334595880695, 0.2229665807094565, -0.6710334595880696]),
+    -1.0: np.array([0.5629162523467828, -0.4279314113778668, -0.5629162523467828, -0.42793141137786694]),
+}
+QUAT_NEAR_LOCK = {
+    1.0: np.array([0.35183586209368856, 0.6133608453297148, 0.35183586207898443, -0.6133608446227607]),
+    -1.0: np.array([0.014704163929091157, 0.7069538796851869, -0.014704163577255208, 0.7069538790718259]),
+}
+# mistake "the lecture's atan2/asin formulas (asin clipped), no lock branch" at those q: q normalised, q as given
+LECTURE_AT_LOCK = {
+    1.0: (np.array([-1.5707963267948966, 1.5707963118937354, 0.24497866312686414]),
+          np.array([-1.5707963267948966, 1.5707963118937354, 0.24497866312686414])),
+    -1.0: (np.array([-2.677945044588987, -1.5707963267948966, 1.5707963267948966]),
+           np.array([-1.5707963267948966, -1.5707963267948966, 0.7853981633974483])),
+}
+LECTURE_NEAR_LOCK = {
+    1.0: (np.array([0.5000000050637824, 1.5707963267948966, 2.6000000410265174]),
+          np.array([0.5000000050637824, 1.5707963267948966, 2.6000000410265174])),
+    -1.0: (np.array([0.5000001084729054, -1.5707963267948966, 2.6000000202160125]),
+           np.array([0.49999994574742324, -1.5707963057214724, 2.5999999087246577])),
+}
 
 
-def _quat_hint(angles, q, at_lock=False):
-    """The mistake behind these angles of q (each candidate computed from q), or a general hint."""
+def _quat_hint(angles, q, lecture_angles=(), at_lock=False):
+    """The mistake behind these angles of q, or a general hint.
+
+    ``lecture_angles``: the lecture formulas' angles at q (stored values, given at and next to the lock only: elsewhere
+    they are the right angles, and a (roll, pitch, yaw) return is caught by ``_angles_hint``).
+    """
     hint = _angles_hint(angles, _quat_to_matrix(q))
     if hint:
         return hint
     if _rebuild_error(angles, Rotation.from_quat(q).as_matrix()) < 1e-6:
         return "q was read as scalar-last [x, y, z, w]: the course's quaternions are [w, x, y, z]"
-    for lecture in (_lecture_angles(q), _lecture_angles(q, normalise=False)):
+    for lecture in lecture_angles:
         if np.max(np.abs(_wrapped(np.asarray(angles)[::-1] - lecture))) <= 1e-9:
             return "the angles come back as (roll, pitch, yaw): return (yaw, pitch, roll)"
         if np.max(np.abs(_wrapped(angles - lecture))) <= 1e-9:
@@ -341,31 +397,44 @@ def _(quat_to_euler_zyx):
 @public_check("quat_to_euler_zyx", "at gimbal lock (pitch = ±π/2): no NaN, roll = 0, the same rotation")
 def _(quat_to_euler_zyx):
     for sign in (1.0, -1.0):
-        q = Rotation.from_euler("ZYX", [-1.9, sign * HALF_PI, 0.6]).as_quat(scalar_first=True)
+        q = QUAT_AT_LOCK[sign]                          # scipy's 'ZYX' [-1.9, ±π/2, 0.6]
         R = _quat_to_matrix(q)
-        got = _require_angles(quat_to_euler_zyx(q))
+        got = _require_angles(quat_to_euler_zyx(q.copy()))
         error = _rebuild_error(got, R)
         if abs(got[2]) > 1e-12:
             hint = ("at the lock only yaw ∓ roll is defined and these angles do give the rotation: the course sets "
                     "roll = 0 and gives the whole turn to yaw") if error <= REBUILD_TOL else \
-                _quat_hint(got, q, at_lock=True)
+                _quat_hint(got, q, LECTURE_AT_LOCK[sign], at_lock=True)
             raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the roll is {got[2]:.4f}", hint)
         if error > REBUILD_TOL:
             raise Mismatch(f"the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
-                           _quat_hint(got, q, at_lock=True))
+                           _quat_hint(got, q, LECTURE_AT_LOCK[sign], at_lock=True))
 
 
 @public_check("quat_to_euler_zyx", "stays exact just next to the lock (pitch = ±(π/2 - 1e-9))")
 def _(quat_to_euler_zyx):
     for sign in (1.0, -1.0):
-        q = Rotation.from_euler("ZYX", [0.5, sign * (HALF_PI - 1e-9), 2.6]).as_quat(scalar_first=True)
-        got = _require_angles(quat_to_euler_zyx(q))
+        q = QUAT_NEAR_LOCK[sign]                        # scipy's 'ZYX' [0.5, ±(π/2 - 1e-9), 2.6]
+        got = _require_angles(quat_to_euler_zyx(q.copy()))
         error = _rebuild_error(got, _quat_to_matrix(q))
         if error > REBUILD_TOL:
-            raise Mismatch(f"the angles {fmt(got)} rebuild the rotation only to {error:.2g}", _quat_hint(got, q))
+            raise Mismatch(f"the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
+                           _quat_hint(got, q, LECTURE_NEAR_LOCK[sign]))
 
 
 # ---------------------------------------------------------------- euler_rates_matrix
+# mistakes at pitch = 0.7, roll = -1.1 (the finite-difference check's attitude): columns in the order
+# [roll, pitch, yaw]; the axes expressed with Rx(roll) instead of Rx(roll)ᵀ; Eᵀ
+RATES_COLUMNS_REVERSED = np.array([[1.0, 0.0, -0.644217687237691],
+                                   [0.0, 0.4535961214255773, -0.681632986593423],
+                                   [0.0, 0.8912073600614354, 0.34692944965489897]])
+RATES_RX_NOT_TRANSPOSED = np.array([[-0.644217687237691, 0.0, 1.0],
+                                    [0.681632986593423, 0.4535961214255773, 0.0],
+                                    [0.34692944965489897, -0.8912073600614354, 0.0]])
+RATES_TRANSPOSED = np.array([[-0.644217687237691, -0.681632986593423, 0.34692944965489897],
+                             [0.0, 0.4535961214255773, 0.8912073600614354],
+                             [1.0, 0.0, 0.0]])
+
 @public_check("euler_rates_matrix", "at zero angles the three rates spin about z, y and x")
 def _(euler_rates_matrix):
     got = require_shape(euler_rates_matrix(0.0, 0.0), (3, 3))
@@ -391,14 +460,12 @@ def _(euler_rates_matrix):
     if close(E_got @ rates, world, 1e-7):
         raise Mismatch("E @ rates gives the angular velocity in the world frame",
                        "the course's E gives body rates: [ω_b]× = Rᵀ dR/dt")
-    pitch, roll = angles[1], angles[2]
-    cp, sp, cr, sr = np.cos(pitch), np.sin(pitch), np.cos(roll), np.sin(roll)
-    right = np.array([[-sp, 0.0, 1.0], [cp * sr, cr, 0.0], [cp * cr, -sr, 0.0]])
     candidates = [
-        (right[:, ::-1], "the columns are in the order [roll, pitch, yaw]: E multiplies [yaw_rate, pitch_rate, roll_rate]"),
-        (np.array([[-sp, 0.0, 1.0], [-cp * sr, cr, 0.0], [cp * cr, sr, 0.0]]),
+        (RATES_COLUMNS_REVERSED,
+         "the columns are in the order [roll, pitch, yaw]: E multiplies [yaw_rate, pitch_rate, roll_rate]"),
+        (RATES_RX_NOT_TRANSPOSED,
          "the roll signs are flipped: express the axes in the body frame with Rx(roll)ᵀ, not Rx(roll)"),
-        (right.T, "looks like the transpose of E"),
+        (RATES_TRANSPOSED, "looks like the transpose of E"),
         (np.eye(3), "E = I treats the Euler-angle rates as body rates; they are not: each rate spins about "
                     "its own axis, seen in the body frame"),
     ]
