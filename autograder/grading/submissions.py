@@ -85,23 +85,34 @@ def _stubs(filename):
     return {cells.grade_id(c): _normalised(cells.source_text(c)) for c in nb.cells if cells.is_answer_cell(c)}
 
 
-def _answers(nb, names):
-    """``{exercise: source}`` for the exercises of ``names`` this notebook holds (by grade_id, else by def)."""
-    found = {}
+def _code_cells(nb):
+    """``[(grade_id, source, names of the functions it defines)]`` for a notebook's code cells, check
+    cells excepted; each cell is parsed once (and only if it can define a function)."""
+    found = []
     for cell in nb.cells:
         if cell.get("cell_type") != "code" or cells.is_check_cell(cell):
             continue
         source = cells.source_text(cell)
-        if cells.grade_id(cell) in names:
-            found[cells.grade_id(cell)] = source
+        defined = ()
+        if "def" in source:
+            try:
+                defined = tuple(node.name for node in ast.parse(source).body if isinstance(node, ast.FunctionDef))
+            except (SyntaxError, ValueError):
+                pass
+        found.append((cells.grade_id(cell), source, defined))
+    return found
+
+
+def _answers(code_cells, names):
+    """``{exercise: source}`` for the exercises of ``names`` these cells hold (by grade_id, else by def)."""
+    found = {}
+    for grade_id, source, defined in code_cells:
+        if grade_id in names:
+            found[grade_id] = source
             continue
-        try:
-            tree = ast.parse(source)
-        except (SyntaxError, ValueError):
-            continue
-        for node in tree.body:
-            if isinstance(node, ast.FunctionDef) and node.name in names:
-                found.setdefault(node.name, source)
+        for name in defined:
+            if name in names:
+                found.setdefault(name, source)
     return found
 
 
@@ -129,7 +140,7 @@ def match_lessons(folder, catalog, notebooks=None):
     readable, unreadable = {}, []
     for path in notebooks:
         try:
-            readable[path] = read_submission(path, root=folder)
+            readable[path] = _code_cells(read_submission(path, root=folder))
         except UnreadableNotebook:
             unreadable.append(path)
     files = LessonFiles()
@@ -138,8 +149,8 @@ def match_lessons(folder, catalog, notebooks=None):
         names = {e.name for e in lesson.exercises}
         stubs = _stubs(lesson.filename)
         candidates = []
-        for path, nb in readable.items():
-            answers = _answers(nb, names)
+        for path, code_cells in readable.items():
+            answers = _answers(code_cells, names)
             if answers:
                 work = sum(1 for name, source in answers.items() if _normalised(source) != stubs.get(name))
                 candidates.append((work, len(answers), path.name == lesson.filename, path))
