@@ -20,6 +20,8 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
+from coursekit.diagnose import explains
+
 from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
                       random_rotations, rotation_problem, shape_problem)
 
@@ -64,31 +66,20 @@ def _nearly_identities():
 
 
 # ---------------------------------------------------------------- hat
-def _explains(got, candidate, truth):
-    """True when ``candidate`` (what a known mistake returns) accounts for ``got``'s error from ``truth``.
-
-    ``got`` must be much closer to the candidate than to the truth: within a thousandth of its distance
-    from the truth (and of the candidate's own distance from the truth), with a rounding floor.
-    """
-    got, candidate, truth = (np.asarray(x, dtype=float) for x in (got, candidate, truth))
-    if got.shape != candidate.shape or not np.all(np.isfinite(candidate)):
-        return False
-    gap = float(np.max(np.abs(candidate - truth)))
-    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + 1e-15
 
 
 def _hat_hint(W, w):
     """Name the slip behind a wrong hat(w) = ``W``, by comparing with what each slip returns."""
     x, y, z = np.asarray(w, dtype=float)
     truth = _skew(w)
-    if _explains(W, truth.T, truth):
+    if explains(W, truth.T, truth):
         return "the signs are swapped (the transpose, -[w]×): the top row is [0, -w3, w2], so [w]× v = w × v"
-    if _explains(W, np.array([[0.0, z, y], [z, 0.0, x], [y, x, 0.0]]), truth):
+    if explains(W, np.array([[0.0, z, y], [z, 0.0, x], [y, x, 0.0]]), truth):
         return "the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
-    if _explains(W, np.diag([x, y, z]), truth):
+    if explains(W, np.diag([x, y, z]), truth):
         return "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
     for order in ((2, 1, 0), (1, 0, 2), (0, 2, 1), (1, 2, 0), (2, 0, 1)):
-        if _explains(W, _skew(np.asarray(w, dtype=float)[list(order)]), truth):
+        if explains(W, _skew(np.asarray(w, dtype=float)[list(order)]), truth):
             return ("the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3 "
                     "(W = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]])")
     if np.max(np.abs(W + W.T)) > 0.0:
@@ -130,14 +121,14 @@ def test_hat_accepts_lists_and_zero(student):
 def _vee_hint(got, W, w):
     """Name the slip behind a wrong vee(W) = ``got`` for the skew-symmetric ``W`` = [w]×."""
     w = np.asarray(w, dtype=float)
-    if _explains(got, -w, w):
+    if explains(got, -w, w):
         return "the negative of w: read w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0] (the entries with a plus sign)"
-    if _explains(got, np.array([W[0, 1], W[0, 2], W[1, 2]]), w):
+    if explains(got, np.array([W[0, 1], W[0, 2], W[1, 2]]), w):
         return ("read the entries above the diagonal in row order (W[0, 1], W[0, 2], W[1, 2] = -w3, w2, -w1): "
                 "w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]")
-    if _explains(got, 2.0 * w, w):
+    if explains(got, 2.0 * w, w):
         return "twice w: W - Wᵀ = 2[w]×, so take half of it (or read the entries of W directly)"
-    if _explains(got, np.diag(W), w):
+    if explains(got, np.diag(W), w):
         return "returned the diagonal of W, which is zero: w sits off the diagonal (w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0])"
     return "vee reads w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]"
 
@@ -172,15 +163,15 @@ def test_vee_accepts_lists(student):
 # ---------------------------------------------------------------- bracket
 def _bracket_hint(got, A, B):
     truth = A @ B - B @ A
-    if _explains(got, A @ B + B @ A, truth):
+    if explains(got, A @ B + B @ A, truth):
         return "that is AB + BA: the bracket is the difference AB - BA"
-    if _explains(got, B @ A - A @ B, truth):
+    if explains(got, B @ A - A @ B, truth):
         return "the order is reversed: [A, B] = AB - BA"
-    if _explains(got, A * B - B * A, truth):
+    if explains(got, A * B - B * A, truth):
         return "got zero: * multiplies entry by entry (A * B = B * A), use @ for the matrix product"
-    if _explains(got, A @ B, truth):
+    if explains(got, A @ B, truth):
         return "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
-    if _explains(got, B @ A, truth):
+    if explains(got, B @ A, truth):
         return "that is only BA: the bracket is AB - BA"
     return "[A, B] = A @ B - B @ A, with matrix products"
 
@@ -214,8 +205,8 @@ def test_bracket_alternating(student):
     A, B = rng.normal(size=(2, 3, 3))
     same = expect_array(student.bracket(A, A), (3, 3), "bracket(A, A)")
     if not np.max(np.abs(same)) <= 1e-12:
-        hint = ("that is AA + AA: " if _explains(same, 2 * A @ A, np.zeros((3, 3))) else
-                "that is AA: " if _explains(same, A @ A, np.zeros((3, 3))) else "")
+        hint = ("that is AA + AA: " if explains(same, 2 * A @ A, np.zeros((3, 3))) else
+                "that is AA: " if explains(same, A @ A, np.zeros((3, 3))) else "")
         expect_close(same, np.zeros((3, 3)), 1e-12, "bracket(A, A)",
                      hint + "the bracket of a matrix with itself is AA - AA = 0")
     ab = expect_array(student.bracket(A, B), (3, 3), "bracket(A, B)")
@@ -234,16 +225,16 @@ def _series_hint(student_value, W, n):
             term = term @ W / (k + 1 if factorial else 1)
         return total
     truth = partial(0, n - 1)
-    if _explains(student_value, partial(1, n), truth) or _explains(student_value, partial(1, n - 1), truth):
+    if explains(student_value, partial(1, n), truth) or explains(student_value, partial(1, n - 1), truth):
         return "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
-    if _explains(student_value, partial(0, n), truth):
+    if explains(student_value, partial(0, n), truth):
         return "one term too many: n_terms terms means k = 0 … n_terms - 1"
-    if n >= 2 and _explains(student_value, partial(0, n - 2), truth):
+    if n >= 2 and explains(student_value, partial(0, n - 2), truth):
         return "one term too few: n_terms terms means k = 0 … n_terms - 1"
     entrywise = sum(W ** k / np.prod(np.arange(1, k + 1)) for k in range(n))
-    if _explains(student_value, entrywise, truth):
+    if explains(student_value, entrywise, truth):
         return "W ** k is an entry-wise power: use the matrix product (term = term @ W / k)"
-    if _explains(student_value, partial(0, n - 1, factorial=False), truth):
+    if explains(student_value, partial(0, n - 1, factorial=False), truth):
         return "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
     return "sum the terms W^k / k! for k = 0 … n_terms - 1, with matrix products"
 
@@ -288,14 +279,14 @@ def _exp_hint(got, expected, w):
     if 0.0 < angle and np.array_equal(got, np.eye(3)):
         return ("returned exactly I for a tiny angle: R - I ≈ [w]× is the whole rotation; "
                 "use the Taylor coefficients sin θ/θ ≈ 1 - θ²/6, (1 - cos θ)/θ² ≈ 1/2 - θ²/24")
-    if _explains(got, expected.T, expected):
+    if explains(got, expected.T, expected):
         return "looks like the inverse rotation: check the sign of the sin θ term (R = I + sin θ K + ...)"
     if angle > 0.0:
         K = _skew(w / angle)
         W = _skew(w)
-        if _explains(got, np.eye(3) + (1 - np.cos(angle)) * K + np.sin(angle) * K @ K, expected):
+        if explains(got, np.eye(3) + (1 - np.cos(angle)) * K + np.sin(angle) * K @ K, expected):
             return "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
-        if _explains(got, np.eye(3) + np.sin(angle) * W + (1 - np.cos(angle)) * W @ W, expected):
+        if explains(got, np.eye(3) + np.sin(angle) * W + (1 - np.cos(angle)) * W @ W, expected):
             return "Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin θ and cos θ)"
     problem = rotation_problem(got, 1e-9)
     if problem:
@@ -382,20 +373,20 @@ def _log_hint(got, R, expected):
     if angle == 0.0:
         return "the identity's log is the zero vector" if np.max(np.abs(got)) > 0.0 else ""
     unit = expected / angle
-    if _explains(got, -expected, expected):
+    if explains(got, -expected, expected):
         return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
-    if _explains(got, 2.0 * expected, expected):
+    if explains(got, 2.0 * expected, expected):
         return "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
-    if angle < 0.5 and _explains(got, a, expected):
+    if angle < 0.5 and explains(got, a, expected):
         return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle ** 3 / 6:.1e}: you dropped the θ²/6 term, "
                 "keep θ/sin θ ≈ 1 + θ²/6 for small θ")
-    if _explains(got, theta_acos * unit, expected):
+    if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
             return "returned zero for a tiny rotation: arccos rounds tiny angles to 0; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
         return (f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
                 "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
     no_branch = [t / np.sin(t) * a for t in (theta, theta_acos) if np.sin(t) != 0.0]
-    if any(_explains(got, candidate, expected) for candidate in no_branch) or (
+    if any(explains(got, candidate, expected) for candidate in no_branch) or (
             angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
                 "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ")
@@ -482,7 +473,7 @@ def test_log_so3_round_trips(student):
         R = _exp(w)
         got = _log(student, R, "log_so3(Exp(w))")
         hint = _log_hint(got, R, expected)
-        if _explains(got, w, expected):
+        if explains(got, w, expected):
             hint = "the log returns the angle in [0, π]: here 2π - |w| about -u"
         expect_close(got, expected, 1e-10, f"log_so3(Exp(w)) for |w| = {angle:.3f} > π", hint)
 
@@ -497,9 +488,9 @@ def test_log_so3_accepts_lists(student):
 def _theta_hint(theta, R, true_angle):
     """Name the slip behind a wrong angle θ from axis_angle(R): degrees, or θ from arccos."""
     _, c, _, theta_acos = _log_parts(R)
-    if _explains(theta, np.degrees(true_angle), true_angle):
+    if explains(theta, np.degrees(true_angle), true_angle):
         return "θ is in degrees (57.3 × the value in radians): the course works in radians"
-    if _explains(theta, theta_acos, true_angle):
+    if explains(theta, theta_acos, true_angle):
         if theta_acos == 0.0:
             return "arccos loses tiny angles (here it rounds θ to 0): use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
         return (f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
@@ -513,7 +504,7 @@ def _axis_hint(u, R, axis):
     if np.linalg.norm(a) <= 1e-9 and (np.linalg.norm(a) == 0.0 or abs(abs(u @ a) / np.linalg.norm(a) - 1.0) <= 1e-6):
         return ("at θ = π, R - Rᵀ is zero up to rounding and carries no axis: take u from (R + I)/2, "
                 "the column with the largest diagonal entry (sign from R - Rᵀ just below π)")
-    if _explains(u, -axis, axis):
+    if explains(u, -axis, axis):
         return "u points the wrong way: vee(R - Rᵀ)/2 = sin θ u points along +u"
     return "u = vee(R - Rᵀ)/(2 sin θ) away from π; near π take it from (R + Rᵀ)/2, with its sign from R - Rᵀ"
 

@@ -18,6 +18,8 @@ for two rotations, so they earn 3 of 7).
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit.diagnose import explains
+
 from .helpers import (exercise, expect, expect_array, expect_close, expect_same_with_lists, random_rotations,
                       rotation_problem)
 
@@ -64,13 +66,7 @@ def _expect_rotation(R, what, tol=1e-8, hint=""):
 
 # ---------------------------------------------------------------- diagnosis
 def _explains(got, candidate, truth):
-    """True when ``candidate`` (what a known mistake returns) accounts for ``got``'s error from ``truth``:
-    ``got`` is within a thousandth of the candidate's distance from the truth of the candidate."""
-    got, candidate, truth = (np.asarray(x, dtype=float) for x in (got, candidate, truth))
-    if got.shape != candidate.shape or not np.all(np.isfinite(candidate)):
-        return False
-    gap = float(np.max(np.abs(candidate - truth)))
-    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + 1e-12
+    return explains(got, candidate, truth, floor=1e-12)
 
 
 def _hat(v):

@@ -16,11 +16,11 @@ __all__ = [
     "rotation_vector_hint",
     "pose_problem",
     "close",
+    "explains",
     "same_rotation_quat",
     "quaternion_hint",
     "ALLCLOSE_HINT",
     "LISTS_HINT",
-    "lecture_forward_jacobian",
     "jacobian_error_allowed",
     "JACOBIAN_STEP_HINT",
 ]
@@ -160,6 +160,26 @@ def pose_problem(T, tol=1e-6):
     if problem:
         return f"the top-left 3×3 block is not a rotation: {problem}"
     return None
+
+
+def explains(got, candidate, truth, floor=1e-15):
+    """True when ``candidate`` (what a known slip returns) accounts for ``got``'s error from ``truth``.
+
+    ``got`` must be much closer to the candidate than the candidate is to the
+    truth: within a thousandth of that distance, plus a rounding ``floor``. So a
+    hint never fires where the slip and the right answer agree.
+
+    Examples
+    --------
+    >>> R = np.eye(3)
+    >>> explains(-R, -R, R), explains(R, -R, R)
+    (True, False)
+    """
+    got, candidate, truth = (np.asarray(x, dtype=float) for x in (got, candidate, truth))
+    if got.shape != candidate.shape or not np.all(np.isfinite(candidate)):
+        return False
+    gap = float(np.max(np.abs(candidate - truth)))
+    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + floor
 
 
 def same_rotation_quat(a, b, tol=1e-9):

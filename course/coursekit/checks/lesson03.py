@@ -14,7 +14,7 @@ contains no way to compute the exercises' answers.
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, rotation_problem
+from ..diagnose import close, explains, rotation_problem
 from ..lie import Exp
 from .common import fmt, off_by, require_same_with_lists, require_shape
 
@@ -133,13 +133,6 @@ def _rot_z(angle):
     return Exp([0.0, 0.0, angle])
 
 
-def _explains(got, candidate, truth):
-    """True when ``candidate`` (what a known slip returns) accounts for ``got``'s error from ``truth``."""
-    got, candidate, truth = (np.asarray(x, dtype=float) for x in (got, candidate, truth))
-    if got.shape != candidate.shape or not np.all(np.isfinite(candidate)):
-        return False
-    gap = float(np.max(np.abs(candidate - truth)))
-    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + 1e-15
 
 
 def _trace_outside(R):
@@ -151,13 +144,13 @@ def _trace_outside(R):
 def _hat_hint(W):
     """The slip behind a wrong hat(W_SAMPLE) = ``W``."""
     truth = SKEW_SAMPLE
-    if _explains(W, truth.T, truth):
+    if explains(W, truth.T, truth):
         return "the signs are swapped (the transpose, -[w]×): the top row is [0, -w3, w2]"
-    if _explains(W, HAT_SYMMETRIC_AT_W, truth):
+    if explains(W, HAT_SYMMETRIC_AT_W, truth):
         return "the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
-    if _explains(W, np.diag(W_SAMPLE), truth):
+    if explains(W, np.diag(W_SAMPLE), truth):
         return "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
-    if any(_explains(W, permuted, truth) for permuted in HAT_PERMUTED_AT_W):
+    if any(explains(W, permuted, truth) for permuted in HAT_PERMUTED_AT_W):
         return "the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3"
     return "compare entry by entry with [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
 
@@ -181,14 +174,14 @@ def _(hat):
 def _vee_hint(got):
     """The slip behind a wrong vee(SKEW_SAMPLE) = ``got`` (the truth is W_SAMPLE)."""
     w = W_SAMPLE
-    if _explains(got, -w, w):
+    if explains(got, -w, w):
         return "the negative of w: read w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0] (the entries with a plus sign)"
-    if _explains(got, VEE_UPPER_ENTRIES, w):
+    if explains(got, VEE_UPPER_ENTRIES, w):
         return ("read the entries above the diagonal in row order (W[0, 1], W[0, 2], W[1, 2] = -w3, w2, -w1): "
                 "w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]")
-    if _explains(got, 2.0 * w, w):
+    if explains(got, 2.0 * w, w):
         return "twice w: W - Wᵀ = 2[w]×, so take half of it (or read the entries of W directly)"
-    if _explains(got, np.diag(SKEW_SAMPLE), w):
+    if explains(got, np.diag(SKEW_SAMPLE), w):
         return "returned the diagonal of W, which is zero: w sits off the diagonal (w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0])"
     return "vee reads w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]"
 
@@ -209,15 +202,15 @@ def _(vee):
 # ---------------------------------------------------------------- bracket
 def _bracket_hint(got, truth, slips):
     """The slip behind a wrong bracket = ``got``; ``slips`` holds what each slip returns for these A, B."""
-    if _explains(got, slips["anticommutator"], truth):
+    if explains(got, slips["anticommutator"], truth):
         return "that is AB + BA: the bracket is the difference AB - BA"
-    if _explains(got, -truth, truth):
+    if explains(got, -truth, truth):
         return "the order is AB - BA, not BA - AB"
-    if _explains(got, slips["entrywise"], truth):
+    if explains(got, slips["entrywise"], truth):
         return "got zero: * multiplies entry by entry (A * B = B * A), use @ for the matrix product"
-    if _explains(got, slips["AB"], truth):
+    if explains(got, slips["AB"], truth):
         return "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
-    if _explains(got, slips["BA"], truth):
+    if explains(got, slips["BA"], truth):
         return "that is only BA: the bracket is AB - BA"
     return "[A, B] = A @ B - B @ A, with matrix products"
 
@@ -241,15 +234,15 @@ def _(bracket):
 # ---------------------------------------------------------------- exp_series
 def _series_hint(got, truth, slips):
     """The slip behind a wrong exp_series = ``got``; ``slips`` holds what each slip returns for this W and n."""
-    if any(_explains(got, candidate, truth) for candidate in slips.get("no_identity", ())):
+    if any(explains(got, candidate, truth) for candidate in slips.get("no_identity", ())):
         return "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
-    if "one_extra" in slips and _explains(got, slips["one_extra"], truth):
+    if "one_extra" in slips and explains(got, slips["one_extra"], truth):
         return "one term too many: n_terms terms means k = 0 … n_terms - 1"
-    if "one_short" in slips and _explains(got, slips["one_short"], truth):
+    if "one_short" in slips and explains(got, slips["one_short"], truth):
         return "one term too few: n_terms terms means k = 0 … n_terms - 1"
-    if _explains(got, slips["entrywise"], truth):
+    if explains(got, slips["entrywise"], truth):
         return "W ** k is an entry-wise power: use the matrix product (term = term @ W / k)"
-    if _explains(got, slips["no_factorial"], truth):
+    if explains(got, slips["no_factorial"], truth):
         return "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
     return "sum the terms W^k / k! for k = 0 … n_terms - 1, with matrix products"
 
@@ -295,11 +288,11 @@ def _exp_hint(got, w, slips):
     expected = Exp(w)
     if angle > 0.0 and np.array_equal(got, np.eye(3)):
         return f"returned exactly I: the turn of {angle:.3g} rad was dropped; use the Taylor coefficients, never return I"
-    if _explains(got, expected.T, expected):
+    if explains(got, expected.T, expected):
         return "got the inverse rotation: check the sign of the sin θ term, R = I + sin θ K + ..."
-    if _explains(got, slips["swapped"], expected):
+    if explains(got, slips["swapped"], expected):
         return "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
-    if _explains(got, slips["unnormalised"], expected):
+    if explains(got, slips["unnormalised"], expected):
         return "Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin θ and cos θ)"
     return "R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]× and θ = |w|"
 
@@ -350,20 +343,20 @@ def _log_hint(got, R, expected, slips):
     if angle == 0.0:
         return "the identity's log is the zero vector"
     unit = expected / angle
-    if _explains(got, -expected, expected):
+    if explains(got, -expected, expected):
         return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
-    if _explains(got, 2.0 * expected, expected):
+    if explains(got, 2.0 * expected, expected):
         return "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
-    if angle < 0.5 and _explains(got, slips["sin_angle_axis"], expected):
+    if angle < 0.5 and explains(got, slips["sin_angle_axis"], expected):
         return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle ** 3 / 6:.1e}: you dropped the θ²/6 term, "
                 "keep θ/sin θ ≈ 1 + θ²/6 for small θ")
     theta_acos = slips["arccos_angle"]
-    if _explains(got, theta_acos * unit, expected):
+    if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
             return "returned zero for a tiny rotation: arccos rounds tiny angles to 0; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
         return (f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
                 "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
-    if any(_explains(got, candidate, expected) for candidate in slips.get("no_branch", ())) or (
+    if any(explains(got, candidate, expected) for candidate in slips.get("no_branch", ())) or (
             angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
                 "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ")
@@ -425,9 +418,9 @@ def _(log_so3):
 # ---------------------------------------------------------------- axis_angle
 def _theta_hint(theta, true_angle, theta_acos):
     """The slip behind a wrong angle ``theta``; ``theta_acos`` is what arccos of the trace gives for this R."""
-    if _explains(theta, np.degrees(true_angle), true_angle):
+    if explains(theta, np.degrees(true_angle), true_angle):
         return "θ is in degrees (57.3 × the value in radians): the course works in radians"
-    if _explains(theta, theta_acos, true_angle):
+    if explains(theta, theta_acos, true_angle):
         return (f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
                 "use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
     return "θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2), in radians, in [0, π]"

@@ -10,7 +10,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, rotation_problem
+from ..diagnose import close, explains, rotation_problem
 from ..lie import Exp, Log
 from .common import require_rotation, require_shape
 
@@ -32,12 +32,7 @@ def _cost(R, P, Q):
 
 
 def _explains(got, candidate, truth):
-    """True when ``candidate`` (what a known slip returns) accounts for ``got``'s error from ``truth``."""
-    got, candidate, truth = (np.asarray(x, dtype=float) for x in (got, candidate, truth))
-    if got.shape != candidate.shape or not np.all(np.isfinite(candidate)):
-        return False
-    gap = float(np.max(np.abs(candidate - truth)))
-    return gap > 0.0 and float(np.max(np.abs(got - candidate))) <= 1e-3 * gap + 1e-12
+    return explains(got, candidate, truth, floor=1e-12)
 
 
 # ---------------------------------------------------------------- align_svd
