@@ -375,24 +375,44 @@ def explore_step_size(figure=None, R=None, p=None):
 # Lesson 08: Gauss-Newton, one iteration at a time
 # ---------------------------------------------------------------------------------------------------------
 
-def _gauss_newton_path(P, Q, R0, iters):
-    """Gauss-Newton with the right perturbation, from coursekit.lie: the list [R0, R1, ..., R_iters]."""
+def _gauss_newton_path(align_gauss_newton, P, Q, R0, iters):
+    """``([R0, R1, ..., R_iters], problem)``: your ``align_gauss_newton`` run for 1, 2, ... iterations.
+
+    Stops at the first iteration count that raises or returns no 3×3 matrix;
+    ``problem`` then says why (else it is None).
+    """
     path = [np.asarray(R0, dtype=float)]
-    for _ in range(iters):
-        R = path[-1]
-        J = np.concatenate([R @ skew(p) for p in P])            # d(q - R Exp(δ) p)/dδ = R [p]×
-        r = (Q - P @ R.T).reshape(-1)
-        delta = np.linalg.lstsq(J, -r, rcond=None)[0]
-        path.append(R @ Exp(delta))
-    return path
+    for k in range(1, iters + 1):
+        try:
+            R = np.asarray(align_gauss_newton(P, Q, np.array(R0, dtype=float), iters=k), dtype=float)
+        except NotImplementedError:
+            return path, "write align_gauss_newton (the exercise above) to step through its iterations here"
+        except Exception as error:  # noqa: BLE001 - a student's function may fail in any way
+            return path, f"align_gauss_newton(..., iters={k}) raised {type(error).__name__}: {error}"
+        if R.shape != (3, 3) or not np.all(np.isfinite(R)):
+            return path, f"align_gauss_newton(..., iters={k}) returned no finite 3×3 matrix"
+        path.append(R)
+    return path, None
 
 
-def explore_gauss_newton(figure=None, P=None, Q=None):
-    """Step through Gauss-Newton iterations: where R_k sends the body directions, and the cost per step.
+def explore_gauss_newton(align_gauss_newton, figure=None, P=None, Q=None):
+    """Step through your Gauss-Newton iterations: where R_k sends the body directions, and the cost per step.
 
-    ``P`` holds body directions (rows) and ``Q`` the same directions measured in
-    the reference frame; without them the explorer makes 12 noisy ones. The
-    start sits ``start`` rad away from the best rotation.
+    Parameters
+    ----------
+    align_gauss_newton : callable
+        Your ``align_gauss_newton(P, Q, R0, iters)``; the explorer calls it with
+        ``iters`` = 1, 2, ... 8 from the same start to show each iterate.
+    figure : str, optional
+        The figure's number in the lesson.
+    P, Q : array_like, shape (N, 3), optional
+        Body directions (rows) and the same directions measured in the reference
+        frame; without them the explorer makes 12 noisy ones. The start sits
+        ``start`` rad away from the best rotation (scipy's ``align_vectors``).
+
+    Examples
+    --------
+    >>> explore_gauss_newton(align_gauss_newton, figure="2b")   # doctest: +SKIP
     """
     if P is None or Q is None:
         rng = np.random.default_rng(8)
@@ -401,8 +421,7 @@ def explore_gauss_newton(figure=None, P=None, Q=None):
         R_true = Exp([0.4, -0.9, 1.3])
         P = Q @ R_true + rng.normal(scale=0.01, size=Q.shape)
     P, Q = np.asarray(P, dtype=float), np.asarray(Q, dtype=float)
-    U, _, Vt = np.linalg.svd(Q.T @ P)
-    R_best = U @ np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ Vt
+    R_best = Rotation.align_vectors(Q, P)[0].as_matrix()   # the closed-form minimum, as a reference line
     axis = np.array([1.0, -2.0, 2.0]) / 3.0
     max_iters = 8
 
@@ -410,8 +429,8 @@ def explore_gauss_newton(figure=None, P=None, Q=None):
         return np.sum((Q - P @ R.T) ** 2)
 
     def draw(fig, iteration, start, static=False):
-        k = int(round(iteration))
-        path = _gauss_newton_path(P, Q, R_best @ Exp(start * axis), max_iters)
+        path, problem = _gauss_newton_path(align_gauss_newton, P, Q, R_best @ Exp(start * axis), max_iters)
+        k = min(int(round(iteration)), len(path) - 1)
         ax = fig.add_subplot(1, 2, 1, projection="3d")
         ax2 = fig.add_subplot(1, 2, 2)
         new_3d_axes(f"iteration {k}: $R_{{{k}}}\\,p_i$ against $q_i$", ax=ax, limit=1.15, zoom=0.85,
@@ -432,13 +451,14 @@ def explore_gauss_newton(figure=None, P=None, Q=None):
         finish_3d_axes(ax)
 
         costs = [cost(R) for R in path]
-        ax2.semilogy(range(max_iters + 1), costs, "o-", color="#0072B2", markersize=4,
+        ax2.semilogy(range(len(path)), costs, "o-", color="#0072B2", markersize=4,
                      label=f"start {start:.1f} rad away")
         ax2.semilogy([k], [costs[k]], "o", markersize=10, color="#D55E00", markeredgecolor="black")
         ax2.axhline(cost(R_best), color="0.3", linestyle="--", linewidth=1.1, label="closed-form minimum")
+        ax2.set_xlim(-0.3, max_iters + 0.3)
         ax2.set_xlabel("Gauss-Newton iteration $k$ (count)")
         ax2.set_ylabel(r"cost $\sum_i |q_i - R_k\,p_i|^2$ (unitless)")
-        ax2.set_title(f"cost {costs[k]:.3g} after {k} step(s)", fontsize=10)
+        ax2.set_title(problem or f"cost {costs[k]:.3g} after {k} step(s)", fontsize=10, wrap=True)
         ax2.grid(True, which="major", alpha=0.3)
         ax2.legend(fontsize=8.5)
         fig.suptitle(_title(figure, "Gauss-Newton on SO(3), one iteration at a time"))
