@@ -108,7 +108,6 @@ def expected_constants():
         "SKEW_SAMPLE": _hat(w),
         "HAT_SYMMETRIC_AT_W": np.array([[0.0, z, y], [z, 0.0, x], [y, x, 0.0]]),
         "HAT_PERMUTED_AT_W": [_hat(w[list(order)]) for order in L.PERMUTATIONS],
-        "VEE_UPPER_ENTRIES": np.array([W[0, 1], W[0, 2], W[1, 2]]),
         "E_X_HAT": _hat([1.0, 0.0, 0.0]), "E_Y_HAT": _hat([0.0, 1.0, 0.0]), "E_Z_HAT": _hat([0.0, 0.0, 1.0]),
         "BRACKET_2X2": L.A_2X2 @ L.B_2X2 - L.B_2X2 @ L.A_2X2,
         "BRACKET_SLIPS": {

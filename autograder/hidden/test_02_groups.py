@@ -17,6 +17,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.session import StudentError
+from coursekit.checks.lesson02 import commutes_slip_hint
 
 from .helpers import ALLCLOSE_HINT, Probe, Wrong, exercise, expect, expect_bool, random_rotations
 
@@ -208,10 +209,6 @@ def _about_axis(axis, angle):
     return Rotation.from_rotvec(angle * axis / np.linalg.norm(axis)).as_matrix()
 
 
-SAME_ORDER_HINT = "op(a, b) looks compared with itself: swap the arguments in the second product, op(b, a)"
-IGNORES_OP_HINT = "the verdict follows a @ b whatever op is given: compare op(a, b) with op(b, a)"
-EXACT_HINT = "A @ B and B @ A differ by ~1e-16 here: compare with tol, never with =="
-FIXED_TOL_HINT = "the verdict does not change with tol: compare with the tol argument, not a fixed number"
 
 
 def _commutes_slip(student):
@@ -242,17 +239,7 @@ def _commutes_slip(student):
                          tol=1e-9)
     except (StudentError, Wrong):
         return None
-    if big and cross:
-        return SAME_ORDER_HINT
-    if cross:
-        return IGNORES_OP_HINT
-    if not rounding and not loose:
-        return EXACT_HINT
-    if loose and strict:
-        return FIXED_TOL_HINT
-    if loose and not strict and rtol:
-        return ALLCLOSE_HINT
-    return None
+    return commutes_slip_hint(big, cross, rounding, loose, strict, rtol)
 
 
 def _expect_commutes(student, condition, reason, otherwise):

@@ -20,6 +20,7 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
+from coursekit.checks.lesson03 import vee_hint
 from coursekit.diagnose import explains
 
 from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
@@ -118,19 +119,6 @@ def test_hat_accepts_lists_and_zero(student):
 
 
 # ---------------------------------------------------------------- vee
-def _vee_hint(got, W, w):
-    """Name the slip behind a wrong vee(W) = ``got`` for the skew-symmetric ``W`` = [w]×."""
-    w = np.asarray(w, dtype=float)
-    if explains(got, -w, w):
-        return "the negative of w: read w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0] (the entries with a plus sign)"
-    if explains(got, np.array([W[0, 1], W[0, 2], W[1, 2]]), w):
-        return ("read the entries above the diagonal in row order (W[0, 1], W[0, 2], W[1, 2] = -w3, w2, -w1): "
-                "w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]")
-    if explains(got, 2.0 * w, w):
-        return "twice w: W - Wᵀ = 2[w]×, so take half of it (or read the entries of W directly)"
-    if explains(got, np.diag(W), w):
-        return "returned the diagonal of W, which is zero: w sits off the diagonal (w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0])"
-    return "vee reads w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]"
 
 
 @exercise("vee", weight=3)
@@ -139,7 +127,7 @@ def test_vee_inverts_hat(student):
     for w in np.random.default_rng(302).normal(size=(20, 3)):
         got = expect_array(student.vee(_skew(w)), (3,), "vee(W)")
         if not np.max(np.abs(got - w)) <= TOL:
-            expect_close(got, w, TOL, "vee([w]×)", _vee_hint(got, _skew(w), w))
+            expect_close(got, w, TOL, "vee([w]×)", vee_hint(got, _skew(w), w))
 
 
 @exercise("vee", weight=1)
@@ -151,7 +139,7 @@ def test_vee_is_linear(student):
     combined = expect_array(student.vee(W), (3,), "vee(2.5 A - 0.75 B)")
     if not np.max(np.abs(combined - (2.5 * x - 0.75 * y))) <= TOL:
         expect_close(combined, 2.5 * x - 0.75 * y, TOL, "vee(2.5 [x]× - 0.75 [y]×)",
-                     _vee_hint(combined, W, 2.5 * x - 0.75 * y))
+                     vee_hint(combined, W, 2.5 * x - 0.75 * y))
 
 
 @exercise("vee", weight=1)

@@ -20,6 +20,7 @@ from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child import probes
 
+from coursekit.checks.lesson06 import floor_hint
 from coursekit.diagnose import JACOBIAN_STEP_HINT, jacobian_error_allowed
 
 from .helpers import (Probe, Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
@@ -372,19 +373,6 @@ def _step_hint(got, exact, f, x, boxplus=None, fallback=JACOBIAN_STEP_HINT):
     return fallback
 
 
-def _floor_hint(x):
-    """Said when the columns with NaN or inf are exactly those where x_j = 0 (a relative step with no floor)."""
-    x = np.asarray(x, dtype=float)
-
-    def hint(value):
-        bad = ~np.all(np.isfinite(value), axis=0)
-        if value.ndim == 2 and value.shape[1] == x.size and np.any(bad) and np.array_equal(bad, x == 0.0):
-            return ("NaN exactly in the columns where x_j = 0: the relative step 1e-4·|x_j| is 0 there and the slope "
-                    "0/0; keep the floor, δ_j = max(|1e-4 x_j|, 1e-6)")
-        return ""
-    return hint
-
-
 def _matrix_entries_hint(value):
     if np.shape(value) in ((3, 9), (3, 4)):
         return ("one column per stored number: with a boxplus, differentiate with respect to the 3-vector δ "
@@ -399,7 +387,7 @@ def test_numerical_jacobian_vector_function(student):
         value = student.numerical_jacobian(Probe("smooth_vector_function"), x)
         expect(np.shape(value) != (3, 2), "returned shape 3×2 for f: R³ → R²: the Jacobian is transposed",
                "row i is output f_i, column j is input x_j: shape (len(f(x)), n)")
-        got = _array(value, (2, 3), f"numerical_jacobian(f, {fmt(x)})", _floor_hint(x))
+        got = _array(value, (2, 3), f"numerical_jacobian(f, {fmt(x)})", floor_hint(x))
         expected = probes.smooth_vector_function_jacobian(x)
         expect_close(got, expected, 2e-3 * (1.0 + np.max(np.abs(expected))), f"numerical_jacobian(f, {fmt(x)})",
                      _step_hint(got, expected, probes.smooth_vector_function, x))
@@ -422,7 +410,7 @@ def test_numerical_jacobian_step_rule(student, ref):
     """at least as accurate as forward differences with the lecture's steps δ_j = max(|1e-4 x_j|, 1e-6)"""
     for x in SMOOTH_POINTS:
         got = _array(student.numerical_jacobian(Probe("smooth_vector_function"), x), (2, 3),
-                     f"numerical_jacobian(f, {fmt(x)})", _floor_hint(x))
+                     f"numerical_jacobian(f, {fmt(x)})", floor_hint(x))
         _expect_accurate_jacobian(got, x, f"numerical_jacobian(f, {fmt(x)})", ref)
 
 
@@ -431,7 +419,7 @@ def test_numerical_jacobian_at_zero(student, ref):
     """works at x = 0 (no 0/0: the lecture's step has the floor 1e-6), as accurately as the lecture's rule"""
     x = np.zeros(3)
     got = _array(student.numerical_jacobian(Probe("smooth_vector_function"), x), (2, 3),
-                 "numerical_jacobian(f, 0)", _floor_hint(x))
+                 "numerical_jacobian(f, 0)", floor_hint(x))
     _expect_accurate_jacobian(got, x, "numerical_jacobian(f, 0)", ref)
 
 
@@ -513,7 +501,7 @@ def test_numerical_jacobian_shapes(student):
     """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation"""
     x = np.array([3.0, -0.2, 0.0, 1e-3, 40.0])
     got = _array(student.numerical_jacobian(Probe("identity_function"), x), (5, 5),
-                 "numerical_jacobian(identity, x in R⁵)", _floor_hint(x))
+                 "numerical_jacobian(identity, x in R⁵)", floor_hint(x))
     expect_close(got, np.eye(5), 1e-6, "numerical_jacobian of the identity map",
                  _step_hint(got, np.eye(5), probes.identity_function, x))
     R = random_rotations(1, seed=649)[0]

@@ -170,6 +170,28 @@ FIXED_TOL_HINT = "the verdict does not change with tol: compare with the tol arg
 GENERAL_HINT = "compare max |op(a, b) - op(b, a)| with tol"
 
 
+def commutes_slip_hint(big, cross, rounding, loose, strict, rtol):
+    """The slip behind a wrong ``commutes`` from its verdicts on six probes, or None when none fits.
+
+    Shared with the hidden suite, which asks the same six questions on its own data: ``big``, quarter
+    turns about x and z (do not commute); ``cross``, e_x and e_y under × (do not commute); ``rounding``,
+    two rotations about one axis (commute up to ~1e-16); ``loose`` and ``strict``, products that differ by
+    1e-7 where the entries are 0, at tol=1e-5 and tol=1e-9; ``rtol``, dense products that differ by ~1e-6,
+    at tol=1e-9.
+    """
+    if big and cross:
+        return SAME_ORDER_HINT
+    if cross:
+        return IGNORES_OP_HINT
+    if not rounding and not loose:
+        return EXACT_HINT
+    if loose and strict:
+        return FIXED_TOL_HINT
+    if loose and not strict and rtol:
+        return ALLCLOSE_HINT
+    return None
+
+
 def _commutes_slip(commutes):
     """Name the typical slip behind a wrong commutes from a few more calls, or GENERAL_HINT when none fits.
 
@@ -191,17 +213,8 @@ def _commutes_slip(commutes):
         rtol = commutes(dense, dense + 1e-6 * np.eye(3)[[1, 0, 2]], _matmul, tol=1e-9)
     except Exception:
         return GENERAL_HINT
-    if big and cross:
-        return SAME_ORDER_HINT
-    if cross:
-        return IGNORES_OP_HINT
-    if not rounding and not loose:
-        return EXACT_HINT
-    if loose and strict:
-        return FIXED_TOL_HINT
-    if loose and not strict and rtol:
-        return ALLCLOSE_HINT
-    return GENERAL_HINT
+    return commutes_slip_hint(big, cross, rounding, loose, strict, rtol) or GENERAL_HINT
+
 
 @public_check("commutes", "rotations about one axis commute, even though rounding differs")
 def _(commutes):

@@ -47,8 +47,6 @@ HAT_PERMUTED_AT_W = [np.array([[0.0, -0.3, -1.2], [0.3, 0.0, -0.5], [1.2, 0.5, 0
                      np.array([[0.0, 1.2, 0.5], [-1.2, 0.0, -0.3], [-0.5, 0.3, 0.0]]),
                      np.array([[0.0, -0.3, 0.5], [0.3, 0.0, 1.2], [-0.5, -1.2, 0.0]]),
                      np.array([[0.0, 1.2, 0.3], [-1.2, 0.0, -0.5], [-0.3, 0.5, 0.0]])]
-# vee(SKEW_SAMPLE) reading W[0, 1], W[0, 2], W[1, 2]
-VEE_UPPER_ENTRIES = np.array([-0.5, -1.2, -0.3])
 # bracket slips: AB + BA, A * B - B * A (entry-wise, always zero), AB alone, BA alone
 BRACKET_SLIPS = {
     "e_x, e_y": {"anticommutator": np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]]),
@@ -171,17 +169,18 @@ def _(hat):
                        "the diagonal is zero and W[j, i] = -W[i, j]")
 
 
-def _vee_hint(got):
-    """The slip behind a wrong vee(SKEW_SAMPLE) = ``got`` (the truth is W_SAMPLE)."""
-    w = W_SAMPLE
+def vee_hint(got, W, w):
+    """Name the slip behind a wrong vee(W) = ``got`` for the skew-symmetric ``W`` = [w]× (shared with the
+    hidden suite)."""
+    w = np.asarray(w, dtype=float)
     if explains(got, -w, w):
         return "the negative of w: read w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0] (the entries with a plus sign)"
-    if explains(got, VEE_UPPER_ENTRIES, w):
+    if explains(got, np.array([W[0, 1], W[0, 2], W[1, 2]]), w):
         return ("read the entries above the diagonal in row order (W[0, 1], W[0, 2], W[1, 2] = -w3, w2, -w1): "
                 "w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]")
     if explains(got, 2.0 * w, w):
         return "twice w: W - Wᵀ = 2[w]×, so take half of it (or read the entries of W directly)"
-    if explains(got, np.diag(SKEW_SAMPLE), w):
+    if explains(got, np.diag(W), w):
         return "returned the diagonal of W, which is zero: w sits off the diagonal (w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0])"
     return "vee reads w1 = W[2, 1], w2 = W[0, 2], w3 = W[1, 0]"
 
@@ -191,7 +190,7 @@ def _(vee):
     got = require_shape(vee(SKEW_SAMPLE), (3,))
     if not close(got, W_SAMPLE, 1e-12):
         raise Mismatch(f"vee returned {fmt(got)}, expected {fmt(W_SAMPLE)} ({off_by(got, W_SAMPLE)})",
-                       _vee_hint(got))
+                       vee_hint(got, SKEW_SAMPLE, W_SAMPLE))
 
 
 @public_check("vee", "accepts a nested list")

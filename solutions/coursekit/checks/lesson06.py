@@ -327,8 +327,11 @@ def _step_hint(got, exact, numerical_jacobian, f, x, plus=None, fallback=JACOBIA
             "1e-6) or a step near √ε ≈ 1e-8")
 
 
-def _floor_hint(x):
-    """Said when NaN or inf sit exactly in the columns where x_j = 0 (a relative step with no floor)."""
+def floor_hint(x):
+    """Said when NaN or inf sit exactly in the columns where x_j = 0 (a relative step with no floor).
+
+    Returns ``hint(value)`` for ``require_shape``'s ``nan_hint``; the hidden suite uses it too.
+    """
     x = np.asarray(x, dtype=float)
 
     def hint(value):
@@ -371,7 +374,7 @@ _LECTURE_ERRORS = ((np.array([1.2, -3.0, 2.5]), 1.68e-4), (np.array([0.0, 0.5, -
 @public_check("numerical_jacobian", "at least as accurate as the lecture's forward steps δ_j = max(|1e-4 x_j|, 1e-6)")
 def _(numerical_jacobian):
     for x, lecture_error in _LECTURE_ERRORS:
-        got = require_shape(numerical_jacobian(_wavy, x), (2, 3), nan_hint=_floor_hint(x))
+        got = require_shape(numerical_jacobian(_wavy, x), (2, 3), nan_hint=floor_hint(x))
         exact = _wavy_jacobian(x)
         allowed = jacobian_error_allowed(lecture_error, exact)
         error = np.max(np.abs(got - exact))
@@ -383,7 +386,7 @@ def _(numerical_jacobian):
 
 @public_check("numerical_jacobian", "works where x_j = 0 (the floor 1e-6 of the step rule)")
 def _(numerical_jacobian):
-    got = require_shape(numerical_jacobian(np.sin, np.zeros(3)), (3, 3), nan_hint=_floor_hint(np.zeros(3)))
+    got = require_shape(numerical_jacobian(np.sin, np.zeros(3)), (3, 3), nan_hint=floor_hint(np.zeros(3)))
     if not close(got, E, 1e-5):
         raise Mismatch(f"the Jacobian of sin at 0 is {off_by(got, E)} from the identity (tolerance 1e-05)",
                        _step_hint(got, E, numerical_jacobian, np.sin, np.zeros(3),
