@@ -112,7 +112,8 @@ def ensure_reference_passes(options, parts, timeout=900):
         fork_each(lambda _: _grade_reference(options, folder, target), [None], jobs=1,
                   on_done=lambda _, problem: deaths.append(problem), deadline_seconds=timeout)
         if deaths[0] or not target.exists():
-            raise CanaryFailed(f"grading the reference solutions failed: {deaths[0] or 'no result was written'}")
+            raise CanaryFailed(f"grading the reference solutions failed: {deaths[0] or 'no result was written'}; "
+                               "no student was graded (nothing was written or overwritten)")
         result = StudentResult.from_json(target.read_text(encoding="utf-8"))
     problems = shortfalls(result)
     if problems or result.max_score <= 0:

@@ -17,14 +17,14 @@ from dataclasses import dataclass
 
 from autograder.grading import extract, submissions
 from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
-from autograder.grading.results import (GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult, LessonResult,
-                                        NotebookRun, StudentResult)
+from autograder.grading.results import (COULD_NOT_GRADE, GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult,
+                                        LessonResult, NotebookRun, StudentResult)
 from autograder.grading.suite import StudentProxy, run_hidden_suite
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import UnreadableNotebook, read_submission
 from autograder.lessons.reference import load_reference
 from autograder.sandbox import launcher
-from autograder.sandbox.session import StudentError, StudentSandbox
+from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
 
 
 @dataclass(frozen=True)
@@ -119,6 +119,9 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
                                                       lessons=[shell.number for shell, _, _ in lessons])
         except StudentError as error:  # e.g. the sandbox crashed too many times
             result.problems.append(f"grading stopped early: {error.message}")
+        except SandboxUnavailable as error:  # nothing of the student's ran: no grade rather than a zero
+            result.status = COULD_NOT_GRADE
+            result.reason = f"{error}: a problem of this machine or of the grader, not of the submission"
         outcomes = {(o.lesson, o.label): o for o in sandbox.outcomes}
 
     for shell, path, program in lessons:
@@ -143,7 +146,7 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
         _note_failed_prerequisites(shell, program)
         result.lessons.append(shell)
 
-    if options.nbval:
+    if options.nbval and result.status != COULD_NOT_GRADE:
         # The notebook point needs full hidden marks on the lesson (nbval_stage.award), so nbval
         # runs only where it can still change the grade; the other lessons say why it did not run.
         worth_running = [(shell, path, program) for shell, path, program in lessons
@@ -159,7 +162,9 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
             award(shell)
 
     result.problems.extend(suite_problems)
-    if all(shell.status == "missing" for shell, _, _ in lessons):
+    if result.status == COULD_NOT_GRADE:
+        pass
+    elif all(shell.status == "missing" for shell, _, _ in lessons):
         result.status, result.reason = MISSING, "the submission holds none of the course's notebooks"
     elif result.problems:
         result.status = GRADED_WITH_PROBLEMS

@@ -7,25 +7,34 @@ plain value that comes back. Every comparison therefore runs here, in trusted
 code, on data the student's code cannot tamper with.
 
 :func:`run_hidden_suite` returns one :class:`~autograder.grading.results.CheckResult`
-per test item, with the one-line reason and hint of each failure.
+per test, with the one-line reason and hint of each failure.
 
-Speed (the ``--no-nbval`` path is this module plus the sandbox's round trips):
-pytest's traceback formatting of failures is replaced by one line (nobody reads
-it; it re-parsed the test module for every failing check, ~60 ms each), the
-plugins that end each session with repeated ``gc.collect()`` are off, the
-preloaded heap is frozen out of the collector, and OpenBLAS runs one thread
-(its pool made a 4×4 ``expm`` 50× slower).
+How it runs (speed; the ``--no-nbval`` path is this module plus the sandbox):
+
+- pytest collects the suite once per process (:func:`hidden_tests`); for each
+  student the runner then calls each test function with its fixtures
+  (``student``, ``ref``), which is all pytest's run protocol would do for
+  these tests, without its ~1 ms of hooks and reports per test.
+  :func:`run_hidden_suite_with_pytest` is the plain pytest run, kept as the
+  yardstick: ``tests/test_suite_runner.py`` holds the two to the same results.
+- each test's calls reach the sandbox in one batch, and a test whose calls
+  return exactly the reference's values is not run again
+  (:mod:`autograder.grading.transcripts`).
+- the preloaded heap is frozen out of the garbage collector, and OpenBLAS
+  runs one thread (its pool made a 4×4 ``expm`` 50× slower).
 """
 
 import os
 import sys
+from dataclasses import dataclass, field
 from types import SimpleNamespace
 
 import pytest
 
 from autograder.grading.results import CheckResult
+from autograder.grading.transcripts import ReferenceRecorder, Replay
 from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
-from autograder.sandbox.session import StudentError
+from autograder.sandbox.session import SandboxUnavailable, StudentError
 
 if str(SOLUTIONS) not in sys.path:
     sys.path.insert(0, str(SOLUTIONS))  # the hidden suite uses coursekit.diagnose for hints
@@ -55,16 +64,17 @@ class StudentProxy:
     be used (missing, unreadable): calls into it fail with that reason.
     """
 
-    def __init__(self, sandbox, catalog, unavailable=None, timeout=None):
+    def __init__(self, sandbox, catalog, unavailable=None, timeout=None, replay=None):
         self._sandbox = sandbox
         self._catalog = catalog
         self._unavailable = unavailable or {}
         self._timeout = timeout
+        self._replay = replay
         self.printed = []
 
     def with_timeout(self, seconds):
         """The same proxy with a longer per-call time limit, for slow exercises."""
-        clone = StudentProxy(self._sandbox, self._catalog, self._unavailable, seconds)
+        clone = StudentProxy(self._sandbox, self._catalog, self._unavailable, seconds, self._replay)
         clone.printed = self.printed
         return clone
 
@@ -77,6 +87,8 @@ class StudentProxy:
             if lesson in self._unavailable:
                 raise StudentError("missing", self._unavailable[lesson])
             try:
+                if self._replay is not None:
+                    return self._replay.call(lesson, name, args, kwargs, self._timeout)
                 return self._sandbox.call(lesson, name, args, kwargs, timeout=self._timeout)
             except StudentError as error:
                 if error.stdout:
@@ -107,6 +119,163 @@ def _explain(error):
         return _first_line(str(error).splitlines()[0] if str(error) else "a check failed"), ""
     return (_first_line(f"the result could not be checked ({type(error).__name__}: {error})"),
             "is the return value of the documented type and shape?")
+
+
+@dataclass(frozen=True)
+class HiddenTest:
+    """One collected hidden test: what to call, and what its result is about."""
+
+    nodeid: str
+    lesson: str
+    function: object
+    fixtures: tuple  # of "student" and "ref"
+    params: dict = field(default_factory=dict)  # from @pytest.mark.parametrize
+    exercise: str = ""
+    weight: float = 1.0
+    description: str = ""
+
+
+FIXTURES = ("student", "ref")
+
+
+class _Grabber:
+    """pytest plugin: keeps the collected items."""
+
+    def __init__(self):
+        self.items = []
+
+    def pytest_collection_modifyitems(self, session, config, items):
+        self.items = list(items)
+
+
+def _pytest_args(files):
+    os.environ["PYTEST_DISABLE_PLUGIN_AUTOLOAD"] = "1"
+    return [str(f) for f in files] + [
+        "-c", str(HIDDEN_SUITE / "pytest.ini"), "--rootdir", str(HIDDEN_SUITE.parent.parent),
+        "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings",
+        # these two end every session with gc.collect() several times (~0.2 s a student) to find
+        # exceptions nobody reads here
+        "-p", "no:unraisableexception", "-p", "no:threadexception"]
+
+
+def _describe(item):
+    doc = (item.function.__doc__ or item.name).strip().splitlines()[0]
+    if getattr(item, "callspec", None) is not None:
+        doc += f" [{item.callspec.id}]"
+    return doc
+
+
+_COLLECTED = {}
+
+
+def hidden_tests():
+    """(tests, problems): the hidden suite as pytest collects it, in pytest's order; once per process.
+
+    Raises :class:`SuiteError` if pytest cannot collect it, or if a test asks
+    for a fixture other than ``student`` and ``ref`` (the runner provides
+    only those; write the test with them, or extend :data:`FIXTURES`).
+    """
+    if "all" not in _COLLECTED:
+        grabber = _Grabber()
+        code = pytest.main(_pytest_args(sorted(HIDDEN_SUITE.glob("test_*.py"))) + ["--collect-only"],
+                           plugins=[grabber])
+        if code != pytest.ExitCode.OK or not grabber.items:
+            raise SuiteError(f"the hidden suite could not be collected (pytest exit status {int(code)})")
+        tests, problems = [], []
+        for item in grabber.items:
+            mark = item.get_closest_marker("exercise")
+            if mark is None:
+                problems.append(f"hidden test {item.nodeid} names no exercise")
+                continue
+            params = dict(getattr(item, "callspec", None).params) if hasattr(item, "callspec") else {}
+            unknown = set(item.fixturenames) - set(FIXTURES) - set(params)
+            if unknown:
+                raise SuiteError(f"hidden test {item.nodeid} asks for fixtures {sorted(unknown)}; "
+                                 f"the grader's runner provides {', '.join(FIXTURES)}")
+            tests.append(HiddenTest(
+                nodeid=item.nodeid, lesson=item.path.stem.split("_")[1], function=item.function,
+                fixtures=tuple(n for n in FIXTURES if n in item.fixturenames), params=params,
+                exercise=mark.kwargs["name"], weight=mark.kwargs.get("weight", 1.0),
+                description=_describe(item)))
+        _COLLECTED["all"] = (tests, problems)
+    return _COLLECTED["all"]
+
+
+_TRANSCRIPTS = {}  # id(reference) -> (reference, {nodeid: Transcript})
+
+
+def transcripts_for(reference, catalog):
+    """``{nodeid: Transcript}``: every hidden test run once on ``reference``, its calls recorded."""
+    kept = _TRANSCRIPTS.get(id(reference))
+    if kept is not None and kept[0] is reference:
+        return kept[1]
+    if not _TRANSCRIPTS:
+        single_threaded_blas()  # as in the sandbox, so that equal answers are equal bit for bit
+    recorder = ReferenceRecorder(reference)
+    proxy = StudentProxy(recorder, catalog)
+    found = {}
+    for test in hidden_tests()[0]:
+        transcript = recorder.start()
+        passed, _, _ = _call_test(test, proxy, reference)
+        transcript.passed = passed
+        found[test.nodeid] = transcript
+    recorder.transcript = None
+    _TRANSCRIPTS[id(reference)] = (reference, found)
+    return found
+
+
+def _call_test(test, proxy, reference):
+    """Run one test function; return (passed, reason, hint)."""
+    arguments = dict(test.params)
+    if "student" in test.fixtures:
+        arguments["student"] = proxy
+    if "ref" in test.fixtures:
+        arguments["ref"] = reference
+    try:
+        test.function(**arguments)
+    except (KeyboardInterrupt, SandboxUnavailable):
+        raise
+    except BaseException as error:  # noqa: B036 (pytest, too, fails a test on any exception)
+        reason, hint = _explain(error)
+        return False, reason, hint
+    return True, "", ""
+
+
+def _printed_text(parts):
+    printed = "".join(parts)
+    if len(printed) > PRINTED_KEEP:
+        printed = printed[:PRINTED_KEEP] + "\n[… more characters not kept]"
+    return printed
+
+
+def run_hidden_suite(proxy, reference, lessons=None):
+    """Run the hidden suite for one student; return (list of CheckResult, problems).
+
+    ``lessons``: only run the tests of these lesson numbers (default all).
+    """
+    tests, problems = hidden_tests()
+    tests = [t for t in tests if lessons is None or t.lesson in lessons]
+    if not tests:
+        return [], []
+    transcripts = transcripts_for(reference, proxy._catalog)
+    replay = proxy._replay = Replay(proxy._sandbox)
+    results = []
+    try:
+        for test in tests:
+            proxy.printed.clear()
+            replay.prefetch(transcripts.get(test.nodeid), proxy._unavailable)
+            if replay.passes_as_recorded():
+                passed, reason, hint = True, "", ""
+                proxy.printed.extend(replay.printed())
+            else:
+                passed, reason, hint = _call_test(test, proxy, reference)
+            replay.stop()
+            results.append(CheckResult(exercise=test.exercise, description=test.description, weight=test.weight,
+                                       passed=passed, reason=reason, hint=hint,
+                                       printed=_printed_text(proxy.printed)))
+    finally:
+        proxy._replay = None
+    return results, list(problems)
 
 
 def _short_repr(excinfo, style=None):
@@ -149,18 +318,12 @@ class _Collector:
         mark = item.get_closest_marker("exercise")
         if mark is None:
             return
-        doc = (item.function.__doc__ or item.name).strip().splitlines()[0]
-        if getattr(item, "callspec", None) is not None:
-            doc += f" [{item.callspec.id}]"
         reason, hint = ("", "")
         if report.failed and call.excinfo is not None:
             reason, hint = _explain(call.excinfo.value)
-        printed = "".join(self.proxy.printed)
-        if len(printed) > PRINTED_KEEP:
-            printed = printed[:PRINTED_KEEP] + "\n[… more characters not kept]"
         self.results.append(CheckResult(
-            exercise=mark.kwargs["name"], description=doc, weight=mark.kwargs.get("weight", 1.0),
-            passed=report.passed, reason=reason, hint=hint, printed=printed))
+            exercise=mark.kwargs["name"], description=_describe(item), weight=mark.kwargs.get("weight", 1.0),
+            passed=report.passed, reason=reason, hint=hint, printed=_printed_text(self.proxy.printed)))
 
 
 _BLAS_THREAD_SETTERS = ("scipy_openblas_set_num_threads64_", "scipy_openblas_set_num_threads",
@@ -198,24 +361,25 @@ def single_threaded_blas():
 
 
 def preload_hidden_suite():
-    """Import the hidden test modules once, so forked graders reuse them (speed)."""
+    """Collect the hidden suite and record the reference's calls once, so forked graders reuse them (speed)."""
     import gc
-    import importlib
 
-    os.environ.setdefault("PYTEST_DISABLE_PLUGIN_AUTOLOAD", "1")
-    for path in sorted(HIDDEN_SUITE.glob("test_*.py")):
-        importlib.import_module(f"autograder.hidden.{path.stem}")
+    from autograder.lessons.catalog import load_catalog
+    from autograder.lessons.reference import load_reference
+
     single_threaded_blas()
+    hidden_tests()
+    transcripts_for(load_reference(), load_catalog())
     # Everything imported so far lives as long as the process: keep it out of the garbage
     # collector's scans (each forked grader would otherwise walk, and copy, the whole heap).
     gc.collect()
     gc.freeze()
 
 
-def run_hidden_suite(proxy, reference, lessons=None):
-    """Run the hidden suite for one student; return (list of CheckResult, problems).
+def run_hidden_suite_with_pytest(proxy, reference, lessons=None):
+    """:func:`run_hidden_suite` as a plain ``pytest.main`` run, call by call: the yardstick of the fast runner.
 
-    ``lessons``: only run the test files of these lesson numbers (default all).
+    Same arguments and results; about twice the CPU time.
     """
     CONTEXT.student, CONTEXT.reference = proxy, reference
     collector = _Collector(proxy)
@@ -224,14 +388,7 @@ def run_hidden_suite(proxy, reference, lessons=None):
         files = [f for f in files if f.stem.split("_")[1] in lessons]
     if not files:
         return [], []
-    os.environ["PYTEST_DISABLE_PLUGIN_AUTOLOAD"] = "1"
-    args = [str(f) for f in files] + [
-        "-c", str(HIDDEN_SUITE / "pytest.ini"), "--rootdir", str(HIDDEN_SUITE.parent.parent),
-        "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings",
-        # these two end every session with gc.collect() several times (~0.2 s a student) to find
-        # exceptions nobody reads here
-        "-p", "no:unraisableexception", "-p", "no:threadexception"]
-    code = pytest.main(args, plugins=[collector])
+    code = pytest.main(_pytest_args(files), plugins=[collector])
     if code not in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) or not collector.results:
         raise SuiteError(f"the hidden suite did not run (pytest exit status {int(code)}, "
                          f"{len(collector.results)} checks collected)")

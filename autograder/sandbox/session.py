@@ -79,6 +79,11 @@ class _Dead(Exception):
     """The worker process is gone or stopped answering."""
 
 
+class SandboxUnavailable(RuntimeError):
+    """The sandbox's worker did not start: a failure of the grader or this machine, never the student's
+    (no student code has run yet). It stops this student's grading instead of costing points."""
+
+
 class StudentSandbox:
     """One student's sandbox; use as a context manager."""
 
@@ -158,8 +163,11 @@ class StudentSandbox:
 
     # ------------------------------------------------------------ messages
     def _send(self, message):
+        self._send_line(wire.dumps(message))
+
+    def _send_line(self, line):
         try:
-            self.process.stdin.write(wire.dumps(message).encode("utf-8") + b"\n")
+            self.process.stdin.write(line.encode("utf-8") + b"\n")
             self.process.stdin.flush()
         except (BrokenPipeError, OSError, ValueError, AttributeError):
             raise _Dead(self._death_reason() if self.process else "not running") from None
@@ -210,6 +218,10 @@ class StudentSandbox:
         while True:
             try:
                 self._start()
+            except _Dead as death:
+                self._kill()
+                raise SandboxUnavailable(f"the sandbox did not start ({death})") from None
+            try:
                 for lesson, program in sorted(self.program.items()):
                     for label, source in [("setup", program.setup)] + list(program.cells):
                         if (lesson, label) in self.bad_cells:
@@ -242,6 +254,15 @@ class StudentSandbox:
                     raise StudentError("crash", "the student's code crashed the sandbox too many times") from None
 
     # ------------------------------------------------------------ calls
+    def check_callable(self, lesson, name):
+        """Raise the :class:`StudentError` a call of ``name`` would get without running (budget, hang)."""
+        if self.time_used > self.limits.student_seconds:
+            raise StudentError("timeout", f"not run: this student's code already used its "
+                                          f"{self.limits.student_seconds:g} s time budget")
+        if (lesson, name) in self.hung:
+            raise StudentError("timeout", f"{name} did not return within {self.hung[(lesson, name)]:g} s "
+                                          "in an earlier check, so it was not called again")
+
     def call(self, lesson, name, args=(), kwargs=None, timeout=None):
         """Call the student's ``name`` from ``lesson``; return the decoded value.
 
@@ -253,12 +274,7 @@ class StudentSandbox:
         """
         timeout = self.limits.call_timeout if timeout is None else timeout
         self.last_stdout = ""
-        if self.time_used > self.limits.student_seconds:
-            raise StudentError("timeout", f"not run: this student's code already used its "
-                                          f"{self.limits.student_seconds:g} s time budget")
-        if (lesson, name) in self.hung:
-            raise StudentError("timeout", f"{name} did not return within {self.hung[(lesson, name)]:g} s "
-                                          "in an earlier check, so it was not called again")
+        self.check_callable(lesson, name)
         self._ensure_loaded()
         request = {"op": "call", "lesson": lesson, "name": name, "args": list(args),
                    "kwargs": dict(kwargs or {}), "timeout": timeout}
@@ -273,9 +289,19 @@ class StudentSandbox:
                 raise StudentError("timeout", f"{name} did not return within {timeout:g} s "
                                               "(an endless loop, or far too slow?)") from None
             raise StudentError("crash", f"calling {name}, the student's process {reason}") from None
+        return self.take_reply(lesson, name, reply, timeout)
+
+    def take_reply(self, lesson, name, reply, timeout):
+        """The value of a call's reply, or the :class:`StudentError` it stands for (as :meth:`call`)."""
         stdout = str(reply.get("stdout", ""))
         self.last_stdout = stdout if reply["ok"] else ""
         if reply["ok"]:
+            if "text" in reply:  # a reply from a batch carries its value as wire text
+                try:
+                    return wire.loads(reply["text"])
+                except wire.WireError as error:
+                    raise StudentError("crash", f"calling {name}, the student's process sent a malformed "
+                                                f"reply ({error})") from None
             return reply.get("value")
         error = reply.get("error") or {}
         kind = {"NotImplementedError": "not_implemented", "Timeout": "timeout",
@@ -293,6 +319,44 @@ class StudentSandbox:
         if kind == "bad_value":
             raise StudentError(kind, f"{name} {error.get('message', '')}", stdout)
         raise StudentError(kind, f"{name} raised {_format_error(error)}", stdout)
+
+    def call_batch(self, calls, timeouts, budget=2.0):
+        """Make several calls in one round trip; return their raw replies, in order, or None.
+
+        ``calls`` are the calls as wire text (``{"lesson", "name", "args",
+        "kwargs", "timeout"}`` each), ``timeouts`` their time limits (None:
+        the limits' ``call_timeout``, also when the call's own is null). The
+        worker stops after the first call that fails or once the calls have
+        run ``budget`` seconds, so there may be fewer replies than calls; hand
+        each to :meth:`take_reply`. None means the batch could not be made (the
+        process died or hung): nothing is counted against the student, and
+        the caller makes its calls one at a time, which says what happened.
+        """
+        try:
+            self._ensure_loaded()
+        except StudentError:
+            return None
+        default = float(self.limits.call_timeout)
+        timeouts = [default if t is None else t for t in timeouts]
+        self._next_id += 1
+        # the request as wire.dumps would write it, with the calls' text, already wire text, put in as is
+        line = ('{"__dict__":[["op","batch"],["id",%d],["budget",%r],["timeout",%r],["calls",[%s]]]}'
+                % (self._next_id, float(budget), default, ",".join(calls)))
+        started = time.monotonic()
+        try:
+            self._send_line(line)
+            reply = self._receive(deadline=started + sum(timeouts) + 2.0)
+        except _Dead:
+            self._kill()
+            return None
+        self.time_used += time.monotonic() - started
+        replies = reply.get("replies") if isinstance(reply, dict) and reply.get("id") == self._next_id else None
+        if not isinstance(replies, list) or len(replies) > len(calls) or not all(
+                isinstance(r, dict) and isinstance(r.get("ok"), bool) and
+                (not r["ok"] or isinstance(r.get("text"), str)) for r in replies):
+            self._kill()  # a forged or malformed reply: start afresh, one call at a time
+            return None
+        return replies
 
 
 def _format_error(error):

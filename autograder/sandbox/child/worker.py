@@ -12,6 +12,13 @@ Requests and replies (all dicts):
 - ``{"op": "call", "lesson": "01", "name": "rot_z", "args": [...],
   "kwargs": {...}, "timeout": 5.0}``; reply ``{"ok": True, "value", "stdout"}``
   or ``{"ok": False, "error": {"type", "message", "where"}, "stdout"}``.
+- ``{"op": "batch", "calls": [call, ...], "budget": 2.0, "timeout": 5.0}`` makes several calls
+  in order, one round trip for all (speed); reply ``{"ok": True, "replies":
+  [...]}`` with, per call made, the reply of ``call`` plus its ``seconds``, and
+  its value as wire text (``"text"``) rather than decoded; a call whose
+  ``timeout`` is null gets the batch's. The batch stops
+  after the first call that fails, or once its calls have run ``budget``
+  seconds: the grader makes any call it still needs one at a time.
 
 The grader trusts none of this: it decodes replies strictly and compares
 values in its own process.
@@ -21,6 +28,7 @@ import builtins
 import os
 import signal
 import sys
+import time
 import traceback
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -89,6 +97,11 @@ def _describe(error):
     return {"type": type(error).__name__, "message": message, "where": _where(error)}
 
 
+def _unsupported(error):
+    return {"type": "UnsupportedValue", "where": "",
+            "message": f"returned {error}; return numbers, numpy arrays, tuples, lists or dicts of those"}
+
+
 def _on_alarm(signum, frame):
     raise CallTimeout()
 
@@ -112,10 +125,7 @@ class Worker:
             line = wire.dumps(message)
         except wire.WireError as error:
             line = wire.dumps({"ok": False, "stdout": self.output.text(), "id": self.request_id,
-                               "error": {"type": "UnsupportedValue",
-                                         "message": f"returned {error}; return numbers, numpy arrays, "
-                                                    "tuples, lists or dicts of those",
-                                         "where": ""}})
+                               "error": _unsupported(error)})
         self.replies.write(line.encode("utf-8") + b"\n")
         self.replies.flush()
 
@@ -163,6 +173,39 @@ class Worker:
         message["value" if ok else "error"] = result
         self.reply(message)
 
+    def call_for_batch(self, call, default_timeout):
+        """One call of a batch: its reply, with the value as wire text (checked to be plain data)."""
+        started = time.monotonic()
+        function = self.namespace(call["lesson"]).get(call["name"])
+        if not callable(function):
+            return {"ok": False, "stdout": "", "seconds": 0.0, "error": {
+                "type": "NameError", "where": "",
+                "message": f"{call['name']} is not defined in the graded cells"}}
+        args = [self.materialize(a) for a in call.get("args", [])]
+        kwargs = {k: self.materialize(v) for k, v in call.get("kwargs", {}).items()}
+        ok, result = self.run_guarded(lambda: function(*args, **kwargs), call.get("timeout") or default_timeout)
+        message = {"ok": ok, "stdout": self.output.text()}
+        if ok:
+            try:
+                message["text"] = wire.dumps(result)
+            except wire.WireError as error:
+                message["ok"] = False
+                message["error"] = _unsupported(error)
+        else:
+            message["error"] = result
+        message["seconds"] = time.monotonic() - started
+        return message
+
+    def do_batch(self, request):
+        replies, spent = [], 0.0
+        for call in request.get("calls", []):
+            reply = self.call_for_batch(call, request.get("timeout") or 5.0)
+            replies.append(reply)
+            spent += reply["seconds"]
+            if not reply["ok"] or spent > request.get("budget", 2.0):
+                break
+        self.reply({"ok": True, "replies": replies})
+
     @staticmethod
     def materialize(value):
         if isinstance(value, wire.Probe):
@@ -184,6 +227,8 @@ class Worker:
                 self.do_exec(request)
             elif op == "call":
                 self.do_call(request)
+            elif op == "batch":
+                self.do_batch(request)
             elif op == "bye":
                 return
             else:

@@ -1,0 +1,148 @@
+"""The reference's calls in each hidden test, recorded once, so a student's are made in one round trip.
+
+A hidden test calls the student's functions one by one, and each call is a
+round trip to the sandbox (about 0.1 ms of CPU on each side, ~2,200 of them
+for a student who answers everything). The calls a test makes are nearly
+always the same for every student: its inputs are seeded and come from the
+test, not from the student. So, once per grader process:
+
+1. **Record.** Every hidden test runs against the reference solutions in this
+   process; each call it makes is noted (as wire text: lesson, function,
+   arguments, time limit) with the value the reference returned
+   (:func:`transcripts_for`).
+2. **Prefetch.** Before a test runs for a student, all its recorded calls go
+   to the student's sandbox as one batch (:meth:`Replay.prefetch`).
+3. **Replay.** While the test runs, a call that is the next recorded call,
+   exactly, is answered from the batch; the first call that differs (the
+   test took another path because of the student's answer), and every call
+   after it, is made one at a time as before (:meth:`Replay.call`). The
+   sandbox stops a batch at the first call that fails, so a function that
+   raises or hangs does so once, at the same point as without batches.
+4. **Same answers, same verdict.** A test is a deterministic function of what
+   its calls return: its inputs are seeded, it reads no clock, and its other
+   oracles (scipy, the reference) are deterministic. So when every call of a
+   batch returned, bit for bit, the value the reference returned, the test
+   would pass exactly as it did for the reference, and it is not run again
+   (:meth:`Replay.passes_as_recorded`). Any other answer runs the test.
+
+The student's code never sees the recorded values: only the calls go into the
+sandbox, and the comparison happens here. One difference remains, by design:
+when a test stops early (a wrong value), the rest of its batch has already
+run, so a function that keeps state between calls sees more calls than it
+would one at a time. Graded exercises are pure functions of their arguments,
+so such an answer is wrong for the course either way; its grade stays
+deterministic. A batch stops after :data:`BATCH_BUDGET` seconds of calls, so
+slow answers cost little extra. ``tests/test_suite_runner.py`` holds
+this runner to plain pytest, check by check, on the sample class and on every
+typical mistake.
+"""
+
+from dataclasses import dataclass
+
+from autograder.sandbox.child import probes, wire
+from autograder.sandbox.session import StudentError
+
+BATCH_BUDGET = 2.0  # seconds of student calls in one batch; slower calls are made one at a time
+
+
+@dataclass
+class Transcript:
+    """The calls one hidden test made on the reference, in order."""
+
+    calls: list  # wire text of {"lesson", "name", "args", "kwargs", "timeout"} per call
+    keys: list  # (lesson, name) per call
+    timeouts: list  # the call's own time limit, or None for the sandbox's default
+    results: list  # wire text of the value the reference returned, per call
+    passed: bool = False  # the test passed on the reference: only then can a replay pass it unrun
+
+
+def call_text(lesson, name, args, kwargs, timeout):
+    """The wire text that identifies one call (raises :class:`wire.WireError` for non-data arguments)."""
+    return wire.dumps({"lesson": lesson, "name": name, "args": list(args), "kwargs": dict(kwargs or {}),
+                       "timeout": timeout})
+
+
+def _materialize(value):
+    return probes.resolve(value.name, value.args) if isinstance(value, wire.Probe) else value
+
+
+class ReferenceRecorder:
+    """Stands in for a student's sandbox while recording: calls the reference, notes each call."""
+
+    last_stdout = ""
+
+    def __init__(self, reference):
+        self.reference = reference
+        self.transcript = None
+
+    def start(self):
+        self.transcript = Transcript(calls=[], keys=[], timeouts=[], results=[])
+        return self.transcript
+
+    def call(self, lesson, name, args=(), kwargs=None, timeout=None):
+        text = call_text(lesson, name, args, kwargs, timeout)
+        request = wire.loads(text)  # the arguments exactly as the sandbox would receive them
+        value = getattr(self.reference, name)(*[_materialize(a) for a in request["args"]],
+                                              **{k: _materialize(v) for k, v in request["kwargs"].items()})
+        result = wire.dumps(value)
+        if self.transcript is not None:
+            self.transcript.calls.append(text)
+            self.transcript.keys.append((lesson, name))
+            self.transcript.timeouts.append(timeout)
+            self.transcript.results.append(result)
+        return wire.loads(result)
+
+
+class Replay:
+    """Serves one test's calls from a prefetched batch while they follow the recorded ones."""
+
+    def __init__(self, sandbox):
+        self.sandbox = sandbox
+        self._transcript = None
+        self._replies = []
+        self._next = 0
+
+    def prefetch(self, transcript, unavailable=()):
+        """Make ``transcript``'s calls in the student's sandbox, in one round trip when possible."""
+        self.stop()
+        if transcript is None or not transcript.calls:
+            return
+        if any(lesson in unavailable for lesson, _ in transcript.keys):
+            return
+        try:
+            for lesson, name in set(transcript.keys):
+                self.sandbox.check_callable(lesson, name)
+        except StudentError:
+            return  # the calls themselves will say why
+        replies = self.sandbox.call_batch(transcript.calls, transcript.timeouts, BATCH_BUDGET)
+        if replies:
+            self._transcript, self._replies, self._next = transcript, replies, 0
+
+    def passes_as_recorded(self):
+        """True when every recorded call was made and returned the reference's value, bit for bit."""
+        transcript = self._transcript
+        return (transcript is not None and transcript.passed and len(self._replies) == len(transcript.calls)
+                and all(reply["ok"] and reply["text"] == result
+                        for reply, result in zip(self._replies, transcript.results)))
+
+    def printed(self):
+        """What the batch's calls printed, in order (as the proxy would have collected it)."""
+        return [str(reply.get("stdout", "")) for reply in self._replies if reply.get("stdout")]
+
+    def call(self, lesson, name, args, kwargs, timeout):
+        """The call's value: from the batch while calls follow the recording, else from the sandbox."""
+        if self._transcript is not None and self._next < len(self._replies):
+            try:
+                text = call_text(lesson, name, args, kwargs, timeout)
+            except wire.WireError:
+                text = None
+            if text == self._transcript.calls[self._next]:
+                reply = self._replies[self._next]
+                self._next += 1
+                effective = self.sandbox.limits.call_timeout if timeout is None else timeout
+                return self.sandbox.take_reply(lesson, name, reply, effective)
+        self.stop()  # the test left the recorded path: one call at a time from here on
+        return self.sandbox.call(lesson, name, args, kwargs, timeout=timeout)
+
+    def stop(self):
+        self._transcript, self._replies, self._next = None, [], 0
