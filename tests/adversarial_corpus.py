@@ -147,6 +147,9 @@ def cases(context):
              "import sys\nsys.exit(0)\n" + RIGHT_ROT_Z),
         Case("endless_loop", "one function never returns", "zero",
              "def rot_x(a):\n    while True:\n        pass\n", target="rot_x"),
+        Case("swallows_the_alarm", "catches the time limit's interruption and loops on", "zero",
+             "def rot_x(a):\n    while True:\n        try:\n            while True:\n                pass\n"
+             "        except BaseException:\n            pass\n", target="rot_x"),
         Case("long_sleep", "one function sleeps for 1000 s", "zero",
              "import time\ndef rot_y(a):\n    time.sleep(1000)\n    return np.eye(3)\n", target="rot_y"),
         Case("prints_50_mb", "prints 50 MB, then returns the right answer", "full",

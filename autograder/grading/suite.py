@@ -24,6 +24,7 @@ How it runs (speed; the ``--no-nbval`` path is this module plus the sandbox):
   runs one thread (its pool made a 4×4 ``expm`` 50× slower).
 """
 
+import functools
 import os
 import sys
 from dataclasses import dataclass, field
@@ -165,9 +166,7 @@ def _describe(item):
     return doc
 
 
-_COLLECTED = {}
-
-
+@functools.lru_cache(maxsize=1)
 def hidden_tests():
     """(tests, problems): the hidden suite as pytest collects it, in pytest's order; once per process.
 
@@ -175,30 +174,29 @@ def hidden_tests():
     for a fixture other than ``student`` and ``ref`` (the runner provides
     only those; write the test with them, or extend :data:`FIXTURES`).
     """
-    if "all" not in _COLLECTED:
-        grabber = _Grabber()
-        code = pytest.main(_pytest_args(sorted(HIDDEN_SUITE.glob("test_*.py"))) + ["--collect-only"],
-                           plugins=[grabber])
-        if code != pytest.ExitCode.OK or not grabber.items:
-            raise SuiteError(f"the hidden suite could not be collected (pytest exit status {int(code)})")
-        tests, problems = [], []
-        for item in grabber.items:
-            mark = item.get_closest_marker("exercise")
-            if mark is None:
-                problems.append(f"hidden test {item.nodeid} names no exercise")
-                continue
-            params = dict(getattr(item, "callspec", None).params) if hasattr(item, "callspec") else {}
-            unknown = set(item.fixturenames) - set(FIXTURES) - set(params)
-            if unknown:
-                raise SuiteError(f"hidden test {item.nodeid} asks for fixtures {sorted(unknown)}; "
-                                 f"the grader's runner provides {', '.join(FIXTURES)}")
-            tests.append(HiddenTest(
-                nodeid=item.nodeid, lesson=item.path.stem.split("_")[1], function=item.function,
-                fixtures=tuple(n for n in FIXTURES if n in item.fixturenames), params=params,
-                exercise=mark.kwargs["name"], weight=mark.kwargs.get("weight", 1.0),
-                description=_describe(item)))
-        _COLLECTED["all"] = (tests, problems)
-    return _COLLECTED["all"]
+    grabber = _Grabber()
+    code = pytest.main(_pytest_args(sorted(HIDDEN_SUITE.glob("test_*.py"))) + ["--collect-only"],
+                       plugins=[grabber])
+    if code != pytest.ExitCode.OK or not grabber.items:
+        raise SuiteError(f"the hidden suite could not be collected (pytest exit status {int(code)})")
+    tests, problems = [], []
+    for item in grabber.items:
+        mark = item.get_closest_marker("exercise")
+        if mark is None:
+            problems.append(f"hidden test {item.nodeid} names no exercise")
+            continue
+        callspec = getattr(item, "callspec", None)
+        params = dict(callspec.params) if callspec is not None else {}
+        unknown = set(item.fixturenames) - set(FIXTURES) - set(params)
+        if unknown:
+            raise SuiteError(f"hidden test {item.nodeid} asks for fixtures {sorted(unknown)}; "
+                             f"the grader's runner provides {', '.join(FIXTURES)}")
+        tests.append(HiddenTest(
+            nodeid=item.nodeid, lesson=item.path.stem.split("_")[1], function=item.function,
+            fixtures=tuple(n for n in FIXTURES if n in item.fixturenames), params=params,
+            exercise=mark.kwargs["name"], weight=mark.kwargs.get("weight", 1.0),
+            description=_describe(item)))
+    return tests, problems
 
 
 _TRANSCRIPTS = {}  # id(reference) -> (reference, {nodeid: Transcript})
