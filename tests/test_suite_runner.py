@@ -14,13 +14,17 @@ that hangs on some inputs, one that kills its process on others, and one that
 prints; a lesson whose notebook is missing.
 """
 
+from types import SimpleNamespace
+
 import numpy as np
 import pytest
 
 from autograder.grading import pipeline, transcripts
 from autograder.grading.pipeline import GradingOptions, grade_student
 from autograder.grading.suite import run_hidden_suite_with_pytest
+from autograder.sandbox.child import wire
 from autograder.sandbox.launcher import Limits
+from autograder.sandbox.session import StudentError
 from support import STUB, build_submission, mistakes
 
 FAULTS = {
@@ -142,3 +146,42 @@ def test_recording_is_deterministic():
                and first[k].passed and second[k].passed for k in first)
     assert sum(len(t.calls) for t in first.values()) > 1000
     assert np.mean([len(t.calls) for t in first.values()]) > 5
+
+
+class _AnsweringSandbox:
+    """A stand-in sandbox whose batches return ``values`` (wire text) for the calls."""
+
+    limits = Limits()
+
+    def __init__(self, values):
+        self.values = values
+
+    def check_callable(self, lesson, name):
+        pass
+
+    def call_batch(self, calls, timeouts, budget):
+        return [{"ok": True, "stdout": "", "text": value} for value in self.values[:len(calls)]]
+
+
+def _passes_unrun(transcript, values):
+    replay = transcripts.Replay(_AnsweringSandbox([wire.dumps(v) for v in values]))
+    replay.prefetch(transcript)
+    return replay.passes_as_recorded()
+
+
+def test_only_the_references_exact_values_pass_a_test_unrun_and_never_where_it_raised():
+    recorder = transcripts.ReferenceRecorder(SimpleNamespace(halve=lambda x: 1.0 / 0.0 if x == 0 else x / 2))
+    plain = recorder.start()
+    recorder.call("01", "halve", [3.0])
+    plain.passed = True
+    assert _passes_unrun(plain, [1.5])  # exactly the reference's value for every call
+    assert not _passes_unrun(plain, [1.5 + 2 ** -51])  # the last bits differ: the test runs
+
+    raising = recorder.start()
+    assert recorder.call("01", "halve", [3.0]) == 1.5
+    with pytest.raises(StudentError):  # what a test that expects the raise catches
+        recorder.call("01", "halve", [0.0])
+    raising.passed = True
+    assert raising.results[1] is None
+    assert not _passes_unrun(raising, [1.5, 0.0])  # returned where the reference raised: the test runs
+    assert not _passes_unrun(raising, [1.5])  # a call short: the test runs

@@ -52,7 +52,7 @@ class Transcript:
     calls: list  # wire text of {"lesson", "name", "args", "kwargs", "timeout"} per call
     keys: list  # (lesson, name) per call
     timeouts: list  # the call's own time limit, or None for the sandbox's default
-    results: list  # wire text of the value the reference returned, per call
+    results: list  # wire text of the value the reference returned, per call (None: it raised)
     passed: bool = False  # the test passed on the reference: only then can a replay pass it unrun
 
 
@@ -82,15 +82,24 @@ class ReferenceRecorder:
     def call(self, lesson, name, args=(), kwargs=None, timeout=None):
         text = call_text(lesson, name, args, kwargs, timeout)
         request = wire.loads(text)  # the arguments exactly as the sandbox would receive them
-        value = getattr(self.reference, name)(*[_materialize(a) for a in request["args"]],
-                                              **{k: _materialize(v) for k, v in request["kwargs"].items()})
-        result = wire.dumps(value)
+        try:
+            value = getattr(self.reference, name)(*[_materialize(a) for a in request["args"]],
+                                                  **{k: _materialize(v) for k, v in request["kwargs"].items()})
+            result = wire.dumps(value)
+        except Exception as error:
+            # noted with no value, so no replay can pass this test unrun; the test sees what a
+            # student's raising function would give it
+            self._note(text, lesson, name, timeout, None)
+            raise StudentError("exception", f"{name} raised {type(error).__name__}: {error}") from None
+        self._note(text, lesson, name, timeout, result)
+        return wire.loads(result)
+
+    def _note(self, text, lesson, name, timeout, result):
         if self.transcript is not None:
             self.transcript.calls.append(text)
             self.transcript.keys.append((lesson, name))
             self.transcript.timeouts.append(timeout)
             self.transcript.results.append(result)
-        return wire.loads(result)
 
 
 class Replay:
