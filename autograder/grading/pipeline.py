@@ -162,11 +162,10 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
             award(shell)
 
     result.problems.extend(suite_problems)
-    if result.status == COULD_NOT_GRADE:
-        pass
-    elif all(shell.status == "missing" for shell, _, _ in lessons):
-        result.status, result.reason = MISSING, "the submission holds none of the course's notebooks"
-    elif result.problems:
-        result.status = GRADED_WITH_PROBLEMS
+    if result.status != COULD_NOT_GRADE:
+        if all(shell.status == "missing" for shell, _, _ in lessons):
+            result.status, result.reason = MISSING, "the submission holds none of the course's notebooks"
+        elif result.problems:
+            result.status = GRADED_WITH_PROBLEMS
     result.seconds = round(time.monotonic() - started, 2)
     return result

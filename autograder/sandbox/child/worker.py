@@ -158,17 +158,19 @@ class Worker:
             message["error"] = result
         self.reply(message)
 
-    def do_call(self, request):
-        namespace = self.namespace(request["lesson"])
-        function = namespace.get(request["name"])
+    def invoke(self, call, timeout):
+        """Call ``call``'s function with its arguments, guarded: ``(ok, value or error dict)``."""
+        function = self.namespace(call["lesson"]).get(call["name"])
         if not callable(function):
-            self.reply({"ok": False, "stdout": "", "error": {
-                "type": "NameError", "where": "",
-                "message": f"{request['name']} is not defined in the graded cells"}})
-            return
-        args = [self.materialize(a) for a in request.get("args", [])]
-        kwargs = {k: self.materialize(v) for k, v in request.get("kwargs", {}).items()}
-        ok, result = self.run_guarded(lambda: function(*args, **kwargs), request.get("timeout", 5.0))
+            self.output.reset()
+            return False, {"type": "NameError", "where": "",
+                           "message": f"{call['name']} is not defined in the graded cells"}
+        args = [self.materialize(a) for a in call.get("args", [])]
+        kwargs = {k: self.materialize(v) for k, v in call.get("kwargs", {}).items()}
+        return self.run_guarded(lambda: function(*args, **kwargs), timeout)
+
+    def do_call(self, request):
+        ok, result = self.invoke(request, request.get("timeout", 5.0))
         message = {"ok": ok, "stdout": self.output.text()}
         message["value" if ok else "error"] = result
         self.reply(message)
@@ -176,14 +178,7 @@ class Worker:
     def call_for_batch(self, call, default_timeout):
         """One call of a batch: its reply, with the value as wire text (checked to be plain data)."""
         started = time.monotonic()
-        function = self.namespace(call["lesson"]).get(call["name"])
-        if not callable(function):
-            return {"ok": False, "stdout": "", "seconds": 0.0, "error": {
-                "type": "NameError", "where": "",
-                "message": f"{call['name']} is not defined in the graded cells"}}
-        args = [self.materialize(a) for a in call.get("args", [])]
-        kwargs = {k: self.materialize(v) for k, v in call.get("kwargs", {}).items()}
-        ok, result = self.run_guarded(lambda: function(*args, **kwargs), call.get("timeout") or default_timeout)
+        ok, result = self.invoke(call, call.get("timeout") or default_timeout)
         message = {"ok": ok, "stdout": self.output.text()}
         if ok:
             try:
