@@ -185,3 +185,56 @@ def test_only_the_references_exact_values_pass_a_test_unrun_and_never_where_it_r
     assert raising.results[1] is None
     assert not _passes_unrun(raising, [1.5, 0.0])  # returned where the reference raised: the test runs
     assert not _passes_unrun(raising, [1.5])  # a call short: the test runs
+
+
+class _ServingSandbox(_AnsweringSandbox):
+    """Also serves the calls a test makes: from the batch (take_reply) or, off the recording, live."""
+
+    def take_reply(self, lesson, name, reply, timeout):
+        return wire.loads(reply["text"])
+
+    def call(self, lesson, name, args, kwargs, timeout=None):
+        return 0.0
+
+
+def _run_on_batch(transcript, values, calls):
+    """A replay of ``transcript`` whose batch returns ``values``, after a test made ``calls``."""
+    replay = transcripts.Replay(_ServingSandbox([wire.dumps(v) for v in values]))
+    replay.prefetch(transcript)
+    for argument in calls:
+        replay.call("01", "halve", [argument], {}, None)
+    return replay
+
+
+def test_values_are_learned_only_from_a_test_that_passed_on_exactly_its_batch():
+    recorder = transcripts.ReferenceRecorder(SimpleNamespace(halve=lambda x: x / 2))
+    recorded = recorder.start()
+    recorder.call("01", "halve", [3.0])
+    recorder.call("01", "halve", [5.0])
+    recorded.passed = True
+    sandbox_values = [1.5 + 2 ** -51, 2.5]
+
+    assert not _run_on_batch(recorded, sandbox_values, [3.0, 5.0]).note_if_passed(False)  # it failed
+    assert not _run_on_batch(recorded, sandbox_values, [3.0]).note_if_passed(True)  # a call left over
+    assert not _run_on_batch(recorded, sandbox_values, [3.0, 7.0]).note_if_passed(True)  # left the recording
+    assert not _run_on_batch(recorded, sandbox_values, [3.0, 5.0, 9.0]).note_if_passed(True)  # one call more
+    assert recorded.also_passing == [] and not _passes_unrun(recorded, sandbox_values)
+
+    assert _run_on_batch(recorded, sandbox_values, [3.0, 5.0]).note_if_passed(True)
+    assert _passes_unrun(recorded, sandbox_values)  # now known to pass, bit for bit
+    assert _passes_unrun(recorded, [1.5, 2.5])  # the reference's own values still do
+    assert not _passes_unrun(recorded, [1.5 + 2 ** -51, 2.5 + 2 ** -51])  # anything else runs the test
+
+
+def test_a_student_whose_code_is_the_references_runs_almost_no_test_once_learned(tmp_path, monkeypatch):
+    """learn_reference_in_sandbox: the reference's sandbox values pass unrun too (and verdicts stay full)."""
+    from autograder.grading import suite
+    from autograder.lessons.catalog import load_catalog
+    from autograder.lessons.reference import load_reference
+
+    suite.learn_reference_in_sandbox(load_reference(), load_catalog())
+    counts = _count_unrun(monkeypatch)
+    result = grade_student("ada", build_submission(tmp_path / "ada"), GradingOptions(nbval=False))
+    assert result.score == result.max_score
+    total = counts["run"] + counts["unrun"]
+    assert total > 150 and counts["run"] <= 0.02 * total, counts

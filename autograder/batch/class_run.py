@@ -5,6 +5,8 @@ the reference solutions) and then forks a fresh grader per student
 (:mod:`autograder.sandbox.forking`), so starting a student costs a fork, not a Python
 start-up, and no state survives from one student to the next. A grader that
 dies is reported as "could not grade" with the reason; the batch goes on.
+Each concurrent grader has a warm sandbox slot (:mod:`autograder.sandbox.warm`)
+whose zygote forks the student's worker, so the sandbox side costs a fork too.
 
 Before any student, the canary (:mod:`autograder.grading.canary`) grades the
 reference solutions through the same pipeline; if they do not get full marks
@@ -25,6 +27,7 @@ import os
 import signal
 import time
 import traceback
+from contextlib import nullcontext
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -33,14 +36,14 @@ from autograder.grading.canary import describe_canary, ensure_reference_passes
 from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_changed
 from autograder.grading.pipeline import GradingOptions, grade_student
 from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
-from autograder.grading.suite import preload_hidden_suite
+from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.reference import load_reference
 from autograder.reports import feedback
 from autograder.reports.gradebook import gradebook_csv
 from autograder.reports.gradescope_results import results_json
 from autograder.reports.lateness import apply_late_policy
-from autograder.sandbox import launcher, process_tree
+from autograder.sandbox import launcher, process_tree, warm
 from autograder.sandbox.forking import fork_each
 
 STUDENT_TIMEOUT = 900
@@ -287,7 +290,14 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
         if progress:
             progress.advance(row)
 
-    (runner or fork_each)(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
+    if runner is not None:
+        runner(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
+    elif tasks:
+        jobs = min(jobs, len(tasks))
+        with warm.SlotPool(jobs, options.limits) if warm.enabled() else nullcontext() as slots:
+            learn_reference_in_sandbox(load_reference(), load_catalog(), options.limits,
+                                       slots.slots[0] if slots else None)
+            fork_each(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
     if progress:
         progress.finish()
     submitted = {sid for sid, _ in students}

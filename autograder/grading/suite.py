@@ -19,7 +19,9 @@ How it runs (speed; the ``--no-nbval`` path is this module plus the sandbox):
   yardstick: ``tests/test_suite_runner.py`` holds the two to the same results.
 - each test's calls reach the sandbox in one batch, and a test whose calls
   return exactly the reference's values is not run again
-  (:mod:`autograder.grading.transcripts`).
+  (:mod:`autograder.grading.transcripts`); before a batch,
+  :func:`learn_reference_in_sandbox` adds the reference's values as computed in
+  a sandbox, which can differ from this process's in the last bits.
 - the preloaded heap is frozen out of the garbage collector, and OpenBLAS
   runs one thread (its pool made a 4×4 ``expm`` 50× slower).
 """
@@ -35,7 +37,8 @@ import pytest
 from autograder.grading.results import CheckResult
 from autograder.grading.transcripts import ReferenceRecorder, Replay
 from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
-from autograder.sandbox.session import SandboxUnavailable, StudentError
+from autograder.lessons.reference import answer_sources
+from autograder.sandbox.session import LessonProgram, SandboxUnavailable, StudentError, StudentSandbox
 
 if str(SOLUTIONS) not in sys.path:
     sys.path.insert(0, str(SOLUTIONS))  # the hidden suite uses coursekit.diagnose for hints
@@ -220,6 +223,54 @@ def transcripts_for(reference, catalog):
     recorder.transcript = None
     _TRANSCRIPTS[id(reference)] = (reference, found)
     return found
+
+
+def reference_programs(catalog):
+    """``{lesson: LessonProgram}`` of the reference solutions: each master's setup and answer cells."""
+    sources = answer_sources()
+    return {lesson.number: LessonProgram(setup=lesson.setup_source,
+                                         cells=[(e.name, sources[e.name]) for e in lesson.exercises])
+            for lesson in catalog.graded_lessons}
+
+
+_LEARNED = set()  # id(reference) of the references already run in a sandbox by this process
+
+
+def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None):
+    """Run the hidden suite once on the reference solutions in a sandbox, as a student; return how many
+    tests taught a new passing list of values.
+
+    The reference's values computed in a sandbox can differ from this process's
+    recording in the last bits (BLAS takes other paths on differently aligned
+    memory), so without this a student whose code is the reference's would
+    re-run about a quarter of the tests. A test teaches its values only when
+    it passed with every call answered from its batch, in the recorded order,
+    so a student who returns the same values, bit for bit, would pass it the
+    same way (:meth:`~autograder.grading.transcripts.Replay.note_if_passed`).
+    Speed only: any failure here just leaves the memo as it was.
+    """
+    if id(reference) in _LEARNED:
+        return 0
+    _LEARNED.add(id(reference))
+    transcripts = transcripts_for(reference, catalog)
+    learned = 0
+    try:
+        with StudentSandbox(reference_programs(catalog), limits=limits, slot=slot) as sandbox:
+            proxy = StudentProxy(sandbox, catalog)
+            replay = proxy._replay = Replay(sandbox)
+            for test in hidden_tests()[0]:
+                transcript = transcripts.get(test.nodeid)
+                if transcript is None or not transcript.passed:
+                    continue
+                replay.prefetch(transcript)
+                if replay.passes_as_recorded():
+                    continue
+                passed, _, _ = _call_test(test, proxy, reference)
+                learned += replay.note_if_passed(passed)
+                replay.stop()
+    except (SandboxUnavailable, StudentError):
+        pass
+    return learned
 
 
 def _call_test(test, proxy, reference):

@@ -33,10 +33,12 @@ def describe_exit(status):
     return "the grading process ended abnormally"
 
 
-def _run_child(function, item):
+def _run_child(function, item, slots, slot):
     code = 0
     try:
         signal.signal(signal.SIGINT, signal.SIG_DFL)
+        if slots is not None:
+            slots.enter(slot)
         function(item)
     except BaseException:  # report on stderr, end with a non-zero status
         traceback.print_exc()
@@ -45,37 +47,50 @@ def _run_child(function, item):
         os._exit(code)
 
 
-def fork_each(function, items, jobs, on_done, deadline_seconds=None, poll=0.05):
+def _release(slots, slot, free):
+    if slots is not None:
+        slots.repair(slot)
+    free.append(slot)
+
+
+def fork_each(function, items, jobs, on_done, deadline_seconds=None, poll=0.05, slots=None):
     """Call ``function(item)`` in a new fork per item, at most ``jobs`` at a time.
 
     ``on_done(item, problem)`` runs in the parent as each child ends:
     ``problem`` is ``None`` for a normal exit, else a sentence (killed by a
     signal, non-zero status, or past ``deadline_seconds`` and killed).
+    ``slots`` (a :class:`~autograder.sandbox.warm.SlotPool` of ``jobs``
+    slots, or None): each child gets a slot no running child has, through
+    ``slots.enter(index)`` before ``function``; the parent calls
+    ``slots.repair(index)`` after the child ends.
     """
     pending = list(items)
-    running = {}  # pid -> (item, started)
+    running = {}  # pid -> (item, started, slot)
+    free = list(range(jobs))
     try:
         while pending or running:
             while pending and len(running) < jobs:
-                item = pending.pop(0)
+                item, slot = pending.pop(0), free.pop(0)
                 pid = os.fork()
                 if pid == 0:
-                    _run_child(function, item)
-                running[pid] = (item, time.monotonic())
+                    _run_child(function, item, slots, slot)
+                running[pid] = (item, time.monotonic(), slot)
             pid, status = os.waitpid(-1, os.WNOHANG)
             if pid == 0:
                 if deadline_seconds is not None:
                     now = time.monotonic()
-                    for child, (item, started) in list(running.items()):
+                    for child, (item, started, slot) in list(running.items()):
                         if now - started > deadline_seconds:
                             os.kill(child, signal.SIGKILL)
                             os.waitpid(child, 0)
                             del running[child]
+                            _release(slots, slot, free)
                             on_done(item, f"grading took longer than {deadline_seconds:g} s and was stopped")
                 time.sleep(poll)
                 continue
             if pid in running:
-                item, _ = running.pop(pid)
+                item, _, slot = running.pop(pid)
+                _release(slots, slot, free)
                 on_done(item, describe_exit(status))
     except BaseException:
         for child in running:

@@ -41,6 +41,7 @@ from autograder.lessons.paths import PROJECT_ROOT
 from autograder.sandbox import cgroups
 
 NOBODY = 65534
+ZYGOTE_CAPABILITIES = ("CAP_SETUID", "CAP_SETGID", "CAP_KILL")
 
 LIMITS_ONLY_WARNING = (
     "Student code was isolated by resource limits only: it ran in its own process with limits and "
@@ -192,12 +193,15 @@ def bwrap_executable():
         return None
 
 
-def bwrap_command(program, sandbox_dir, scratch_dir, limits):
+def bwrap_command(program, sandbox_dir, scratch_dir, limits, zygote=False):
     """The bubblewrap command line that runs ``program`` (a list) isolated.
 
     As root, bubblewrap makes PID, network, IPC and mount namespaces without a
     user namespace, and our worker drops to ``nobody``; as an ordinary user it
-    needs a user namespace too (``--unshare-all``).
+    needs a user namespace too (``--unshare-all``). A warm slot's ``zygote``
+    (see :mod:`autograder.sandbox.warm`) runs as PID 1, which student code in
+    the namespace cannot signal; as root it keeps only the capabilities it needs
+    to fork workers as the sandbox's user and to kill them.
     """
     bwrap = bwrap_executable() or "bwrap"
     if _running_as_root():
@@ -206,6 +210,10 @@ def bwrap_command(program, sandbox_dir, scratch_dir, limits):
     else:
         args = [bwrap, "--unshare-all"]
     args += ["--die-with-parent", "--new-session"]
+    if zygote:
+        args += ["--as-pid-1"]
+        if _running_as_root():
+            args += ["--cap-drop", "ALL"] + [a for cap in ZYGOTE_CAPABILITIES for a in ("--cap-add", cap)]
     args += _system_binds()
     # The writable /tmp goes first: Python may be installed under /tmp (a checkout
     # there, say), and a later mount on /tmp would hide it.
@@ -214,8 +222,10 @@ def bwrap_command(program, sandbox_dir, scratch_dir, limits):
     args += _parent_dirs(roots)
     for root in roots:
         args += ["--ro-bind", root, root]
+    # / and /dev are bubblewrap's tmpfs: read-only, so that /tmp is the one writable place whoever runs
+    # the grader (as an ordinary user, the sandbox's user would own them)
     args += ["--ro-bind", str(sandbox_dir), "/sandbox",
-             "--proc", "/proc", "--dev", "/dev",
+             "--proc", "/proc", "--dev", "/dev", "--remount-ro", "/", "--remount-ro", "/dev",
              "--chdir", "/tmp", "--clearenv"]
     for key, value in sandbox_environment(limits).items():
         args += ["--setenv", key, value]
@@ -275,14 +285,17 @@ def describe_isolation():
     return f"sandbox: RESOURCE LIMITS ONLY — {detail}. {LIMITS_ONLY_WARNING} Student code runs as {user_name()}{caps}."
 
 
-def prepare_dirs(base):
-    """Create ``base/sandbox`` (worker files, read-only inside) and ``base/scratch`` (writable)."""
+def prepare_dirs(base, uid=None):
+    """Create ``base/sandbox`` (worker files, read-only inside) and ``base/scratch`` (writable).
+
+    As root, the scratch folder belongs to ``uid`` (default :func:`sandbox_uid`), the sandbox's user.
+    """
     base = Path(base)
     sandbox_dir, scratch_dir = base / "sandbox", base / "scratch"
     sandbox_dir.mkdir(parents=True, exist_ok=True)
     scratch_dir.mkdir(parents=True, exist_ok=True)
     child_dir = Path(__file__).resolve().parent / "child"
-    for name in ("worker.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py", "fork_kernel.py"):
+    for name in ("worker.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py", "fork_kernel.py", "zygote.py"):
         if (child_dir / name).exists():
             shutil.copy2(child_dir / name, sandbox_dir / name)
     from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE
@@ -293,7 +306,8 @@ def prepare_dirs(base):
         os.chmod(path, 0o755)
     os.chmod(scratch_dir, 0o777)
     if _running_as_root():
-        os.chown(scratch_dir, sandbox_uid(), sandbox_uid())
+        owner = sandbox_uid() if uid is None else uid
+        os.chown(scratch_dir, owner, owner)
     return sandbox_dir, scratch_dir
 
 
@@ -321,7 +335,7 @@ def outside_path(path, sandbox_dir, scratch_dir, inside=("/sandbox", "/tmp")):
     return path
 
 
-def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE):
+def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE, zygote=False):
     """Start ``program`` (argv relative to the sandbox: ``/sandbox/...`` paths) isolated.
 
     In ``limits`` mode, ``/sandbox`` in the argv is rewritten to the real
@@ -330,7 +344,7 @@ def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdo
     """
     mode, _ = isolation()
     if mode == "namespaces":
-        argv = bwrap_command(program, sandbox_dir, scratch_dir, limits)
+        argv = bwrap_command(program, sandbox_dir, scratch_dir, limits, zygote)
         env, cwd = None, None
     else:
         # only the worker's own /sandbox paths: the interpreter may live under a real /tmp (a checkout there)
@@ -392,9 +406,10 @@ def sandbox_uid():
     return UID_BASE + os.getpid()
 
 
-def worker_flags():
-    """Extra worker arguments: which uid to become, or keep the user when dropping root would break imports."""
+def worker_flags(uid=None):
+    """Extra worker arguments: which uid to become (default :func:`sandbox_uid`), or keep the user when
+    dropping root would break imports."""
     mode, _ = isolation()
     if mode == "limits" and _running_as_root() and not limits_mode_can_drop_root():
         return ["--keep-user"]
-    return ["--uid", str(sandbox_uid())] if _running_as_root() else []
+    return ["--uid", str(sandbox_uid() if uid is None else uid)] if _running_as_root() else []

@@ -19,12 +19,13 @@ array([[1., 0., 0.], ...
 import os
 import selectors
 import signal
+import subprocess
 import sys
 import tempfile
 import time
 from dataclasses import dataclass, field
 
-from autograder.sandbox import launcher
+from autograder.sandbox import launcher, warm
 from autograder.sandbox.child import wire
 
 _SIGNAL_REASONS = {
@@ -87,9 +88,14 @@ class SandboxUnavailable(RuntimeError):
 class StudentSandbox:
     """One student's sandbox; use as a context manager."""
 
-    def __init__(self, program, limits=None, base_dir=None):
+    def __init__(self, program, limits=None, base_dir=None, slot=None):
         self.program = program
         self.limits = limits or launcher.Limits()
+        # a warm slot (see warm.py) when this process was given one with the same limits, else cold starts
+        self.slot = slot if slot is not None else warm.assigned_slot()
+        if self.slot is not None and self.slot.limits != self.limits:
+            self.slot = None
+        self._slot_reset = False
         self._tmp = None
         self._base_dir = base_dir
         self.process = None
@@ -120,13 +126,27 @@ class StudentSandbox:
             self.sandbox_dir, self.scratch_dir = launcher.prepare_dirs(base)
         return self.sandbox_dir, self.scratch_dir
 
+    def _fork_warm(self):
+        """A worker forked by the slot's zygote (the slot reset first, for this student), or None."""
+        try:
+            if not self._slot_reset:
+                self.slot.reset(wipe=True)  # whatever the previous student left in the slot goes
+                self._slot_reset = True
+            return self.slot.fork_worker()
+        except warm.SlotBroken:
+            self.slot.discard()
+            self.slot = None  # this student goes on with cold sandboxes
+            return None
+
     def _start(self):
-        sandbox_dir, scratch_dir = self._dirs()
         self._buffer = b""
-        # the venv's own interpreter path (not its realpath), so Python finds the venv's packages
-        self.process = launcher.spawn([sys.executable, "-I", "-B", "/sandbox/worker.py"]
-                                      + launcher.worker_flags(),
-                                      sandbox_dir, scratch_dir, self.limits)
+        self.process = self._fork_warm() if self.slot is not None else None
+        if self.process is None:
+            sandbox_dir, scratch_dir = self._dirs()
+            # the venv's own interpreter path (not its realpath), so Python finds the venv's packages
+            self.process = launcher.spawn([sys.executable, "-I", "-B", "/sandbox/worker.py"]
+                                          + launcher.worker_flags(),
+                                          sandbox_dir, scratch_dir, self.limits)
         self._selector = selectors.DefaultSelector()
         self._selector.register(self.process.stdout, selectors.EVENT_READ)
         hello = self._receive(deadline=time.monotonic() + 60.0)
@@ -137,7 +157,12 @@ class StudentSandbox:
     def _kill(self):
         if self.process is None:
             return
-        launcher.terminate(self.process)
+        if isinstance(self.process, warm.WarmWorker):
+            self.process.stop()
+            if self.process.slot.broken:
+                self.slot = None
+        else:
+            launcher.terminate(self.process)
         self._selector.close()
         self.process = None
         self.loaded = False
@@ -149,6 +174,11 @@ class StudentSandbox:
             except _Dead:
                 pass
         self._kill()
+        if self.slot is not None and self._slot_reset:
+            try:
+                self.slot.reset(wipe=True)  # leave nothing running or stored in the slot
+            except warm.SlotBroken:
+                self.slot.discard()
         if self._tmp is not None:
             self._tmp.cleanup()
             self._tmp = None
@@ -181,7 +211,10 @@ class StudentSandbox:
                 continue
             chunk = os.read(self.process.stdout.fileno(), 1 << 20)
             if not chunk:
-                self.process.wait(timeout=5)
+                try:
+                    self.process.wait(timeout=5)
+                except subprocess.TimeoutExpired:
+                    pass  # it closed its replies but lives on: "stopped answering"
                 raise _Dead(self._death_reason())
             self._buffer += chunk
             if len(self._buffer) > wire.MAX_LINE_BYTES:

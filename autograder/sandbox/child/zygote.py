@@ -1,0 +1,300 @@
+"""A warm process that forks a fresh worker per request, inside the sandbox (copied there).
+
+Starting a worker from scratch costs about a tenth of a CPU-second (bubblewrap,
+the interpreter, numpy), and a student whose code calls ``coursekit.lie``
+pays another fifth for scipy. The zygote pays that once per grading slot: it
+imports what every worker needs and then forks one worker per request, which
+becomes the sandbox's user (as a cold worker does) before anything else. Each
+worker is a copy of a process that never ran student code, so every student,
+and every restart after a crash, starts from the same clean state.
+
+The zygote is PID 1 of the sandbox's PID namespace (``bwrap --as-pid-1``), so
+student code cannot signal it. As root it runs as root with three
+capabilities (setuid, setgid, kill) and its workers as the sandbox's user, so
+``kill(getppid(), ...)`` fails for a student as it does in a cold sandbox,
+whose parent is bubblewrap's root init. It is not dumpable: ``/proc/1/fd``,
+``/proc/1/mem``, ptrace and ``pidfd_getfd`` are refused to student code, and
+a worker closes the control socket before anything else.
+
+Between two students the grader asks for a *reset*: every other process in the
+sandbox is killed; then a helper, as the sandbox's user, removes System V IPC
+objects and empties ``/tmp``, the sandbox's only writable folder (it never
+follows a student's symlink with more rights than the student has).
+
+The control channel is a Unix ``SOCK_SEQPACKET`` socket (message boundaries kept) on
+fd 0; each message is one JSON object, and every reply echoes the request's
+``nonce``:
+
+- ``{"op": "fork", "cpu_seconds": N}``: fork a worker (with that CPU limit);
+  reply ``{"ok": true, "pid": P}`` carrying two file descriptors: the write end
+  of the worker's requests and the read end of its replies.
+- ``{"op": "status", "pid": P, "wait": seconds}``: reply ``{"status": S}``, the
+  raw wait status once the worker has exited, or ``null`` while it runs.
+- ``{"op": "reset", "wipe": bool}``: kill every other process, reap them and,
+  with ``wipe``, remove what the last student left; reply ``{"ok": true,
+  "left": n}`` with the number of processes that could not be killed (0).
+
+Examples
+--------
+>>> # bwrap --as-pid-1 ... -- python -I -B /sandbox/zygote.py --uid 4394304    (see autograder.sandbox.warm)
+"""
+
+import ctypes
+import json
+import os
+import resource
+import select
+import shutil
+import signal
+import socket
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import jail  # noqa: E402
+import worker  # noqa: E402  (imports numpy; imported, it leaves privileges alone)
+
+KEEP_USER = "--keep-user" in sys.argv
+SANDBOX_UID = jail.sandbox_uid(sys.argv)
+
+PR_SET_PDEATHSIG = 1
+PR_SET_DUMPABLE = 4
+IPC_RMID = 0
+WARM_MODULES = ("scipy.spatial.transform", "coursekit", "coursekit.lie", "probes")
+CLEANER_SECONDS = 20.0
+
+
+def _libc():
+    return ctypes.CDLL(None, use_errno=True)
+
+
+def _warm_up():
+    for name in WARM_MODULES:
+        try:
+            __import__(name)
+        except Exception:  # noqa: BLE001 - a module that cannot be imported fails in the worker, as usual
+            pass
+
+
+# ---------------------------------------------------------------- messages
+def _send(control, message, fds=()):
+    data = json.dumps(message).encode()
+    if fds:
+        socket.send_fds(control, [data], list(fds))
+    else:
+        control.send(data)
+
+
+def _receive(control):
+    """The next request; meanwhile, as PID 1, reap the orphans student code leaves."""
+    while not select.select([control], [], [], 1.0)[0]:
+        _reap()
+    data = control.recv(65536)
+    return json.loads(data) if data else None
+
+
+def _become_sandbox_user():
+    if not KEEP_USER:
+        jail.drop_privileges(SANDBOX_UID)
+
+
+# ---------------------------------------------------------------- fork
+def _fork_worker(control, cpu_seconds):
+    """Fork a worker on two new pipes; return (pid, the grader's two ends)."""
+    requests_read, requests_write = os.pipe()
+    replies_read, replies_write = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        try:
+            control.close()
+            os.dup2(requests_read, 0)
+            os.dup2(replies_write, 1)
+            os.closerange(3, resource.getrlimit(resource.RLIMIT_NOFILE)[0])
+            resource.setrlimit(resource.RLIMIT_CPU, (cpu_seconds, cpu_seconds))
+            os.setsid()
+            _become_sandbox_user()
+            worker.main()
+        finally:
+            os._exit(70)
+    os.close(requests_read)
+    os.close(replies_write)
+    return pid, (requests_write, replies_read)
+
+
+# ---------------------------------------------------------------- status
+_finished = {}  # pid -> raw wait status, for workers reaped before anyone asked
+
+
+def _reap():
+    while True:
+        try:
+            pid, status = os.waitpid(-1, os.WNOHANG)
+        except ChildProcessError:
+            return
+        if pid == 0:
+            return
+        _finished[pid] = status
+
+
+def _status(pid, wait):
+    deadline = time.monotonic() + max(0.0, float(wait))
+    while True:
+        _reap()
+        if pid in _finished:
+            return _finished.pop(pid)
+        if time.monotonic() >= deadline:
+            return None
+        time.sleep(0.005)
+
+
+# ---------------------------------------------------------------- reset
+def _others():
+    return [int(e) for e in os.listdir("/proc") if e.isdigit() and int(e) != os.getpid()]
+
+
+def _kill_others():
+    """SIGKILL every process of the sandbox but bubblewrap's init and us; return how many remain."""
+    for _ in range(200):
+        if not _others():
+            break
+        try:
+            os.kill(-1, signal.SIGKILL)  # every process of this PID namespace but us
+        except OSError:
+            pass
+        _reap()
+        time.sleep(0.002)
+    _reap()
+    _finished.clear()
+    return len(_others())
+
+
+def _remove_ipc():
+    """Remove the System V shared memory, semaphores and message queues left in this IPC namespace."""
+    libc = _libc()
+    for table, remove in (("shm", libc.shmctl), ("sem", None), ("msg", libc.msgctl)):
+        try:
+            with open(f"/proc/sysvipc/{table}") as listing:
+                rows = listing.read().splitlines()[1:]
+        except OSError:
+            continue
+        for row in rows:
+            ident = int(row.split()[1])
+            if table == "sem":
+                libc.semctl(ident, 0, IPC_RMID)
+            else:
+                remove(ident, IPC_RMID, None)
+
+
+def _empty(folder):
+    """Remove everything in ``folder``, also what a student made unreadable (chmod 0)."""
+    try:
+        os.chmod(folder, 0o777)  # as launcher.prepare_dirs made it
+        entries = os.listdir(folder)
+    except OSError:
+        return
+    for name in entries:
+        path = os.path.join(folder, name)
+        if os.path.isdir(path) and not os.path.islink(path):
+            try:
+                os.chmod(path, 0o700)
+            except OSError:
+                pass
+            for root, folders, _ in os.walk(path):
+                for inner in folders:
+                    try:
+                        os.chmod(os.path.join(root, inner), 0o700)
+                    except OSError:
+                        pass
+            shutil.rmtree(path, ignore_errors=True)
+        else:
+            try:
+                os.unlink(path)
+            except OSError:
+                pass
+
+
+def _wipe():
+    """Remove what the last student left, in a child that is the sandbox's user (no more rights)."""
+    pid = os.fork()
+    if pid == 0:
+        try:
+            _become_sandbox_user()
+            _remove_ipc()
+            _empty("/tmp")
+        finally:
+            os._exit(0)
+    deadline = time.monotonic() + CLEANER_SECONDS
+    while time.monotonic() < deadline:
+        done, _ = os.waitpid(pid, os.WNOHANG)
+        if done:
+            return True
+        time.sleep(0.002)
+    os.kill(pid, signal.SIGKILL)
+    os.waitpid(pid, 0)
+    return False
+
+
+def _reset(wipe):
+    left = _kill_others()
+    if wipe and not _wipe():
+        left += 1
+    return left
+
+
+# ---------------------------------------------------------------- main
+def _answer(control, request, reply):
+    """Carry out one request, filling in ``reply``; return the file descriptors to send with it."""
+    op = request.get("op")
+    if op == "fork":
+        reply["pid"], fds = _fork_worker(control, int(request.get("cpu_seconds", 120)))
+        reply["ok"] = True
+        return fds
+    if op == "status":
+        reply["status"] = _status(int(request["pid"]), request.get("wait", 0))
+    elif op == "reset":
+        reply["left"] = _reset(bool(request.get("wipe")))
+        reply["ok"] = reply["left"] == 0
+    else:
+        reply.update(ok=False, error=f"unknown op {op!r}")
+    return ()
+
+
+def serve(control):
+    _send(control, {"ready": True})
+    while True:
+        try:
+            request = _receive(control)
+        except (OSError, ValueError):
+            request = None
+        if not isinstance(request, dict):
+            os._exit(0)  # the grader has gone (or spoke nonsense): everything here dies with us
+        reply, fds = {"nonce": request.get("nonce")}, ()
+        try:
+            fds = _answer(control, request, reply)
+        except Exception as error:  # noqa: BLE001 - say what went wrong; the grader discards the slot
+            reply.update(ok=False, error=f"{type(error).__name__}: {error}")
+        _send(control, reply, fds)
+        for fd in fds:
+            os.close(fd)
+
+
+def main():
+    control = socket.socket(fileno=os.dup(0))
+    devnull = os.open(os.devnull, os.O_RDWR)
+    for fd in (0, 1, 2):
+        os.dup2(devnull, fd)
+    os.close(devnull)
+    libc = _libc()
+    libc.prctl(PR_SET_DUMPABLE, 0, 0, 0, 0)
+    # bubblewrap's own death signal does not survive its dropping of capabilities: ask again, so that the
+    # sandbox (everything in it dies with PID 1) ends with the bubblewrap that runs it
+    libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    os.chdir("/tmp")
+    _warm_up()
+    serve(control)
+
+
+if __name__ == "__main__":
+    main()

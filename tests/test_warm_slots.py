@@ -1,0 +1,185 @@
+"""Warm slots (autograder/sandbox/warm.py): a student's worker is forked from a long-lived zygote.
+
+Oracles: what one student leaves in a slot (processes, files, unreadable
+folders, System V IPC, a locked /tmp) is gone when the next student's worker
+starts; student code cannot reach the zygote (its fds, memory, ptrace) or
+the control socket; a student who kills the zygote loses only the call that
+did it, and the batch's next student gets a fresh warm slot. The behaviour of
+a warm worker against a cold one (timeouts, crashes, limits, isolation) is
+checked by tests/test_sandbox.py, which runs every case both ways.
+"""
+
+import os
+import signal
+import time
+
+import pytest
+
+from autograder.sandbox import launcher, process_tree, warm
+from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
+
+pytestmark = pytest.mark.skipif(not warm.enabled(), reason="warm slots need the namespace sandbox")
+
+LEAVE_EVERYTHING = r'''
+import ctypes, os, time
+
+def leave():
+    if os.fork() == 0:                  # a detached grandchild that keeps writing
+        os.setsid()
+        if os.fork() == 0:
+            while True:
+                try:
+                    open("/tmp/daemon", "w").write(str(time.time()))
+                except OSError:
+                    pass
+                time.sleep(0.01)
+        os._exit(0)
+    libc = ctypes.CDLL(None, use_errno=True)
+    made = [libc.shmget(4242, 4096, 0o1666), libc.semget(4243, 1, 0o1666), libc.msgget(4244, 0o1666)]
+    open("/tmp/answers.txt", "w").write("the previous student's work")
+    os.makedirs("/tmp/locked/inner")
+    open("/tmp/locked/inner/f", "w").write("x")
+    os.chmod("/tmp/locked/inner", 0)
+    os.chmod("/tmp/locked", 0)
+    time.sleep(0.1)
+    os.chmod("/tmp", 0)
+    return made
+'''
+
+LOOK_AROUND = r'''
+import os
+
+def look():
+    processes = sorted(int(p) for p in os.listdir("/proc") if p.isdigit())
+    ipc = {table: len(open(f"/proc/sysvipc/{table}").read().splitlines()) - 1 for table in ("shm", "sem", "msg")}
+    return {"processes": processes, "me": os.getpid(), "tmp": sorted(os.listdir("/tmp")), "ipc": ipc,
+            "tmp_writable": os.access("/tmp", os.W_OK)}
+'''
+
+REACH_FOR_THE_ZYGOTE = r'''
+import ctypes, os, stat
+
+def reach():
+    zygote = os.getppid()
+    found = {}
+    for what, attempt in (("fds", lambda: os.listdir(f"/proc/{zygote}/fd")),
+                          ("memory", lambda: open(f"/proc/{zygote}/mem", "rb").read(1)),
+                          ("environment", lambda: open(f"/proc/{zygote}/environ", "rb").read(1))):
+        try:
+            attempt()
+            found[what] = "reachable"
+        except OSError as error:
+            found[what] = type(error).__name__
+    found["ptrace"] = ctypes.CDLL(None, use_errno=True).ptrace(16, zygote, None, None)  # PTRACE_ATTACH
+    found["sockets"] = []
+    for fd in os.listdir("/proc/self/fd"):
+        try:
+            if os.readlink(f"/proc/self/fd/{fd}").startswith("socket:"):
+                found["sockets"].append(fd)
+        except OSError:  # the folder listing's own descriptor, closed by now
+            pass
+    return found
+'''
+
+
+def _program(source):
+    return {"01": LessonProgram(setup="import numpy as np", cells=[("code", source)])}
+
+
+@pytest.fixture
+def slot():
+    started = warm.WarmSlot(0, launcher.Limits())
+    started.spawn()
+    started.wait_ready()
+    assert started.usable(), "the slot's zygote did not start"
+    yield started
+    started.close()
+
+
+def test_workers_are_forked_from_the_slot(slot):
+    with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+        assert box.call("01", "f") == 1
+        assert isinstance(box.process, warm.WarmWorker)
+
+
+def test_the_next_student_finds_nothing_the_previous_one_left(slot):
+    with StudentSandbox(_program(LEAVE_EVERYTHING), slot=slot) as first:
+        made = first.call("01", "leave")
+        assert all(ident >= 0 for ident in made), made
+    with StudentSandbox(_program(LOOK_AROUND), slot=slot) as second:
+        seen = second.call("01", "look")
+        assert isinstance(second.process, warm.WarmWorker)
+    # the zygote (PID 1) and this worker: nothing else runs
+    assert seen["processes"] == sorted({1, seen["me"]}), seen
+    assert seen["tmp"] == [] and seen["tmp_writable"], seen
+    assert seen["ipc"] == {"shm": 0, "sem": 0, "msg": 0}, seen
+
+
+def test_student_code_cannot_reach_the_zygote(slot):
+    with StudentSandbox(_program(REACH_FOR_THE_ZYGOTE), slot=slot) as box:
+        found = box.call("01", "reach")
+    assert found["fds"] == found["memory"] == found["environment"] == "PermissionError", found
+    assert found["ptrace"] == -1, found
+    assert found["sockets"] == [], "the worker holds no socket: not the zygote's control channel"
+
+
+def test_student_code_cannot_kill_the_zygote(slot):
+    """It is PID 1 of the sandbox (and root, when the grader is): signals from student code never reach it."""
+    attack = ("import os, signal, time\ndef attack():\n    for number in (signal.SIGKILL, signal.SIGSTOP, signal.SIGTERM):\n"
+              "        for target in (os.getppid(), -1):\n            try:\n                os.kill(target, number)\n"
+              "            except OSError:\n                pass\n    time.sleep(0.3)\n    return os.getppid()")
+    with StudentSandbox(_program(attack), slot=slot) as box:
+        try:
+            assert box.call("01", "attack") == 1
+        except StudentError as error:  # kill(-1, SIGKILL) also hits the worker itself: a crash, as when cold
+            assert error.kind == "crash", error
+    assert slot.alive()
+    with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+        assert box.call("01", "f") == 1
+        assert isinstance(box.process, warm.WarmWorker)
+
+
+def test_a_slot_that_dies_costs_one_call_and_the_pool_replaces_it():
+    """The OOM killer or an operator may still kill a slot from outside: the student goes on cold."""
+    with warm.SlotPool(1, launcher.Limits()) as pool:
+        slot = pool.slots[0]
+        with StudentSandbox(_program("def ok():\n    return 7"), slot=slot) as box:
+            assert box.call("01", "ok") == 7
+            zygote = process_tree.descendants(slot.process.pid)[0]
+            os.kill(zygote, signal.SIGKILL)  # as the OOM killer would
+            while process_tree.descendants(slot.process.pid):
+                time.sleep(0.01)
+            with pytest.raises(StudentError) as error:
+                box.call("01", "ok")
+            assert error.value.kind == "crash"
+            assert box.call("01", "ok") == 7, "the student goes on, in a cold sandbox"
+            assert not isinstance(box.process, warm.WarmWorker)
+        assert not slot.alive()
+        pool.repair(0)
+        replaced = pool.slots[0]
+        assert replaced.alive()
+        with StudentSandbox(_program("def f():\n    return 1"), slot=replaced) as box:
+            assert box.call("01", "f") == 1
+            assert isinstance(box.process, warm.WarmWorker)
+
+
+def test_a_slot_with_other_limits_is_not_used(slot):
+    with StudentSandbox(_program("def f():\n    return 1"), slot=slot,
+                        limits=launcher.Limits(memory_bytes=2**30)) as box:
+        assert box.call("01", "f") == 1
+        assert not isinstance(box.process, warm.WarmWorker)
+
+
+def test_concurrent_slots_run_as_different_users():
+    """RLIMIT_NPROC counts per user: one student's fork bomb must not starve another slot's student."""
+    if os.geteuid() != 0:
+        pytest.skip("as an ordinary user every sandbox runs as that user, in its own user namespace")
+    who = "import os\ndef who():\n    return os.getuid()"
+    with warm.SlotPool(2, launcher.Limits()) as pool:
+        uids = []
+        for slot in pool.slots:
+            with StudentSandbox(_program(who), slot=slot) as box:
+                uids.append(box.call("01", "who"))
+    with StudentSandbox(_program(who)) as cold:
+        uids.append(cold.call("01", "who"))
+    assert len(set(uids)) == 3 and 0 not in uids, uids
