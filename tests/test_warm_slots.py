@@ -183,3 +183,17 @@ def test_concurrent_slots_run_as_different_users():
     with StudentSandbox(_program(who)) as cold:
         uids.append(cold.call("01", "who"))
     assert len(set(uids)) == 3 and 0 not in uids, uids
+
+
+def test_a_slot_that_cannot_start_leaves_its_graders_cold(monkeypatch):
+    def no_bubblewrap(*args, **kwargs):
+        raise OSError("bwrap: no such file")
+
+    monkeypatch.setattr(launcher, "spawn", no_bubblewrap)
+    with warm.SlotPool(1, launcher.Limits()) as pool:
+        slot = pool.slots[0]
+        assert not slot.usable()
+        monkeypatch.undo()
+        with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+            assert box.call("01", "f") == 1
+            assert not isinstance(box.process, warm.WarmWorker)

@@ -121,7 +121,14 @@ class WarmSlot:
 
     # ------------------------------------------------------------ lifecycle (the batch's parent)
     def spawn(self):
-        """Start the sandbox; :meth:`wait_ready` then waits for its zygote."""
+        """Start the sandbox; :meth:`wait_ready` then waits for its zygote. A slot that cannot start is
+        left broken: its graders use cold sandboxes."""
+        try:
+            self._spawn()
+        except OSError:
+            self.discard()
+
+    def _spawn(self):
         self._base = tempfile.mkdtemp(prefix=f"autograder-slot{self.index}-")
         uid = launcher.sandbox_uid() + PID_LIMIT * (self.index + 1)
         sandbox_dir, scratch_dir = launcher.prepare_dirs(self._base, uid)
@@ -138,6 +145,8 @@ class WarmSlot:
         self.broken = False
 
     def wait_ready(self):
+        if not self.usable():
+            return
         try:
             self._read(None, time.monotonic() + START_SECONDS, want="ready")
         except SlotBroken:
