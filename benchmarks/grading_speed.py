@@ -7,11 +7,13 @@ half untouched stubs or typical mistakes), grades it with stock nbgrader
 times, the ratios, seconds per student at N and at a larger N, CPU seconds
 per student (the whole machine's busy time during the run / N: run it on a
 quiet machine), and the grader's peak memory (resident memory of its whole
-process tree, sampled).
+process tree, sampled). Then the same comparison, with both graders, on the
+bundled sample class (11 students with mistakes, missing and damaged
+notebooks, as ``python -m autograder grade`` grades it by default).
 
 Usage::
 
-    .venv/bin/python benchmarks/grading_speed.py                 # N = 20 and 100 (about 30 min on 2 cores)
+    .venv/bin/python benchmarks/grading_speed.py                 # N = 20 and 100 (about 35 min on 2 cores)
     .venv/bin/python benchmarks/grading_speed.py --students 6 --large 12   # a quick look
 
 Targets (issue 17; N = 20): full grading ≤ 0.25 × nbgrader's wall time;
@@ -35,6 +37,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests"))
 
+from autograder.authoring.sample_class import build_sample_class  # noqa: E402
 from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit)  # noqa: E402
 from autograder.lessons.catalog import load_catalog  # noqa: E402
 from support import benchmark_class  # noqa: E402
@@ -110,18 +113,22 @@ def timed(command, cwd, measure_memory=False):
     return time.monotonic() - started, peak, machine_cpu_seconds() - cpu_started
 
 
-def run_nbgrader_baseline(students, work):
-    """Wall time of stock nbgrader generating and autograding every lesson for every student."""
-    course = build_course(work / "nbgrader_course")
+def run_nbgrader_baseline(students, course_dir, check=True):
+    """Wall time of stock nbgrader autograding every lesson for every student (generating is not timed).
+
+    ``check=False``: a class with damaged notebooks, on which nbgrader reports errors but grades the rest.
+    """
+    course = build_course(course_dir)
     lessons = load_catalog().graded_lessons
     for lesson in lessons:
         run_nbgrader(course, "generate_assignment", assignment_name(lesson), "--force")
     for folder in students:
         for lesson in lessons:
-            submit(course, folder.name, lesson, folder / lesson.filename)
+            if (folder / lesson.filename).exists():
+                submit(course, folder.name, lesson, folder / lesson.filename)
     started = time.monotonic()
     for lesson in lessons:
-        run_nbgrader(course, "autograde", assignment_name(lesson), "--force")
+        run_nbgrader(course, "autograde", assignment_name(lesson), "--force", check=check)
     return time.monotonic() - started
 
 
@@ -152,7 +159,7 @@ def main():
 
     students = benchmark_class(work / "class_small", args.students)
     print(f"built {len(students)} students × {len(lessons)} notebooks")
-    nbgrader_seconds = run_nbgrader_baseline(students, work)
+    nbgrader_seconds = run_nbgrader_baseline(students, work / "nbgrader_course")
     warm_canary(work)
     print(f"stock nbgrader autograde:       {nbgrader_seconds:8.1f} s")
     full_seconds, full_memory, full_cpu = run_ours(work / "class_small", work / "ours_full")
@@ -181,6 +188,19 @@ def main():
     print(f"peak memory of the grader, whole process tree: N = {len(students)} full {full_memory / 2**20:.0f} MiB, "
           f"--no-nbval {fast_memory / 2**20:.0f} MiB; N = {len(large)} full {large_full_memory / 2**20:.0f} MiB, "
           f"--no-nbval {large_fast_memory / 2**20:.0f} MiB")
+
+    ids = build_sample_class(work / "class_sample")
+    sample_nbgrader = run_nbgrader_baseline([work / "class_sample" / i for i in ids], work / "nbgrader_sample",
+                                            check=False)
+    sample_full, _, _ = run_ours(work / "class_sample", work / "ours_sample_full")
+    sample_fast, _, _ = run_ours(work / "class_sample", work / "ours_sample_fast", ["--no-nbval"])
+    print()
+    print(f"the sample class ({len(ids)} students; damaged and missing notebooks included):")
+    print(f"  stock nbgrader autograde:     {sample_nbgrader:8.1f} s")
+    print(f"  ours, full:                   {sample_full:8.1f} s   ratio {sample_full / sample_nbgrader:6.3f}"
+          "   (target ≤ 0.25)")
+    print(f"  ours, --no-nbval:             {sample_fast:8.1f} s   ratio {sample_fast / sample_nbgrader:6.3f}"
+          "   (target ≤ 0.04)")
     print(f"machine: {os.cpu_count()} cores")
 
 

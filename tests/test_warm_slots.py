@@ -37,6 +37,11 @@ def leave():
     libc = ctypes.CDLL(None, use_errno=True)
     made = [libc.shmget(4242, 4096, 0o1666), libc.semget(4243, 1, 0o1666), libc.msgget(4244, 0o1666)]
     open("/tmp/answers.txt", "w").write("the previous student's work")
+    for name in os.listdir("/tmp"):  # folders bubblewrap made (a Python installed under /tmp)
+        try:
+            open(os.path.join("/tmp", name, "left.txt"), "w").write("x")
+        except OSError:
+            pass
     os.makedirs("/tmp/locked/inner")
     open("/tmp/locked/inner/f", "w").write("x")
     os.chmod("/tmp/locked/inner", 0)
@@ -51,8 +56,13 @@ import os
 
 def look():
     processes = sorted(int(p) for p in os.listdir("/proc") if p.isdigit())
+    mounts = {line.split()[4] for line in open("/proc/self/mountinfo")}
+    tmp = []
+    for root, folders, files in os.walk("/tmp"):
+        tmp += [os.path.join(root, name) for name in folders + files]
+        folders[:] = [name for name in folders if os.path.join(root, name) not in mounts]  # not into a mount
     ipc = {table: len(open(f"/proc/sysvipc/{table}").read().splitlines()) - 1 for table in ("shm", "sem", "msg")}
-    return {"processes": processes, "me": os.getpid(), "tmp": sorted(os.listdir("/tmp")), "ipc": ipc,
+    return {"processes": processes, "me": os.getpid(), "tmp": sorted(tmp), "ipc": ipc,
             "tmp_writable": os.access("/tmp", os.W_OK)}
 '''
 
@@ -103,6 +113,8 @@ def test_workers_are_forked_from_the_slot(slot):
 
 
 def test_the_next_student_finds_nothing_the_previous_one_left(slot):
+    with StudentSandbox(_program(LOOK_AROUND), slot=slot) as fresh:
+        before = fresh.call("01", "look")  # /tmp holds the folders of a Python installed under /tmp, if any
     with StudentSandbox(_program(LEAVE_EVERYTHING), slot=slot) as first:
         made = first.call("01", "leave")
         assert all(ident >= 0 for ident in made), made
@@ -111,7 +123,7 @@ def test_the_next_student_finds_nothing_the_previous_one_left(slot):
         assert isinstance(second.process, warm.WarmWorker)
     # the zygote (PID 1) and this worker: nothing else runs
     assert seen["processes"] == sorted({1, seen["me"]}), seen
-    assert seen["tmp"] == [] and seen["tmp_writable"], seen
+    assert seen["tmp"] == before["tmp"] and seen["tmp_writable"], (before, seen)
     assert seen["ipc"] == {"shm": 0, "sem": 0, "msg": 0}, seen
 
 
@@ -197,3 +209,21 @@ def test_a_slot_that_cannot_start_leaves_its_graders_cold(monkeypatch):
         with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
             assert box.call("01", "f") == 1
             assert not isinstance(box.process, warm.WarmWorker)
+
+
+def test_a_worker_that_does_not_start_leaves_the_student_cold(slot, monkeypatch):
+    """A slot whose workers die before saying hello (before any student code) is dropped, not the student."""
+    def stillborn(self):
+        worker = original(self)
+        worker.stdout.close()
+        read_end, write_end = os.pipe()
+        os.close(write_end)  # reads end at once, as when the worker dies at start
+        worker.stdout = os.fdopen(read_end, "rb")
+        return worker
+
+    original = warm.WarmSlot.fork_worker
+    monkeypatch.setattr(warm.WarmSlot, "fork_worker", stillborn)
+    with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+        assert box.call("01", "f") == 1
+        assert not isinstance(box.process, warm.WarmWorker)
+    assert slot.broken

@@ -149,9 +149,17 @@ class StudentSandbox:
                                           sandbox_dir, scratch_dir, self.limits)
         self._selector = selectors.DefaultSelector()
         self._selector.register(self.process.stdout, selectors.EVENT_READ)
-        hello = self._receive(deadline=time.monotonic() + 60.0)
+        try:
+            hello = self._receive(deadline=time.monotonic() + 60.0)
+        except _Dead:
+            hello = None
         self._next_id = 0
         if not (isinstance(hello, dict) and hello.get("ready")):
+            if isinstance(self.process, warm.WarmWorker):  # the slot's fault, before any student code
+                self.slot.discard()
+                self._kill()
+                self.slot = None
+                return self._start()  # cold
             raise _Dead("the sandbox did not start")
 
     def _kill(self):

@@ -42,6 +42,7 @@ Examples
 import ctypes
 import json
 import os
+import re
 import resource
 import select
 import shutil
@@ -187,32 +188,59 @@ def _remove_ipc():
                 remove(ident, IPC_RMID, None)
 
 
-def _empty(folder):
-    """Remove everything in ``folder``, also what a student made unreadable (chmod 0)."""
+def _mount_points_under(folder):
+    """Mount points below ``folder`` (read-only binds of a Python installed under /tmp, say)."""
+    def unescape(path):  # mountinfo writes spaces and the like as octal escapes: \040
+        return re.sub(r"\\([0-7]{3})", lambda match: chr(int(match[1], 8)), path)
+
+    with open("/proc/self/mountinfo") as mounts:
+        points = {unescape(line.split()[4]) for line in mounts if len(line.split()) > 4}
+    return {point for point in points if point.startswith(folder.rstrip("/") + "/")}
+
+
+def _remove(path):
+    """Remove a file or a whole folder, also what a student made unreadable (chmod 0)."""
+    if not os.path.isdir(path) or os.path.islink(path):
+        try:
+            os.unlink(path)
+        except OSError:
+            pass
+        return
     try:
-        os.chmod(folder, 0o777)  # as launcher.prepare_dirs made it
+        os.chmod(path, 0o700)
+    except OSError:
+        pass
+    for root, folders, _ in os.walk(path):
+        for inner in folders:
+            try:
+                os.chmod(os.path.join(root, inner), 0o700)
+            except OSError:
+                pass
+    shutil.rmtree(path, ignore_errors=True)
+
+
+def _empty(folder, keep):
+    """Remove everything in ``folder`` but the mount points in ``keep`` and the folders that lead to them."""
+    try:
         entries = os.listdir(folder)
     except OSError:
         return
     for name in entries:
         path = os.path.join(folder, name)
-        if os.path.isdir(path) and not os.path.islink(path):
-            try:
-                os.chmod(path, 0o700)
-            except OSError:
-                pass
-            for root, folders, _ in os.walk(path):
-                for inner in folders:
-                    try:
-                        os.chmod(os.path.join(root, inner), 0o700)
-                    except OSError:
-                        pass
-            shutil.rmtree(path, ignore_errors=True)
+        if path in keep:
+            continue
+        if any(point.startswith(path + "/") for point in keep):
+            _empty(path, keep)  # made by bubblewrap to reach a mount point: empty the rest of it
         else:
-            try:
-                os.unlink(path)
-            except OSError:
-                pass
+            _remove(path)
+
+
+def _empty_tmp():
+    try:
+        os.chmod("/tmp", 0o777)  # as launcher.prepare_dirs made it
+    except OSError:
+        pass
+    _empty("/tmp", _mount_points_under("/tmp"))
 
 
 def _wipe():
@@ -222,7 +250,7 @@ def _wipe():
         try:
             _become_sandbox_user()
             _remove_ipc()
-            _empty("/tmp")
+            _empty_tmp()
         finally:
             os._exit(0)
     deadline = time.monotonic() + CLEANER_SECONDS
