@@ -8,8 +8,9 @@ times, the ratios, seconds per student at N and at a larger N, CPU seconds
 per student (the whole machine's busy time during the run / N: run it on a
 quiet machine), and the grader's peak memory (resident memory of its whole
 process tree, sampled). Then the same comparison, with both graders, on the
-bundled sample class (11 students with mistakes, missing and damaged
-notebooks, as ``python -m autograder grade`` grades it by default).
+bundled sample class (11 students: mistakes, cheats, code that hangs or
+crashes, a damaged notebook; what ``python -m autograder grade`` grades by
+default).
 
 Usage::
 
@@ -195,7 +196,7 @@ def main():
     sample_full, _, _ = run_ours(work / "class_sample", work / "ours_sample_full")
     sample_fast, _, _ = run_ours(work / "class_sample", work / "ours_sample_fast", ["--no-nbval"])
     print()
-    print(f"the sample class ({len(ids)} students; damaged and missing notebooks included):")
+    print(f"the sample class ({len(ids)} students: mistakes, cheats, hangs, a damaged notebook):")
     print(f"  stock nbgrader autograde:     {sample_nbgrader:8.1f} s")
     print(f"  ours, full:                   {sample_full:8.1f} s   ratio {sample_full / sample_nbgrader:6.3f}"
           "   (target ≤ 0.25)")

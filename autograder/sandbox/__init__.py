@@ -1,5 +1,6 @@
 """Running untrusted code: bubblewrap (or limits-only) sandboxes, the worker session that calls
-student functions, cgroup and process-tree limits, and forks that may die without hurting us.
+student functions, warm slots whose zygote forks each student's worker, cgroup and process-tree
+limits, and forks that may die without hurting us.
 
 May import: lessons.
 """
