@@ -113,10 +113,15 @@ def test_cluster_results_equal_local_results(klass, tmp_path):
 def dask_cluster():
     """A LocalCluster of 2 worker processes on loopback, and a client of the test's own to watch it (the fault
     tests share it: a worker that survives keeps its passed check, a restarted one runs it again)."""
+    import dask
     from distributed import Client, LocalCluster
 
-    with LocalCluster(n_workers=2, processes=True, threads_per_worker=1, host="127.0.0.1",
-                      dashboard_address="127.0.0.1:0") as cluster, Client(cluster) as client:
+    # One task at a time per worker (the scheduler keeps the rest queued): a killed worker then takes down
+    # exactly one student's grading, which the fault tests count on. With the default saturation (1.1) a
+    # one-thread worker may hold a second, queued task, and its death counts against both.
+    with dask.config.set({"distributed.scheduler.worker-saturation": 1.0}), \
+            LocalCluster(n_workers=2, processes=True, threads_per_worker=1, host="127.0.0.1",
+                         dashboard_address="127.0.0.1:0") as cluster, Client(cluster) as client:
         yield cluster, client
 
 
