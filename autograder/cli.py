@@ -122,7 +122,7 @@ def _cmd_grade(args):
     from autograder.grading.pipeline import GradingOptions
     from autograder.integrations.cluster import ClusterError
     from autograder.reports.lateness import ConfigError, load_config
-    from autograder.sandbox import launcher
+    from autograder.sandbox import launcher, warm
 
     out = Path(args.out)
     path = args.path
@@ -137,6 +137,10 @@ def _cmd_grade(args):
         print(f"error: {path} is not a folder of student submissions", file=sys.stderr)
         return 2
     print(launcher.describe_isolation())
+    if not args.cluster and warm.enabled():
+        print("sandbox slots: each grading process keeps one warm sandbox whose workers are forked fresh for "
+              "every student and reset between students (SECURITY.md, \"Warm slots\"; AUTOGRADER_WARM=0 turns "
+              "them off)")
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     try:
         config = load_config(args.config) if args.config else None
