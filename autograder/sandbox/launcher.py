@@ -360,19 +360,29 @@ def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdo
     return process
 
 
-def terminate(process):
-    """Kill ``process`` and everything it started (its session, its cgroup), then reap it."""
+def kill_tree(process):
+    """SIGKILL ``process`` (from :func:`spawn`) and everything it started: its session, its cgroup.
+
+    Works from any process of the grader, also one that cannot reap ``process`` (a forked grader
+    killing its batch's warm slot); :func:`terminate` also reaps and cleans up.
+    """
     try:
         os.killpg(process.pid, signal.SIGKILL)
     except (ProcessLookupError, PermissionError):
         pass
     try:
-        process.kill()
+        process.kill()  # a no-op once reaped: never a reused pid
     except ProcessLookupError:
         pass
     group = getattr(process, "cgroup", None)
     if group is not None:
         group.kill_all()
+
+
+def terminate(process):
+    """Kill ``process`` and everything it started (its session, its cgroup), then reap it."""
+    kill_tree(process)
+    group = getattr(process, "cgroup", None)
     process.wait()
     for stream in (process.stdin, process.stdout):
         if stream is not None:

@@ -173,15 +173,8 @@ class WarmSlot:
     def discard(self):
         """Kill the whole sandbox, from whichever process uses the slot; the parent starts a new one."""
         self.broken = True
-        if self.process is None:
-            return
-        try:
-            os.killpg(self.process.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
-        group = getattr(self.process, "cgroup", None)
-        if group is not None:
-            group.kill_all()
+        if self.process is not None:
+            launcher.kill_tree(self.process)
 
     # ------------------------------------------------------------ requests (the grader using the slot)
     def _read(self, nonce, deadline, want="nonce"):

@@ -174,18 +174,17 @@ def _kill_others():
 def _remove_ipc():
     """Remove the System V shared memory, semaphores and message queues left in this IPC namespace."""
     libc = _libc()
-    for table, remove in (("shm", libc.shmctl), ("sem", None), ("msg", libc.msgctl)):
+    removers = {"shm": lambda ident: libc.shmctl(ident, IPC_RMID, None),
+                "sem": lambda ident: libc.semctl(ident, 0, IPC_RMID),
+                "msg": lambda ident: libc.msgctl(ident, IPC_RMID, None)}
+    for table, remove in removers.items():
         try:
             with open(f"/proc/sysvipc/{table}") as listing:
-                rows = listing.read().splitlines()[1:]
+                rows = listing.read().splitlines()[1:]  # a header, then one object per line: key, id, ...
         except OSError:
             continue
         for row in rows:
-            ident = int(row.split()[1])
-            if table == "sem":
-                libc.semctl(ident, 0, IPC_RMID)
-            else:
-                remove(ident, IPC_RMID, None)
+            remove(int(row.split()[1]))
 
 
 def _mount_points_under(folder):
