@@ -36,6 +36,7 @@ import pytest
 
 from autograder.grading.results import CheckResult
 from autograder.grading.transcripts import ReferenceRecorder, Replay
+from autograder.hidden.own_work import forbidden_for
 from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
 from autograder.lessons.reference import answer_sources
 from autograder.sandbox.session import LessonProgram, SandboxUnavailable, StudentError, StudentSandbox
@@ -58,7 +59,28 @@ HINTS = {
     "missing": "keep your code in the exercise's answer cell, under the same function name; "
                "helper functions must be defined in that cell too",
     "bad_value": "return numpy arrays, numbers, tuples, lists or dicts",
+    "delegated": "write the exercise with numpy yourself; the library versions are for the later lessons",
 }
+CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its arguments in place
+CHANGED_HINT = ("work on a copy, e.g. `p = np.array(p, dtype=float)`, and build the result in a new array; "
+                "`x /= n`, `x[0] = ...` and `x.sort()` change the caller's array")
+
+
+def contract_results(proxy, tests):
+    """A failed check per exercise whose calls changed an argument in place (none when they did not).
+
+    It weighs a third of the exercise's other checks, so it costs :data:`CONTRACT_SHARE` of the
+    exercise's points; answers that leave their arguments alone are not affected at all.
+    """
+    results = []
+    for exercise, (names, check) in proxy.changed.items():
+        weight = sum(t.weight for t in tests if t.exercise == exercise) * CONTRACT_SHARE / (1 - CONTRACT_SHARE)
+        where = f" (seen in the check “{check}”)" if check else ""
+        results.append(CheckResult(
+            exercise=exercise, description="leaves its arguments unchanged", weight=weight, passed=False,
+            reason=f"{exercise} changed its argument{'s' if len(names) > 1 else ''} {', '.join(names)} "
+                   f"in place{where}", hint=CHANGED_HINT))
+    return results
 
 
 class StudentProxy:
@@ -75,25 +97,37 @@ class StudentProxy:
         self._timeout = timeout
         self._replay = replay
         self.printed = []
+        self.changed = {}  # exercise -> the argument names its first in-place change touched
+        self.check = ""  # the description of the hidden check running now (for the contract's reason)
 
     def with_timeout(self, seconds):
         """The same proxy with a longer per-call time limit, for slow exercises."""
         clone = StudentProxy(self._sandbox, self._catalog, self._unavailable, seconds, self._replay)
-        clone.printed = self.printed
+        clone.printed, clone.changed = self.printed, self.changed
         return clone
+
+    def changed_arguments(self):
+        """The arguments the last call changed in place (names; empty when it left them alone)."""
+        return list(getattr(self._sandbox, "last_changed", ()) or ())
 
     def __getattr__(self, name):
         if name.startswith("_"):
             raise AttributeError(name)
         lesson = self._catalog.exercise(name).lesson
+        forbid = forbidden_for(name)
 
         def call(*args, **kwargs):
             if lesson in self._unavailable:
                 raise StudentError("missing", self._unavailable[lesson])
             try:
                 if self._replay is not None:
-                    return self._replay.call(lesson, name, args, kwargs, self._timeout)
-                return self._sandbox.call(lesson, name, args, kwargs, timeout=self._timeout)
+                    value = self._replay.call(lesson, name, args, kwargs, self._timeout, forbid)
+                else:
+                    value = self._sandbox.call(lesson, name, args, kwargs, timeout=self._timeout, forbid=forbid)
+                changed = self.changed_arguments()
+                if changed and name not in self.changed:
+                    self.changed[name] = (changed, self.check)
+                return value
             except StudentError as error:
                 if error.stdout:
                     self.printed.append(error.stdout)
@@ -312,6 +346,7 @@ def run_hidden_suite(proxy, reference, lessons=None):
     try:
         for test in tests:
             proxy.printed.clear()
+            proxy.check = test.description
             replay.prefetch(transcripts.get(test.nodeid), proxy._unavailable)
             if replay.passes_as_recorded():
                 passed, reason, hint = True, "", ""
@@ -324,7 +359,7 @@ def run_hidden_suite(proxy, reference, lessons=None):
                                        printed=_printed_text(proxy.printed)))
     finally:
         proxy._replay = None
-    return results, list(problems)
+    return results + contract_results(proxy, tests), list(problems)
 
 
 def _short_repr(excinfo, style=None):
@@ -359,6 +394,7 @@ class _Collector:
         report = outcome.get_result()
         if report.when == "setup":
             self.proxy.printed.clear()
+            self.proxy.check = _describe(item)
         failed_now = report.failed and report.when in ("setup", "call")
         finished = report.when == "call" or failed_now
         if not finished or getattr(item, "_graded", False):
@@ -441,4 +477,5 @@ def run_hidden_suite_with_pytest(proxy, reference, lessons=None):
     if code not in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) or not collector.results:
         raise SuiteError(f"the hidden suite did not run (pytest exit status {int(code)}, "
                          f"{len(collector.results)} checks collected)")
-    return collector.results, collector.problems
+    tests = [t for t in hidden_tests()[0] if lessons is None or t.lesson in lessons]
+    return collector.results + contract_results(proxy, tests), collector.problems

@@ -40,7 +40,7 @@ typical mistake.
 from dataclasses import dataclass, field
 
 from autograder.sandbox.child import probes, wire
-from autograder.sandbox.session import StudentError
+from autograder.sandbox.session import StudentError, call_request
 
 BATCH_BUDGET = 2.0  # seconds of student calls in one batch; slower calls are made one at a time
 
@@ -59,10 +59,11 @@ class Transcript:
     also_passing: list = field(default_factory=list)
 
 
-def call_text(lesson, name, args, kwargs, timeout):
+def call_text(lesson, name, args, kwargs, timeout, forbid=()):
     """The wire text that identifies one call (raises :class:`wire.WireError` for non-data arguments)."""
-    return wire.dumps({"lesson": lesson, "name": name, "args": list(args), "kwargs": dict(kwargs or {}),
-                       "timeout": timeout})
+    request = call_request(lesson, name, args, kwargs, timeout, forbid)
+    del request["op"]
+    return wire.dumps(request)
 
 
 def _materialize(value):
@@ -73,6 +74,7 @@ class ReferenceRecorder:
     """Stands in for a student's sandbox while recording: calls the reference, notes each call."""
 
     last_stdout = ""
+    last_changed = ()
 
     def __init__(self, reference):
         self.reference = reference
@@ -82,8 +84,8 @@ class ReferenceRecorder:
         self.transcript = Transcript(calls=[], keys=[], timeouts=[], results=[])
         return self.transcript
 
-    def call(self, lesson, name, args=(), kwargs=None, timeout=None):
-        text = call_text(lesson, name, args, kwargs, timeout)
+    def call(self, lesson, name, args=(), kwargs=None, timeout=None, forbid=()):
+        text = call_text(lesson, name, args, kwargs, timeout, forbid)
         request = wire.loads(text)  # the arguments exactly as the sandbox would receive them
         try:
             value = getattr(self.reference, name)(*[_materialize(a) for a in request["args"]],
@@ -134,7 +136,8 @@ class Replay:
         """The batch's values as wire text, when every recorded call was made and returned one; else None."""
         transcript = self._transcript
         if transcript is None or len(self._replies) != len(transcript.calls) or not all(
-                reply["ok"] for reply in self._replies):
+                reply["ok"] and not reply.get("changed") and not reply.get("delegated")
+                for reply in self._replies):
             return None
         return [reply["text"] for reply in self._replies]
 
@@ -160,11 +163,11 @@ class Replay:
         """What the batch's calls printed, in order (as the proxy would have collected it)."""
         return [str(reply.get("stdout", "")) for reply in self._replies if reply.get("stdout")]
 
-    def call(self, lesson, name, args, kwargs, timeout):
+    def call(self, lesson, name, args, kwargs, timeout, forbid=()):
         """The call's value: from the batch while calls follow the recording, else from the sandbox."""
         if self._transcript is not None and self._next < len(self._replies):
             try:
-                text = call_text(lesson, name, args, kwargs, timeout)
+                text = call_text(lesson, name, args, kwargs, timeout, forbid)
             except wire.WireError:
                 text = None
             if text == self._transcript.calls[self._next]:
@@ -173,7 +176,7 @@ class Replay:
                 effective = self.sandbox.limits.call_timeout if timeout is None else timeout
                 return self.sandbox.take_reply(lesson, name, reply, effective)
         self.stop()  # the test left the recorded path: one call at a time from here on
-        return self.sandbox.call(lesson, name, args, kwargs, timeout=timeout)
+        return self.sandbox.call(lesson, name, args, kwargs, timeout=timeout, forbid=forbid)
 
     def stop(self):
         self._transcript, self._replies, self._next = None, [], 0

@@ -44,7 +44,8 @@ class StudentError(Exception):
     ----------
     kind : str
         ``"exception"``, ``"not_implemented"``, ``"timeout"``, ``"crash"``,
-        ``"missing"`` or ``"bad_value"``.
+        ``"missing"``, ``"bad_value"`` or ``"delegated"`` (it handed its work to a library function
+        that the exercise asks the student to write).
     message : str
         One line for the feedback page.
     stdout : str
@@ -105,6 +106,7 @@ class StudentSandbox:
         self.restarts = 0
         self.time_used = 0.0
         self.last_stdout = ""
+        self.last_changed = []  # arguments the last call changed in place (names)
         self.hung = {}  # (lesson, name) -> seconds it ran before being stopped
         self._next_id = 0
         self._buffer = b""
@@ -304,8 +306,10 @@ class StudentSandbox:
             raise StudentError("timeout", f"{name} did not return within {self.hung[(lesson, name)]:g} s "
                                           "in an earlier check, so it was not called again")
 
-    def call(self, lesson, name, args=(), kwargs=None, timeout=None):
+    def call(self, lesson, name, args=(), kwargs=None, timeout=None, forbid=()):
         """Call the student's ``name`` from ``lesson``; return the decoded value.
+
+        ``forbid``: library functions the call must not use (see :mod:`coursekit.watching`).
 
         Raises
         ------
@@ -314,11 +318,10 @@ class StudentSandbox:
             or returned something that is not plain data.
         """
         timeout = self.limits.call_timeout if timeout is None else timeout
-        self.last_stdout = ""
+        self.last_stdout, self.last_changed = "", []
         self.check_callable(lesson, name)
         self._ensure_loaded()
-        request = {"op": "call", "lesson": lesson, "name": name, "args": list(args),
-                   "kwargs": dict(kwargs or {}), "timeout": timeout}
+        request = call_request(lesson, name, args, kwargs, timeout, forbid)
         try:
             reply = self._request(request, timeout)
         except _Dead as death:
@@ -333,9 +336,18 @@ class StudentSandbox:
         return self.take_reply(lesson, name, reply, timeout)
 
     def take_reply(self, lesson, name, reply, timeout):
-        """The value of a call's reply, or the :class:`StudentError` it stands for (as :meth:`call`)."""
+        """The value of a call's reply, or the :class:`StudentError` it stands for (as :meth:`call`).
+
+        A call that changed its arguments in place still returns its value; their names are kept in
+        :attr:`last_changed` for the hidden suite's contract check.
+        """
         stdout = str(reply.get("stdout", ""))
         self.last_stdout = stdout if reply["ok"] else ""
+        self.last_changed = _names(reply.get("changed"))
+        delegated = _names(reply.get("delegated"))
+        if reply["ok"] and delegated:
+            raise StudentError("delegated", f"{name} calls {', '.join(delegated)}: this exercise asks for "
+                                            "your own implementation, so it earns no points", stdout)
         if reply["ok"]:
             if "text" in reply:  # a reply from a batch carries its value as wire text
                 try:
@@ -400,6 +412,22 @@ class StudentSandbox:
             self._kill()  # a forged or malformed reply: start afresh, one call at a time
             return None
         return replies
+
+
+def call_request(lesson, name, args, kwargs, timeout, forbid=()):
+    """The worker's request for one call (see ``child/worker.py``); ``forbid`` only when not empty."""
+    request = {"op": "call", "lesson": lesson, "name": name, "args": list(args), "kwargs": dict(kwargs or {}),
+               "timeout": timeout}
+    if forbid:
+        request["forbid"] = list(forbid)
+    return request
+
+
+def _names(value, keep=8):
+    """A reply's list of names (changed arguments, delegated functions) as short strings; [] if absent."""
+    if not isinstance(value, list):
+        return []
+    return [" ".join(str(item).split())[:80] for item in value[:keep]]
 
 
 def _format_error(error):

@@ -42,6 +42,7 @@ if __name__ == "__main__" and "--keep-user" not in sys.argv:  # (a zygote's fork
 import numpy  # noqa: E402,F401  (imported before student code, as a notebook would)
 
 import wire  # noqa: E402
+from coursekit import watching  # noqa: E402  (the course's own definition of a call's contracts)
 
 STDOUT_KEEP = 4000
 MESSAGE_KEEP = 300
@@ -159,27 +160,42 @@ class Worker:
         self.reply(message)
 
     def invoke(self, call, timeout):
-        """Call ``call``'s function with its arguments, guarded: ``(ok, value or error dict)``."""
+        """Call ``call``'s function with its arguments, guarded and watched (:mod:`coursekit.watching`).
+
+        Returns ``(ok, value or error dict, notes)``: ``notes`` holds ``"changed"`` (the arguments the
+        call changed in place) and ``"delegated"`` (functions of the call's ``forbid`` list that the
+        student's code called), each only when not empty.
+        """
         function = self.namespace(call["lesson"]).get(call["name"])
         if not callable(function):
             self.output.reset()
             return False, {"type": "NameError", "where": "",
-                           "message": f"{call['name']} is not defined in the graded cells"}
+                           "message": f"{call['name']} is not defined in the graded cells"}, {}
         args = [self.materialize(a) for a in call.get("args", [])]
         kwargs = {k: self.materialize(v) for k, v in call.get("kwargs", {}).items()}
-        return self.run_guarded(lambda: function(*args, **kwargs), timeout)
+        forbidden = [str(name) for name in call.get("forbid") or ()]
+        ok, result = self.run_guarded(lambda: watching.watch_call(function, args, kwargs, forbidden), timeout)
+        if not ok:
+            return False, result, {}
+        value, seen = result
+        notes = {}
+        if seen.changed:
+            notes["changed"] = seen.changed
+        if seen.used or seen.tampered:
+            notes["delegated"] = seen.used + (["sys.setprofile"] if seen.tampered else [])
+        return True, value, notes
 
     def do_call(self, request):
-        ok, result = self.invoke(request, request.get("timeout", 5.0))
-        message = {"ok": ok, "stdout": self.output.text()}
+        ok, result, notes = self.invoke(request, request.get("timeout", 5.0))
+        message = {"ok": ok, "stdout": self.output.text(), **notes}
         message["value" if ok else "error"] = result
         self.reply(message)
 
     def call_for_batch(self, call, default_timeout):
         """One call of a batch: its reply, with the value as wire text (checked to be plain data)."""
         started = time.monotonic()
-        ok, result = self.invoke(call, call.get("timeout") or default_timeout)
-        message = {"ok": ok, "stdout": self.output.text()}
+        ok, result, notes = self.invoke(call, call.get("timeout") or default_timeout)
+        message = {"ok": ok, "stdout": self.output.text(), **notes}
         if ok:
             try:
                 message["text"] = wire.dumps(result)

@@ -1,0 +1,102 @@
+"""A call's contracts beyond its value: arguments left unchanged, and no delegation to the library.
+
+``coursekit.watching.watch_call`` is the one definition, used by the visible checks (in the notebook's
+process) and by the sandbox's worker (whose replies carry ``changed`` and ``delegated``). Oracles: a
+copy taken before the call, compared bit for bit; the names of library functions entered directly from
+``__main__`` code. Edge cases: arrays inside lists, keyword arguments, a NaN that stays NaN, a library
+that uses the forbidden function internally (allowed), a function that switches the watching off.
+"""
+
+import numpy as np
+import pytest
+
+from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
+from coursekit.watching import watch_call
+
+
+def _main(source):
+    """Functions defined as notebook code is: in a namespace whose ``__name__`` is ``__main__``."""
+    namespace = {"__name__": "__main__", "np": np}
+    exec(compile(source, "<lesson 01 cell test>", "exec"), namespace)
+    return namespace
+
+
+def test_an_array_changed_in_place_is_named():
+    f = _main("def normalise(q):\n    q /= np.linalg.norm(q)\n    return q")["normalise"]
+    _, seen = watch_call(f, (np.array([2.0, 0.0, 0.0, 0.0]),))
+    assert seen.changed == ["q"]
+
+
+def test_arrays_inside_lists_and_keyword_arguments_are_watched():
+    f = _main("def mean(Rs, weights=None):\n    Rs[1][0, 0] = 5.0\n    weights.append(1)\n    return Rs[0]")["mean"]
+    _, seen = watch_call(f, ([np.eye(3), np.eye(3)],), {"weights": [0.5]})
+    assert seen.changed == ["Rs", "weights"]
+
+
+def test_a_function_that_leaves_its_arguments_alone_changes_nothing():
+    f = _main("def scaled(p):\n    p = np.array(p, dtype=float)\n    p *= 2\n    return p")["scaled"]
+    value, seen = watch_call(f, (np.array([1.0, np.nan, -0.0]),))
+    assert seen.changed == [] and seen.used == [] and not seen.tampered
+    assert np.isnan(value[1])
+
+
+def test_direct_calls_into_the_library_are_delegation_and_indirect_ones_are_not():
+    namespace = _main("from coursekit.lie import Exp as E\n"
+                      "def exp_so3(w):\n    return E(w)\n"
+                      "def shown(w):\n    from coursekit.plotting import np as _\n    return np.eye(3)")
+    _, seen = watch_call(namespace["exp_so3"], ([0.1, 0.2, 0.3],), forbidden=("coursekit.lie",))
+    assert seen.used == ["coursekit.lie.Exp"]
+    # scipy's Rotation is called by coursekit.lie.Exp, not by the notebook: only the direct call counts
+    _, seen = watch_call(namespace["exp_so3"], ([0.1, 0.2, 0.3],), forbidden=("scipy.spatial.transform",))
+    assert seen.used == []
+    _, seen = watch_call(namespace["shown"], ([0.1, 0.2, 0.3],), forbidden=("coursekit.lie",))
+    assert seen.used == []
+
+
+def test_a_single_function_is_resolved_to_where_it_lives():
+    f = _main("import scipy.linalg\ndef exp_series(W, n):\n    return scipy.linalg.expm(np.asarray(W))")["exp_series"]
+    _, seen = watch_call(f, (np.zeros((3, 3)), 3), forbidden=("scipy.linalg.expm",))
+    assert len(seen.used) == 1 and seen.used[0].endswith(".expm")
+
+
+def test_switching_the_watching_off_is_seen():
+    f = _main("import sys\nfrom coursekit.lie import skew\ndef hat(w):\n    sys.setprofile(None)\n"
+              "    return skew(w)")["hat"]
+    _, seen = watch_call(f, ([1.0, 2.0, 3.0],), forbidden=("coursekit.lie.skew",))
+    assert seen.tampered and seen.used == []
+
+
+SOURCE = """
+def rotate_point(R, p):
+    p = np.asarray(p)
+    p += 0.0
+    p[0] = p[0] * 1.0 + 1.0
+    return np.asarray(R) @ p
+
+def exp_so3(w):
+    from coursekit.lie import Exp
+    return Exp(w)
+
+def honest(R, p):
+    return np.asarray(R, dtype=float) @ np.asarray(p, dtype=float)
+"""
+
+
+@pytest.fixture(scope="module")
+def box():
+    with StudentSandbox({"01": LessonProgram(setup="import numpy as np", cells=[("code", SOURCE)])}) as sandbox:
+        yield sandbox
+
+
+def test_the_sandbox_reports_an_argument_changed_in_place(box):
+    value = box.call("01", "rotate_point", [np.eye(3), np.array([1.0, 2.0, 3.0])])
+    assert box.last_changed == ["p"] and value.tolist() == [2.0, 2.0, 3.0]
+    box.call("01", "honest", [np.eye(3), np.array([1.0, 2.0, 3.0])])
+    assert box.last_changed == []
+
+
+def test_the_sandbox_turns_delegation_into_a_student_error(box):
+    assert box.call("01", "exp_so3", [[0.0, 0.0, 0.5]]).shape == (3, 3)  # allowed when nothing is forbidden
+    with pytest.raises(StudentError) as error:
+        box.call("01", "exp_so3", [[0.0, 0.0, 0.5]], forbid=("coursekit.lie",))
+    assert error.value.kind == "delegated" and "coursekit.lie.Exp" in error.value.message
