@@ -171,8 +171,9 @@ def cases(context):
              "        except OSError:\n"
              "            pass\n"
              "    return np.eye(3)\n", twin=WRONG_ROT_Z),
-        Case("kills_its_parent", "kills the process that runs it", "zero",
-             "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)\n" + RIGHT_ROT_Z),
+        Case("kills_its_parent", "kills the process that runs it (its feeder, PID 1 of its namespaces: "
+             "the signal is ignored); gains nothing", "twin",
+             "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)\n" + RIGHT_ROT_Z, twin=RIGHT_ROT_Z),
         Case("deleted_check_cells", "deletes every check cell; answers right", "full", damage="delete_checks"),
         Case("edited_check_cells", "rewrites the check cells to print success; rot_z wrong", "twin",
              WRONG_ROT_Z, twin=WRONG_ROT_Z, damage="edit_checks"),

@@ -35,7 +35,11 @@ def leave():
                 time.sleep(0.01)
         os._exit(0)
     libc = ctypes.CDLL(None, use_errno=True)
-    made = [libc.shmget(4242, 4096, 0o1666), libc.semget(4243, 1, 0o1666), libc.msgget(4244, 0o1666)]
+    libc.syscall.restype = ctypes.c_long
+    made = [libc.shmget(4242, 4096, 0o1666), libc.semget(4243, 1, 0o1666), libc.msgget(4244, 0o1666),
+            libc.mq_open(b"/left-behind", 0o100 | 2, 0o666, None)]         # POSIX message queue (O_CREAT|O_RDWR)
+    for ring in (-4, -5, -3):                                               # @u, @us, @s keyrings: add_key
+        made.append(libc.syscall(248, b"user", b"left-behind", b"the previous student's work", 27, ring))
     open("/tmp/answers.txt", "w").write("the previous student's work")
     for name in os.listdir("/tmp"):  # folders bubblewrap made (a Python installed under /tmp)
         try:
@@ -46,46 +50,79 @@ def leave():
     open("/tmp/locked/inner/f", "w").write("x")
     os.chmod("/tmp/locked/inner", 0)
     os.chmod("/tmp/locked", 0)
+    os.mkdir("/tmp/deep")
+    os.chdir("/tmp/deep")
+    for _ in range(2000):                                                   # deeper than any recursive walk
+        os.mkdir("d")
+        os.chdir("d")
+    open("bottom.txt", "w").write("x")
+    os.chdir("/tmp")
     time.sleep(0.1)
     os.chmod("/tmp", 0)
     return made
 '''
 
 LOOK_AROUND = r'''
-import os
+import ctypes, os
+
+def _ppid(pid):
+    for line in open(f"/proc/{pid}/status"):
+        if line.startswith("PPid:"):
+            return int(line.split()[1])
+    return 0
 
 def look():
     processes = sorted(int(p) for p in os.listdir("/proc") if p.isdigit())
+    chain, pid = set(), int(os.readlink("/proc/self"))
+    while pid > 1:                       # this student's own processes: the runner, its feeder, the waiter
+        chain.add(pid)
+        pid = _ppid(pid)
     mounts = {line.split()[4] for line in open("/proc/self/mountinfo")}
-    tmp = []
-    for root, folders, files in os.walk("/tmp"):
-        tmp += [os.path.join(root, name) for name in folders + files]
-        folders[:] = [name for name in folders if os.path.join(root, name) not in mounts]  # not into a mount
+    tmp, stack = [], ["/tmp"]
+    while stack:                         # iterative: a recursive walk would stop at a deep tree
+        folder = stack.pop()
+        try:
+            entries = list(os.scandir(folder))
+        except PermissionError:          # a folder made unreadable (chmod 0): seen, not entered
+            continue
+        for entry in entries:
+            tmp.append(entry.path)
+            if entry.is_dir(follow_symlinks=False) and entry.path not in mounts:
+                stack.append(entry.path)
     ipc = {table: len(open(f"/proc/sysvipc/{table}").read().splitlines()) - 1 for table in ("shm", "sem", "msg")}
-    return {"processes": processes, "me": os.getpid(), "tmp": sorted(tmp), "ipc": ipc,
-            "tmp_writable": os.access("/tmp", os.W_OK)}
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.syscall.restype = ctypes.c_long
+    queue = libc.mq_open(b"/left-behind", 2, 0, None)                      # without O_CREAT: ENOENT when gone
+    key = libc.syscall(249, b"user", b"left-behind", None, 0)               # request_key searches every keyring
+    return {"others": sorted(set(processes) - chain - {1}), "tmp": sorted(p for p in tmp if len(p) < 200),
+            "deep": sum(len(p) >= 200 for p in tmp), "ipc": ipc,
+            "tmp_writable": os.access("/tmp", os.W_OK), "queue": queue, "key": key}
 '''
 
 REACH_FOR_THE_ZYGOTE = r'''
 import ctypes, os, stat
 
 def reach():
-    zygote = os.getppid()
     found = {}
-    for what, attempt in (("fds", lambda: os.listdir(f"/proc/{zygote}/fd")),
-                          ("memory", lambda: open(f"/proc/{zygote}/mem", "rb").read(1)),
-                          ("environment", lambda: open(f"/proc/{zygote}/environ", "rb").read(1))):
-        try:
-            attempt()
-            found[what] = "reachable"
-        except OSError as error:
-            found[what] = type(error).__name__
-    found["ptrace"] = ctypes.CDLL(None, use_errno=True).ptrace(16, zygote, None, None)  # PTRACE_ATTACH
+    for who in sorted({os.getppid(), 1}):  # the feeder (the runner's parent) and PID 1 as /proc shows it
+        for what, attempt in (("fds", lambda: os.listdir(f"/proc/{who}/fd")),
+                              ("memory", lambda: open(f"/proc/{who}/mem", "rb").read(1)),
+                              ("environment", lambda: open(f"/proc/{who}/environ", "rb").read(1)),
+                              ("root", lambda: os.listdir(f"/proc/{who}/root/tmp"))):
+            try:
+                attempt()
+                found[f"{what} of {who}"] = "reachable"
+            except OSError as error:
+                found[f"{what} of {who}"] = type(error).__name__
+        found[f"ptrace of {who}"] = ctypes.CDLL(None, use_errno=True).ptrace(16, who, None, None)  # ATTACH
     found["sockets"] = []
     for fd in os.listdir("/proc/self/fd"):
         try:
             if os.readlink(f"/proc/self/fd/{fd}").startswith("socket:"):
-                found["sockets"].append(fd)
+                import socket
+                kind = socket.socket(fileno=os.dup(int(fd)))
+                found["sockets"].append(kind.type.name)
+                kind.close()
         except OSError:  # the folder listing's own descriptor, closed by now
             pass
     return found
@@ -121,18 +158,30 @@ def test_the_next_student_finds_nothing_the_previous_one_left(slot):
     with StudentSandbox(_program(LOOK_AROUND), slot=slot) as second:
         seen = second.call("01", "look")
         assert isinstance(second.process, warm.WarmWorker)
-    # the zygote (PID 1) and this worker: nothing else runs
-    assert seen["processes"] == sorted({1, seen["me"]}), seen
-    assert seen["tmp"] == before["tmp"] and seen["tmp_writable"], (before, seen)
+    # nothing of the first student: no process, no file at any depth, no IPC object, no key
+    assert seen["others"] == [], seen
+    assert seen["tmp"] == before["tmp"] and seen["deep"] == 0 and seen["tmp_writable"], (before, seen)
     assert seen["ipc"] == {"shm": 0, "sem": 0, "msg": 0}, seen
+    assert seen["queue"] == -1 and seen["key"] == -1, seen
+
+
+def test_the_look_around_sees_what_a_student_leaves(slot):
+    """The oracle above can fail: within one student's sandbox it finds every kind of thing left."""
+    with StudentSandbox(_program(LEAVE_EVERYTHING.replace('os.chmod("/tmp", 0)', "pass") + LOOK_AROUND),
+                        slot=slot) as box:
+        box.call("01", "leave")
+        seen = box.call("01", "look")
+    assert seen["others"], "the daemon"
+    assert seen["deep"] > 1900 and "/tmp/answers.txt" in seen["tmp"], seen["tmp"]
+    assert seen["ipc"] == {"shm": 1, "sem": 1, "msg": 1} and seen["queue"] >= 0 and seen["key"] >= 0, seen
 
 
 def test_student_code_cannot_reach_the_zygote(slot):
     with StudentSandbox(_program(REACH_FOR_THE_ZYGOTE), slot=slot) as box:
         found = box.call("01", "reach")
-    assert found["fds"] == found["memory"] == found["environment"] == "PermissionError", found
-    assert found["ptrace"] == -1, found
-    assert found["sockets"] == [], "the worker holds no socket: not the zygote's control channel"
+    refused = {key: value for key, value in found.items() if key != "sockets" and value not in ("PermissionError", -1)}
+    assert not refused, found
+    assert found["sockets"] == ["SOCK_STREAM"], "one socket, to its feeder: never the zygote's control channel"
 
 
 def test_student_code_cannot_kill_the_zygote(slot):
@@ -186,7 +235,7 @@ def test_concurrent_slots_run_as_different_users():
     """RLIMIT_NPROC counts per user: one student's fork bomb must not starve another slot's student."""
     if os.geteuid() != 0:
         pytest.skip("as an ordinary user every sandbox runs as that user, in its own user namespace")
-    who = "import os\ndef who():\n    return os.getuid()"
+    who = "def who():\n    return int(open('/proc/self/uid_map').read().split()[1])  # the uid outside"
     with warm.SlotPool(2, launcher.Limits()) as pool:
         uids = []
         for slot in pool.slots:

