@@ -233,8 +233,10 @@ def test_a_student_whose_code_is_the_references_runs_almost_no_test_once_learned
     from autograder.lessons.reference import load_reference
 
     suite.learn_reference_in_sandbox(load_reference(), load_catalog())
+    cut = sum(not t.complete for t in suite.transcripts_for(load_reference(), load_catalog()).values())
     counts = _count_unrun(monkeypatch)
     result = grade_student("ada", build_submission(tmp_path / "ada"), GradingOptions(nbval=False))
     assert result.score == result.max_score
     total = counts["run"] + counts["unrun"]
-    assert total > 150 and counts["run"] <= 0.02 * total, counts
+    # the tests cut for chained inputs always run (tests/test_transcripts_independent.py); of the rest, ≤ 2%
+    assert total > 150 and counts["run"] - cut <= 0.02 * total, (counts, cut)

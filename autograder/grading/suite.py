@@ -35,7 +35,7 @@ from types import SimpleNamespace
 import pytest
 
 from autograder.grading.results import CheckResult
-from autograder.grading.transcripts import ReferenceRecorder, Replay
+from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, independent_prefix
 from autograder.hidden.own_work import forbidden_for
 from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
 from autograder.lessons.reference import answer_sources
@@ -246,15 +246,21 @@ def transcripts_for(reference, catalog):
         return kept[1]
     if not _TRANSCRIPTS:
         single_threaded_blas()  # as in the sandbox, so that equal answers are equal bit for bit
-    recorder = ReferenceRecorder(reference)
-    proxy = StudentProxy(recorder, catalog)
+    recorder, nudging = ReferenceRecorder(reference), ReferenceRecorder(reference, nudge=True)
+    proxy, nudged_proxy = StudentProxy(recorder, catalog), StudentProxy(nudging, catalog)
+    nudged_reference = NudgedReference(reference)
     found = {}
     for test in hidden_tests()[0]:
         transcript = recorder.start()
         passed, _, _ = _call_test(test, proxy, reference)
         transcript.passed = passed
+        # a second time with every answer nudged: a call whose input moved was fed by an answer, and
+        # it and every call after it are made one at a time, never sent ahead
+        second = nudging.start()
+        _call_test(test, nudged_proxy, nudged_reference)
+        transcript.cut(independent_prefix(transcript.calls, second.calls))
         found[test.nodeid] = transcript
-    recorder.transcript = None
+    recorder.transcript = nudging.transcript = None
     _TRANSCRIPTS[id(reference)] = (reference, found)
     return found
 

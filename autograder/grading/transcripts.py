@@ -25,8 +25,15 @@ test, not from the student. So, once per grader process:
    would pass exactly as it did for the reference, and it is not run again
    (:meth:`Replay.passes_as_recorded`). Any other answer runs the test.
 
-The student's code never sees the recorded values: only the calls go into the
-sandbox, and the comparison happens here. One difference remains, by design:
+The student's code never sees the recorded values, nor any input computed from
+them: only the calls go into the sandbox, and only calls whose inputs are the
+test's own. Each test is recorded a second time with every answer of the
+reference :func:`nudged` (those of the ``ref`` fixture too); a call whose input
+moved was fed by an answer (``pose_inverse(pose_inverse(T))``), and the
+transcript stops before it (:meth:`Transcript.cut`), so that call and every
+later one are made one at a time, with the inputs the test computes from the
+student's own answers. The sandbox's feeder hands the student's process one
+call at a time, so even the calls of a batch are never readable ahead. One difference remains, by design:
 when a test stops early (a wrong value), the rest of its batch has already
 run, so a function that keeps state between calls sees more calls than it
 would one at a time. Graded exercises are pure functions of their arguments,
@@ -43,11 +50,13 @@ from autograder.sandbox.child import probes, wire
 from autograder.sandbox.session import StudentError, call_request
 
 BATCH_BUDGET = 2.0  # seconds of student calls in one batch; slower calls are made one at a time
+NUDGE = 1e-14  # how far the second recording moves every answer (see nudged)
 
 
 @dataclass
 class Transcript:
-    """The calls one hidden test made on the reference, in order."""
+    """The calls one hidden test made on the reference, in order: only those whose inputs are the test's
+    own (:func:`independent_prefix`), so that no input sent ahead in a batch comes from an answer."""
 
     calls: list  # wire text of {"lesson", "name", "args", "kwargs", "timeout"} per call
     keys: list  # (lesson, name) per call
@@ -57,6 +66,13 @@ class Transcript:
     # other complete lists of values (wire text) with which the test was run and passed: the reference's
     # own answers computed in a sandbox, which may differ from ``results`` in the last bits
     also_passing: list = field(default_factory=list)
+    complete: bool = True  # False: later calls were cut, their inputs came from answers; never passed unrun
+
+    def cut(self, count):
+        """Keep the first ``count`` calls; a test cut short always runs (its later calls must be made)."""
+        if count < len(self.calls):
+            del self.calls[count:], self.keys[count:], self.timeouts[count:], self.results[count:]
+            self.complete = False
 
 
 def call_text(lesson, name, args, kwargs, timeout, forbid=()):
@@ -70,15 +86,77 @@ def _materialize(value):
     return probes.resolve(value.name, value.args) if isinstance(value, wire.Probe) else value
 
 
+def nudged(value):
+    """``value`` with every float moved by :data:`NUDGE` (relative, and a thousandth of it absolute); the
+    rest as is. It is far inside every hidden test's tolerance, so the test goes on as it did, and far
+    above rounding (about 50 units in the last place), so an input computed from the value moves too.
+
+    Recording a test a second time with the reference's answers nudged shows which of its later inputs
+    were computed from an answer: those inputs change (:func:`independent_prefix`).
+
+    Examples
+    --------
+    >>> nudged((1.0, [0.0, 2]))[0] != 1.0
+    True
+    """
+    import numpy as np
+
+    if isinstance(value, float):
+        return value * (1 + NUDGE) + NUDGE * 1e-3
+    if isinstance(value, complex):
+        return complex(nudged(value.real), nudged(value.imag))
+    if isinstance(value, np.ndarray) and value.dtype.kind in "fc":
+        return value * (1 + NUDGE) + NUDGE * 1e-3
+    if isinstance(value, list):
+        return [nudged(v) for v in value]
+    if isinstance(value, tuple):
+        return tuple(nudged(v) for v in value)
+    if isinstance(value, dict):
+        return {k: nudged(v) for k, v in value.items()}
+    return value
+
+
+class NudgedReference:
+    """The reference module as a test's ``ref`` fixture sees it, with every answer :func:`nudged`."""
+
+    def __init__(self, reference):
+        self._reference = reference
+
+    def __getattr__(self, name):
+        target = getattr(self._reference, name)
+        if not callable(target):
+            return target
+
+        def call(*args, **kwargs):
+            return nudged(target(*args, **kwargs))
+
+        return call
+
+
+def independent_prefix(calls, nudged_calls):
+    """How many of a test's calls, from the first, have inputs that no answer of the reference fed:
+    the calls that a second recording with nudged answers (``nudged_calls``) made exactly alike."""
+    count = 0
+    for text, other in zip(calls, nudged_calls):
+        if text != other:
+            break
+        count += 1
+    return count
+
+
 class ReferenceRecorder:
-    """Stands in for a student's sandbox while recording: calls the reference, notes each call."""
+    """Stands in for a student's sandbox while recording: calls the reference, notes each call.
+
+    With ``nudge``, every answer is :func:`nudged` before the test sees it (the second recording).
+    """
 
     last_stdout = ""
     last_changed = ()
 
-    def __init__(self, reference):
+    def __init__(self, reference, nudge=False):
         self.reference = reference
         self.transcript = None
+        self.nudge = nudge
 
     def start(self):
         self.transcript = Transcript(calls=[], keys=[], timeouts=[], results=[])
@@ -97,7 +175,7 @@ class ReferenceRecorder:
             self._note(text, lesson, name, timeout, None)
             raise StudentError("exception", f"{name} raised {type(error).__name__}: {error}") from None
         self._note(text, lesson, name, timeout, result)
-        return wire.loads(result)
+        return nudged(wire.loads(result)) if self.nudge else wire.loads(result)
 
     def _note(self, text, lesson, name, timeout, result):
         if self.transcript is not None:
@@ -145,7 +223,7 @@ class Replay:
         """True when every recorded call returned, bit for bit, values with which the test passed before:
         the reference's (:attr:`Transcript.results`) or a list in :attr:`Transcript.also_passing`."""
         answers = self._answers()
-        return (answers is not None and self._transcript.passed
+        return (answers is not None and self._transcript.passed and self._transcript.complete
                 and (answers == self._transcript.results or answers in self._transcript.also_passing))
 
     def note_if_passed(self, passed):
@@ -153,7 +231,7 @@ class Replay:
         batch, in order, with nothing left over, the batch's values are known to pass (for
         :meth:`passes_as_recorded`). Return whether they were noted."""
         transcript, answers = self._transcript, self._answers()
-        if not passed or answers is None or self._next != len(transcript.calls):
+        if not passed or answers is None or not transcript.complete or self._next != len(transcript.calls):
             return False
         if answers != transcript.results and answers not in transcript.also_passing:
             transcript.also_passing.append(answers)

@@ -1,0 +1,149 @@
+"""No input the grader sends ahead to a student's sandbox is computed from the reference's answers.
+
+The transcripts (autograder/grading/transcripts.py) are the calls a hidden test makes, sent to the
+sandbox in one batch before the test runs. A test that chains calls (``pose_inverse`` of
+``pose_inverse(T)``) would put the reference's answer in a later call's input; such calls are cut
+from the transcript. Oracles, over every transcript of the real hidden suite:
+
+- no argument of a kept call equals, bit for bit, a value an earlier call of the same test returned,
+  or a value the test got from the ``ref`` fixture (or a row or column of one);
+- a second recording with answers moved by another amount keeps exactly the same calls;
+- a chained test of our own is cut before its chained call, and a cut test is never passed unrun.
+"""
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from autograder.grading import suite, transcripts
+from autograder.lessons.catalog import load_catalog
+from autograder.lessons.reference import load_reference
+from autograder.sandbox.child import wire
+
+
+def _arrays(value):
+    """Every float array and float in ``value`` (nested in lists, tuples, dicts), as arrays."""
+    if isinstance(value, np.ndarray) and value.dtype.kind in "fc":
+        return [value]
+    if isinstance(value, float):
+        return [np.array(value)]
+    if isinstance(value, (list, tuple)):
+        return [a for item in value for a in _arrays(item)]
+    if isinstance(value, dict):
+        return [a for item in value.values() for a in _arrays(item)]
+    return []
+
+
+def _pieces(array):
+    """The array, its rows and its columns: the parts of an answer a test might pass on."""
+    pieces = [array]
+    if array.ndim == 2:
+        pieces += list(array) + list(array.T)
+    return [p for p in pieces if p.size > 1 and np.any(p != 0) and not np.all(np.isin(p, (0.0, 1.0, -1.0)))]
+
+
+class _Watching:
+    """A ``ref`` fixture that remembers every value the test got from it."""
+
+    def __init__(self, reference, seen):
+        self._reference, self._seen = reference, seen
+
+    def __getattr__(self, name):
+        target = getattr(self._reference, name)
+        if not callable(target):
+            return target
+
+        def call(*args, **kwargs):
+            value = target(*args, **kwargs)
+            self._seen.extend(_arrays(value))
+            return value
+
+        return call
+
+
+@pytest.fixture(scope="module")
+def recorded():
+    reference, catalog = load_reference(), load_catalog()
+    return reference, catalog, suite.transcripts_for(reference, catalog)
+
+
+def test_no_kept_input_is_an_answer_the_test_got_earlier(recorded):
+    reference, catalog, found = recorded
+    recorder = transcripts.ReferenceRecorder(reference)
+    proxy = suite.StudentProxy(recorder, catalog)
+    offending = []
+    for test in suite.hidden_tests()[0]:
+        kept = found[test.nodeid]
+        from_ref = []
+        recorder.start()
+        suite._call_test(test, proxy, _Watching(reference, from_ref))
+        inputs = [_arrays(wire.loads(text)["args"]) for text in kept.calls]
+        for number, arguments in enumerate(inputs):
+            answers = [p for result in kept.results[:number] if result is not None
+                       for a in _arrays(wire.loads(result)) for p in _pieces(a)]
+            answers += [p for a in from_ref for p in _pieces(a)]
+            own = [a for earlier in inputs[:number + 1] for a in earlier]
+            for argument in arguments:
+                same = lambda p: argument.shape == p.shape and np.array_equal(argument, p)  # noqa: E731
+                # an answer that equals one of the test's own inputs (compose(R, I) = R) proves nothing
+                if any(same(p) for p in answers) and not any(same(a) for a in own if a is not argument):
+                    offending.append(f"{test.nodeid} call {number + 1}")
+    assert not offending, offending
+
+
+def test_a_second_recording_with_other_nudges_keeps_the_same_calls(recorded, monkeypatch):
+    reference, catalog, found = recorded
+    monkeypatch.setattr(transcripts, "NUDGE", 3e-13)
+    recorder = transcripts.ReferenceRecorder(reference, nudge=True)
+    proxy = suite.StudentProxy(recorder, catalog)
+    moved = []
+    for test in suite.hidden_tests()[0]:
+        second = recorder.start()
+        suite._call_test(test, proxy, transcripts.NudgedReference(reference))
+        kept = found[test.nodeid].calls
+        common = min(len(kept), len(second.calls))  # a run that stopped early shows fewer calls, not others
+        if second.calls[:common] != kept[:common]:
+            moved.append(test.nodeid)
+    assert not moved, moved
+
+
+def test_the_chained_tests_the_issue_names_are_cut(recorded):
+    _, _, found = recorded
+    for name in ("test_pose_inverse_undoes", "test_transform_points_chain", "test_pose_compose_laws"):
+        cut = [t for nodeid, t in found.items() if nodeid.endswith(name)]
+        assert cut and not cut[0].complete, name
+
+
+def _chained(student):
+    T = np.eye(4)
+    T[:3, 3] = [1.0, 2.0, 3.0]
+    once = student.pose_inverse(T)
+    twice = student.pose_inverse(once)
+    assert np.allclose(twice, T)
+
+
+def test_a_chained_call_is_cut_and_the_test_always_runs():
+    reference, catalog = load_reference(), load_catalog()
+    test = SimpleNamespace(function=_chained, params={}, fixtures=("student",))
+    first, second = transcripts.ReferenceRecorder(reference), transcripts.ReferenceRecorder(reference, nudge=True)
+    recorded, nudged = first.start(), second.start()
+    assert suite._call_test(test, suite.StudentProxy(first, catalog), reference)[0]
+    suite._call_test(test, suite.StudentProxy(second, catalog), transcripts.NudgedReference(reference))
+    assert len(recorded.calls) == 2
+    recorded.passed = True
+    recorded.cut(transcripts.independent_prefix(recorded.calls, nudged.calls))
+    assert len(recorded.calls) == 1 and not recorded.complete
+
+    class Answering:  # a sandbox that answers the one kept call with the reference's value
+        limits = SimpleNamespace(call_timeout=5.0)
+
+        def check_callable(self, lesson, name):
+            pass
+
+        def call_batch(self, calls, timeouts, budget):
+            return [{"ok": True, "stdout": "", "text": recorded.results[0]}]
+
+    replay = transcripts.Replay(Answering())
+    replay.prefetch(recorded)
+    assert not replay.passes_as_recorded(), "a test cut short must run: its chained call is still to be made"
