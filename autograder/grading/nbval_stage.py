@@ -1,19 +1,24 @@
-"""The nbval stage: do the student's answers run inside the reference notebook?
+"""The nbval stage: do the student's functions make the reference notebook run as it did?
 
 For every lesson we take the master from ``solutions/`` (with its recorded
-demonstration outputs), put the student's answer cells in place of the
-reference answers, and run all of that student's notebooks with
-``pytest --nbval-lax`` — one pytest run per student — inside the student's
-sandbox. A lesson passes when every cell runs and every cell tagged
-``nbval-check-output`` prints what the reference printed.
+demonstration outputs) and run it with ``pytest --nbval-lax``, one pytest run
+per student, in a sandbox of its own. A lesson passes when every cell runs and
+every cell tagged ``nbval-check-output`` prints what the reference printed.
 
-The verdict comes from inside the sandbox, so it is not trusted: a lesson's
-"notebook" point is awarded only when nbval passed **and** the hidden suite
-gave every exercise of the lesson full marks. nbval can take that point away;
-it can never add to what honest answers earn. So the grader runs the hidden
-suite first and gives nbval only the lessons with full hidden marks: for the
-others the point is 0 whatever nbval would say, and their run is ``skipped``
-with that reason (:func:`not_run_for_lost_points`).
+**No student code runs in that kernel.** Each answer cell is replaced by one
+that binds the exercise's name to a function calling the student's own
+sandbox (``sandbox/child/student_client.py``): a fresh sandbox per lesson,
+loaded with the student's cells, whose two pipes are handed to the notebook's
+sandbox. Values come back as plain data. So the student's code cannot rewrite
+a later cell (an IPython input transformer), read the notebook's recorded
+outputs or end the kernel: the kernel, nbval and their verdict are ours, and
+the student's code only ever sees the calls the notebook makes.
+
+A lesson's "notebook" point is awarded only when nbval passed **and** the
+hidden suite gave every exercise of the lesson full marks (:func:`award`): the
+grader runs the hidden suite first and gives nbval only the lessons with full
+hidden marks; for the others the point is 0 whatever nbval would say, and
+their run is ``skipped`` with that reason (:func:`not_run_for_lost_points`).
 """
 
 import json
@@ -25,12 +30,12 @@ import tempfile
 import time
 from pathlib import Path
 
-from autograder.authoring.release import CODE_STUB
 from autograder.grading.results import NotebookRun
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import SOLUTIONS
 from autograder.sandbox import launcher
+from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
 
 SANITIZE = """[hex addresses]
 regex: 0x[0-9a-fA-F]+
@@ -43,17 +48,38 @@ replace: 0.0
 SUMMARY_LIMIT = 1 << 20
 
 
-def merged_notebook(master, program):
-    """The master with its answer cells replaced by the student's (stubs where they have none)."""
-    student_cells = dict(program.cells)
+BIND = "from student_client import student_function\n{name} = student_function({lesson!r}, {name!r})\n"
+
+
+def merged_notebook(master, lesson):
+    """The master with each answer cell replaced by a binding of its exercise to the student's function."""
     for cell in master.cells:
         if cells.is_answer_cell(cell):
-            cell.source = student_cells.get(cells.grade_id(cell), CODE_STUB)
+            cell.source = BIND.format(name=cells.grade_id(cell), lesson=lesson)
     return master
 
 
 def _stage_timeout(count):
     return 60.0 + 45.0 * count
+
+
+def _student_channels(runnable, options):
+    """One loaded sandbox per lesson (forked from this grader's warm slot, if any), its pipes handed over.
+
+    Returns ``(sandboxes, {lesson: (request fd, reply fd)}, {lesson: why it could not start})``.
+    """
+    sandboxes, channels, problems = [], {}, {}
+    for shell, program in runnable:
+        box = StudentSandbox({shell.number: program}, limits=options.limits, resets_slot=False, direct=True)
+        sandboxes.append(box)
+        try:
+            channels[shell.number] = box.hand_over()
+            for fd in channels[shell.number]:
+                # the kernel, another user when the grader is root, reopens them through /proc
+                os.fchmod(fd, 0o666)
+        except (StudentError, SandboxUnavailable) as error:
+            problems[shell.number] = f"the student's code could not be loaded ({error})"
+    return sandboxes, channels, problems
 
 
 def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS):
@@ -64,29 +90,37 @@ def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS):
     """
     runnable = [(shell, program) for shell, _, program in lessons if program is not None]
     runs = {}
-    with tempfile.TemporaryDirectory(prefix="autograder-nbval-") as base:
-        sandbox_dir, scratch_dir = launcher.prepare_dirs(base)
-        (sandbox_dir / "nbval_sanitize.cfg").write_text(SANITIZE)
-        names = []
-        for shell, program in runnable:
-            lesson = catalog.lesson(shell.number)
-            nb = merged_notebook(read_master(Path(solutions_dir) / lesson.filename), program)
-            (scratch_dir / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
-            os.chmod(scratch_dir / lesson.filename, 0o644)
-            names.append(lesson.filename)
-        limits = launcher.Limits(
-            memory_bytes=options.limits.memory_bytes, cpu_seconds=int(_stage_timeout(len(names))),
-            processes=options.limits.processes, file_bytes=options.limits.file_bytes,
-            open_files=max(options.limits.open_files, 1024),
-            extra_env={"PYTHONPATH": "/sandbox", "JUPYTER_RUNTIME_DIR": "/tmp/.jupyter-runtime",
-                       "IPYTHONDIR": "/tmp/.ipython", "JUPYTER_PLATFORM_DIRS": "1"})
-        summary, error = _run(names, sandbox_dir, scratch_dir, limits, _stage_timeout(len(names)))
+    sandboxes, channels, problems = _student_channels(runnable, options)
+    try:
+        with tempfile.TemporaryDirectory(prefix="autograder-nbval-") as base:
+            sandbox_dir, scratch_dir = launcher.prepare_dirs(base)
+            (sandbox_dir / "nbval_sanitize.cfg").write_text(SANITIZE)
+            names = []
+            for shell, _ in runnable:
+                if shell.number not in channels:
+                    continue
+                lesson = catalog.lesson(shell.number)
+                nb = merged_notebook(read_master(Path(solutions_dir) / lesson.filename), shell.number)
+                (scratch_dir / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
+                os.chmod(scratch_dir / lesson.filename, 0o644)
+                names.append(lesson.filename)
+            limits = launcher.Limits(
+                memory_bytes=options.limits.memory_bytes, cpu_seconds=int(_stage_timeout(len(names))),
+                processes=options.limits.processes, file_bytes=options.limits.file_bytes,
+                open_files=max(options.limits.open_files, 1024),
+                extra_env={"PYTHONPATH": "/sandbox", "JUPYTER_RUNTIME_DIR": "/tmp/.jupyter-runtime",
+                           "IPYTHONDIR": "/tmp/.ipython", "JUPYTER_PLATFORM_DIRS": "1"})
+            summary, error = (_run(names, channels, sandbox_dir, scratch_dir, limits, _stage_timeout(len(names)))
+                              if names else ({}, ""))
+    finally:
+        for box in sandboxes:
+            box.close()
     for shell, _ in runnable:
         lesson = catalog.lesson(shell.number)
         entry = (summary or {}).get(lesson.filename) if summary else None
-        if error or not isinstance(entry, dict):
-            runs[shell.number] = NotebookRun(status="failed", max_points=options.notebook_points,
-                                             failures=[error or "the notebook did not run"])
+        if shell.number in problems or error or not isinstance(entry, dict):
+            why = problems.get(shell.number) or error or "the notebook did not run"
+            runs[shell.number] = NotebookRun(status="failed", max_points=options.notebook_points, failures=[why])
             continue
         failures = [str(f)[:300] for f in entry.get("failures", [])][:20]
         runs[shell.number] = NotebookRun(status="failed" if failures else "passed",
@@ -94,10 +128,13 @@ def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS):
     return runs
 
 
-def _run(names, sandbox_dir, scratch_dir, limits, timeout):
-    """Start the runner in the sandbox; return (summary dict or None, error line or '')."""
-    program = [sys.executable, "-I", "-B", "/sandbox/nbval_runner.py"] + launcher.worker_flags() + names
-    process = launcher.spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.DEVNULL)
+def _run(names, channels, sandbox_dir, scratch_dir, limits, timeout):
+    """Start the runner in its sandbox; return (summary dict or None, error line or '')."""
+    spec = json.dumps({lesson: list(fds) for lesson, fds in channels.items()})
+    program = ([sys.executable, "-I", "-B", "/sandbox/nbval_runner.py"] + launcher.worker_flags()
+               + ["--channels", spec] + names)
+    process = launcher.spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.DEVNULL,
+                             pass_fds=[fd for fds in channels.values() for fd in fds])
     deadline = time.monotonic() + timeout
     output = b""
     try:
@@ -123,7 +160,7 @@ def _run(names, sandbox_dir, scratch_dir, limits, timeout):
         if not isinstance(notebooks, dict):
             raise TypeError
     except (ValueError, KeyError, TypeError, IndexError):
-        return None, "the notebook stage ended without a result (did the student's code end the process?)"
+        return None, "the notebook stage ended without a result"
     return notebooks, ""
 
 

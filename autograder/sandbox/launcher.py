@@ -340,11 +340,13 @@ def outside_path(path, sandbox_dir, scratch_dir, inside=("/sandbox", "/tmp")):
     return path
 
 
-def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE, zygote=False):
+def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE, zygote=False,
+          pass_fds=()):
     """Start ``program`` (argv relative to the sandbox: ``/sandbox/...`` paths) isolated.
 
     In ``limits`` mode, ``/sandbox`` in the argv is rewritten to the real
-    directory. The process gets its own cgroup when one can be made; stop it
+    directory. ``pass_fds`` stay open in the process (bubblewrap passes them on).
+    The process gets its own cgroup when one can be made; stop it
     with :func:`terminate`, which kills everything it started.
     """
     mode, _ = isolation()
@@ -360,7 +362,7 @@ def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdo
     group = cgroups.SandboxCgroup.create("sandbox", limits.memory_bytes, limits.processes)
     process = subprocess.Popen(argv, stdin=stdin, stdout=stdout, stderr=subprocess.DEVNULL,
                                preexec_fn=_preexec(limits, group), start_new_session=True, env=env, cwd=cwd,
-                               close_fds=True)
+                               close_fds=True, pass_fds=tuple(pass_fds))
     process.cgroup = group
     return process
 

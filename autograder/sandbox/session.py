@@ -92,14 +92,18 @@ class SandboxUnavailable(RuntimeError):
 class StudentSandbox:
     """One student's sandbox; use as a context manager."""
 
-    def __init__(self, program, limits=None, base_dir=None, slot=None):
+    def __init__(self, program, limits=None, base_dir=None, slot=None, resets_slot=True, direct=False):
         self.program = program
         self.limits = limits or launcher.Limits()
         # a warm slot (see warm.py) when this process was given one with the same limits, else cold starts
         self.slot = slot if slot is not None else warm.assigned_slot()
         if self.slot is not None and self.slot.limits != self.limits:
             self.slot = None
-        self._slot_reset = False
+        # the first sandbox of a student resets the slot before and after; more sandboxes of the same
+        # student (the notebook stage's, one per lesson) share it without resetting
+        self._slot_reset = not resets_slot
+        self._resets_slot = resets_slot
+        self.direct = direct  # for hand_over: the worker talks to its caller itself (worker.start)
         self._tmp = None
         self._base_dir = base_dir
         self.process = None
@@ -137,7 +141,7 @@ class StudentSandbox:
             if not self._slot_reset:
                 self.slot.reset()  # whatever the previous student left in the slot goes
                 self._slot_reset = True
-            return self.slot.fork_worker()
+            return self.slot.fork_worker(self.direct)
         except warm.SlotBroken:
             self.slot.discard()
             self.slot = None  # this student goes on with cold sandboxes
@@ -150,7 +154,7 @@ class StudentSandbox:
             sandbox_dir, scratch_dir = self._dirs()
             # the venv's own interpreter path (not its realpath), so Python finds the venv's packages
             self.process = launcher.spawn([sys.executable, "-I", "-B", "/sandbox/worker.py"]
-                                          + launcher.worker_flags(jail=True),
+                                          + launcher.worker_flags(jail=True) + (["--direct"] if self.direct else []),
                                           sandbox_dir, scratch_dir, self.limits)
         self._selector = selectors.DefaultSelector()
         self._selector.register(self.process.stdout, selectors.EVENT_READ)
@@ -188,7 +192,7 @@ class StudentSandbox:
             except _Dead:
                 pass
         self._kill()
-        if self.slot is not None and self._slot_reset:
+        if self.slot is not None and self._slot_reset and self._resets_slot:
             try:
                 self.slot.reset()  # leave nothing running in the slot
             except warm.SlotBroken:
@@ -196,6 +200,20 @@ class StudentSandbox:
         if self._tmp is not None:
             self._tmp.cleanup()
             self._tmp = None
+
+    def hand_over(self):
+        """Load the student's cells and hand over the worker's two pipe ends: ``(request fd, reply fd)``.
+
+        The notebook stage's kernel calls the student's functions through them (``child/student_client.py``).
+        This sandbox makes no call afterwards; close it once the kernel is done.
+
+        Raises
+        ------
+        SandboxUnavailable, StudentError
+            As for the first call.
+        """
+        self._ensure_loaded()
+        return self.process.stdin.fileno(), self.process.stdout.fileno()
 
     def _death_reason(self):
         code = self.process.poll() if self.process else None

@@ -96,9 +96,10 @@ class WarmWorker:
         return self.returncode
 
     def stop(self):
-        """Kill this worker and everything it started (the slot's other processes); close the pipes."""
+        """Kill this worker and everything it started (all of it lives in the namespaces its feeder heads);
+        close the pipes."""
         try:
-            self.slot.reset()
+            self.slot.kill(self.pid)
         except SlotBroken:
             self.slot.discard()
         if self.returncode is None:
@@ -211,9 +212,9 @@ class WarmSlot:
             raise SlotBroken(f"the sandbox's zygote is gone ({error})") from None
         return self._read(nonce, time.monotonic() + seconds)
 
-    def fork_worker(self):
-        """A fresh worker for the student, as a :class:`WarmWorker`."""
-        reply, fds = self._exchange({"op": "fork", "cpu_seconds": self.limits.cpu_seconds})
+    def fork_worker(self, direct=False):
+        """A fresh worker for the student, as a :class:`WarmWorker` (``direct``: see ``worker.start``)."""
+        reply, fds = self._exchange({"op": "fork", "cpu_seconds": self.limits.cpu_seconds, "direct": direct})
         if not reply.get("ok") or len(fds) != 2:
             for fd in fds:
                 os.close(fd)
@@ -224,6 +225,12 @@ class WarmSlot:
         """The raw wait status of worker ``pid`` once it has exited (waiting up to ``wait`` s), else None."""
         reply, _ = self._exchange({"op": "status", "pid": pid, "wait": float(wait)}, float(wait) + REPLY_SECONDS)
         return reply.get("status")
+
+    def kill(self, pid):
+        """Kill worker ``pid`` and everything in its namespaces; the slot's other workers go on."""
+        reply, _ = self._exchange({"op": "kill", "pid": int(pid)})
+        if not reply.get("ok"):
+            raise SlotBroken(f"worker {pid} could not be killed")
 
     def reset(self):
         """Kill every process in the sandbox but the zygote, and with them the students' namespaces."""

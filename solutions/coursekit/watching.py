@@ -92,9 +92,12 @@ def _labels(function, count, keywords):
 
 def changed_arguments(function, args, kwargs, before):
     """Names of the arguments of ``function(*args, **kwargs)`` that differ from their ``before`` copies."""
-    labels = _labels(function, len(args), kwargs)
     values = list(args) + list(kwargs.values())
-    return [label for label, old, new in zip(labels, before, values) if not _same(old, new)]
+    changed = [i for i, (old, new) in enumerate(zip(before, values)) if not _same(old, new)]
+    if not changed:
+        return []
+    labels = _labels(function, len(args), kwargs)  # read the signature only when there is something to name
+    return [labels[i] for i in changed]
 
 
 class _Tracer:

@@ -126,11 +126,12 @@ class CallbackFailed(RuntimeError):
 
 
 class Worker:
-    """The runner: executes cells and calls functions, one request at a time, on ``channel`` (a socket)."""
+    """The runner: executes cells and calls functions, one request at a time (requests and replies are two
+    descriptors: one socket to the feeder, or the caller's two pipes in direct mode)."""
 
-    def __init__(self, channel):
-        self.requests = channel.makefile("rb")
-        self.replies = channel.makefile("wb")
+    def __init__(self, requests_fd, replies_fd):
+        self.requests = os.fdopen(requests_fd, "rb")
+        self.replies = os.fdopen(replies_fd, "wb")
         self.namespaces = {}
         self.output = CappedText()
         self.request_id = 0
@@ -157,20 +158,36 @@ class Worker:
         self.replies.flush()
 
     def run_guarded(self, action, timeout):
-        """Run ``action()`` with the output captured and an alarm; return (ok, value or error)."""
-        self.output.reset()
+        """Run ``action()`` with its output captured and an alarm; return (ok, value or error, printed).
+
+        A call made from inside another (the notebook stage's callback that calls a student function)
+        keeps within the time left to the outer one, and the outer one's alarm and output go on after.
+        """
+        outer_output, outer_streams = self.output, (sys.stdout, sys.stderr)
+        left, _ = signal.getitimer(signal.ITIMER_REAL)
+        started = time.monotonic()
+        self.output = CappedText()
         sys.stdout = sys.stderr = self.output
         signal.signal(signal.SIGALRM, _on_alarm)
-        signal.setitimer(signal.ITIMER_REAL, max(float(timeout), 0.001))
+        limit = max(float(timeout), 0.001)
+        outer_expires = bool(left) and left <= limit  # this call's alarm is the outer call's
+        signal.setitimer(signal.ITIMER_REAL, left if outer_expires else limit)
         try:
-            return True, action()
+            return True, action(), self.output.text()
         except CallTimeout:
-            return False, {"type": "Timeout", "message": f"still running after {timeout:g} s", "where": ""}
+            if outer_expires:
+                raise  # the outer call's time is up: it is the one that timed out
+            return (False, {"type": "Timeout", "message": f"still running after {timeout:g} s", "where": ""},
+                    self.output.text())
         except BaseException as error:  # SystemExit and KeyboardInterrupt too: report, go on
-            return False, _describe(error)
+            return False, _describe(error), self.output.text()
         finally:
-            signal.setitimer(signal.ITIMER_REAL, 0)
-            sys.stdout, sys.stderr = sys.__stdout__, sys.__stderr__
+            rest = left - (time.monotonic() - started)
+            signal.setitimer(signal.ITIMER_REAL, rest if left and rest > 0 else 0)
+            if left and rest <= 0 and not outer_expires:
+                signal.setitimer(signal.ITIMER_REAL, 0.001)  # the outer call's time ran out meanwhile
+            self.output = outer_output
+            sys.stdout, sys.stderr = outer_streams
 
     def do_exec(self, request):
         namespace = self.namespace(request["lesson"])
@@ -179,8 +196,8 @@ class Worker:
         def action():
             exec(compile(request["source"], filename, "exec"), namespace)
 
-        ok, result = self.run_guarded(action, request.get("timeout", 10.0))
-        message = {"ok": ok, "stdout": self.output.text()}
+        ok, result, printed = self.run_guarded(action, request.get("timeout", 10.0))
+        message = {"ok": ok, "stdout": printed}
         if not ok:
             message["error"] = result
         self.reply(message)
@@ -194,18 +211,18 @@ class Worker:
         """
         function = self.namespace(call["lesson"]).get(call["name"])
         if not callable(function):
-            self.output.reset()
             return False, {"type": "NameError", "where": "",
-                           "message": f"{call['name']} is not defined in the graded cells"}, {}
+                           "message": f"{call['name']} is not defined in the graded cells"}, {"stdout": ""}
         handles = iter(range(1 << 20))
         args = [self.materialize(a, handles) for a in call.get("args", [])]
         kwargs = {k: self.materialize(v, handles) for k, v in call.get("kwargs", {}).items()}
         forbidden = [str(name) for name in call.get("forbid") or ()]
-        ok, result = self.run_guarded(lambda: watching.watch_call(function, args, kwargs, forbidden), timeout)
+        ok, result, printed = self.run_guarded(lambda: watching.watch_call(function, args, kwargs, forbidden),
+                                               timeout)
         if not ok:
-            return False, result, {}
+            return False, result, {"stdout": printed}
         value, seen = result
-        notes = {}
+        notes = {"stdout": printed}
         if seen.changed:
             notes["changed"] = seen.changed
         if seen.used or seen.tampered:
@@ -216,7 +233,7 @@ class Worker:
         """One call; its value travels as wire text (checked to be plain data, and bounded)."""
         started = time.monotonic()
         ok, result, notes = self.invoke(request, request.get("timeout") or 5.0)
-        message = {"ok": ok, "stdout": self.output.text(), **notes}
+        message = {"ok": ok, **notes}
         if ok:
             try:
                 message["text"] = wire.dumps(result)
@@ -262,12 +279,23 @@ class Worker:
                 answer = wire.loads(line.decode("utf-8"))
                 if isinstance(answer, dict) and answer.get("op") == "callback_result" and answer.get("seq") == seq:
                     break
+                if isinstance(answer, dict) and answer.get("op") == "call":
+                    worker.nested_call(answer)  # the callable called a student function in turn
             if not answer.get("ok"):
                 raise CallbackFailed(str(answer.get("error", "the callable argument failed")))
             return wire.loads(answer["text"])
 
         callback.__name__ = getattr(target, "name", None) or getattr(target, "label", "") or "callback"
         return callback
+
+    def nested_call(self, request):
+        """Answer a call that arrives while a callback of another call is being evaluated."""
+        outer = self.request_id
+        self.request_id = request.get("id", 0)
+        try:
+            self.do_call(request)
+        finally:
+            self.request_id = outer
 
     def serve(self):
         self.reply({"ready": True})
@@ -295,28 +323,33 @@ class Worker:
 PR_SET_DUMPABLE = 4
 
 
-def _become_runner(channel):
-    """In the feeder's child: keep only the channel, then serve the student's requests."""
-    jail.close_all_but({channel.fileno()})
+def _become_runner(requests_fd, replies_fd):
+    """In the feeder's child: keep only its two descriptors, then serve the student's requests."""
+    jail.close_all_but({requests_fd, replies_fd})
     import ctypes
 
     ctypes.CDLL(None).prctl(PR_SET_DUMPABLE, 1, 0, 0, 0)  # its own /proc/self readable, as in a notebook
     sys.stdin = open(os.devnull)
     try:
-        Worker(channel).serve()
+        Worker(requests_fd, replies_fd).serve()
     finally:
         os._exit(0)
 
 
-def start(requests_fd, replies_fd, uid, keep_user=False, in_jail=True):
+def start(requests_fd, replies_fd, uid, keep_user=False, in_jail=True, direct=False):
     """Become this student's sandbox: the jail (unless ``in_jail`` is False: limits mode), the feeder,
-    the runner. ``requests_fd``/``replies_fd`` talk to the grader. Never returns."""
+    the runner. ``requests_fd``/``replies_fd`` talk to the grader. Never returns.
+
+    ``direct``: the runner talks to the caller over those two pipes itself, and the feeder only waits
+    and says how it ended. For the notebook stage's kernel, which sends one call at a time and no
+    probe: nothing ahead to hold back, and one process hop less on each of its many calls.
+    """
     import ctypes
 
     import feeder
 
     try:
-        probes_fd = os.open(os.path.join(HERE, "probes.py"), os.O_RDONLY | os.O_CLOEXEC)
+        probes_fd = None if direct else os.open(os.path.join(HERE, "probes.py"), os.O_RDONLY | os.O_CLOEXEC)
     except OSError:
         probes_fd = None
     keep = {requests_fd, replies_fd} | ({probes_fd} if probes_fd is not None else set())
@@ -332,11 +365,17 @@ def start(requests_fd, replies_fd, uid, keep_user=False, in_jail=True):
     ctypes.CDLL(None).prctl(PR_SET_DUMPABLE, 0, 0, 0, 0)
     for number in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2):
         signal.signal(number, signal.SIG_DFL)  # PID 1 with no handler: no signal from the student reaches it
+    if direct:
+        pid = os.fork()
+        if pid == 0:
+            _become_runner(requests_fd, replies_fd)
+        os.close(requests_fd)
+        feeder.wait_and_report(pid, replies_fd)
     ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
     pid = os.fork()
     if pid == 0:
         ours.close()
-        _become_runner(theirs)
+        _become_runner(theirs.fileno(), os.dup(theirs.fileno()))
     theirs.close()
     try:
         feeder.Feeder(requests_fd, replies_fd, ours.fileno(), pid, probes_fd).serve()
@@ -351,7 +390,7 @@ def main():
         os.dup2(devnull, fd)
     os.close(devnull)
     start(requests, replies, jail.sandbox_uid(sys.argv), keep_user="--keep-user" in sys.argv,
-          in_jail="--no-jail" not in sys.argv)
+          in_jail="--no-jail" not in sys.argv, direct="--direct" in sys.argv)
 
 
 if __name__ == "__main__":

@@ -27,11 +27,14 @@ The control channel is a Unix ``SOCK_SEQPACKET`` socket (message boundaries kept
 fd 0; each message is one JSON object, and every reply echoes the request's
 ``nonce``:
 
-- ``{"op": "fork", "cpu_seconds": N}``: fork a worker (with that CPU limit);
+- ``{"op": "fork", "cpu_seconds": N, "direct": bool}``: fork a worker (with that CPU limit; ``direct``:
+  see ``worker.start``);
   reply ``{"ok": true, "pid": P}`` carrying two file descriptors: the write end
   of the worker's requests and the read end of its replies.
 - ``{"op": "status", "pid": P, "wait": seconds}``: reply ``{"status": S}``, the
   raw wait status once the worker has exited, or ``null`` while it runs.
+- ``{"op": "kill", "pid": P}``: kill worker P (its feeder, so its namespaces and all in them too);
+  reply ``{"ok": true}`` once it is gone.
 - ``{"op": "reset"}``: kill every other process and reap them; reply
   ``{"ok": true, "left": n}`` with the number of processes that could not be
   killed (0), plus one if the slot's ``/tmp`` was touched.
@@ -63,6 +66,7 @@ SANDBOX_UID = jail.sandbox_uid(sys.argv)
 PR_SET_PDEATHSIG = 1
 PR_SET_DUMPABLE = 4
 WARM_MODULES = ("scipy.spatial.transform", "coursekit", "coursekit.lie", "feeder")
+CLEANER_SECONDS = 5.0
 
 
 def _libc():
@@ -95,7 +99,7 @@ def _receive(control):
 
 
 # ---------------------------------------------------------------- fork
-def _fork_worker(control, cpu_seconds):
+def _fork_worker(control, cpu_seconds, direct=False):
     """Fork a worker on two new pipes; return (pid, the grader's two ends).
 
     The worker enters the student's own namespaces (``jail.enter_student_jail``) and becomes the
@@ -116,16 +120,18 @@ def _fork_worker(control, cpu_seconds):
             devnull = os.open(os.devnull, os.O_RDWR)
             for fd in (0, 1, 2):
                 os.dup2(devnull, fd)
-            worker.start(requests, replies, SANDBOX_UID, keep_user=KEEP_USER)
+            worker.start(requests, replies, SANDBOX_UID, keep_user=KEEP_USER, direct=direct)
         finally:
             os._exit(70)
     os.close(requests_read)
     os.close(replies_write)
+    _children.add(pid)
     return pid, (requests_write, replies_read)
 
 
 # ---------------------------------------------------------------- status
 _finished = {}  # pid -> raw wait status, for workers reaped before anyone asked
+_children = set()  # pids of the workers forked (and not yet reset away)
 
 
 def _reap():
@@ -168,7 +174,21 @@ def _kill_others():
         time.sleep(0.002)
     _reap()
     _finished.clear()
+    _children.clear()
     return len(_others())
+
+
+def _kill_worker(pid):
+    """Kill one worker: its process group (the waiter and the feeder; the feeder is PID 1 of the student's
+    namespaces, so every process in them dies too). True when it is gone."""
+    if pid not in _children:
+        return True  # not one of ours any more: reaped and forgotten by a reset
+    for target in (lambda: os.killpg(pid, signal.SIGKILL), lambda: os.kill(pid, signal.SIGKILL)):
+        try:
+            target()
+        except OSError:
+            pass
+    return _status(pid, CLEANER_SECONDS) is not None or pid in _finished
 
 
 def _tmp_untouched():
@@ -195,7 +215,7 @@ def _answer(control, request, reply):
     """Carry out one request, filling in ``reply``; return the file descriptors to send with it."""
     op = request.get("op")
     if op == "fork":
-        reply["pid"], fds = _fork_worker(control, int(request.get("cpu_seconds", 120)))
+        reply["pid"], fds = _fork_worker(control, int(request.get("cpu_seconds", 120)), bool(request.get("direct")))
         reply["ok"] = True
         return fds
     if op == "status":
@@ -203,6 +223,8 @@ def _answer(control, request, reply):
     elif op == "reset":
         reply["left"] = _reset()
         reply["ok"] = reply["left"] == 0
+    elif op == "kill":
+        reply["ok"] = _kill_worker(int(request["pid"]))
     else:
         reply.update(ok=False, error=f"unknown op {op!r}")
     return ()

@@ -1,0 +1,174 @@
+"""The student's functions, as the notebook stage's kernel calls them (copied into its sandbox).
+
+In the notebook stage the reference notebook runs top to bottom in a kernel
+that holds **no student code**: each answer cell is replaced by one that binds
+the exercise's name to :func:`student_function`, and every call goes to the
+student's own sandbox (its feeder and runner, ``feeder.py``, ``worker.py``)
+over two pipes the grader handed to this sandbox, and comes back as plain
+data. So nothing the student wrote can rewrite a later cell, replay recorded
+outputs or read the notebook: the kernel is ours, and nbval's verdict is.
+
+A callable argument (a demonstration's function, ``np.matmul``) stays here as
+a :class:`wire.Callback`; when the student's code calls it, the feeder asks
+for it and this module answers.
+
+The pipes of each lesson are named in the environment variable
+``AUTOGRADER_CHANNELS``: ``{"03": [pid, request fd, reply fd]}``, descriptors of
+the process ``pid`` (the notebook stage's runner), reopened here through
+``/proc``, so they reach a kernel however it was started.
+
+Examples
+--------
+>>> rot_z = student_function("01", "rot_z")           # doctest: +SKIP
+>>> rot_z(0.5)                                        # computed in the student's sandbox
+array([[ 0.87758256, -0.47942554,  0.        ], ...
+"""
+
+import builtins
+import json
+import os
+import select
+import sys
+import time
+
+import wire
+from feeder import LineChannel, RunnerGone
+
+CALL_TIMEOUT = 5.0
+MARGIN = 10.0  # beyond the call's own time limit, in case the student's code swallowed its alarm
+MAX_REPLY_BYTES = 12 * 1024**2
+
+
+class StudentCodeError(Exception):
+    """The student's function raised an exception that has no builtin name here (its type and message)."""
+
+
+class StudentSandboxGone(RuntimeError):
+    """The student's process ended (or stopped answering): no function of this lesson can be called."""
+
+
+class _Channel:
+    def __init__(self, pid, request_fd, reply_fd):
+        self.out = os.open(f"/proc/{pid}/fd/{request_fd}", os.O_WRONLY | os.O_CLOEXEC)
+        self.fd = os.open(f"/proc/{pid}/fd/{reply_fd}", os.O_RDONLY | os.O_CLOEXEC)
+        self.lines = LineChannel(self.fd, MAX_REPLY_BYTES)
+        self.next_id = 1_000_000  # far from the grader's ids, for the record
+        self.gone = ""
+
+    def write(self, data):
+        view = memoryview(data)
+        while view:
+            view = view[os.write(self.out, view):]
+
+    def send(self, message):
+        self.write(wire.dumps(message).encode() + b"\n")
+
+    def receive(self, deadline):
+        while b"\n" not in self.lines.buffer:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0 or not select.select([self.fd], [], [], remaining)[0]:
+                raise StudentSandboxGone("stopped answering")
+            chunk = os.read(self.fd, 1 << 20)
+            if not chunk:
+                raise StudentSandboxGone("ended")
+            self.lines.buffer += chunk
+        line = self.lines.read_line()
+        return wire.loads(line.decode("utf-8"), max_bytes=MAX_REPLY_BYTES)
+
+
+_CHANNELS = {}
+
+
+def _channel(lesson):
+    if lesson not in _CHANNELS:
+        pid, request_fd, reply_fd = json.loads(os.environ.get("AUTOGRADER_CHANNELS", "{}"))[lesson]
+        _CHANNELS[lesson] = _Channel(pid, request_fd, reply_fd)
+    return _CHANNELS[lesson]
+
+
+def _as_wire(value, callables):
+    """``value`` with every callable in it replaced by a :class:`wire.Callback`, noted in ``callables``
+    (in the order ``feeder.callables_in`` numbers them)."""
+    if isinstance(value, (list, tuple)):
+        converted = [_as_wire(v, callables) for v in value]
+        return converted if isinstance(value, list) else tuple(converted)
+    if isinstance(value, dict):
+        return {k: _as_wire(v, callables) for k, v in value.items()}
+    if callable(value) and not isinstance(value, type):
+        callables.append(value)
+        return wire.Callback(getattr(value, "__name__", "function"))
+    return value
+
+
+def _raise(name, error):
+    kind, message = str(error.get("type", "Error")), str(error.get("message", ""))
+    where = f" ({error['where']})" if error.get("where") else ""
+    builtin = getattr(builtins, kind, None)
+    if isinstance(builtin, type) and issubclass(builtin, Exception):
+        raise builtin(f"{message}{where}")
+    if kind == "Timeout":
+        raise TimeoutError(f"{name} {message}")
+    raise StudentCodeError(f"{kind}: {message}{where}")
+
+
+def call(lesson, name, args=(), kwargs=None, timeout=CALL_TIMEOUT):
+    """Call the student's ``name`` of ``lesson`` in their sandbox; return its value, or raise what it raised."""
+    channel = _channel(lesson)
+    if channel.gone:
+        raise StudentSandboxGone(f"the student's code {channel.gone} earlier in this notebook")
+    callables = []
+    request = {"op": "call", "lesson": lesson, "name": name, "timeout": timeout,
+               "args": _as_wire(list(args), callables), "kwargs": _as_wire(dict(kwargs or {}), callables)}
+    channel.next_id += 1
+    request["id"] = channel.next_id
+    try:
+        line = wire.dumps(request).encode() + b"\n"
+    except wire.WireError as error:
+        raise TypeError(f"{name} can only be given numbers, arrays, lists, tuples, dicts and functions "
+                        f"here, not {error}") from None
+    deadline = time.monotonic() + timeout + MARGIN
+    try:
+        channel.write(line)
+        while True:
+            message = channel.receive(deadline)
+            if not isinstance(message, dict):
+                raise StudentSandboxGone("sent something that is not a message")
+            if "died" in message:
+                raise StudentSandboxGone(str(message.get("why") or "ended"))
+            if "callback" in message:
+                channel.send(_answer_callback(callables, message))
+                continue
+            if message.get("id") != request["id"]:
+                raise StudentSandboxGone("answered another request")
+            break
+    except (StudentSandboxGone, RunnerGone, OSError, wire.WireError) as error:
+        channel.gone = str(error) or type(error).__name__
+        raise StudentSandboxGone(f"calling {name}, the student's code {channel.gone}") from None
+    if message.get("stdout"):
+        sys.stdout.write(str(message["stdout"]))
+    if not message.get("ok"):
+        _raise(name, message.get("error") or {})
+    return wire.loads(message["text"], max_bytes=MAX_REPLY_BYTES)
+
+
+def _answer_callback(callables, message):
+    """The answer to a callback (echoing its ``seq``: a direct runner matches answers by it)."""
+    handle, answer = message.get("callback"), {"op": "callback_result", "seq": message.get("seq")}
+    if type(handle) is not int or not 0 <= handle < len(callables):
+        return dict(answer, ok=False, error="no such callable argument")
+    try:
+        value = callables[handle](*message.get("args", []), **message.get("kwargs", {}))
+        return dict(answer, ok=True, text=wire.dumps(value))
+    except Exception as error:  # the callable failed on the student's arguments: they see why
+        return dict(answer, ok=False, error=f"{type(error).__name__}: {error}"[:300])
+
+
+def student_function(lesson, name):
+    """A function that calls the student's ``name`` of ``lesson`` (see :func:`call`)."""
+
+    def function(*args, **kwargs):
+        return call(lesson, name, args, kwargs)
+
+    function.__name__ = function.__qualname__ = name
+    function.__doc__ = f"The student's {name}, called in their sandbox."
+    return function
