@@ -25,7 +25,7 @@ import tempfile
 import time
 from dataclasses import dataclass, field
 
-from autograder.sandbox import launcher, warm
+from autograder.sandbox import cleanup, launcher, warm
 from autograder.sandbox.child import wire
 
 _SIGNAL_REASONS = {
@@ -128,8 +128,7 @@ class StudentSandbox:
     def _dirs(self):
         if self._tmp is None:
             if self._base_dir is None:
-                self._tmp = tempfile.TemporaryDirectory(prefix="autograder-sandbox-")
-                base = self._tmp.name
+                self._tmp = base = tempfile.mkdtemp(prefix="autograder-sandbox-")
             else:
                 base = self._base_dir
             self.sandbox_dir, self.scratch_dir = launcher.prepare_dirs(base)
@@ -198,7 +197,7 @@ class StudentSandbox:
             except warm.SlotBroken:
                 self.slot.discard()
         if self._tmp is not None:
-            self._tmp.cleanup()
+            cleanup.remove_tree(self._tmp)  # in limits mode, whatever the student left there (any depth)
             self._tmp = None
 
     def hand_over(self):

@@ -30,7 +30,6 @@ Examples
 import json
 import os
 import secrets
-import shutil
 import signal
 import socket
 import subprocess
@@ -39,7 +38,7 @@ import tempfile
 import time
 from dataclasses import replace
 
-from autograder.sandbox import launcher
+from autograder.sandbox import cleanup, launcher
 
 PID_LIMIT = 2**22  # the kernel's largest pid_max: slot uids never meet a cold sandbox's uid
 ZYGOTE_MEMORY = 512 * 1024**2  # room for the zygote's own pages in the slot's memory cap
@@ -162,7 +161,7 @@ class WarmSlot:
             self.control.close()
             self.control = None
         if self._base is not None:
-            shutil.rmtree(self._base, ignore_errors=True)
+            cleanup.remove_tree(self._base)
             self._base = None
 
     def alive(self):

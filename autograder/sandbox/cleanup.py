@@ -1,0 +1,143 @@
+"""Remove a folder that student code wrote into, whatever it made there.
+
+Student code controls the shape of what it leaves: a tree 10,000 levels deep,
+folders made unreadable (``chmod 0``), paths longer than ``PATH_MAX``, links
+pointing anywhere. :func:`remove_tree` walks it iteratively (no recursion to
+exhaust), relative to open folder descriptors (no path length limit), never
+following a link, and with at most two descriptors open at a time (it climbs
+back with ``..``). With bubblewrap, students write in a tmpfs of their own
+that never reaches the disk; this is for ``limits`` mode and for the
+grader's own temporary folders.
+
+Examples
+--------
+>>> remove_tree("/tmp/autograder-sandbox-x1y2")          # doctest: +SKIP
+True
+"""
+
+import os
+import stat
+
+_DIR_FLAGS = os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC
+
+
+def _open_child(parent_fd, name):
+    """Open folder ``name`` of ``parent_fd`` (made readable first if a student locked it), or None."""
+    for attempt in range(2):
+        try:
+            return os.open(name, _DIR_FLAGS, dir_fd=parent_fd)
+        except PermissionError:
+            if attempt:
+                return None
+            try:
+                os.chmod(name, 0o700, dir_fd=parent_fd, follow_symlinks=False)
+            except (OSError, NotImplementedError):
+                return None
+        except OSError:
+            return None
+    return None
+
+
+def _first_entry(fd):
+    """One entry of folder ``fd``: (name, is a real folder), or None when it is empty."""
+    with os.scandir(fd) as entries:
+        for entry in entries:
+            try:
+                return entry.name, entry.is_dir(follow_symlinks=False)
+            except OSError:
+                return entry.name, False
+    return None
+
+
+def remove_tree(path):
+    """Remove ``path`` and everything under it; return True when it is gone.
+
+    Never raises for what is inside (a file that cannot be removed is left, and the result is False).
+    """
+    try:
+        info = os.lstat(path)
+    except FileNotFoundError:
+        return True
+    if not stat.S_ISDIR(info.st_mode):
+        try:
+            os.unlink(path)
+        except OSError:
+            return False
+        return True
+    parent, name = os.path.split(os.path.abspath(path))
+    try:
+        top_parent = os.open(parent, _DIR_FLAGS)
+    except OSError:
+        return False
+    try:
+        fd = _open_child(top_parent, name)
+        if fd is None:
+            return False
+        depth, stuck = 0, set()
+        while True:
+            entry = _first_entry(fd)
+            while entry is not None and (depth, entry[0]) in stuck:
+                entry = _next_unstuck(fd, depth, stuck)
+            if entry is not None:
+                child, is_dir = entry
+                if is_dir:
+                    inner = _open_child(fd, child)
+                    if inner is None:
+                        stuck.add((depth, child))
+                        continue
+                    os.close(fd)
+                    fd, depth = inner, depth + 1
+                    continue
+                try:
+                    os.unlink(child, dir_fd=fd)
+                except OSError:
+                    stuck.add((depth, child))
+                continue
+            # empty (or only what cannot be removed): climb back, removing it
+            if depth == 0:
+                os.close(fd)
+                fd = None
+                try:
+                    os.rmdir(name, dir_fd=top_parent)
+                except OSError:
+                    return False
+                return True
+            up = os.open("..", _DIR_FLAGS, dir_fd=fd)
+            here = os.fstat(fd)
+            os.close(fd)
+            fd, depth = up, depth - 1
+            _remove_child_folder(fd, here, depth, stuck)
+    finally:
+        os.close(top_parent)
+        if "fd" in locals() and fd is not None:
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
+def _next_unstuck(fd, depth, stuck):
+    with os.scandir(fd) as entries:
+        for entry in entries:
+            if (depth, entry.name) not in stuck:
+                try:
+                    return entry.name, entry.is_dir(follow_symlinks=False)
+                except OSError:
+                    return entry.name, False
+    return None
+
+
+def _remove_child_folder(fd, child_stat, depth, stuck):
+    """Remove the (now empty) folder of ``fd`` whose identity is ``child_stat``; note it if that fails."""
+    with os.scandir(fd) as entries:
+        for entry in entries:
+            try:
+                same = entry.is_dir(follow_symlinks=False) and entry.inode() == child_stat.st_ino
+            except OSError:
+                same = False
+            if same:
+                try:
+                    os.rmdir(entry.name, dir_fd=fd)
+                except OSError:
+                    stuck.add((depth, entry.name))
+                return
