@@ -87,10 +87,20 @@ def _encode_float(x):
     return {"__float__": "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf")}
 
 
-def encode(value, depth=0):
-    """Turn ``value`` into JSON-ready data, or raise :class:`WireError`."""
+def encode(value, depth=0, budget=None):
+    """Turn ``value`` into JSON-ready data, or raise :class:`WireError`.
+
+    At most :data:`MAX_NODES` items of lists, tuples and dicts in all, counted before they are walked,
+    so six million empty lists are refused at once rather than encoded for seconds.
+    """
     if depth > MAX_DEPTH:
         raise WireError("nested too deeply")
+    if budget is None:
+        budget = [MAX_NODES]
+    if type(value) in (list, tuple, dict):
+        budget[0] -= len(value)
+        if budget[0] < 0:
+            raise WireError(f"more than {MAX_NODES} items in lists, tuples and dicts")
     kind = type(value)
     if value is None or kind is bool or kind is str:
         return value
@@ -101,7 +111,7 @@ def encode(value, depth=0):
     if kind is complex:
         return {"__complex__": [_encode_float(value.real), _encode_float(value.imag)]}
     if isinstance(value, np.generic) and value.dtype.kind in "biufc":
-        return encode(value.item(), depth + 1)
+        return encode(value.item(), depth + 1, budget)
     if isinstance(value, np.ndarray):
         array = np.ascontiguousarray(np.asarray(value).view(np.ndarray))
         if array.dtype.kind not in "biufc":
@@ -112,18 +122,18 @@ def encode(value, depth=0):
         return {"__ndarray__": base64.b64encode(array.tobytes()).decode("ascii"),
                 "dtype": array.dtype.str, "shape": list(array.shape)}
     if kind is list:
-        return [encode(v, depth + 1) for v in value]
+        return [encode(v, depth + 1, budget) for v in value]
     if kind is tuple:
-        return {"__tuple__": [encode(v, depth + 1) for v in value]}
+        return {"__tuple__": [encode(v, depth + 1, budget) for v in value]}
     if kind is dict:
         items = []
         for key, item in value.items():
             if type(key) is not str:
                 raise WireError(f"a dict with a {type(key).__name__} key (only str keys)")
-            items.append([key, encode(item, depth + 1)])
+            items.append([key, encode(item, depth + 1, budget)])
         return {"__dict__": items}
     if kind is Probe:
-        return {"__probe__": value.name, "args": [encode(a, depth + 1) for a in value.args]}
+        return {"__probe__": value.name, "args": [encode(a, depth + 1, budget) for a in value.args]}
     if kind is Callback:
         return {"__callback__": value.label}
     raise WireError(f"a {kind.__name__} object")
