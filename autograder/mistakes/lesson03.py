@@ -293,6 +293,13 @@ def axis_from_eigen(R):
     values, vectors = np.linalg.eigh(np.asarray(R, dtype=float))
     return vectors[:, int(np.argmin(np.abs(values - 1.0)))]
 ''', hint="eigh assumes", public_hint="eigh assumes"),
+    Mistake("axis_from_eigen_complex", "axis_from_eigen", "np.linalg.eig's complex eigenvector returned as it comes "
+            "(dtype complex128, zero imaginary part)", '''
+def axis_from_eigen(R):
+    values, vectors = np.linalg.eig(np.asarray(R, dtype=float))
+    u = vectors[:, int(np.argmin(np.abs(values - 1.0)))]
+    return u / np.linalg.norm(u)
+''', hint="return np.real(...) of it", public_hint="return np.real(...) of it"),
 ]
 
 ALTERNATIVES = [
@@ -365,12 +372,6 @@ def axis_angle(R):
     Alternative("axis_from_eigen_svd", "axis_from_eigen", "the SVD null space of R - I", '''
 def axis_from_eigen(R):
     return np.linalg.svd(np.asarray(R, dtype=float) - np.eye(3))[2][-1]
-'''),
-    Alternative("axis_from_eigen_complex", "axis_from_eigen", "np.linalg.eig's complex eigenvector as it comes", '''
-def axis_from_eigen(R):
-    values, vectors = np.linalg.eig(np.asarray(R, dtype=float))
-    u = vectors[:, int(np.argmin(np.abs(values - 1.0)))]
-    return u / np.linalg.norm(u)
 '''),
 ]
 
