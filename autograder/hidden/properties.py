@@ -150,6 +150,14 @@ def decade_edges(low=1e-12, high=1.0, factors=(0.97, 0.5)):
     return found
 
 
+GENERIC_AXIS = np.array([2.0, -1.0, 2.0]) / 3.0
+
+
+def decade_vectors(axis=GENERIC_AXIS, **kwargs):
+    """``(w, w)`` cases for :func:`given_forms` strategies: θ u for the angles of :func:`decade_edges`."""
+    return [(t * axis, t * axis) for t in decade_edges(**kwargs)]
+
+
 def batches(row, sizes=(1, 3, 7)):
     """``(N, k)`` arrays of N rows drawn from ``row`` (a strategy of k-vectors), N in ``sizes``."""
     return st.sampled_from(sizes).flatmap(lambda n: st.lists(row, min_size=n, max_size=n)).map(np.array)

@@ -16,6 +16,7 @@ Tiny angles: Jr and Jr⁻¹ at 1e-9 … 1e-3 rad must be off by at most
 """
 
 import numpy as np
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child import probes
@@ -23,10 +24,15 @@ from autograder.sandbox.child import probes
 from coursekit.checks.lesson06 import floor_hint
 from coursekit.diagnose import JACOBIAN_STEP_HINT, jacobian_error_allowed
 
+from .properties import (angle_text, as_given, decade_vectors, expect_within, for_all, given_forms, quaternions,
+                         rotation_vectors)
 from .helpers import (Probe, Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
                       random_rotations, rotation_problem, shape_problem)
 
 TOL = 1e-10
+JR_TOL = 1e-14  # Jr at every angle from 1e-12 to π: each entry within 1e-14 (the reference's error is 9e-16)
+JR_INV_TOL = 2e-14  # Jr⁻¹ likewise (reference 1.3e-15)
+QUAT_BOXPLUS_TOL = 2e-15  # q ⊞ d for |d| from 1e-12 to π: each component within 2e-15 (up to the sign of q)
 
 
 # ---------------------------------------------------------------- oracles written out here
@@ -331,6 +337,24 @@ def test_quat_boxplus_tiny_and_zero(student):
            f"(tolerance 1e-15)", _quat_hint(got, q, d, "below a tiny angle, Exp_q(δ) = [1, δ/2] to machine precision"))
 
 
+@exercise("quat_boxplus", weight=2)
+def test_quat_boxplus_every_decade(student):
+    """exact to 2e-15 for |δ| from 1e-12 to π (each decade, just below each power of ten), q from both
+    hemispheres, lists too"""
+    def check(case):
+        (q, d), given = case
+        got = expect_array(student.quat_boxplus(q, given), (4,), "quat_boxplus(q, δ)")
+        expected = _qmul(q, _exp_q(d))
+        expected = expected if np.dot(got, expected) >= 0 else -expected
+        expect_within(got, expected, QUAT_BOXPLUS_TOL, "quat_boxplus(q, δ)", f"|δ| = {np.linalg.norm(d):.2g}",
+                      _quat_hint(got, q, d))
+
+    q = _random_quats(1, 639)[0]
+    cases = st.tuples(quaternions(), rotation_vectors()).flatmap(
+        lambda pair: st.tuples(st.just(pair), as_given(pair[1])))
+    for_all(cases, check, explicit=[((q, d), d) for d, _ in decade_vectors()])
+
+
 # ---------------------------------------------------------------- numerical_jacobian
 SMOOTH_POINTS = [np.array([0.7, -1.3, 2.1]), np.array([2.0, -1.5, 0.0]), np.array([1.5, 2.5, -3.0]),
                  np.array([-0.4, 0.9, 0.3])]
@@ -587,6 +611,17 @@ def _jr(w, swapped=False):
     return np.eye(3) - a * W + b * W @ W
 
 
+def _jr_exact(w, terms=40):
+    """Jr(w) = Σ (-[w]×)^k / (k + 1)!, summed far past convergence: an oracle with no branch at all."""
+    W = _skew(w)
+    total, term, factorial = np.zeros((3, 3)), np.eye(3), 1.0
+    for k in range(terms):
+        total = total + term / factorial
+        term = -term @ W
+        factorial *= k + 2
+    return total
+
+
 def _jr_naive(w):
     """The closed form with no small-angle branch, as a student writes it: 1 - cos θ loses its digits."""
     w = np.asarray(w, dtype=float)
@@ -701,6 +736,18 @@ def test_right_jacobian_tiny_angles(student):
                         "a = 1/2 - θ²/24, b = 1/6 - θ²/120", sign=-1.0)
 
 
+@exercise("right_jacobian_so3", weight=2)
+def test_right_jacobian_every_decade(student):
+    """exact to 1e-14 at every angle from 1e-12 to π (each decade, just below each power of ten), lists too"""
+    def check(case):
+        w, given = case
+        got = expect_array(student.right_jacobian_so3(given), (3, 3), "right_jacobian_so3(w)")
+        expect_within(got, _jr_exact(w), JR_TOL, "right_jacobian_so3(w)", angle_text(np.linalg.norm(w)),
+                      _jr_hint(got, w))
+
+    for_all(given_forms(rotation_vectors()), check, explicit=decade_vectors())
+
+
 @exercise("right_jacobian_so3", weight=1)
 def test_right_jacobian_near_pi(student, ref):
     """stays finite and accurate at and near a half turn (θ = π, π - 1e-6, π - 1e-9)"""
@@ -776,6 +823,18 @@ def test_right_jacobian_inv_tiny_angles(student):
     _expect_tiny_angles(results, expected, _inverse_candidates, "right_jacobian_inv_so3",
                         "Jr⁻¹ = I + [w]×/2 + c [w]×² with c → 1/12: below a small angle use the series "
                         "c = 1/12 + θ²/720", sign=1.0)
+
+
+@exercise("right_jacobian_inv_so3", weight=2)
+def test_right_jacobian_inv_every_decade(student):
+    """exact to 2e-14 at every angle from 1e-12 to π (each decade, just below each power of ten), lists too"""
+    def check(case):
+        w, given = case
+        got = expect_array(student.right_jacobian_inv_so3(given), (3, 3), "right_jacobian_inv_so3(w)")
+        expect_within(got, np.linalg.inv(_jr_exact(w)), JR_INV_TOL, "right_jacobian_inv_so3(w)",
+                      angle_text(np.linalg.norm(w)), _inverse_hint(got, w))
+
+    for_all(given_forms(rotation_vectors()), check, explicit=decade_vectors())
 
 
 @exercise("right_jacobian_inv_so3", weight=1)

@@ -14,15 +14,19 @@ function's answer for arrays.
 """
 
 import numpy as np
+from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
 from coursekit.diagnose import as_float_array
 
+from .properties import (GENERIC_AXIS, as_given, decade_edges, expect_within, for_all, points,
+                         rotation_vectors)
 from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, random_rotations,
                       rotation_problem)
 
 TOL = 1e-9
+SE3_TOL = 5e-14  # exp_se3 and log_se3 at every angle of phi from 1e-12 to π: within 5e-14 max(1, |rho|)
 MIRROR_HINT = "xi = [rho, phi]: the translation part comes first, the rotation part last"
 
 
@@ -439,6 +443,32 @@ def test_exp_se3_tiny_angles(student):
         expect_close(got, _exp(xi), 1e-12, what, hint, scale=length)
 
 
+def _twists_every_decade(max_angle=np.pi):
+    """``(xi, form)``: rho anywhere in a ball of radius 50, phi at every decade of angle up to ``max_angle``."""
+    twists = st.tuples(points(50.0), rotation_vectors(high=max_angle, near_pi=max_angle >= np.pi)).map(
+        np.concatenate)
+    return twists.flatmap(lambda xi: st.tuples(st.just(xi), as_given(xi)))
+
+
+def _decade_twists():
+    rho = np.array([30.0, -20.0, 35.0])
+    return [(np.concatenate([rho, t * GENERIC_AXIS]),) * 2 for t in decade_edges()]
+
+
+@exercise("exp_se3", weight=2)
+def test_exp_se3_every_decade(student):
+    """exact to 5e-14 max(1, |rho|) at every angle of phi from 1e-12 to π (each decade, just below each
+    power of ten), |rho| up to 50, lists too"""
+    def check(case):
+        xi, given = case
+        got = expect_array(student.exp_se3(given), (4, 4), "exp_se3(xi)")
+        scale = max(1.0, float(np.linalg.norm(xi[:3])))
+        expect_within(got, _exp(xi), SE3_TOL * scale, "exp_se3(xi)",
+                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}", _exp_hint(got, xi, tiny=True))
+
+    for_all(_twists_every_decade(), check, explicit=_decade_twists())
+
+
 @exercise("exp_se3", weight=1)
 def test_exp_se3_large_angles(student):
     """handles rotation parts near and beyond π (π - 1e-6, π, 4 rad, 7 rad)"""
@@ -509,6 +539,21 @@ def test_log_se3_tiny_angles(student):
             _expect_finite(got, what, SERIES_HINT_C)
             got = expect_array(got, (6,), what)
             expect_close(got, xi, 1e-11, what, _log_hint(got, T, xi, tiny=True) or SERIES_HINT_C, scale=length)
+
+
+@exercise("log_se3", weight=2)
+def test_log_se3_every_decade(student):
+    """exact to 5e-14 max(1, |rho|) at every angle of phi from 1e-12 to 3 (each decade, just below each power
+    of ten), |rho| up to 50"""
+    def check(case):
+        xi, _ = case
+        T = _exp(xi)
+        got = expect_array(student.log_se3(T), (6,), "log_se3(T)")
+        scale = max(1.0, float(np.linalg.norm(xi[:3])))
+        expect_within(got, xi, SE3_TOL * scale, "log_se3(T)",
+                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}", _log_hint(got, T, xi, tiny=True))
+
+    for_all(_twists_every_decade(max_angle=3.0), check, explicit=_decade_twists())
 
 
 @exercise("log_se3", weight=2)
