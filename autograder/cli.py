@@ -306,7 +306,7 @@ def _cmd_mutants(args):
     from autograder.mutants.run import main as run_mutants
 
     return run_mutants(exercises=args.exercise or None, lessons=args.lessons or None, jobs=args.jobs,
-                       markdown=args.markdown)
+                       markdown=args.markdown, save=args.save)
 
 
 def _cmd_export(args):
@@ -416,6 +416,7 @@ def build_parser():
     mutants.add_argument("--lessons", nargs="*", default=[], help="only these lessons, e.g. 03 04")
     mutants.add_argument("--jobs", type=int, default=None, help="processes (default: 2, or 1 on one core)")
     mutants.add_argument("--markdown", action="store_true", help="print the table as Markdown (for the README)")
+    mutants.add_argument("--save", metavar="FILE.json", help="also write every mutant's outcome and source as JSON")
     mutants.set_defaults(run=_cmd_mutants)
 
     book = commands.add_parser("book", help="build the solved lessons as a static website (open OUT/index.html)")

@@ -45,6 +45,8 @@ def _expect_verdict(got, expected, what, hints=None):
 
 
 ALL_TRUE = dict.fromkeys(KEYS, True)
+NAN_HINT = ("a NaN result never counts as equal: compare with max |x - y| <= tol, which is False for NaN "
+            "(not ... > tol, which NaN passes)")
 
 
 # ---------------------------------------------------------------- check_group_axioms
@@ -199,6 +201,16 @@ def test_check_group_axioms_single_sample(student):
     _expect_verdict(got, ALL_TRUE, "the trivial group {I}")
 
 
+@exercise("check_group_axioms", weight=1)
+def test_check_group_axioms_nan_is_never_equal(student):
+    """a NaN never counts as equal: with inf among the reals under ×, (inf · 0) · x is NaN, so × fails
+    associativity and identity there"""
+    got = _verdict(student.check_group_axioms([np.inf, 0.0, 2.0], Probe("multiply"), 1.0, Probe("reciprocal"),
+                                              Probe("is_finite")), "check_group_axioms([inf, 0, 2], ×)")
+    expect(got["associativity"] is False, "with inf · 0 = NaN among the products, associativity came out True",
+           NAN_HINT)
+
+
 # ---------------------------------------------------------------- commutes
 def _commutes(student, a, b, op, what, **kwargs):
     return expect_bool(student.commutes(a, b, op, **kwargs), what)
@@ -324,6 +336,13 @@ def test_commutes_uses_tol(student):
                      f"with tol=1e-5 a difference of {gap:.2g} was not accepted", "compare with the tol argument")
     _expect_commutes(student, not _commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-9)", tol=1e-9),
                      f"with tol=1e-9 a difference of {gap:.2g} was accepted", "compare with the tol argument")
+
+
+@exercise("commutes", weight=1)
+def test_commutes_nan_is_never_equal(student):
+    """a NaN never counts as equal: inf · 0 is NaN both ways, so commutes(inf, 0, ×) is False"""
+    expect(not _commutes(student, np.inf, 0.0, Probe("multiply"), "commutes(inf, 0, ×)"),
+           "commutes(inf, 0, ×) came out True although inf · 0 is NaN both ways", NAN_HINT)
 
 
 @exercise("commutes", weight=2)

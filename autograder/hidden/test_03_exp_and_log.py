@@ -549,10 +549,15 @@ def test_axis_angle_random(student):
 
 @exercise("axis_angle", weight=1)
 def test_axis_angle_identity(student):
-    """θ = 0 for the identity and for identities up to rounding (trace just above 3), with a unit axis"""
+    """θ = 0 for the identity and for identities up to rounding (trace just above 3), with the axis the
+    docstring names for θ = 0, u = [1, 0, 0]; the identity as a list of integers too"""
     for index, P in enumerate([np.eye(3)] + _nearly_identities()):
         u, theta = _axis_angle(student, P, f"axis_angle(identity #{index})")
         expect(theta <= 1e-12, f"axis_angle of an identity (#{index}) gave θ = {theta:.3g}")
+    u, theta = _axis_angle(student, np.eye(3).astype(int).tolist(), "axis_angle([[1, 0, 0], [0, 1, 0], [0, 0, 1]])")
+    expect(np.array_equal(u, [1.0, 0.0, 0.0]) and theta == 0.0,
+           f"axis_angle of the identity gave u = {fmt(u)}, θ = {theta:.3g}; the docstring names u = [1, 0, 0]",
+           "at θ = 0 every axis is valid: return the one the docstring names, [1, 0, 0], and θ = 0")
 
 
 @exercise("axis_angle", weight=1)

@@ -627,7 +627,8 @@ def _jr_naive(w):
     w = np.asarray(w, dtype=float)
     theta = np.linalg.norm(w)
     W = _skew(w)
-    return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+    with np.errstate(all="ignore"):  # 0/0 at θ = 0: the candidate is NaN there, and matches nothing
+        return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
 
 
 JR_FORMULA = "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²"

@@ -239,7 +239,7 @@ def quat_to_euler_zyx(q):
     w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
     u, v = complex(w + y, z - x), complex(w - y, x + z)     # |u| = √2 sin(pitch/2 + π/4), |v| = √2 cos(...)
     pitch = 2 * np.arctan2(abs(u), abs(v)) - np.pi / 2
-    wrap = lambda a: float(-np.angle(np.exp(-1j * a)))     # into (-π, π]
+    wrap = lambda a: float(np.pi - (np.pi - a) % (2 * np.pi))     # into (-π, π]: -π becomes π
     if abs(v) < 1e-12:
         return wrap(2 * np.angle(u)), float(pitch), 0.0
     if abs(u) < 1e-12:

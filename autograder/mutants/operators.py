@@ -294,15 +294,17 @@ AUGMENTABLE = (ast.Add, ast.Sub, ast.Mult, ast.Div)
 
 
 def _in_place_statement(statement, context):
-    """x = x OP e → x OP= e; return x OP e → x OP= e; return x; -x[s] → x[s] *= -1 first."""
+    """For an argument x (or its np.asarray alias, which is the caller's array when that is already a float
+    array): x = x OP e → x OP= e; return x OP e → x OP= e; return x; -x[s] → x[s] *= -1 first."""
     if isinstance(statement, ast.Assign) and len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Name):
         value, name = statement.value, statement.targets[0].id
         if isinstance(value, ast.BinOp) and isinstance(value.op, AUGMENTABLE) and isinstance(value.left, ast.Name) \
-                and value.left.id == name:
+                and value.left.id == name and name in context.parameters:
             yield Edit("in_place", statement, ast.AugAssign(target=ast.Name(name, ast.Store()), op=type(value.op)(),
                                                             value=_copy(value.right)))
     if isinstance(statement, ast.Return) and isinstance(statement.value, ast.BinOp) \
-            and isinstance(statement.value.op, AUGMENTABLE) and isinstance(statement.value.left, ast.Name):
+            and isinstance(statement.value.op, AUGMENTABLE) and isinstance(statement.value.left, ast.Name) \
+            and statement.value.left.id in context.parameters:
         name = statement.value.left.id
         yield Edit("in_place", statement, [
             ast.AugAssign(target=ast.Name(name, ast.Store()), op=type(statement.value.op)(),
@@ -310,7 +312,7 @@ def _in_place_statement(statement, context):
             ast.Return(value=ast.Name(name, ast.Load()))])
     for node in ast.walk(statement):
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) and isinstance(node.operand, ast.Subscript) \
-                and isinstance(node.operand.value, ast.Name):
+                and isinstance(node.operand.value, ast.Name) and node.operand.value.id in context.parameters:
             target = _copy(node.operand)
             target.ctx = ast.Store()
             new_statement = _replace(statement, node, _copy(node.operand))

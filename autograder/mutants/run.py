@@ -172,8 +172,11 @@ def stale_equivalents(mutants):
     return sorted(key for key in EQUIVALENT if key not in keys)
 
 
-def main(exercises=None, lessons=None, jobs=None, markdown=False, show_survivors=True, out=print):
-    """Generate, grade and report; return 0 when every exercise meets both targets, else 1."""
+def main(exercises=None, lessons=None, jobs=None, markdown=False, show_survivors=True, out=print, save=None):
+    """Generate, grade and report; return 0 when every exercise meets both targets, else 1.
+
+    ``save``: a path to write every outcome to, as JSON (for reading survivors and hints at leisure).
+    """
     from autograder.lessons.catalog import load_catalog
 
     started = time.monotonic()
@@ -183,6 +186,13 @@ def main(exercises=None, lessons=None, jobs=None, markdown=False, show_survivors
     out(f"{len(mutants)} mutants of {len(names)} exercises, graded by the hidden suite and the public checks "
         f"({jobs or min(2, os.cpu_count() or 1)} processes)")
     outcomes = grade_all(mutants, jobs)
+    if save:
+        import dataclasses
+        import json
+        from pathlib import Path
+
+        Path(save).write_text(json.dumps([dict(dataclasses.asdict(o), source=m.source)
+                                          for o, m in zip(outcomes, mutants)], indent=1), encoding="utf-8")
     rows, total = table(outcomes, names)
     out(format_table(rows, total, markdown))
     if show_survivors and total.survivors:
@@ -191,6 +201,12 @@ def main(exercises=None, lessons=None, jobs=None, markdown=False, show_survivors
             public = "killed by public" if outcome.public_killed else "passes public"
             out(f"  {outcome.key}  [{outcome.family}] {outcome.description}  ({public})"
                 + (f"  grading failed: {outcome.error}" if outcome.error else ""))
+    wrongly = [o for o in outcomes if o.equivalent and (o.hidden_killed or o.public_killed)]
+    if wrongly:
+        out("\nListed as equivalent (correct answers) but losing points or failing a public check:")
+        for outcome in wrongly:
+            out(f"  {outcome.key}  [{outcome.family}] {outcome.description}  "
+                f"(hidden {outcome.points:g}/{outcome.max_points:g}, public {'✗' if outcome.public_killed else '✓'})")
     spilled = [o for o in outcomes if o.elsewhere]
     for outcome in spilled:
         out(f"  {outcome.key} also cost points on {', '.join(outcome.elsewhere)}")
@@ -198,4 +214,4 @@ def main(exercises=None, lessons=None, jobs=None, markdown=False, show_survivors
         for key in stale_equivalents(mutants):
             out(f"  equivalent.py lists {key}, which no operator makes any more: review it")
     out(f"\n{time.monotonic() - started:.0f} s")
-    return 0 if all(row.meets for row in rows) else 1
+    return 0 if all(row.meets for row in rows) and not wrongly else 1
