@@ -14,8 +14,11 @@ Core ideas (at least half of each exercise's points): Hamilton's sign of the
 cross product; the half angle; the canonical sign w >= 0 with Shepperd's
 branches (test rotations take every branch, so a missing flip shows); slerp's
 constant angular speed along the shorter arc (nlerp agrees only at t = 0.5).
-An in-place quat_conjugate is accepted: each call gets fresh arrays, so the
-hidden suite cannot see the change, and the public check agrees.
+An argument changed in place (an in-place quat_conjugate) costs the exercise a quarter of its points:
+the sandbox watches every call (``coursekit.watching``), and the public checks say the same.
+Over the whole domain (properties drawn by Hypothesis, derandomized, see ``properties.py``): quat_slerp
+is within 2e-15 of q0 turned t of the way along the shorter arc, for turns from 1e-12 to π rad between
+q0 and q1 (every decade), either sign of q1 and t in [0, 1] with both endpoints; lists are accepted.
 """
 
 import numpy as np

@@ -10,7 +10,9 @@ own exercise only.
 Tolerances: 1e-12 for matrices and quaternions built from angles, 1e-9 for
 angles away from the lock, 1e-11 for matrices rebuilt from angles extracted
 at or next to the lock ("the same matrix to ~1e-12"), 1e-7 against central
-differences with step 1e-6.
+differences with step 1e-6. Yaw and roll lie in (-π, π] exactly: -π is never returned (checked with
+half turns whose sines are -0.0, where np.arctan2 gives -π); quat_to_euler_zyx normalises first (q
+scaled by 1e-8 … 1e8 gives the angles of q, also next to the lock).
 """
 
 import warnings

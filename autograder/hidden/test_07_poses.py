@@ -9,7 +9,10 @@ Tolerances scale with the inputs: at tiny rotation parts (|phi| from 1e-12
 to 9e-3) exp_se3 and log_se3 must be off by at most 1e-12 |rho| (1e-11 for
 the log), with |rho| up to 50, so a V or c(θ) guarded only at θ = 0 (whose
 W coefficient is 0 instead of 1/2 once cos θ rounds to 1) or computed with
-the cancelling closed form is caught. Lists are compared with the same
+the cancelling closed form is caught. Over the whole domain (properties drawn by Hypothesis, derandomized, see ``properties.py``):
+exp_se3 and log_se3 are within 5e-14 max(1, |rho|) of scipy's expm (and of the twist itself) at every
+angle of phi from 1e-12 to π (3 for the log), each decade and just below each power of ten, |rho| up to 50.
+Lists are compared with the same
 function's answer for arrays.
 """
 

@@ -205,14 +205,6 @@ def compose(R_ab, R_bc):
 def invert_rotation(R_ab):
     return invert_rotation(R_ab).T
 ''', kind="fault"),
-
-    # the contracts beyond the value (coursekit.contracts)
-    Mistake("rotate_point_in_place", "rotate_point", "writes the rotated point into the caller's array p_b", '''
-def rotate_point(R_wb, p_b):
-    p_b = np.asarray(p_b, dtype=float)
-    p_b[...] = p_b @ np.asarray(R_wb, dtype=float).T
-    return p_b
-''', hint="work on a copy", public_hint="work on a copy"),
 ]
 
 ALTERNATIVES = [

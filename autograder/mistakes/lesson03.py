@@ -293,30 +293,6 @@ def axis_from_eigen(R):
     values, vectors = np.linalg.eigh(np.asarray(R, dtype=float))
     return vectors[:, int(np.argmin(np.abs(values - 1.0)))]
 ''', hint="eigh assumes", public_hint="eigh assumes"),
-    Mistake("axis_from_eigen_complex", "axis_from_eigen", "np.linalg.eig's complex eigenvector returned as it comes "
-            "(dtype complex128, zero imaginary part)", '''
-def axis_from_eigen(R):
-    values, vectors = np.linalg.eig(np.asarray(R, dtype=float))
-    u = vectors[:, int(np.argmin(np.abs(values - 1.0)))]
-    return u / np.linalg.norm(u)
-''', hint="return np.real(...) of it", public_hint="return np.real(...) of it"),
-
-    # the contracts beyond the value (coursekit.contracts): the exercise is to write the map
-    Mistake("hat_delegates", "hat", "a one-line wrapper around coursekit.lie.skew", '''
-def hat(w):
-    from coursekit.lie import skew
-    return skew(w)
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
-    Mistake("exp_so3_delegates", "exp_so3", "a one-line wrapper around coursekit.lie.Exp", '''
-def exp_so3(w):
-    from coursekit.lie import Exp
-    return Exp(w)
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
-    Mistake("log_so3_delegates", "log_so3", "scipy's Rotation does the work", '''
-def log_so3(R):
-    from scipy.spatial.transform import Rotation
-    return Rotation.from_matrix(np.asarray(R, dtype=float)).as_rotvec()
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
 ]
 
 ALTERNATIVES = [

@@ -308,25 +308,6 @@ def quat_slerp(q0, q1, t):
     with np.errstate(invalid="ignore", divide="ignore"):
         return (np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega)
 ''', hint="when sin Ω is tiny", public_hint="when sin Ω is tiny"),
-
-    # the contracts beyond the value (coursekit.contracts)
-    Mistake("quat_conjugate_in_place", "quat_conjugate", "negates the caller's vector part in place", '''
-def quat_conjugate(q):
-    q = np.asarray(q, dtype=float)
-    q[1:] *= -1
-    return q
-''', hint="work on a copy", public_hint="work on a copy"),
-    Mistake("quat_from_axis_angle_normalises_in_place", "quat_from_axis_angle", "normalises the caller's axis in place", '''
-def quat_from_axis_angle(u, theta):
-    u = np.asarray(u, dtype=float)
-    u /= np.linalg.norm(u)
-    return np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
-''', hint="work on a copy", public_hint="work on a copy"),
-    Mistake("quat_multiply_delegates", "quat_multiply", "a one-line wrapper around coursekit.lie.quat_product", '''
-def quat_multiply(p, q):
-    from coursekit.lie import quat_product
-    return quat_product(p, q)
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
 ]
 
 ALTERNATIVES = [
@@ -351,12 +332,6 @@ def quat_right(q):
     def mul(a, b):
         return np.concatenate([[a[0] * b[0] - a[1:] @ b[1:]], a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:])])
     return np.column_stack([mul(e, q) for e in np.eye(4)])
-'''),
-    Alternative("quat_conjugate_in_place", "quat_conjugate", "negates the vector part of its argument in place", '''
-def quat_conjugate(q):
-    q = np.asarray(q, dtype=float)
-    q[1:] *= -1.0
-    return q
 '''),
     Alternative("quat_inverse_solve", "quat_inverse", "solves [q]_L x = 1", '''
 def quat_inverse(q):

@@ -92,23 +92,6 @@ def align_gauss_newton(P, Q, R0, iters=10):
 def rotation_mean(Rs):
     return np.array(Rs[0], dtype=float)
 ''', hint="first rotation Rs[0]", public_hint="first rotation Rs[0]"),
-
-    # the contracts beyond the value (coursekit.contracts)
-    Mistake("align_gauss_newton_updates_R0", "align_gauss_newton", "iterates in the caller's R0 (np.asarray, then R[...] = ...)", '''
-def align_gauss_newton(P, Q, R0, iters=10):
-    P = np.asarray(P, dtype=float)
-    Q = np.asarray(Q, dtype=float)
-    R = np.asarray(R0, dtype=float)
-    for _ in range(iters):
-        H = np.zeros((3, 3))
-        g = np.zeros(3)
-        for p, q in zip(P, Q):
-            J = -R @ skew(p)
-            H += J.T @ J
-            g += J.T @ (R @ p - q)
-        R[...] = R @ Exp(np.linalg.solve(H, -g))
-    return R
-''', hint="work on a copy", public_hint="work on a copy"),
 ]
 
 ALTERNATIVES = [
