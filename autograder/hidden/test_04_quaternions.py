@@ -806,7 +806,7 @@ def test_quat_slerp_every_decade(student):
 
 @exercise("quat_slerp", weight=1)
 def test_quat_slerp_nearly_identical(student):
-    """nearly identical (and nearly opposite) quaternions: no division by zero (tolerance 1e-8)"""
+    """nearly identical (and nearly opposite) quaternions: no division by zero (tolerance 1e-8); lists too"""
     q0 = unit_quats(1, seed=506)[0]
     rng = np.random.default_rng(507)
     for tiny in (0.0, 1e-12, 1e-8, 1e-5):
@@ -823,3 +823,6 @@ def test_quat_slerp_nearly_identical(student):
                     expect_same_rotation(got, scipy_slerp(q0, other, t), 1e-8,
                                          f"quat_slerp(q0, q1, {t}) for {name} inputs ({tiny:g} apart)",
                                          slerp_hint(got, q0, other, t))
+            if tiny == 0.0:
+                expect_same_with_lists(student.quat_slerp, (q0, other), (4,),
+                                       f"quat_slerp(q0, q1, 0.3) for {name} inputs", t=0.3)

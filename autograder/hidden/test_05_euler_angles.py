@@ -498,7 +498,7 @@ def test_quat_to_euler_zyx_normalises_and_half_open(student):
 
 @exercise("quat_to_euler_zyx", weight=2)
 def test_quat_to_euler_zyx_at_lock(student):
-    """at pitch = ±π/2 (gimbal lock): no NaN, roll = 0, and the same rotation"""
+    """at pitch = ±π/2 (gimbal lock): no NaN, roll = 0, the same rotation, yaw in (-π, π]"""
     rng = np.random.default_rng(534)
     for sign in (1.0, -1.0):
         for _ in range(4):
@@ -514,6 +514,8 @@ def test_quat_to_euler_zyx_at_lock(student):
                    else _quat_angles_hint(got, q, at_lock=True))
             expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the rotation rebuilt from {what} = {fmt(got)}",
                          _quat_angles_hint(got, q, at_lock=True))
+            expect(-np.pi < got[0] <= np.pi, f"{what}: yaw = {got[0]:.4f} is outside (-π, π]",
+                   "at the lock yaw is twice an atan2, which can leave (-π, π]: wrap it back into the range")
 
 
 @exercise("quat_to_euler_zyx", weight=1)

@@ -251,12 +251,13 @@ def test_boxminus_round_trip(student):
 
 @exercise("boxminus", weight=1)
 def test_boxminus_inverts_boxplus(student):
-    """(R ⊞ δ) ⊟ R = δ for |δ| < π, tiny δ and δ = 0"""
+    """(R ⊞ δ) ⊟ R = δ for |δ| < π, tiny δ and δ = 0; lists work too"""
     R = random_rotations(1, seed=625)[0]
     deltas = list(_rotvecs(5, 626, 0.1, 3.0)) + [1e-9 * _unit(627, 1)[0], np.zeros(3)]
     for d in deltas:
         got = expect_array(student.boxminus(R @ _exp(d), R), (3,), "boxminus(R ⊞ δ, R)")
         expect_close(got, d, 1e-9, f"boxminus(R Exp(δ), R) for δ = {fmt(d)}", _boxminus_hint(got, R @ _exp(d), R))
+    expect_same_with_lists(student.boxminus, (R @ _exp(deltas[0]), R), (3,), "boxminus(R_a, R_b)")
 
 
 # ---------------------------------------------------------------- quat_boxplus
@@ -528,7 +529,8 @@ def test_numerical_jacobian_quaternion(student):
 
 @exercise("numerical_jacobian", weight=1)
 def test_numerical_jacobian_shapes(student):
-    """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation"""
+    """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation; x may be a list of
+    integers (the steps must not be rounded away)"""
     x = np.array([3.0, -0.2, 0.0, 1e-3, 40.0])
     got = _array(student.numerical_jacobian(Probe("identity_function"), x), (5, 5),
                  "numerical_jacobian(identity, x in R⁵)", floor_hint(x))
@@ -538,6 +540,11 @@ def test_numerical_jacobian_shapes(student):
     value = student.numerical_jacobian(Probe("rotate_point_by", [1.0, 2.0, 3.0]), R, Probe("so3_plus_right"))
     expect(np.shape(value) == (3, 3), f"returned shape {np.shape(value)} for f: SO(3) → R³, expected (3, 3)",
            _matrix_entries_hint(value))
+    got = _array(student.numerical_jacobian(Probe("identity_function"), [3, 0, -2]), (3, 3),
+                 "numerical_jacobian(identity, [3, 0, -2])", floor_hint(np.array([3.0, 0.0, -2.0])))
+    expect_close(got, np.eye(3), 1e-6, "numerical_jacobian of the identity at the integer list [3, 0, -2]",
+                 "x = [3, 0, -2] arrives as integers: convert it with np.asarray(x, dtype=float), else the step "
+                 "added to an integer entry is rounded away")
 
 
 # ---------------------------------------------------------------- jacobian_rotate_point

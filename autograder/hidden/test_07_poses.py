@@ -180,7 +180,7 @@ def test_pose_inverse_undoes(student):
 
 @exercise("pose_inverse", weight=1)
 def test_pose_inverse_of_a_chain(student):
-    """the inverse of T_ab T_bc is T_bc⁻¹ T_ab⁻¹ (frame chain walked backwards)"""
+    """the inverse of T_ab T_bc is T_bc⁻¹ T_ab⁻¹ (frame chain walked backwards); lists work too"""
     poses = _random_poses(6, seed=713)
     for T_ab, T_bc in zip(poses[::2], poses[1::2]):
         whole = expect_array(student.pose_inverse(T_ab @ T_bc), (4, 4), "pose_inverse(T_ab @ T_bc)")
@@ -188,6 +188,7 @@ def test_pose_inverse_of_a_chain(student):
                  @ expect_array(student.pose_inverse(T_ab), (4, 4), "pose_inverse(T_ab)"))
         expect_close(whole, parts, TOL, "pose_inverse(T_ab T_bc) vs pose_inverse(T_bc) pose_inverse(T_ab)",
                      _inverse_hint(whole, T_ab @ T_bc))
+    expect_same_with_lists(student.pose_inverse, (poses[0],), (4, 4), "pose_inverse(T)")
 
 
 # ---------------------------------------------------------------- pose_compose
@@ -581,7 +582,7 @@ def test_log_se3_near_pi(student):
 
 @exercise("log_se3", weight=1)
 def test_log_se3_large_rotation(student):
-    """a twist with a 5 rad rotation part comes back as an equivalent twist with angle ≤ π"""
+    """a twist with a 5 rad rotation part comes back as an equivalent twist with angle ≤ π; lists work too"""
     xi = _twist([1.0, 0.5, -2.0], 5.0, [0.2, 0.9, -0.4])
     T = _exp(xi)
     got = expect_array(student.log_se3(T), (6,), "log_se3(T) for a 5 rad turn")
@@ -590,3 +591,4 @@ def test_log_se3_large_rotation(student):
     phi = Rotation.from_matrix(T[:3, :3]).as_rotvec()              # the same rotation with angle ≤ π
     expect_close(_exp(got), T, TOL, "expm of the twist of log_se3(T) for a 5 rad turn",
                  _log_hint(got, T, np.concatenate([np.linalg.solve(_v_matrix(phi), T[:3, 3]), phi])))
+    expect_same_with_lists(student.log_se3, (T,), (6,), "log_se3(T)")

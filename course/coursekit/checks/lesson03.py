@@ -473,13 +473,12 @@ def _(axis_angle):
 
 # ---------------------------------------------------------------- axis_from_eigen
 def _real(value):
-    """A real (3,) vector; a complex one is accepted when its imaginary part is zero (as np.linalg.eig gives)."""
+    """A real (3,) vector; a complex one (np.linalg.eig's dtype) is refused: the docstring promises a real axis."""
     array = np.asarray(value) if value is not None else None
     if array is not None and np.iscomplexobj(array):
-        if array.shape == (3,) and np.max(np.abs(array.imag)) > 1e-12:
-            raise Mismatch(f"returned a complex vector with imaginary part {fmt(np.abs(array.imag))}",
-                           "take the eigenvector of the eigenvalue 1: it is real (np.real(...) of it)")
-        value = array.real
+        raise Mismatch(f"returned a complex vector (dtype {array.dtype}), imaginary part up to "
+                       f"{np.max(np.abs(array.imag), initial=0.0):.2g}",
+                       "the eigenvector of the eigenvalue 1 is real: return np.real(...) of it")
     return require_shape(value, (3,))
 
 

@@ -236,7 +236,7 @@ def _(quat_from_axis_angle):
 
 @public_check("quat_from_axis_angle", "normalises the axis and returns a unit quaternion")
 def _(quat_from_axis_angle):
-    got = require_shape(quat_from_axis_angle([0.0, 3.0, 4.0], 1.2), (4,))
+    got = require_shape(quat_from_axis_angle(np.array([0.0, 3.0, 4.0]), 1.2), (4,))   # an array: is it left alone?
     hint = _axis_angle_diagnosis(got, [0.0, 3.0, 4.0], 1.2)
     if abs(np.linalg.norm(got) - 1.0) > 1e-9:
         raise Mismatch(f"|q| = {np.linalg.norm(got):.4f} for the axis [0, 3, 4]",
