@@ -310,7 +310,8 @@ EQUIVALENT = {
     'right_jacobian_inv_so3.a88587a3': SERIES_WITHIN_PROMISE,  # 0.001 → 0.1 (line 25)
     'right_jacobian_inv_so3.d9b43f5e': SERIES_WITHIN_PROMISE,  # t2 * t2 → t2 (line 27)
     'right_jacobian_so3.0382f670': SERIES_WITHIN_PROMISE,  # t2 * t2 / 720.0 → t2 * t2 (line 27)
-    'right_jacobian_so3.18d3088c': SERIES_WITHIN_PROMISE,  # t2 * t2 → t2 (line 28)
+    'right_jacobian_so3.18d3088c': SERIES_WITHIN_PROMISE,
+    'right_jacobian_so3.ccdfa404': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - t2 / 120.0 → 1.0 / 6.0 + t2 / 120.0 (line 28)  # t2 * t2 → t2 (line 28)
     'right_jacobian_so3.37efe688': SERIES_WITHIN_PROMISE,  # 0.5 - t2 / 24.0 + t2 * t2 / 720.0 → 0.5 - t2 / 24.0 - t2 * t2 / 720.0 (line 
     'right_jacobian_so3.3942e8e2': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - t2 / 120.0 → 1.0 / 6.0 (line 28)
     'right_jacobian_so3.508093b2': SERIES_WITHIN_PROMISE,  # t2 * t2 / 5040.0 → t2 * t2 (line 28)
