@@ -62,7 +62,7 @@ def matrix_to_euler_zyx(R):
     from scipy.spatial.transform import Rotation
     yaw, pitch, roll = Rotation.from_matrix(np.asarray(R, dtype=float)).as_euler("zyx")
     return yaw, pitch, roll
-''', hint='extrinsic', public_hint='extrinsic'),
+''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
     Mistake("euler_to_quat_full_angles", "euler_zyx_to_quat", "uses full angles instead of half angles", '''
 def euler_zyx_to_quat(yaw, pitch, roll):
     cy, sy = np.cos(yaw), np.sin(yaw)
