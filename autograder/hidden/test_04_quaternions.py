@@ -793,7 +793,8 @@ def test_quat_slerp_every_decade(student):
         expected = _turned(q0, t * angle, axis)             # t of the way along the shorter arc
         expected = expected if got @ expected >= 0 else -expected
         expect_within(got, expected, SLERP_TOL, "quat_slerp(q0, q1, t)",
-                      f"Ω = {angle:.2g} between q0 and q1, t = {t:.3g}", slerp_hint(got, q0, q1, t))
+                      f"Ω = {angle:.2g} between q0 and q1, t = {t:.3g}",
+                      lambda: slerp_hint(got, q0, q1, t))
 
     q0 = unit_quats(1, seed=508)[0]
     axis = np.array([2.0, -1.0, 2.0]) / 3.0
