@@ -391,6 +391,18 @@ def quat_slerp(q0, q1, t):
     axis = d[1:] / n if n > 0 else np.zeros(3)
     return mul(q0, np.concatenate([[np.cos(t * half)], np.sin(t * half) * axis]))
 '''),
+    Alternative("quat_slerp_nlerp_below_1e_6", "quat_slerp", "falls back to a normalised blend below Ω = 1e-6, takes lists", '''
+def quat_slerp(q0, q1, t):
+    q0, q1 = np.asarray(q0, dtype=float), np.asarray(q1, dtype=float)
+    if q0 @ q1 < 0:
+        q1 = -q1
+    omega = np.arccos(np.clip(q0 @ q1, -1.0, 1.0))
+    if omega < 1e-6:
+        q = (1 - t) * q0 + t * q1
+    else:
+        q = np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1
+    return q / np.linalg.norm(q)
+'''),
 ]
 
 SAMPLE = {

@@ -254,6 +254,17 @@ def euler_rates_matrix(pitch, roll):
     Ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
     return np.column_stack([Rx.T @ Ry.T @ [0.0, 0.0, 1.0], Rx.T @ [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])
 '''),
+    Alternative("matrix_to_euler_wrapped_by_mod", "matrix_to_euler_zyx", "wraps yaw and roll into (-π, π] with np.mod", '''
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+    wrap = lambda a: float(np.pi - np.mod(np.pi - a, 2 * np.pi))
+    pitch = float(np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])))
+    if np.hypot(R[0, 0], R[1, 0]) < 1e-12:
+        return wrap(np.arctan2(-R[0, 1], R[1, 1])), pitch, 0.0
+    yaw = np.arctan2(R[1, 0], R[0, 0])
+    c, s = np.cos(yaw), np.sin(yaw)
+    return wrap(yaw), pitch, wrap(np.arctan2(s * R[0, 2] - c * R[1, 2], c * R[1, 1] - s * R[0, 1]))
+'''),
 ]
 
 SAMPLE = {
