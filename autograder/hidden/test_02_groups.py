@@ -18,7 +18,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.session import StudentError
-from coursekit.checks.lesson02 import commutes_slip_hint
+from coursekit.checks.lesson02 import NAN_HINT, commutes_slip_hint
 
 from .helpers import ALLCLOSE_HINT, Probe, Wrong, exercise, expect, expect_bool, random_rotations
 
@@ -46,8 +46,6 @@ def _expect_verdict(got, expected, what, hints=None):
 
 
 ALL_TRUE = dict.fromkeys(KEYS, True)
-NAN_HINT = ("a NaN result never counts as equal: compare with max |x - y| <= tol, which is False for NaN "
-            "(not ... > tol, which NaN passes)")
 
 
 # ---------------------------------------------------------------- check_group_axioms

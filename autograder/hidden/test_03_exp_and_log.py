@@ -24,7 +24,7 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
-from coursekit.checks.lesson03 import vee_hint
+from coursekit.checks.lesson03 import REAL_AXIS_HINT, vee_hint
 from coursekit.diagnose import explains
 
 from .properties import angle_text, decade_vectors, expect_within, for_all, given_forms, rotation_vectors
@@ -628,7 +628,7 @@ def _eigen_axis(student, R, what):
     value = student.axis_from_eigen(R)
     array = np.asarray(value)
     expect(not np.iscomplexobj(array), f"{what} returned a complex vector (dtype {array.dtype})",
-           "the eigenvector of the eigenvalue 1 is real: return np.real(...) of it")
+           REAL_AXIS_HINT)
     u = expect_array(value, (3,), what)
     expect(abs(np.linalg.norm(u) - 1.0) <= 1e-9, f"{what}: |u| = {np.linalg.norm(u):.6g}, not 1",
            "normalise the eigenvector")

@@ -20,6 +20,7 @@ import warnings
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit.checks.lesson05 import HALF_OPEN_HINT
 from coursekit.diagnose import as_float_array
 
 from .helpers import Wrong, exercise, expect, expect_array, expect_close, fmt, random_rotations, rotation_problem
@@ -283,8 +284,6 @@ def test_matrix_to_euler_zyx_other_solution(student):
         _expect_in_range(got, what)
 
 
-HALF_OPEN_HINT = ("np.arctan2 returns -π for (-0.0, negative): the course's range is (-π, π], so map an angle "
-                  "of -π to π at the end")
 
 
 @exercise("matrix_to_euler_zyx", weight=1)

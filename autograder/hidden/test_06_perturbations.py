@@ -25,7 +25,7 @@ from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child import probes
 
-from coursekit.checks.lesson06 import floor_hint
+from coursekit.checks.lesson06 import INTEGER_X_HINT, floor_hint
 from coursekit.diagnose import JACOBIAN_STEP_HINT, jacobian_error_allowed
 
 from .properties import (angle_text, as_given, decade_vectors, expect_within, for_all, given_forms, quaternions,
@@ -543,8 +543,7 @@ def test_numerical_jacobian_shapes(student):
     got = _array(student.numerical_jacobian(Probe("identity_function"), [3, 0, -2]), (3, 3),
                  "numerical_jacobian(identity, [3, 0, -2])", floor_hint(np.array([3.0, 0.0, -2.0])))
     expect_close(got, np.eye(3), 1e-6, "numerical_jacobian of the identity at the integer list [3, 0, -2]",
-                 "x = [3, 0, -2] arrives as integers: convert it with np.asarray(x, dtype=float), else the step "
-                 "added to an integer entry is rounded away")
+                 INTEGER_X_HINT)
 
 
 # ---------------------------------------------------------------- jacobian_rotate_point

@@ -500,13 +500,16 @@ def _(axis_angle):
 
 
 # ---------------------------------------------------------------- axis_from_eigen
+REAL_AXIS_HINT = "the eigenvector of the eigenvalue 1 is real: return np.real(...) of it"
+
+
 def _real(value):
     """A real (3,) vector; a complex one (np.linalg.eig's dtype) is refused: the docstring promises a real axis."""
     array = np.asarray(value) if value is not None else None
     if array is not None and np.iscomplexobj(array):
         raise Mismatch(f"returned a complex vector (dtype {array.dtype}), imaginary part up to "
                        f"{np.max(np.abs(array.imag), initial=0.0):.2g}",
-                       "the eigenvector of the eigenvalue 1 is real: return np.real(...) of it")
+                       REAL_AXIS_HINT)
     return require_shape(value, (3,))
 
 
