@@ -302,6 +302,13 @@ def _cmd_handout(args):
     return 0
 
 
+def _cmd_mutants(args):
+    from autograder.mutants.run import main as run_mutants
+
+    return run_mutants(exercises=args.exercise or None, lessons=args.lessons or None, jobs=args.jobs,
+                       markdown=args.markdown, save=args.save)
+
+
 def _cmd_export(args):
     from autograder.batch.class_run import Outputs, collect_results, saved_student_ids
     from autograder.lessons.catalog import load_catalog
@@ -402,6 +409,15 @@ def build_parser():
     preview.add_argument("notebook")
     preview.add_argument("--figures", help="folder for the PNG files")
     preview.set_defaults(run=_cmd_preview)
+
+    mutants = commands.add_parser("mutants", help="mutation-test the hidden suite and the public checks "
+                                                  "on mutants of the reference answers")
+    mutants.add_argument("--exercise", nargs="*", default=[], help="only these exercises")
+    mutants.add_argument("--lessons", nargs="*", default=[], help="only these lessons, e.g. 03 04")
+    mutants.add_argument("--jobs", type=int, default=None, help="processes (default: 2, or 1 on one core)")
+    mutants.add_argument("--markdown", action="store_true", help="print the table as Markdown (for the README)")
+    mutants.add_argument("--save", metavar="FILE.json", help="also write every mutant's outcome and source as JSON")
+    mutants.set_defaults(run=_cmd_mutants)
 
     book = commands.add_parser("book", help="build the solved lessons as a static website (open OUT/index.html)")
     book.add_argument("--out", default="_build/book", help="the folder to write (replaced), e.g. _build/book")

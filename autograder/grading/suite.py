@@ -36,7 +36,7 @@ import pytest
 
 from autograder.grading.results import CheckResult
 from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, independent_prefix
-from autograder.hidden.own_work import forbidden_for
+from autograder.hidden.own_work import CHANGED_HINT, DELEGATED_HINT, forbidden_for
 from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
 from autograder.lessons.reference import answer_sources
 from autograder.sandbox.session import LessonProgram, SandboxUnavailable, StudentError, StudentSandbox
@@ -59,11 +59,9 @@ HINTS = {
     "missing": "keep your code in the exercise's answer cell, under the same function name; "
                "helper functions must be defined in that cell too",
     "bad_value": "return numpy arrays, numbers, tuples, lists or dicts",
-    "delegated": "write the exercise with numpy yourself; the library versions are for the later lessons",
+    "delegated": DELEGATED_HINT,
 }
 CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its arguments in place
-CHANGED_HINT = ("work on a copy, e.g. `p = np.array(p, dtype=float)`, and build the result in a new array; "
-                "`x /= n`, `x[0] = ...` and `x.sort()` change the caller's array")
 
 
 def contract_results(proxy, tests):

@@ -9,15 +9,16 @@ floating-point products are never exactly associative, so == fails),
 rotations under the product (a group), under addition (closure, identity and
 inverse fail), reals with 0 under multiplication (the inverse fails), the
 cross product (no identity, not associative), "keep the second" (one-sided
-identity and inverses), reflections (no closure, no identity). Every test
-calls the student's functions of its own exercise only.
+identity and inverses), reflections (no closure, no identity). A NaN never
+counts as equal (max |x - y| <= tol is False for NaN). Every test calls the
+student's functions of its own exercise only.
 """
 
 import numpy as np
 from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.session import StudentError
-from coursekit.checks.lesson02 import commutes_slip_hint
+from coursekit.checks.lesson02 import NAN_HINT, commutes_slip_hint
 
 from .helpers import ALLCLOSE_HINT, Probe, Wrong, exercise, expect, expect_bool, random_rotations
 
@@ -162,7 +163,8 @@ def test_check_group_axioms_orthogonal_and_reflections(student):
 
 @exercise("check_group_axioms", weight=1)
 def test_check_group_axioms_uses_tol(student):
-    """uses tol: rotations with 1e-7 noise pass with tol=1e-5, fail the inverse with tol=1e-9"""
+    """uses tol: rotations with 1e-7 noise pass with tol=1e-5, fail the inverse with tol=1e-9; a NaN never
+    counts as equal (NaN among the reals under ×: not associative)"""
     noise = np.random.default_rng(206).normal(size=(4, 3, 3))
     samples = [R + 1e-7 * n for R, n in zip(random_rotations(4, seed=207), noise)]
     args = (samples, Probe("matmul"), np.eye(3), Probe("transpose"), Probe("is_rotation_within", 1e-4))
@@ -175,6 +177,9 @@ def test_check_group_axioms_uses_tol(student):
     expect(strict["inverse"] is False, f"noisy rotations with tol=1e-9: inverse came out True, but "
            f"R @ Rᵀ differs from I by up to {max(gaps):.2g} > tol",
            ALLCLOSE_HINT if _allclose_accepts(pairs, 1e-9) else "compare max |op(a, inverse(a)) - identity| with tol")
+    got = _verdict(student.check_group_axioms([np.nan, 2.0], Probe("multiply"), 1.0, Probe("reciprocal"),
+                                              Probe("is_finite")), "check_group_axioms([NaN, 2], ×)")
+    expect(got["associativity"] is False, "with NaN among the products, associativity came out True", NAN_HINT)
 
 
 @exercise("check_group_axioms", weight=1)
@@ -316,7 +321,7 @@ def test_commutes_uses_op(student):
 
 @exercise("commutes", weight=2)
 def test_commutes_uses_tol(student):
-    """uses tol: a commutator of ~3e-8 passes with tol=1e-5 and fails with tol=1e-9"""
+    """uses tol: a commutator of ~3e-8 passes with tol=1e-5 and fails with tol=1e-9; a NaN never passes"""
     A = _about_axis([0.0, 0.0, 1.0], 0.3)
     B = Rotation.from_rotvec([1e-7, 0.0, 0.5]).as_matrix()
     gap = np.max(np.abs(A @ B - B @ A))
@@ -324,6 +329,8 @@ def test_commutes_uses_tol(student):
                      f"with tol=1e-5 a difference of {gap:.2g} was not accepted", "compare with the tol argument")
     _expect_commutes(student, not _commutes(student, A, B, Probe("matmul"), "commutes(..., tol=1e-9)", tol=1e-9),
                      f"with tol=1e-9 a difference of {gap:.2g} was accepted", "compare with the tol argument")
+    expect(not _commutes(student, np.nan, 2.0, Probe("multiply"), "commutes(NaN, 2, ×)"),
+           "commutes(NaN, 2, ×) came out True although NaN · 2 is NaN both ways", NAN_HINT)
 
 
 @exercise("commutes", weight=2)

@@ -10,7 +10,9 @@ own exercise only.
 Tolerances: 1e-12 for matrices and quaternions built from angles, 1e-9 for
 angles away from the lock, 1e-11 for matrices rebuilt from angles extracted
 at or next to the lock ("the same matrix to ~1e-12"), 1e-7 against central
-differences with step 1e-6.
+differences with step 1e-6. Yaw and roll lie in (-π, π] exactly: -π is never returned (checked with
+half turns whose sines are -0.0, where np.arctan2 gives -π); quat_to_euler_zyx normalises first (q
+scaled by 1e-8 … 1e8 gives the angles of q, also next to the lock).
 """
 
 import warnings
@@ -18,6 +20,7 @@ import warnings
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit.checks.lesson05 import HALF_OPEN_HINT
 from coursekit.diagnose import as_float_array
 
 from .helpers import Wrong, exercise, expect, expect_array, expect_close, fmt, random_rotations, rotation_problem
@@ -281,6 +284,22 @@ def test_matrix_to_euler_zyx_other_solution(student):
         _expect_in_range(got, what)
 
 
+
+
+@exercise("matrix_to_euler_zyx", weight=1)
+def test_matrix_to_euler_zyx_half_open_range(student):
+    """yaw and roll lie in (-π, π]: half turns about z and x whose sines are -0.0 give π, never -π (at the
+    gimbal lock too)"""
+    half_z = np.array([[-1.0, 0.0, 0.0], [-0.0, -1.0, 0.0], [0.0, 0.0, 1.0]])     # arctan2(-0.0, -1) = -π
+    half_x = np.array([[1.0, 0.0, -0.0], [0.0, -1.0, 0.0], [0.0, -0.0, -1.0]])    # roll from (-0.0, -1)
+    lock = np.array([[0.0, 0.0, -1.0], [0.0, -1.0, 0.0], [-1.0, 0.0, 0.0]])        # yaw π at pitch = π/2
+    for name, R, index in (("a half turn about z", half_z, 0), ("a half turn about x", half_x, 2),
+                           ("yaw π at the lock", lock, 0)):
+        got = _expect_angles(student.matrix_to_euler_zyx(R), f"matrix_to_euler_zyx({name})")
+        expect(got[index] == np.pi, f"matrix_to_euler_zyx({name}) gave {'yaw' if index == 0 else 'roll'} = "
+               f"{got[index]:.17g}, expected π (the range is (-π, π])", HALF_OPEN_HINT)
+
+
 @exercise("matrix_to_euler_zyx", weight=2)
 def test_matrix_to_euler_zyx_at_lock(student):
     """at pitch = ±π/2 (gimbal lock): no NaN, roll = 0, pitch = ±π/2, and the same matrix"""
@@ -458,9 +477,27 @@ def test_quat_to_euler_zyx_sign(student):
                "q and -q are the same rotation: bring yaw and roll into (-π, π] at the end")
 
 
+@exercise("quat_to_euler_zyx", weight=1)
+def test_quat_to_euler_zyx_normalises_and_half_open(student):
+    """normalises first: q scaled by 1e-8, 2 and 1e8 (also next to the lock) gives the angles of q; and the
+    half turn -[0, 0, 0, 1] gives yaw = π, never -π"""
+    for yaw, pitch, roll in [(0.3, 0.4, -0.5), (0.3, HALF_PI - 1e-6, 0.5), (-2.0, -HALF_PI + 1e-7, 1.0)]:
+        q = scipy_quat(yaw, pitch, roll)
+        unit = _expect_angles(student.quat_to_euler_zyx(q), f"quat_to_euler_zyx(q) for {fmt([yaw, pitch, roll])}")
+        for scale in (1e-8, 2.0, 1e8):
+            got = _expect_angles(student.quat_to_euler_zyx(scale * q), f"quat_to_euler_zyx({scale:g} q)")
+            error = float(np.max(np.abs(scipy_matrix(*got) - scipy_matrix(*unit))))
+            expect(error <= REBUILD_TOL, f"quat_to_euler_zyx({scale:g} q) gives {fmt(got)}, but q gives "
+                   f"{fmt(unit)} (the rotations differ by {error:.2g}) for pitch = {pitch:.9g}",
+                   "a non-unit q stands for the same rotation: divide q by its norm first")
+    got = _expect_angles(student.quat_to_euler_zyx([0.0, 0.0, 0.0, -1.0]), "quat_to_euler_zyx([0, 0, 0, -1])")
+    expect(got[0] == np.pi, f"quat_to_euler_zyx([0, 0, 0, -1]) gave yaw = {got[0]:.17g}, expected π",
+           HALF_OPEN_HINT)
+
+
 @exercise("quat_to_euler_zyx", weight=2)
 def test_quat_to_euler_zyx_at_lock(student):
-    """at pitch = ±π/2 (gimbal lock): no NaN, roll = 0, and the same rotation"""
+    """at pitch = ±π/2 (gimbal lock): no NaN, roll = 0, the same rotation, yaw in (-π, π]"""
     rng = np.random.default_rng(534)
     for sign in (1.0, -1.0):
         for _ in range(4):
@@ -476,6 +513,8 @@ def test_quat_to_euler_zyx_at_lock(student):
                    else _quat_angles_hint(got, q, at_lock=True))
             expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the rotation rebuilt from {what} = {fmt(got)}",
                          _quat_angles_hint(got, q, at_lock=True))
+            expect(-np.pi < got[0] <= np.pi, f"{what}: yaw = {got[0]:.4f} is outside (-π, π]",
+                   "at the lock yaw is twice an atan2, which can leave (-π, π]: wrap it back into the range")
 
 
 @exercise("quat_to_euler_zyx", weight=1)

@@ -10,23 +10,35 @@ lecture's rule earns full marks. The rule (``coursekit.diagnose.
 jacobian_error_allowed``, shared with the public checks): max |J - J_exact| <=
 2 · max |J_lecture - J_exact| + 1e-8 · (1 + max |J_exact|), where J_lecture
 uses forward steps δ_j = max(|1e-4 x_j|, 1e-6). On manifolds: 5e-6 (1 + |p|).
+Promises checked over the whole domain (properties drawn by Hypothesis, derandomized, see
+``properties.py``), at every angle from 1e-12 to π, each decade and just below each power of ten:
+Jr and Jr⁻¹ within 1e-13 entrywise of a branch-free series (and its inverse); q ⊞ δ within 2e-15 of
+q ⊗ Exp_q(δ) (up to sign) for q from both hemispheres; lists of floats and integers as inputs.
 Tiny angles: Jr and Jr⁻¹ at 1e-9 … 1e-3 rad must be off by at most
 1e-6 θ + 1e-15, so a missing [w]× or [w]×² series term shows. Callable arguments travel as
 ``Probe``s. Every test calls the student's function of its own exercise only.
 """
 
 import numpy as np
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child import probes
 
-from coursekit.checks.lesson06 import floor_hint
+from coursekit.checks.lesson06 import INTEGER_X_HINT, floor_hint
 from coursekit.diagnose import JACOBIAN_STEP_HINT, jacobian_error_allowed
 
+from .properties import (angle_text, as_given, decade_vectors, expect_within, for_all, given_forms, quaternions,
+                         rotation_vectors)
 from .helpers import (Probe, Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
                       random_rotations, rotation_problem, shape_problem)
 
 TOL = 1e-10
+# Jr and Jr⁻¹ at every angle from 1e-12 to π: each entry within 1e-13 (the reference's error is 9e-16 and
+# 1.3e-15; a one-term series kept up to 1e-4 is off by θ³/24 = 4e-14 there, and passes; up to 1e-3 it fails)
+JR_TOL = 1e-13
+JR_INV_TOL = 1e-13
+QUAT_BOXPLUS_TOL = 2e-15  # q ⊞ d for |d| from 1e-12 to π: each component within 2e-15 (up to the sign of q)
 
 
 # ---------------------------------------------------------------- oracles written out here
@@ -239,12 +251,13 @@ def test_boxminus_round_trip(student):
 
 @exercise("boxminus", weight=1)
 def test_boxminus_inverts_boxplus(student):
-    """(R ⊞ δ) ⊟ R = δ for |δ| < π, tiny δ and δ = 0"""
+    """(R ⊞ δ) ⊟ R = δ for |δ| < π, tiny δ and δ = 0; lists work too"""
     R = random_rotations(1, seed=625)[0]
     deltas = list(_rotvecs(5, 626, 0.1, 3.0)) + [1e-9 * _unit(627, 1)[0], np.zeros(3)]
     for d in deltas:
         got = expect_array(student.boxminus(R @ _exp(d), R), (3,), "boxminus(R ⊞ δ, R)")
         expect_close(got, d, 1e-9, f"boxminus(R Exp(δ), R) for δ = {fmt(d)}", _boxminus_hint(got, R @ _exp(d), R))
+    expect_same_with_lists(student.boxminus, (R @ _exp(deltas[0]), R), (3,), "boxminus(R_a, R_b)")
 
 
 # ---------------------------------------------------------------- quat_boxplus
@@ -329,6 +342,24 @@ def test_quat_boxplus_tiny_and_zero(student):
     error = min(np.max(np.abs(got - expected)), np.max(np.abs(got + expected)))
     expect(_same_quat(got, expected, 1e-15), f"quat_boxplus(q, δ) for |δ| = 1e-9 is off by {error:.2g} "
            f"(tolerance 1e-15)", _quat_hint(got, q, d, "below a tiny angle, Exp_q(δ) = [1, δ/2] to machine precision"))
+
+
+@exercise("quat_boxplus", weight=2)
+def test_quat_boxplus_every_decade(student):
+    """exact to 2e-15 for |δ| from 1e-12 to π (each decade, just below each power of ten), q from both
+    hemispheres, lists too"""
+    def check(case):
+        (q, d), given = case
+        got = expect_array(student.quat_boxplus(q, given), (4,), "quat_boxplus(q, δ)")
+        expected = _qmul(q, _exp_q(d))
+        expected = expected if np.dot(got, expected) >= 0 else -expected
+        expect_within(got, expected, QUAT_BOXPLUS_TOL, "quat_boxplus(q, δ)", f"|δ| = {np.linalg.norm(d):.2g}",
+                      lambda: _quat_hint(got, q, d))
+
+    q = _random_quats(1, 639)[0]
+    cases = st.tuples(quaternions(), rotation_vectors()).flatmap(
+        lambda pair: st.tuples(st.just(pair), as_given(pair[1])))
+    for_all(cases, check, explicit=[((q, d), d) for d, _ in decade_vectors()])
 
 
 # ---------------------------------------------------------------- numerical_jacobian
@@ -498,7 +529,8 @@ def test_numerical_jacobian_quaternion(student):
 
 @exercise("numerical_jacobian", weight=1)
 def test_numerical_jacobian_shapes(student):
-    """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation"""
+    """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation; x may be a list of
+    integers (the steps must not be rounded away)"""
     x = np.array([3.0, -0.2, 0.0, 1e-3, 40.0])
     got = _array(student.numerical_jacobian(Probe("identity_function"), x), (5, 5),
                  "numerical_jacobian(identity, x in R⁵)", floor_hint(x))
@@ -508,6 +540,10 @@ def test_numerical_jacobian_shapes(student):
     value = student.numerical_jacobian(Probe("rotate_point_by", [1.0, 2.0, 3.0]), R, Probe("so3_plus_right"))
     expect(np.shape(value) == (3, 3), f"returned shape {np.shape(value)} for f: SO(3) → R³, expected (3, 3)",
            _matrix_entries_hint(value))
+    got = _array(student.numerical_jacobian(Probe("identity_function"), [3, 0, -2]), (3, 3),
+                 "numerical_jacobian(identity, [3, 0, -2])", floor_hint(np.array([3.0, 0.0, -2.0])))
+    expect_close(got, np.eye(3), 1e-6, "numerical_jacobian of the identity at the integer list [3, 0, -2]",
+                 INTEGER_X_HINT)
 
 
 # ---------------------------------------------------------------- jacobian_rotate_point
@@ -587,12 +623,24 @@ def _jr(w, swapped=False):
     return np.eye(3) - a * W + b * W @ W
 
 
+def _jr_exact(w, terms=40):
+    """Jr(w) = Σ (-[w]×)^k / (k + 1)!, summed far past convergence: an oracle with no branch at all."""
+    W = _skew(w)
+    total, term, factorial = np.zeros((3, 3)), np.eye(3), 1.0
+    for k in range(terms):
+        total = total + term / factorial
+        term = -term @ W
+        factorial *= k + 2
+    return total
+
+
 def _jr_naive(w):
     """The closed form with no small-angle branch, as a student writes it: 1 - cos θ loses its digits."""
     w = np.asarray(w, dtype=float)
     theta = np.linalg.norm(w)
     W = _skew(w)
-    return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+    with np.errstate(all="ignore"):  # 0/0 at θ = 0: the candidate is NaN there, and matches nothing
+        return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
 
 
 JR_FORMULA = "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²"
@@ -701,6 +749,18 @@ def test_right_jacobian_tiny_angles(student):
                         "a = 1/2 - θ²/24, b = 1/6 - θ²/120", sign=-1.0)
 
 
+@exercise("right_jacobian_so3", weight=2)
+def test_right_jacobian_every_decade(student):
+    """exact to 1e-13 at every angle from 1e-12 to π (each decade, just below each power of ten), lists too"""
+    def check(case):
+        w, given = case
+        got = expect_array(student.right_jacobian_so3(given), (3, 3), "right_jacobian_so3(w)")
+        expect_within(got, _jr_exact(w), JR_TOL, "right_jacobian_so3(w)", angle_text(np.linalg.norm(w)),
+                      lambda: _jr_hint(got, w))
+
+    for_all(given_forms(rotation_vectors()), check, explicit=decade_vectors())
+
+
 @exercise("right_jacobian_so3", weight=1)
 def test_right_jacobian_near_pi(student, ref):
     """stays finite and accurate at and near a half turn (θ = π, π - 1e-6, π - 1e-9)"""
@@ -776,6 +836,18 @@ def test_right_jacobian_inv_tiny_angles(student):
     _expect_tiny_angles(results, expected, _inverse_candidates, "right_jacobian_inv_so3",
                         "Jr⁻¹ = I + [w]×/2 + c [w]×² with c → 1/12: below a small angle use the series "
                         "c = 1/12 + θ²/720", sign=1.0)
+
+
+@exercise("right_jacobian_inv_so3", weight=2)
+def test_right_jacobian_inv_every_decade(student):
+    """exact to 1e-13 at every angle from 1e-12 to π (each decade, just below each power of ten), lists too"""
+    def check(case):
+        w, given = case
+        got = expect_array(student.right_jacobian_inv_so3(given), (3, 3), "right_jacobian_inv_so3(w)")
+        expect_within(got, np.linalg.inv(_jr_exact(w)), JR_INV_TOL, "right_jacobian_inv_so3(w)",
+                      angle_text(np.linalg.norm(w)), lambda: _inverse_hint(got, w))
+
+    for_all(given_forms(rotation_vectors()), check, explicit=decade_vectors())
 
 
 @exercise("right_jacobian_inv_so3", weight=1)

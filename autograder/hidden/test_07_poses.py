@@ -9,20 +9,27 @@ Tolerances scale with the inputs: at tiny rotation parts (|phi| from 1e-12
 to 9e-3) exp_se3 and log_se3 must be off by at most 1e-12 |rho| (1e-11 for
 the log), with |rho| up to 50, so a V or c(θ) guarded only at θ = 0 (whose
 W coefficient is 0 instead of 1/2 once cos θ rounds to 1) or computed with
-the cancelling closed form is caught. Lists are compared with the same
+the cancelling closed form is caught. Over the whole domain (properties drawn by Hypothesis, derandomized, see ``properties.py``):
+exp_se3 and log_se3 are within 5e-14 max(1, |rho|) of scipy's expm (and of the twist itself) at every
+angle of phi from 1e-12 to π (3 for the log), each decade and just below each power of ten, |rho| up to 50.
+Lists are compared with the same
 function's answer for arrays.
 """
 
 import numpy as np
+from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
 from coursekit.diagnose import as_float_array
 
+from .properties import (GENERIC_AXIS, as_given, decade_edges, expect_within, for_all, points,
+                         rotation_vectors)
 from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, random_rotations,
                       rotation_problem)
 
 TOL = 1e-9
+SE3_TOL = 5e-14  # exp_se3 and log_se3 at every angle of phi from 1e-12 to π: within 5e-14 max(1, |rho|)
 MIRROR_HINT = "xi = [rho, phi]: the translation part comes first, the rotation part last"
 
 
@@ -173,7 +180,7 @@ def test_pose_inverse_undoes(student):
 
 @exercise("pose_inverse", weight=1)
 def test_pose_inverse_of_a_chain(student):
-    """the inverse of T_ab T_bc is T_bc⁻¹ T_ab⁻¹ (frame chain walked backwards)"""
+    """the inverse of T_ab T_bc is T_bc⁻¹ T_ab⁻¹ (frame chain walked backwards); lists work too"""
     poses = _random_poses(6, seed=713)
     for T_ab, T_bc in zip(poses[::2], poses[1::2]):
         whole = expect_array(student.pose_inverse(T_ab @ T_bc), (4, 4), "pose_inverse(T_ab @ T_bc)")
@@ -181,6 +188,7 @@ def test_pose_inverse_of_a_chain(student):
                  @ expect_array(student.pose_inverse(T_ab), (4, 4), "pose_inverse(T_ab)"))
         expect_close(whole, parts, TOL, "pose_inverse(T_ab T_bc) vs pose_inverse(T_bc) pose_inverse(T_ab)",
                      _inverse_hint(whole, T_ab @ T_bc))
+    expect_same_with_lists(student.pose_inverse, (poses[0],), (4, 4), "pose_inverse(T)")
 
 
 # ---------------------------------------------------------------- pose_compose
@@ -439,6 +447,32 @@ def test_exp_se3_tiny_angles(student):
         expect_close(got, _exp(xi), 1e-12, what, hint, scale=length)
 
 
+def _twists_every_decade(max_angle=np.pi):
+    """``(xi, form)``: rho anywhere in a ball of radius 50, phi at every decade of angle up to ``max_angle``."""
+    twists = st.tuples(points(50.0), rotation_vectors(high=max_angle, near_pi=max_angle >= np.pi)).map(
+        np.concatenate)
+    return twists.flatmap(lambda xi: st.tuples(st.just(xi), as_given(xi)))
+
+
+def _decade_twists():
+    rho = np.array([30.0, -20.0, 35.0])
+    return [(np.concatenate([rho, t * GENERIC_AXIS]),) * 2 for t in decade_edges()]
+
+
+@exercise("exp_se3", weight=2)
+def test_exp_se3_every_decade(student):
+    """exact to 5e-14 max(1, |rho|) at every angle of phi from 1e-12 to π (each decade, just below each
+    power of ten), |rho| up to 50, lists too"""
+    def check(case):
+        xi, given = case
+        got = expect_array(student.exp_se3(given), (4, 4), "exp_se3(xi)")
+        scale = max(1.0, float(np.linalg.norm(xi[:3])))
+        expect_within(got, _exp(xi), SE3_TOL * scale, "exp_se3(xi)",
+                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}", lambda: _exp_hint(got, xi, tiny=not _is_rho(got, xi) and np.linalg.norm(xi[3:]) < 1e-2))
+
+    for_all(_twists_every_decade(), check, explicit=_decade_twists())
+
+
 @exercise("exp_se3", weight=1)
 def test_exp_se3_large_angles(student):
     """handles rotation parts near and beyond π (π - 1e-6, π, 4 rad, 7 rad)"""
@@ -512,6 +546,21 @@ def test_log_se3_tiny_angles(student):
 
 
 @exercise("log_se3", weight=2)
+def test_log_se3_every_decade(student):
+    """exact to 5e-14 max(1, |rho|) at every angle of phi from 1e-12 to 3 (each decade, just below each power
+    of ten), |rho| up to 50"""
+    def check(case):
+        xi, _ = case
+        T = _exp(xi)
+        got = expect_array(student.log_se3(T), (6,), "log_se3(T)")
+        scale = max(1.0, float(np.linalg.norm(xi[:3])))
+        expect_within(got, xi, SE3_TOL * scale, "log_se3(T)",
+                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}", lambda: _log_hint(got, T, xi, tiny=True))
+
+    for_all(_twists_every_decade(max_angle=3.0), check, explicit=_decade_twists())
+
+
+@exercise("log_se3", weight=2)
 def test_log_se3_near_pi(student):
     """near and at π (π - 1e-6, π - 1e-9, exactly π): exp of the result is T, angle at most π"""
     rng = np.random.default_rng(773)
@@ -533,7 +582,7 @@ def test_log_se3_near_pi(student):
 
 @exercise("log_se3", weight=1)
 def test_log_se3_large_rotation(student):
-    """a twist with a 5 rad rotation part comes back as an equivalent twist with angle ≤ π"""
+    """a twist with a 5 rad rotation part comes back as an equivalent twist with angle ≤ π; lists work too"""
     xi = _twist([1.0, 0.5, -2.0], 5.0, [0.2, 0.9, -0.4])
     T = _exp(xi)
     got = expect_array(student.log_se3(T), (6,), "log_se3(T) for a 5 rad turn")
@@ -542,3 +591,4 @@ def test_log_se3_large_rotation(student):
     phi = Rotation.from_matrix(T[:3, :3]).as_rotvec()              # the same rotation with angle ≤ π
     expect_close(_exp(got), T, TOL, "expm of the twist of log_se3(T) for a 5 rad turn",
                  _log_hint(got, T, np.concatenate([np.linalg.solve(_v_matrix(phi), T[:3, 3]), phi])))
+    expect_same_with_lists(student.log_se3, (T,), (6,), "log_se3(T)")

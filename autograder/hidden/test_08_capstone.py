@@ -20,7 +20,7 @@ from scipy.spatial.transform import Rotation
 
 from coursekit.diagnose import explains
 
-from .helpers import (exercise, expect, expect_array, expect_close, expect_same_with_lists, random_rotations,
+from .helpers import (LISTS_HINT, exercise, expect, expect_array, expect_close, expect_same_with_lists, random_rotations,
                       rotation_problem)
 
 TOL = 1e-9
@@ -219,6 +219,9 @@ def test_align_gauss_newton_exact_data(student):
     R0 = R @ _exp([0.6, -0.5, 0.6])
     got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=10), (3, 3), "align_gauss_newton on exact data")
     expect_close(got, R, 1e-10, "align_gauss_newton on exact data", _gn_hint(got, P, Q, R0, 10, R))
+    from_lists = expect_array(solver.align_gauss_newton(P.tolist(), Q.tolist(), R0.tolist(), iters=10), (3, 3),
+                              "align_gauss_newton with P, Q and R0 as plain lists")
+    expect_close(from_lists, got, 1e-12, "align_gauss_newton with lists vs with arrays", LISTS_HINT)
 
 
 @exercise("align_gauss_newton", weight=1)
@@ -317,10 +320,11 @@ def test_rotation_mean_simple_cases(student):
 
 @exercise("rotation_mean", weight=1)
 def test_rotation_mean_accepts_a_list(student):
-    """accepts a list of 3×3 arrays as well as one (N, 3, 3) array"""
+    """accepts a list of 3×3 arrays, and nested plain lists, as well as one (N, 3, 3) array"""
     solver = student.with_timeout(SLOW)
     Rs = _cloud(6, seed=1030, spread=0.3)
     from_array = expect_array(solver.rotation_mean(Rs), (3, 3), "rotation_mean(array of rotations)")
-    from_list = expect_array(solver.rotation_mean([R for R in Rs]), (3, 3), "rotation_mean(list of rotations)")
-    expect_close(from_list, from_array, 1e-12, "rotation_mean of a list vs of the same rotations as an array",
-                 "convert the input with np.asarray(Rs, dtype=float)")
+    for what, given in (("list of rotations", [R for R in Rs]), ("nested lists", Rs.tolist())):
+        from_list = expect_array(solver.rotation_mean(given), (3, 3), f"rotation_mean({what})")
+        expect_close(from_list, from_array, 1e-12, f"rotation_mean of a {what} vs of the same rotations as an array",
+                     "convert the input with np.asarray(Rs, dtype=float)")

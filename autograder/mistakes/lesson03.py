@@ -366,11 +366,19 @@ def axis_angle(R):
 def axis_from_eigen(R):
     return np.linalg.svd(np.asarray(R, dtype=float) - np.eye(3))[2][-1]
 '''),
-    Alternative("axis_from_eigen_complex", "axis_from_eigen", "np.linalg.eig's complex eigenvector as it comes", '''
-def axis_from_eigen(R):
-    values, vectors = np.linalg.eig(np.asarray(R, dtype=float))
-    u = vectors[:, int(np.argmin(np.abs(values - 1.0)))]
-    return u / np.linalg.norm(u)
+    Alternative("exp_so3_three_term_series", "exp_so3", "another series order: three terms of each coefficient below 1e-3", '''
+def exp_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    if theta < 1e-3:
+        t2 = theta * theta
+        a = 1.0 - t2 / 6.0 + t2 * t2 / 120.0
+        b = 0.5 - t2 / 24.0 + t2 * t2 / 720.0
+    else:
+        a = np.sin(theta) / theta
+        b = (1.0 - np.cos(theta)) / (theta * theta)
+    return np.eye(3) + a * W + b * (W @ W)
 '''),
 ]
 

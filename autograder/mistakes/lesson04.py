@@ -333,12 +333,6 @@ def quat_right(q):
         return np.concatenate([[a[0] * b[0] - a[1:] @ b[1:]], a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:])])
     return np.column_stack([mul(e, q) for e in np.eye(4)])
 '''),
-    Alternative("quat_conjugate_in_place", "quat_conjugate", "negates the vector part of its argument in place", '''
-def quat_conjugate(q):
-    q = np.asarray(q, dtype=float)
-    q[1:] *= -1.0
-    return q
-'''),
     Alternative("quat_inverse_solve", "quat_inverse", "solves [q]_L x = 1", '''
 def quat_inverse(q):
     w, x, y, z = np.asarray(q, dtype=float)
@@ -396,6 +390,18 @@ def quat_slerp(q0, q1, t):
     half = np.arctan2(n, d[0])
     axis = d[1:] / n if n > 0 else np.zeros(3)
     return mul(q0, np.concatenate([[np.cos(t * half)], np.sin(t * half) * axis]))
+'''),
+    Alternative("quat_slerp_nlerp_below_1e_6", "quat_slerp", "falls back to a normalised blend below Ω = 1e-6, takes lists", '''
+def quat_slerp(q0, q1, t):
+    q0, q1 = np.asarray(q0, dtype=float), np.asarray(q1, dtype=float)
+    if q0 @ q1 < 0:
+        q1 = -q1
+    omega = np.arccos(np.clip(q0 @ q1, -1.0, 1.0))
+    if omega < 1e-6:
+        q = (1 - t) * q0 + t * q1
+    else:
+        q = np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1
+    return q / np.linalg.norm(q)
 '''),
 ]
 

@@ -62,7 +62,7 @@ def matrix_to_euler_zyx(R):
     from scipy.spatial.transform import Rotation
     yaw, pitch, roll = Rotation.from_matrix(np.asarray(R, dtype=float)).as_euler("zyx")
     return yaw, pitch, roll
-''', hint='extrinsic', public_hint='extrinsic'),
+''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
     Mistake("euler_to_quat_full_angles", "euler_zyx_to_quat", "uses full angles instead of half angles", '''
 def euler_zyx_to_quat(yaw, pitch, roll):
     cy, sy = np.cos(yaw), np.sin(yaw)
@@ -239,7 +239,7 @@ def quat_to_euler_zyx(q):
     w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
     u, v = complex(w + y, z - x), complex(w - y, x + z)     # |u| = √2 sin(pitch/2 + π/4), |v| = √2 cos(...)
     pitch = 2 * np.arctan2(abs(u), abs(v)) - np.pi / 2
-    wrap = lambda a: float(-np.angle(np.exp(-1j * a)))     # into (-π, π]
+    wrap = lambda a: float(np.pi - (np.pi - a) % (2 * np.pi))     # into (-π, π]: -π becomes π
     if abs(v) < 1e-12:
         return wrap(2 * np.angle(u)), float(pitch), 0.0
     if abs(u) < 1e-12:
@@ -253,6 +253,17 @@ def euler_rates_matrix(pitch, roll):
     Rx = np.array([[1.0, 0.0, 0.0], [0.0, cr, -sr], [0.0, sr, cr]])
     Ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
     return np.column_stack([Rx.T @ Ry.T @ [0.0, 0.0, 1.0], Rx.T @ [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])
+'''),
+    Alternative("matrix_to_euler_wrapped_by_mod", "matrix_to_euler_zyx", "wraps yaw and roll into (-π, π] with np.mod", '''
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+    wrap = lambda a: float(np.pi - np.mod(np.pi - a, 2 * np.pi))
+    pitch = float(np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])))
+    if np.hypot(R[0, 0], R[1, 0]) < 1e-12:
+        return wrap(np.arctan2(-R[0, 1], R[1, 1])), pitch, 0.0
+    yaw = np.arctan2(R[1, 0], R[0, 0])
+    c, s = np.cos(yaw), np.sin(yaw)
+    return wrap(yaw), pitch, wrap(np.arctan2(s * R[0, 2] - c * R[1, 2], c * R[1, 1] - s * R[0, 1]))
 '''),
 ]
 

@@ -329,6 +329,17 @@ def right_jacobian_inv_so3(w):
     b = (theta - np.sin(theta)) / theta**3
     return np.linalg.solve(np.eye(3) - a * W + b * W @ W, np.eye(3))
 '''),
+    Alternative("right_jacobian_two_terms_below_1e_4", "right_jacobian_so3", "another series order: two terms below 1e-4", '''
+def right_jacobian_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-4:
+        a, b = 0.5 - theta**2 / 24.0, 1.0 / 6.0 - theta**2 / 120.0
+    else:
+        a, b = (1.0 - np.cos(theta)) / theta**2, (theta - np.sin(theta)) / theta**3
+    return np.eye(3) - a * W + b * (W @ W)
+'''),
 ]
 
 SAMPLE = {

@@ -19,7 +19,11 @@ assignments. Both errors show as one red line in Jupyter, not a traceback
 above already say what is wrong.
 """
 
+import functools
 import traceback
+
+from .contracts import CHANGED_HINT, DELEGATED_HINT, forbidden_for
+from .watching import snapshot, watch_call
 
 __all__ = ["check", "public_check", "Mismatch", "CheckFailed", "NotWrittenYet", "registered_exercises",
            "checks_of_lesson"]
@@ -102,6 +106,7 @@ def run_quietly(exercise, function):
     _load_check_modules()
     checks = _REGISTRY.get(exercise, [])
     passed, problem = 0, ""
+    function = _Watched(exercise, function)
     for description, run in checks:
         try:
             run(function)
@@ -113,7 +118,42 @@ def run_quietly(exercise, function):
             problem = problem or f"{description}: raised {type(error).__name__}"
         else:
             passed += 1
-    return passed, len(checks), problem
+    broken = function.broken_promises()
+    if broken and not problem:
+        problem = f"{broken[0][0]}: {_one_line(broken[0][1], 90)}"
+    return passed, len(checks) + len(broken), problem
+
+
+class _Watched:
+    """The student's function as the checks call it: each call gets copies of its arguments and is
+    watched (:func:`coursekit.watching.watch_call`) for arguments changed in place and for calls
+    into the library functions that do the exercise's job (:mod:`coursekit.contracts`)."""
+
+    def __init__(self, exercise, function):
+        functools.update_wrapper(self, function)
+        self.exercise, self.function, self.forbidden = exercise, function, forbidden_for(exercise)
+        self.changed, self.used = [], []
+
+    def __call__(self, *args, **kwargs):
+        args = tuple(snapshot(a) for a in args)  # the check's own data stays as it was
+        kwargs = {name: snapshot(value) for name, value in kwargs.items()}
+        value, seen = watch_call(self.function, args, kwargs, self.forbidden)
+        self.changed += [name for name in seen.changed if name not in self.changed]
+        self.used += [name for name in seen.used + (["sys.setprofile"] if seen.tampered else [])
+                      if name not in self.used]
+        return value
+
+    def broken_promises(self):
+        """``(description, reason, hint)`` for each contract the calls so far broke (none: ``[]``)."""
+        broken = []
+        if self.used:
+            broken.append(("is your own implementation", f"{self.exercise} calls {', '.join(self.used)}",
+                           DELEGATED_HINT))
+        if self.changed:
+            broken.append(("leaves its arguments unchanged",
+                           f"{self.exercise} changes its argument{'s' if len(self.changed) > 1 else ''} "
+                           f"{', '.join(self.changed)} in place", CHANGED_HINT))
+        return broken
 
 
 def _load_check_modules():
@@ -167,6 +207,7 @@ def check(exercise, function):
                        + (f" (a checks module failed to import: {broken})" if broken else ""))
     passed, failed = 0, 0
     lines = []
+    function = _Watched(exercise, function)
     for description, run in checks:
         try:
             run(function)
@@ -192,6 +233,9 @@ def check(exercise, function):
         else:
             passed += 1
             lines.append(f"  ✓ {description}")
+    for description, reason, hint in function.broken_promises():
+        failed += 1
+        lines.append(f"  ✗ {description}: {reason}\n      hint: {_one_line(hint)}")
     print(f"{exercise}: public checks")
     print("\n".join(lines))
     total = passed + failed

@@ -70,6 +70,8 @@ def shape_problem(value, shape):
     """
     if value is None:
         return "returned None: did you forget the return statement?"
+    if np.iscomplexobj(value):
+        return "returned complex numbers: the answer is real (take np.real(...) where np.linalg.eig made them)"
     array = as_float_array(value)
     if array is None:
         return f"returned {type(value).__name__}, not an array of numbers"

@@ -236,7 +236,7 @@ def _(quat_from_axis_angle):
 
 @public_check("quat_from_axis_angle", "normalises the axis and returns a unit quaternion")
 def _(quat_from_axis_angle):
-    got = require_shape(quat_from_axis_angle([0.0, 3.0, 4.0], 1.2), (4,))
+    got = require_shape(quat_from_axis_angle(np.array([0.0, 3.0, 4.0]), 1.2), (4,))   # an array: is it left alone?
     hint = _axis_angle_diagnosis(got, [0.0, 3.0, 4.0], 1.2)
     if abs(np.linalg.norm(got) - 1.0) > 1e-9:
         raise Mismatch(f"|q| = {np.linalg.norm(got):.4f} for the axis [0, 3, 4]",
@@ -482,7 +482,7 @@ def _(quat_slerp):
         raise Mismatch(f"at t = 0.25 it has turned {turned:.6f} rad, off by {abs(turned - 0.625):.2g}", hint)
 
 
-@public_check("quat_slerp", "nearly identical inputs do not divide by zero")
+@public_check("quat_slerp", "nearly identical and equal inputs do not divide by zero (nor take arccos of 1 + 2e-16)")
 def _(quat_slerp):
     tiny = np.array([np.cos(1e-10), np.sin(1e-10), 0.0, 0.0])
     got = require_shape(quat_slerp(ONE, tiny, 0.5), (4,),
@@ -491,3 +491,10 @@ def _(quat_slerp):
     if not same_rotation_quat(got, ONE, 1e-9):
         raise Mismatch(f"got {fmt(got)}, off by {min(np.max(np.abs(got - ONE)), np.max(np.abs(got + ONE))):.2g} "
                        "even up to sign", "between nearly identical inputs the result is (nearly) q0")
+    # a unit quaternion whose q · q rounds to 1 + 2.2e-16: arccos(q0 · q1) is NaN unless q0 · q1 is clipped to 1
+    q = np.array([-0.8466057152828365, -0.07966788016829934, -0.45366940523260274, -0.2666380739426069])
+    got = require_shape(quat_slerp(q, q, 0.5), (4,),
+                        nan_hint=lambda _: "q0 · q1 can round to just above 1 for equal inputs: clip it with "
+                                           "min(d, 1.0) before np.arccos")
+    if not same_rotation_quat(got, q, 1e-12):
+        raise Mismatch(f"quat_slerp(q, q, 0.5) = {fmt(got)}, expected q itself", None)

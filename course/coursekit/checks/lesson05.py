@@ -216,6 +216,18 @@ def _(matrix_to_euler_zyx):
                            _angles_hint(got, R) or ANGLES_GENERAL_HINT)
 
 
+HALF_OPEN_HINT = ("np.arctan2 returns -π for (-0.0, negative): the course's range is (-π, π], so map an angle "
+                  "of -π to π at the end")
+
+
+@public_check("matrix_to_euler_zyx", "a half turn about z is yaw = π, never -π (also when its sine is -0.0)")
+def _(matrix_to_euler_zyx):
+    half_z = np.array([[-1.0, 0.0, 0.0], [-0.0, -1.0, 0.0], [0.0, 0.0, 1.0]])     # arctan2(-0.0, -1) = -π
+    got = _require_angles(matrix_to_euler_zyx(half_z))
+    if got[0] != np.pi:
+        raise Mismatch(f"yaw = {got[0]:.17g}, expected π (the range is (-π, π])", HALF_OPEN_HINT)
+
+
 @public_check("matrix_to_euler_zyx", "at gimbal lock (pitch = ±π/2): no NaN, roll = 0, the same matrix")
 def _(matrix_to_euler_zyx):
     for sign in (1.0, -1.0):
@@ -392,6 +404,19 @@ def _(quat_to_euler_zyx):
             if max(abs(angles[0]), abs(angles[2])) > np.pi + 1e-12 or abs(angles[1]) > HALF_PI + 1e-12:
                 raise Mismatch(f"the angles {fmt(angles)} are out of range",
                                "yaw and roll in (-π, π], pitch in [-π/2, π/2]: wrap at the end")
+
+
+@public_check("quat_to_euler_zyx", "the half turn -[0, 0, 0, 1] is yaw = π, never -π; 2q gives the angles of q")
+def _(quat_to_euler_zyx):
+    got = _require_angles(quat_to_euler_zyx([0.0, 0.0, 0.0, -1.0]))
+    if got[0] != np.pi:
+        raise Mismatch(f"quat_to_euler_zyx([0, 0, 0, -1]) gave yaw = {got[0]:.17g}, expected π (the range is "
+                       "(-π, π])", HALF_OPEN_HINT)
+    q = np.array([0.5, 0.5, 0.5, -0.5])
+    unit, double = _require_angles(quat_to_euler_zyx(q)), _require_angles(quat_to_euler_zyx(2.0 * q))
+    if np.max(np.abs(_zyx(*unit) - _zyx(*double))) > REBUILD_TOL:
+        raise Mismatch(f"q = {fmt(q)} gives {fmt(unit)} but 2q gives {fmt(double)}",
+                       "a non-unit q stands for the same rotation: divide q by its norm first")
 
 
 @public_check("quat_to_euler_zyx", "at gimbal lock (pitch = ±π/2): no NaN, roll = 0, the same rotation")

@@ -384,6 +384,18 @@ def _(numerical_jacobian):
                            _step_hint(got, exact, numerical_jacobian, _wavy, x))
 
 
+INTEGER_X_HINT = ("x = [3, 0, -2] arrives as integers: convert it with np.asarray(x, dtype=float), else the step "
+                  "added to an integer entry is rounded away")
+
+
+@public_check("numerical_jacobian", "accepts x as a list of integers, [3, 0, -2]")
+def _(numerical_jacobian):
+    got = require_shape(numerical_jacobian(lambda x: 2.0 * np.asarray(x, dtype=float), [3, 0, -2]), (3, 3))
+    if not close(got, 2.0 * np.eye(3), 1e-6):
+        raise Mismatch(f"the Jacobian of 2x at the integers [3, 0, -2] came out {fmt(got)}, expected 2 I",
+                       INTEGER_X_HINT)
+
+
 @public_check("numerical_jacobian", "works where x_j = 0 (the floor 1e-6 of the step rule)")
 def _(numerical_jacobian):
     got = require_shape(numerical_jacobian(np.sin, np.zeros(3)), (3, 3), nan_hint=floor_hint(np.zeros(3)))

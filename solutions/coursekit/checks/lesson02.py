@@ -251,6 +251,16 @@ def _(commutes):
                        _commutes_slip(commutes))
 
 
+NAN_HINT = ("a NaN result never counts as equal: compare with max |x - y| <= tol, which is False for NaN "
+            "(not ... > tol, which NaN passes)")
+
+
+@public_check("commutes", "a NaN never counts as equal: commutes(NaN, 2, ×) is False")
+def _(commutes):
+    if commutes(float("nan"), 2.0, lambda a, b: a * b):
+        raise Mismatch("commutes(NaN, 2, ×) came out True although NaN · 2 is NaN both ways", NAN_HINT)
+
+
 @public_check("commutes", "uses the tol argument")
 def _(commutes):
     A, B = Exp([0.0, 0.0, 0.3]), Exp([1e-7, 0.0, 0.5])   # their products differ by about 3e-8

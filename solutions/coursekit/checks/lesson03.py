@@ -14,7 +14,7 @@ contains no way to compute the exercises' answers.
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, explains, rotation_problem
+from ..diagnose import LISTS_HINT, close, explains, rotation_problem
 from ..lie import Exp
 from .common import fmt, off_by, require_same_with_lists, require_shape
 
@@ -315,6 +315,21 @@ def _(exp_so3):
                        _exp_hint(R, W_SAMPLE, EXP_SLIPS["sample"]))
 
 
+@public_check("exp_so3", "exp_so3(w)² = exp_so3(2w) to 1e-14 just below 0.1, 0.01, … 1e-8 rad (its small-angle "
+                         "branch is as exact as its closed form)")
+def _(exp_so3):
+    axis = np.array([2.0, -1.0, 2.0]) / 3.0
+    for k in range(1, 9):
+        w = 0.97 * 10.0 ** -k * axis
+        once = require_shape(exp_so3(w), (3, 3))
+        twice = require_shape(exp_so3(2 * w), (3, 3))
+        error = float(np.max(np.abs(once @ once - twice)))
+        if error > 1e-14:
+            raise Mismatch(f"exp_so3(w) @ exp_so3(w) differs from exp_so3(2w) by {error:.2g} at θ = {0.97 * 10.0 ** -k:.2g}",
+                           "a series used up to a small angle must stay exact there: sin θ/θ ≈ 1 - θ²/6 and "
+                           "(1 - cos θ)/θ² ≈ 1/2 - θ²/24 below about 1e-4, the closed form above")
+
+
 @public_check("exp_so3", "w = 0 gives I, and a tiny turn (1e-8 rad) is not lost")
 def _(exp_so3):
     got = require_shape(exp_so3([0.0, 0.0, 0.0]), (3, 3))
@@ -457,6 +472,19 @@ def _(axis_angle):
                            "at θ = 0 the axis is arbitrary: return the unit vector [1, 0, 0]")
 
 
+@public_check("axis_angle", "accepts a plain (nested) list")
+def _(axis_angle):
+    R = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    u, theta = _pair(axis_angle(R), R)
+    try:
+        listed = axis_angle(R.tolist())
+    except Exception as error:
+        raise Mismatch(f"axis_angle(a nested list) raised {type(error).__name__}: {error}", LISTS_HINT) from None
+    u_list, theta_list = _pair(listed, R)
+    if not (close(u_list, u, 1e-12) and close(theta_list, theta, 1e-12)):
+        raise Mismatch("axis_angle of a nested list differs from axis_angle of the same array", LISTS_HINT)
+
+
 @public_check("axis_angle", "a half turn about (1, 1, 1)/√3: θ = π, u = ±(1, 1, 1)/√3")
 def _(axis_angle):
     R = HALF_TURN_DIAGONAL
@@ -472,14 +500,16 @@ def _(axis_angle):
 
 
 # ---------------------------------------------------------------- axis_from_eigen
+REAL_AXIS_HINT = "the eigenvector of the eigenvalue 1 is real: return np.real(...) of it"
+
+
 def _real(value):
-    """A real (3,) vector; a complex one is accepted when its imaginary part is zero (as np.linalg.eig gives)."""
+    """A real (3,) vector; a complex one (np.linalg.eig's dtype) is refused: the docstring promises a real axis."""
     array = np.asarray(value) if value is not None else None
     if array is not None and np.iscomplexobj(array):
-        if array.shape == (3,) and np.max(np.abs(array.imag)) > 1e-12:
-            raise Mismatch(f"returned a complex vector with imaginary part {fmt(np.abs(array.imag))}",
-                           "take the eigenvector of the eigenvalue 1: it is real (np.real(...) of it)")
-        value = array.real
+        raise Mismatch(f"returned a complex vector (dtype {array.dtype}), imaginary part up to "
+                       f"{np.max(np.abs(array.imag), initial=0.0):.2g}",
+                       REAL_AXIS_HINT)
     return require_shape(value, (3,))
 
 
