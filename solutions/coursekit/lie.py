@@ -92,13 +92,13 @@ def LogSE3(T):
     """
     from scipy.linalg import expm
 
-    T = np.asarray(T, dtype=float)
-    phi = Log(T[:3, :3])
+    pose = np.asarray(T, dtype=float)
+    rotation_vector = Log(pose[:3, :3])
     block = np.zeros((6, 6))
-    block[:3, :3] = skew(phi)
+    block[:3, :3] = skew(rotation_vector)
     block[:3, 3:] = np.eye(3)
-    V = expm(block)[:3, 3:]
-    return np.concatenate([np.linalg.solve(V, T[:3, 3]), phi])
+    V = expm(block)[:3, 3:]                     # Σ [φ]×^k / (k+1)!, read off a larger exponential
+    return np.concatenate([np.linalg.solve(V, pose[:3, 3]), rotation_vector])
 
 
 def quat_product(p, q):
