@@ -27,13 +27,6 @@ def _defines(tree, name):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name == name]
 
 
-def _parse(source):
-    try:
-        return ast.parse(source)
-    except (SyntaxError, ValueError):
-        return None
-
-
 def _fallback_source(source, tree, name):
     """The imports of a cell followed by its last definition of ``name``."""
     lines = source.splitlines()
@@ -91,7 +84,7 @@ def lesson_program(nb, lesson):
             if cells.is_check_cell(cell) or cells.is_setup_cell(cell):
                 continue
             source = cells.source_text(cell)
-            tree = _parse(source)
+            tree = cells.parse_source(source)
             if tree is not None and _defines(tree, name):
                 fallback = (index, name, _fallback_source(source, tree, name))
         if fallback:
