@@ -97,22 +97,20 @@ def _print_skipped(ignored, results, shown=20):
     """What was not graded: entries of the submissions folder (``ignored``) and, per student, what the
     walk of their folder skipped; at most ``shown`` lines of each (``status`` lists them all)."""
     inside = [r for r in results if r.skipped]
+    sections = [
+        (f"not graded: {len(ignored)} entr{'y' if len(ignored) == 1 else 'ies'} of the submissions folder that are "
+         "not student folders:", [one_line(item.line(), 200) for item in ignored]),
+        (f"not read: {len(inside)} student folder(s) hold entries the grader skipped (hidden, links, too deep):",
+         [f"{one_line(r.student_id, 40)}: {one_line('; '.join(r.skipped), 200)}" for r in inside])]
     if ignored or inside:
         print()
-    if ignored:
-        print(f"not graded: {len(ignored)} entr{'y' if len(ignored) == 1 else 'ies'} of the submissions folder "
-              "that are not student folders:")
-        for item in ignored[:shown]:
-            print(f"  {one_line(item.line(), 200)}")
-        if len(ignored) > shown:
-            print(f"  and {len(ignored) - shown} more (`status` lists them all)")
-    if inside:
-        print(f"not read: {len(inside)} student folder(s) hold entries the grader skipped (hidden, links, too "
-              "deep):")
-        for r in inside[:shown]:
-            print(f"  {one_line(r.student_id, 40)}: {one_line('; '.join(r.skipped), 200)}")
-        if len(inside) > shown:
-            print(f"  and {len(inside) - shown} more (`status` lists them all)")
+    for title, lines in sections:
+        if lines:
+            print(title)
+            for line in lines[:shown]:
+                print(f"  {line}")
+            if len(lines) > shown:
+                print(f"  and {len(lines) - shown} more (`status` lists them all)")
 
 
 def _read_roster(path):

