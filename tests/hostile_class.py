@@ -371,6 +371,16 @@ def a_million_tiny_lists(class_dir):
     return "tiny_lists"
 
 
+@case("size", "graded", "JSON values")
+def a_million_numbers_and_keys(class_dir):
+    """cell metadata of an object with 600,000 keys and a list of 600,000 numbers (each costs the parser
+    memory; no bracket to count)"""
+    keys = "{" + ",".join(f'"k{i}":0' for i in range(600_000)) + "}"
+    _with_metadata_text(student_with(class_dir, "many_values"), f'[{keys},[{",".join(["1e9"] * 600_000)}]]',
+                        cell_level=True)
+    return "many_values"
+
+
 @case("size", "graded", "cells")
 def six_thousand_cells(class_dir):
     """the lesson notebook with 6,000 extra empty cells"""

@@ -307,6 +307,7 @@ def _notebook_with(value_text, where="metadata"):
     ("[" * 900 + "]" * 900, "nests its JSON"),
     ("[" * 70 + "]" * 70, "nests its JSON"),
     ("[" + ",".join(["{}"] * 300_000) + "]", "JSON lists and objects"),
+    ("[" + ",".join(["1e9"] * 1_100_000) + "]", "JSON values"),
 ])
 def test_notebook_json_is_bounded_in_depth_and_size(value, words):
     for where in ("metadata", "cell"):

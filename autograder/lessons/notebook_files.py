@@ -7,7 +7,7 @@ not a notebook. :func:`read_submission` turns each of those into
 :class:`UnreadableNotebook` with one sentence a student can act on; it opens
 only regular files (:func:`read_regular_file`: never following a link, never
 blocking), reads at most :data:`MAX_NOTEBOOK_BYTES`, and bounds what parsing
-may build (:data:`MAX_CONTAINERS`, :data:`MAX_NESTING`, :data:`MAX_CELLS`), so
+may build (:data:`MAX_CONTAINERS`, :data:`MAX_ITEMS`, :data:`MAX_NESTING`, :data:`MAX_CELLS`), so
 one notebook costs the grader a bounded time and memory.
 """
 
@@ -21,6 +21,7 @@ import nbformat
 
 MAX_NOTEBOOK_BYTES = 20 * 1024 * 1024
 MAX_CONTAINERS = 200_000  # JSON lists and objects (a lesson notebook has under 1,300, brackets in text included)
+MAX_ITEMS = 1_000_000  # commas: JSON values and keys (a lesson notebook has under 10,000, commas in text included)
 MAX_NESTING = 64  # levels of JSON (a lesson notebook has 7)
 MAX_CELLS = 5_000  # a lesson notebook has under 100
 
@@ -162,10 +163,13 @@ def parse_notebook(raw, name="notebook"):
         raise UnreadableNotebook(
             f"{name} is not UTF-8 text (bad byte at position {error.start}); "
             "was it saved by Jupyter?") from None
-    containers = raw.count(b"[") + raw.count(b"{")
-    if containers > MAX_CONTAINERS:
+    containers, items = raw.count(b"[") + raw.count(b"{"), raw.count(b",")
+    if containers > MAX_CONTAINERS:  # counted on the bytes: what parsing would build is bounded before it starts
         raise _damaged(name, f"holds {containers:,} JSON lists and objects (a notebook needs a few hundred, "
                              f"at most {MAX_CONTAINERS:,} are read)")
+    if items > MAX_ITEMS:
+        raise _damaged(name, f"holds {items:,} JSON values (a notebook needs a few thousand, at most "
+                             f"{MAX_ITEMS:,} are read)")
     try:
         data = json.loads(text)
     except json.JSONDecodeError as error:
