@@ -505,6 +505,88 @@ def unlock(path):
                     os.chmod(entry, 0o755)
 
 
+# ------------------------------------------------------------------------------------------ sandbox
+# Code that attacks the worker, its feeder, the slot or the next student. Each keeps the reference
+# answers (the attack sits in one answer cell, beside the right function), so the honest students
+# graded after it in the same warm slot show whether anything of it survived.
+def _answer_with(class_dir, student_id, exercise, attack):
+    from support import references
+
+    student_with(class_dir, student_id, {exercise: attack + "\n" + references()[exercise]})
+    return student_id
+
+
+@case("sandbox", "exercises")
+def leaves_everything_for_the_next_student(class_dir):
+    """leaves a detached daemon, System V and POSIX IPC objects, keys in every keyring, a tree 3,000
+    folders deep and a locked /tmp for whoever comes next in the slot"""
+    return _answer_with(class_dir, "leaves_things", "rot_x", """
+import ctypes, os, time
+if os.fork() == 0:
+    os.setsid()
+    if os.fork() == 0:
+        while True:
+            time.sleep(0.05)
+    os._exit(0)
+_libc = ctypes.CDLL(None, use_errno=True)
+_libc.syscall.restype = ctypes.c_long
+_libc.shmget(4242, 4096, 0o1666); _libc.msgget(4244, 0o1666); _libc.mq_open(b"/left", 0o100 | 2, 0o666, None)
+for _ring in (-4, -5, -3):
+    _libc.syscall(248, b"user", b"left", b"x", 1, _ring)
+os.makedirs("/tmp/deep", exist_ok=True)
+os.chdir("/tmp/deep")
+for _ in range(3000):
+    os.mkdir("d"); os.chdir("d")
+os.chdir("/")
+os.chmod("/tmp", 0)
+""")
+
+
+@case("sandbox", "graded", "longer than")
+def floods_its_reply_socket(class_dir):
+    """rot_y writes 80 MB of '[' straight into every socket it holds, then returns the right answer"""
+    from support import references
+
+    source = references()["rot_y"].replace("def rot_y(", "def _rot_y(")
+    source += ("\nimport os\ndef rot_y(a):\n    for fd in range(3, 64):\n        try:\n"
+               "            os.write(fd, b'[' * (80 * 1024 * 1024))\n        except OSError:\n"
+               "            pass\n    return _rot_y(a)\n")
+    student_with(class_dir, "floods_socket", {"rot_y": source})
+    return "floods_socket"
+
+
+@case("sandbox", "graded", "more than")
+def answers_with_six_million_lists(class_dir):
+    """rot_z returns six million empty lists (cheap to make, costly to encode and to parse)"""
+    student_with(class_dir, "six_million_lists", {"rot_z": "def rot_z(a):\n    return [[]] * 6_000_000\n"})
+    return "six_million_lists"
+
+
+@case("sandbox", "exercises")
+def kills_its_feeder_and_everything(class_dir):
+    """at load, signals its parent, PID 1 and every process it can reach with SIGKILL and SIGSTOP"""
+    return _answer_with(class_dir, "kills_everything", "compose", """
+import os, signal
+for _target in (os.getppid(), 1, -1):
+    for _number in (signal.SIGSTOP, signal.SIGKILL):
+        try:
+            os.kill(_target, _number)
+        except OSError:
+            pass
+""")
+
+
+@case("sandbox", "exercises")
+def rewrites_the_notebooks_kernel(class_dir):
+    """installs an IPython input transformer that would replace every later cell of the notebook stage"""
+    return _answer_with(class_dir, "rewrites_kernel", "invert_rotation", """
+try:
+    get_ipython().input_transformers_post.append(lambda lines: ["raise SystemExit\\n"])
+except NameError:
+    pass
+""")
+
+
 def build_class(class_dir):
     """Write the honest students and every case into ``class_dir``; ``{case name: student id or None}``."""
     class_dir = Path(class_dir)
