@@ -55,7 +55,7 @@ from autograder.reports.gradebook import gradebook_csv
 from autograder.reports.gradescope_results import results_json
 from autograder.reports.lateness import apply_late_policy
 from autograder.reports.plain_page import plain_page
-from autograder.sandbox import launcher, process_tree, warm
+from autograder.sandbox import cleanup, launcher, process_tree, warm
 from autograder.sandbox.forking import fork_each
 
 STUDENT_TIMEOUT = 900
@@ -285,6 +285,7 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     if unknown:
         raise UnknownStudents(f"no submission folder under {path} for: {', '.join(unknown)}")
     _prewarm()
+    cleanup.sweep_stale()  # the temporary folders of a grader that was killed mid-batch
     parts = fingerprint_parts(options)
     summary = RunSummary(ignored=found.skipped)
     if announce:
