@@ -69,6 +69,7 @@ def test_mistake_costs_points_on_its_exercise_only(name, tmp_path):
     assert not misfired, f"{name} got hints meant for other mistakes: {misfired} ({told})"
 
 
+@pytest.mark.blas_sensitive
 @pytest.mark.parametrize("name", sorted(WRONG), ids=_ids)
 def test_mistake_fails_a_public_check(name):
     mistake = WRONG[name]
