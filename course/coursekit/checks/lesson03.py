@@ -118,9 +118,14 @@ LOG_SLIPS = {
                                np.array([0.0, -1.8848712116959343, -2.513161615594579])]},
 }
 # axis_from_eigen slips that miss the axis: a row of eig's vector matrix, the SVD null space of R itself,
-# eigh's vector (R_TWO_RAD); the first eigenvector and its eigenvalue (HALF_TURN_Z)
+# eigh's vector (R_TWO_RAD); the first eigenvector and its eigenvalue (HALF_TURN_Z). Each slip is a line (the sign
+# is free), or several lines where LAPACK's choices vary with the CPU's kernel: the row of the matrix is read for
+# the real eigenvalue listed first or last (a complex pair stays together) and each column's sign is LAPACK's.
 EIGEN_SLIPS = {
-    "two_rad": {"row": np.array([-0.9428090415820635, 0.23570226039551567, 0.23570226039551567]),
+    "two_rad": {"row": np.array([[-0.9428090415820635, 0.23570226039551567, 0.23570226039551567],
+                                 [-0.9428090415820635, -0.23570226039551567, -0.23570226039551567],
+                                 [0.2357022603955158, 0.2357022603955158, -0.9428090415820634],
+                                 [-0.2357022603955158, -0.2357022603955158, -0.9428090415820634]]),
                 "svd_of_R": np.array([0.0, -0.7071067811865472, 0.7071067811865475]),
                 "eigh": np.array([-0.6823480532366004, -0.2623018652019903, -0.6823480532366004])},
     "half_z": {"first": np.array([1.0, 0.0, 0.0]), "first_eigenvalue": -1.0},
@@ -515,8 +520,11 @@ def _real(value):
 
 def _eigen_hint(u, axis, slips):
     """The slip behind a wrong axis ``u`` (up to sign); ``slips`` holds what each slip returns for this R."""
-    def same_line(v):
-        return min(np.max(np.abs(u - v)), np.max(np.abs(u + v))) <= 1e-6
+    def same_line(lines):
+        """u lies on one of ``lines`` ((3,) or (n, 3))."""
+        lines = np.atleast_2d(lines)
+        apart = np.minimum(np.max(np.abs(u - lines), axis=1), np.max(np.abs(u + lines), axis=1))
+        return bool(np.min(apart) <= 1e-6)
 
     messages = {
         "row": "that is a row of the eigenvector matrix: eigenvectors are its columns, vectors[:, k]",
