@@ -42,6 +42,65 @@ from pathlib import Path
 from autograder.lessons.untrusted_text import one_line
 from autograder.reports.exports import EXPORTERS
 
+USAGE_ERROR = 2  # a mistake on the command line or in a file it names: nothing was done
+INTERRUPTED = 130  # Ctrl-C, as a shell reports a process ended by SIGINT
+CLOSED_PIPE = 141  # the reader of our output went away (`status | head`), as for SIGPIPE
+
+
+class UsageError(ValueError):
+    """A mistake the instructor can fix on the command line; ``main`` prints it as one line, exit status 2."""
+
+
+def _lesson_numbers(given):
+    """``given`` lesson numbers as the catalog spells them: "3" is read as "03" (said on stderr); an unknown one
+    raises :class:`UsageError` naming the valid ones."""
+    if not given:
+        return ()
+    from autograder.lessons.catalog import load_catalog
+
+    valid = [lesson.number for lesson in load_catalog().graded_lessons]
+    numbers = []
+    for number in given:
+        padded = number.zfill(2) if number.isdigit() and len(number) < 2 else number
+        if padded not in valid:
+            raise UsageError(f"unknown lesson {number!r}: the graded lessons are {' '.join(valid)}")
+        if padded != number:
+            print(f"--lessons {number} read as {padded}", file=sys.stderr)
+        numbers.append(padded)
+    return tuple(dict.fromkeys(numbers))
+
+
+def _positive_jobs(text):
+    """``--jobs``: a whole number of at least 1."""
+    try:
+        jobs = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--jobs takes a whole number of parallel graders, not {text!r}") from None
+    if jobs < 1:
+        raise argparse.ArgumentTypeError(f"--jobs must be 1 or more (got {jobs}); leave it out to use every core")
+    return jobs
+
+
+SUBMISSIONS_LAYOUT = ("a submissions folder holds one folder per student (SUBMISSIONS/anna/01_frames.ipynb, "
+                      "SUBMISSIONS/ben/...), or is nbgrader's submitted/<student>/<assignment>/ layout")
+
+
+def _require_students(path):
+    """Raise :class:`UsageError` when ``path`` holds no student folder, saying what one looks like, and when
+    ``path`` looks like a single student's folder (notebooks of its own, or only nbgrader assignment folders)."""
+    import re
+
+    from autograder.grading.submissions import scan_submissions
+
+    students = [student_id for student_id, _ in scan_submissions(path).files]
+    if students and not all(re.fullmatch(r"lesson\d\d", student_id) for student_id in students):
+        return
+    if students or any(child.suffix == ".ipynb" for child in path.iterdir()):
+        raise UsageError(f"{path} looks like one student's folder ({'assignment folders' if students else 'notebooks'}"
+                         f", no student folders): give the folder that holds every student's folder; "
+                         f"{SUBMISSIONS_LAYOUT}")
+    raise UsageError(f"no student folders in {path}: {SUBMISSIONS_LAYOUT}")
+
 
 def _cmd_release(args):
     from autograder.authoring.release import release, stale_files
@@ -114,10 +173,14 @@ def _print_skipped(ignored, results, shown=20):
 
 
 def _read_roster(path):
-    """Roster ids from ``path`` (plain ids or a CSV; see autograder/reports/roster.py)."""
-    from autograder.reports.roster import read_roster
+    """Roster ids from ``path`` (plain ids or a CSV; see autograder/reports/roster.py); a roster that cannot be
+    used raises :class:`UsageError`."""
+    from autograder.reports.roster import RosterError, read_roster
 
-    return tuple(entry.student_id for entry in read_roster(path))
+    try:
+        return tuple(entry.student_id for entry in read_roster(path))
+    except RosterError as error:
+        raise UsageError(str(error)) from None
 
 
 def _cmd_canary(args):
@@ -127,6 +190,7 @@ def _cmd_canary(args):
     from autograder.grading.pipeline import GradingOptions
     from autograder.sandbox import launcher
 
+    args.lessons = _lesson_numbers(args.lessons)
     print(launcher.describe_isolation())
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     _prewarm()
@@ -148,6 +212,8 @@ def _cmd_grade(args):
     from autograder.sandbox import launcher, warm
 
     out = Path(args.out)
+    args.lessons = _lesson_numbers(args.lessons)
+    roster = _read_roster(args.roster)
     path = args.path
     if path is None:
         from autograder.authoring.sample_class import build_sample_class
@@ -159,6 +225,7 @@ def _cmd_grade(args):
     if not path.is_dir():
         print(f"error: {path} is not a folder of student submissions", file=sys.stderr)
         return 2
+    _require_students(path)
     print(launcher.describe_isolation())
     if not args.cluster and warm.enabled():
         print("sandbox slots: each grading process keeps one warm sandbox whose workers are forked fresh for "
@@ -181,7 +248,7 @@ def _cmd_grade(args):
             return 2
     try:
         summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
-                              progress=Progress(sys.stderr), roster=_read_roster(args.roster),
+                              progress=Progress(sys.stderr), roster=roster,
                               only=tuple(args.student), announce=lambda line: print(line, flush=True),
                               config=config, runner=runner)
     except CanaryFailed as error:
@@ -294,7 +361,8 @@ def _cmd_book(args):
 def _cmd_gradescope(args):
     from autograder.integrations.gradescope import build_bundle
 
-    path = build_bundle(args.out, lessons=tuple(args.lessons), visibility=args.visibility, nbval=not args.no_nbval)
+    path = build_bundle(args.out, lessons=_lesson_numbers(args.lessons), visibility=args.visibility,
+                        nbval=not args.no_nbval)
     print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): upload it as the autograder of a "
           "Gradescope programming assignment (choose the Ubuntu 24.04 base image).")
     return 0
@@ -311,7 +379,7 @@ def _cmd_gradescope_run(args):
 def _cmd_nbgrader_course(args):
     from autograder.integrations.nbgrader_course import build_course
 
-    root = build_course(args.out, lessons=tuple(args.lessons))
+    root = build_course(args.out, lessons=_lesson_numbers(args.lessons))
     print(f"wrote the nbgrader course {root}: source/lessonNN/ for each lesson, with coursekit beside it.\n"
           f"Next, with the environment active (source .venv/bin/activate): cd {root} && "
           "nbgrader generate_assignment lesson01")
@@ -359,8 +427,15 @@ def _cmd_export(args):
     return 0
 
 
+class _OneLineParser(argparse.ArgumentParser):
+    """argparse, but a mistake on the command line is one line (what is wrong, where to look), exit status 2."""
+
+    def error(self, message):
+        self.exit(USAGE_ERROR, f"{self.prog}: error: {message} (see: {self.prog} --help)\n")
+
+
 def build_parser():
-    parser = argparse.ArgumentParser(prog="python -m autograder", description=__doc__.split("\n")[0])
+    parser = _OneLineParser(prog="python -m autograder", description=__doc__.split("\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
 
     release = commands.add_parser("release", help="regenerate course/ from solutions/")
@@ -374,7 +449,7 @@ def build_parser():
     grade = commands.add_parser("grade", help="grade a folder of submissions (or the sample class)")
     grade.add_argument("path", nargs="?", help="one folder per student, or nbgrader's submitted/ layout")
     grade.add_argument("--out", required=True, help="where grades.csv and feedback/ go")
-    grade.add_argument("--jobs", type=int, default=None, help="parallel graders (default: number of cores)")
+    grade.add_argument("--jobs", type=_positive_jobs, default=None, help="parallel graders (default: number of cores)")
     grade.add_argument("--no-nbval", action="store_true", help="skip the notebook stage (faster)")
     grade.add_argument("--lessons", nargs="+", default=(), metavar="NN",
                        help="grade only these lessons, e.g. --lessons 01 03 (default: all)")
@@ -439,7 +514,7 @@ def build_parser():
                                                   "on mutants of the reference answers")
     mutants.add_argument("--exercise", nargs="*", default=[], help="only these exercises")
     mutants.add_argument("--lessons", nargs="*", default=[], help="only these lessons, e.g. 03 04")
-    mutants.add_argument("--jobs", type=int, default=None, help="processes (default: 2, or 1 on one core)")
+    mutants.add_argument("--jobs", type=_positive_jobs, default=None, help="processes (default: 2, or 1 on one core)")
     mutants.add_argument("--markdown", action="store_true", help="print the table as Markdown (for the README)")
     mutants.add_argument("--save", metavar="FILE.json", help="also write every mutant's outcome and source as JSON")
     mutants.set_defaults(run=_cmd_mutants)
@@ -450,6 +525,26 @@ def build_parser():
     return parser
 
 
+def _interrupted_line(args):
+    """What Ctrl-C leaves behind, and how to go on."""
+    if args.command == "grade":
+        return (f"interrupted: every student graded so far is saved in {Path(args.out) / 'students'}; run the same "
+                "command again to resume (saved students are not graded twice)")
+    return f"interrupted: `{args.command}` stopped before it finished; run it again"
+
+
 def main(argv=None):
     args = build_parser().parse_args(argv)
-    return args.run(args)
+    try:
+        return args.run(args)
+    except UsageError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return USAGE_ERROR
+    except KeyboardInterrupt:
+        print(f"\n{_interrupted_line(args)}", file=sys.stderr)
+        return INTERRUPTED
+    except BrokenPipeError:  # `status | head`: the reader has all it wanted; say nothing more, anywhere
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return CLOSED_PIPE

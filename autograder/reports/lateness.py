@@ -27,6 +27,7 @@ Examples
 (0.2, 'handed in 2026-12-02 13:00 UTC, 1 day 1 h after the due date (2026-12-01 12:00 UTC): 2 days late, −20%')
 """
 
+import difflib
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -37,6 +38,9 @@ from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 from dateutil import parser as date_parser
 
 POLICY_KEYS = ("grace_minutes", "penalty_per_day", "max_penalty")
+# The config's schema: the keys each table may hold (values are checked where they are read).
+TOP_KEYS = ("timezone", "late_policy", "lessons")
+LESSON_KEYS = ("due", *POLICY_KEYS)
 
 
 class ConfigError(ValueError):
@@ -81,12 +85,57 @@ def _policy(table, base, where):
     return LatePolicy(**{key: float(value) for key, value in values.items()})
 
 
-def parse_config(text, name="course config"):
-    """A :class:`CourseConfig` from TOML text; raise :class:`ConfigError` with the place of a mistake."""
+def _did_you_mean(given, known):
+    close = difflib.get_close_matches(given, known, n=1, cutoff=0.6)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+def _check_keys(table, known, where):
+    """Raise :class:`ConfigError` for the first key of ``table`` that the schema does not know, with the close name."""
+    for key in table:
+        if key not in known:
+            elsewhere = (" (it belongs in [late_policy] or a lesson's table)" if key in POLICY_KEYS else
+                         " (it belongs in a lesson's table, [lessons.\"03\"])" if key == "due" else "")
+            raise ConfigError(f"{where}: unknown key {key!r}{elsewhere or _did_you_mean(key, known)} "
+                              f"(known here: {', '.join(known)})")
+
+
+def _check_lesson(number, lessons, name):
+    """Raise :class:`ConfigError` unless ``number`` is one of ``lessons``; ``3`` suggests ``"03"``."""
+    if number in lessons:
+        return
+    padded = number.zfill(2) if number.isdigit() else number
+    close = padded if padded in lessons else (difflib.get_close_matches(number, lessons, n=1) or [None])[0]
+    hint = f'; did you mean [lessons."{close}"] (quoted, two digits)?' if close else ""
+    raise ConfigError(f"{name}: unknown lesson {number!r} under [lessons]{hint} "
+                      f"(the lessons are {' '.join(lessons)})")
+
+
+def parse_config(text, name="course config", lessons=None):
+    """A :class:`CourseConfig` from TOML text; raise :class:`ConfigError` with the place of a mistake.
+
+    Every key is checked against the schema (``TOP_KEYS``, ``POLICY_KEYS``, ``LESSON_KEYS``) and every lesson
+    against ``lessons`` (default: the graded lessons of the catalog); a misspelt name gets the close one.
+    """
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
         raise ConfigError(f"{name} is not valid TOML: {error}") from None
+    if lessons is None:
+        from autograder.lessons.catalog import load_catalog
+
+        lessons = [lesson.number for lesson in load_catalog().graded_lessons]
+    _check_keys(data, TOP_KEYS, name)
+    for key in ("late_policy", "lessons"):
+        if not isinstance(data.get(key, {}), dict):
+            raise ConfigError(f"{name}: {key} must be a table ([{key}])")
+    if not isinstance(data.get("timezone", "UTC"), str):
+        raise ConfigError(f'{name}: timezone must be a name in quotes, e.g. timezone = "Europe/Berlin"')
+    _check_keys(data.get("late_policy", {}), POLICY_KEYS, f"{name} [late_policy]")
+    for number, table in data.get("lessons", {}).items():
+        _check_lesson(number, lessons, name)
+        if isinstance(table, dict):
+            _check_keys(table, LESSON_KEYS, f'{name} [lessons."{number}"]')
     try:
         zone = ZoneInfo(data.get("timezone", "UTC"))
     except (ZoneInfoNotFoundError, ValueError):
