@@ -35,6 +35,7 @@ book --out DIR
 """
 
 import argparse
+import os
 import sys
 from collections import Counter
 from pathlib import Path
@@ -75,9 +76,9 @@ def _positive_jobs(text):
     try:
         jobs = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"--jobs takes a whole number of parallel graders, not {text!r}") from None
+        raise argparse.ArgumentTypeError(f"a whole number of parallel graders, not {text!r}") from None
     if jobs < 1:
-        raise argparse.ArgumentTypeError(f"--jobs must be 1 or more (got {jobs}); leave it out to use every core")
+        raise argparse.ArgumentTypeError(f"must be 1 or more (got {jobs}); leave it out to use every core")
     return jobs
 
 
@@ -214,6 +215,11 @@ def _cmd_grade(args):
     out = Path(args.out)
     args.lessons = _lesson_numbers(args.lessons)
     roster = _read_roster(args.roster)
+    try:
+        config = load_config(args.config) if args.config else None
+    except ConfigError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
     path = args.path
     if path is None:
         from autograder.authoring.sample_class import build_sample_class
@@ -232,11 +238,6 @@ def _cmd_grade(args):
               "every student and reset between students (SECURITY.md, \"Warm slots\"; AUTOGRADER_WARM=0 turns "
               "them off)")
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
-    try:
-        config = load_config(args.config) if args.config else None
-    except ConfigError as error:
-        print(f"error: {error}", file=sys.stderr)
-        return 2
     runner = None
     if args.cluster:  # students become Dask tasks (autograder/integrations/cluster.py, docs/CLUSTER.md)
         from autograder.integrations.cluster import connect
@@ -534,17 +535,32 @@ def _interrupted_line(args):
 
 
 def main(argv=None):
+    import signal
+
     args = build_parser().parse_args(argv)
+    interrupted = []
+
+    def on_ctrl_c(signum, frame):  # remembered, as a library on the way (pytest) may turn it into its own error
+        interrupted.append(signum)
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGINT, on_ctrl_c)
     try:
-        return args.run(args)
+        status = args.run(args)
+        sys.stdout.flush()  # here, so that a closed pipe is met inside this try and not at exit
+        return status
     except UsageError as error:
         print(f"error: {error}", file=sys.stderr)
         return USAGE_ERROR
-    except KeyboardInterrupt:
-        print(f"\n{_interrupted_line(args)}", file=sys.stderr)
-        return INTERRUPTED
     except BrokenPipeError:  # `status | head`: the reader has all it wanted; say nothing more, anywhere
-        import os
-
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return CLOSED_PIPE
+    except BaseException:
+        if not interrupted:
+            raise
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second Ctrl-C must not cut the one line short
+        print(f"\n{_interrupted_line(args)}", file=sys.stderr, flush=True)
+        sys.stdout.flush()
+        # Ended here: Python would die of SIGINT at exit (status -2, after our line) when a library on the way let
+        # the interrupt pass through code it ran; a killed run's temporary files are swept by the next one.
+        os._exit(INTERRUPTED)

@@ -1,0 +1,166 @@
+"""Every command-line mistake of an instructor's first hour gets one clear line and the right exit status.
+
+Each test runs ``python -m autograder`` as a user types it (a subprocess, real files in a temporary folder).
+Usage mistakes end before any grading (exit status 2), so these tests cost seconds; the one that needs a
+grader at work (Ctrl-C) interrupts it early.
+"""
+
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from autograder.batch.class_run import Outputs, Stamp, save_result
+from autograder.grading.results import GRADED_WITH_PROBLEMS, StudentResult
+from autograder.lessons.paths import COURSE
+
+USAGE = 2
+
+
+def autograder(*args, cwd, timeout=120):
+    """Run ``python -m autograder ARGS`` in ``cwd``; the finished process (text output)."""
+    return subprocess.run([sys.executable, "-m", "autograder", *args], cwd=cwd, capture_output=True, text=True,
+                          timeout=timeout)
+
+
+def one_error_line(run):
+    """The single line a usage mistake prints: no traceback, nothing else on stderr."""
+    lines = [line for line in run.stderr.splitlines() if line.strip()]
+    assert "Traceback" not in run.stderr, run.stderr
+    assert len(lines) == 1, f"expected one line, got:\n{run.stderr}"
+    return lines[0]
+
+
+@pytest.fixture
+def classroom(tmp_path):
+    """A submissions folder with two students holding lesson 01, and an empty folder."""
+    notebook = next(COURSE.glob("01_*.ipynb"))
+    for student in ("anna", "ben"):
+        (tmp_path / "class" / student).mkdir(parents=True)
+        shutil.copy(notebook, tmp_path / "class" / student / notebook.name)
+    (tmp_path / "empty").mkdir()
+    return tmp_path
+
+
+@pytest.mark.parametrize("lesson", ["99", "1a", "00"])
+def test_an_unknown_lesson_names_the_valid_ones(classroom, lesson):
+    for command in (["grade", "class", "--out", "results"], ["canary"], ["gradescope", "--out", "a.zip"],
+                    ["nbgrader-course", "--out", "nb"]):
+        run = autograder(*command, "--lessons", lesson, cwd=classroom)
+        assert run.returncode == USAGE, (command, run.stderr)
+        line = one_error_line(run)
+        assert f"unknown lesson '{lesson}'" in line and "01 02 03" in line and "09" in line, line
+    assert not (classroom / "results").exists() and not (classroom / "a.zip").exists()
+
+
+def test_a_one_digit_lesson_is_read_as_its_two_digit_number(classroom):
+    """--lessons 3 means lesson 03, and the run says so (here it then stops: the folder holds no students)."""
+    run = autograder("grade", "empty", "--out", "results", "--lessons", "3", cwd=classroom)
+    assert run.returncode == USAGE
+    assert "--lessons 3 read as 03" in run.stderr
+    assert "unknown lesson" not in run.stderr and "no student folders" in run.stderr
+
+
+@pytest.mark.parametrize("jobs", ["0", "-3", "two"])
+def test_jobs_below_one_is_refused(classroom, jobs):
+    run = autograder("grade", "class", "--out", "results", f"--jobs={jobs}", cwd=classroom)
+    assert run.returncode == USAGE
+    line = one_error_line(run)
+    assert "--jobs" in line and (f"got {jobs}" in line or repr(jobs) in line), line
+
+
+def test_no_students_says_what_a_submissions_folder_looks_like(classroom):
+    run = autograder("grade", "empty", "--out", "results", cwd=classroom)
+    assert run.returncode == USAGE
+    line = one_error_line(run)
+    assert "no student folders in empty" in line and "one folder per student" in line, line
+    assert not (classroom / "results").exists()
+
+
+def test_one_students_folder_is_recognised(classroom):
+    run = autograder("grade", "class/anna", "--out", "results", cwd=classroom)
+    assert run.returncode == USAGE
+    line = one_error_line(run)
+    assert "looks like one student's folder" in line and "one folder per student" in line, line
+
+
+def test_one_students_nbgrader_folder_is_recognised(classroom):
+    """submitted/anna/ with its assignment folders lesson01/, lesson03/: one student, not two."""
+    student = classroom / "submitted_anna"
+    for assignment in ("lesson01", "lesson03"):
+        (student / assignment).mkdir(parents=True)
+        shutil.copy(next(COURSE.glob("01_*.ipynb")), student / assignment)
+    run = autograder("grade", "submitted_anna", "--out", "results", cwd=classroom)
+    assert run.returncode == USAGE
+    assert "looks like one student's folder (assignment folders" in one_error_line(run)
+
+
+@pytest.mark.parametrize("roster_text, expected", [
+    (None, "cannot read the roster roster.csv"),
+    ("name,email\nAnna,anna@example.org\n", "no id column"),
+])
+def test_roster_mistakes_in_grade_status_and_export(classroom, roster_text, expected):
+    if roster_text is not None:
+        (classroom / "roster.csv").write_text(roster_text, encoding="utf-8")
+    for command in (["grade", "class", "--out", "results"], ["status", "--out", "results"],
+                    ["export", "--out", "results", "--to", "canvas"]):
+        run = autograder(*command, "--roster", "roster.csv", cwd=classroom)
+        assert run.returncode == USAGE, (command, run.stdout, run.stderr)
+        assert expected in one_error_line(run), (command, run.stderr)
+
+
+@pytest.mark.parametrize("toml, expected", [
+    ('[late_policy]\npenalty_per_days = 0.1\n', "did you mean 'penalty_per_day'?"),
+    ('[lessons.3]\ndue = 2026-12-01T23:59:00\n', """unknown lesson '3' under [lessons]; did you mean [lessons."03"]"""),
+    ('[lessons."99"]\ndue = 2026-12-01T23:59:00\n', "unknown lesson '99'"),
+    ('[lessons."03"]\ndeu = 2026-12-01T23:59:00\n', "did you mean 'due'?"),
+    ('timezon = "Europe/Berlin"\n', "did you mean 'timezone'?"),
+    ('penalty_per_day = 0.1\n', "belongs in [late_policy]"),
+    ('late_policy = 3\n', "late_policy must be a table"),
+])
+def test_course_config_is_checked_against_its_schema(classroom, toml, expected):
+    (classroom / "course.toml").write_text(toml, encoding="utf-8")
+    run = autograder("grade", "class", "--out", "results", "--config", "course.toml", cwd=classroom)
+    assert run.returncode == USAGE
+    line = one_error_line(run)
+    assert line.startswith("error: course.toml") and expected in line, line
+    assert not (classroom / "results").exists()
+
+
+def test_a_closed_pipe_ends_status_quietly(tmp_path):
+    """`status | head -1` on a gradebook longer than a pipe's buffer: no traceback, the exit status of SIGPIPE."""
+    outputs = Outputs(tmp_path / "results")
+    stamp = Stamp("0" * 16, {})
+    for index in range(150):
+        result = StudentResult(student_id=f"student{index:03}", status=GRADED_WITH_PROBLEMS,
+                               problems=[f"problem {k}: " + "x" * 150 for k in range(3)])
+        save_result(outputs, result, stamp, "2026-11-25 06:00:00")
+    reader = subprocess.Popen([sys.executable, "-m", "autograder", "status", "--out", str(outputs.root)],
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    first = reader.stdout.readline()
+    reader.stdout.close()  # what `head -1` does after its line
+    stderr = reader.stderr.read()
+    assert reader.wait(timeout=60) == 141
+    assert first.startswith("student") and stderr == "", stderr
+
+
+def test_ctrl_c_says_what_is_saved_and_how_to_resume(classroom):
+    """Ctrl-C reaches the whole foreground process group; the grader ends with one line and status 130."""
+    grader = subprocess.Popen([sys.executable, "-m", "autograder", "grade", "class", "--out", "results",
+                               "--lessons", "01", "--no-nbval"], cwd=classroom, stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True, start_new_session=True)
+    started = grader.stdout.readline()  # the sandbox line: the grader is at work
+    assert started.startswith("sandbox"), started
+    time.sleep(1.0)
+    os.killpg(grader.pid, signal.SIGINT)
+    stdout, stderr = grader.communicate(timeout=60)
+    assert grader.returncode == 130, (stdout, stderr)
+    assert "Traceback" not in stderr and "KeyboardInterrupt" not in stderr, stderr
+    last = [line for line in stderr.splitlines() if line.strip()][-1]
+    assert last == (f"interrupted: every student graded so far is saved in {Path('results') / 'students'}; run the "
+                    "same command again to resume (saved students are not graded twice)"), stderr
