@@ -6,6 +6,7 @@ grader at work (Ctrl-C) interrupts it early.
 """
 
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -18,6 +19,7 @@ import pytest
 from autograder.batch.class_run import Outputs, Stamp, save_result
 from autograder.grading.results import GRADED_WITH_PROBLEMS, StudentResult
 from autograder.lessons.paths import COURSE
+from autograder.reports.lateness import ConfigError, parse_config
 
 USAGE = 2
 
@@ -47,14 +49,15 @@ def classroom(tmp_path):
     return tmp_path
 
 
-@pytest.mark.parametrize("lesson", ["99", "1a", "00"])
-def test_an_unknown_lesson_names_the_valid_ones(classroom, lesson):
-    for command in (["grade", "class", "--out", "results"], ["canary"], ["gradescope", "--out", "a.zip"],
-                    ["nbgrader-course", "--out", "nb"]):
-        run = autograder(*command, "--lessons", lesson, cwd=classroom)
-        assert run.returncode == USAGE, (command, run.stderr)
-        line = one_error_line(run)
-        assert f"unknown lesson '{lesson}'" in line and "01 02 03" in line and "09" in line, line
+@pytest.mark.parametrize("command, lesson", [
+    (["grade", "class", "--out", "results"], "99"), (["canary"], "1a"), (["gradescope", "--out", "a.zip"], "00"),
+    (["nbgrader-course", "--out", "nb"], "10"),
+])
+def test_an_unknown_lesson_names_the_valid_ones(classroom, command, lesson):
+    run = autograder(*command, "--lessons", lesson, cwd=classroom)
+    assert run.returncode == USAGE, (command, run.stderr)
+    line = one_error_line(run)
+    assert f"unknown lesson '{lesson}'" in line and "01 02 03" in line and "09" in line, line
     assert not (classroom / "results").exists() and not (classroom / "a.zip").exists()
 
 
@@ -66,7 +69,7 @@ def test_a_one_digit_lesson_is_read_as_its_two_digit_number(classroom):
     assert "unknown lesson" not in run.stderr and "no student folders" in run.stderr
 
 
-@pytest.mark.parametrize("jobs", ["0", "-3", "two"])
+@pytest.mark.parametrize("jobs", ["0", "-3"])
 def test_jobs_below_one_is_refused(classroom, jobs):
     run = autograder("grade", "class", "--out", "results", f"--jobs={jobs}", cwd=classroom)
     assert run.returncode == USAGE
@@ -100,21 +103,22 @@ def test_one_students_nbgrader_folder_is_recognised(classroom):
     assert "looks like one student's folder (assignment folders" in one_error_line(run)
 
 
-@pytest.mark.parametrize("roster_text, expected", [
-    (None, "cannot read the roster roster.csv"),
-    ("name,email\nAnna,anna@example.org\n", "no id column"),
+@pytest.mark.parametrize("command, roster_text, expected", [
+    (["grade", "class", "--out", "results"], None, "cannot read the roster roster.csv"),
+    (["grade", "class", "--out", "results"], "name,email\nAnna,anna@example.org\n", "no id column"),
+    (["status", "--out", "results"], None, "cannot read the roster roster.csv"),
+    (["status", "--out", "results"], "name,email\nAnna,anna@example.org\n", "no id column"),
+    (["export", "--out", "results", "--to", "canvas"], "name,email\nAnna,anna@example.org\n", "no id column"),
 ])
-def test_roster_mistakes_in_grade_status_and_export(classroom, roster_text, expected):
+def test_roster_mistakes_in_grade_status_and_export(classroom, command, roster_text, expected):
     if roster_text is not None:
         (classroom / "roster.csv").write_text(roster_text, encoding="utf-8")
-    for command in (["grade", "class", "--out", "results"], ["status", "--out", "results"],
-                    ["export", "--out", "results", "--to", "canvas"]):
-        run = autograder(*command, "--roster", "roster.csv", cwd=classroom)
-        assert run.returncode == USAGE, (command, run.stdout, run.stderr)
-        assert expected in one_error_line(run), (command, run.stderr)
+    run = autograder(*command, "--roster", "roster.csv", cwd=classroom)
+    assert run.returncode == USAGE, (command, run.stdout, run.stderr)
+    assert expected in one_error_line(run), (command, run.stderr)
 
 
-@pytest.mark.parametrize("toml, expected", [
+CONFIG_MISTAKES = [
     ('[late_policy]\npenalty_per_days = 0.1\n', "did you mean 'penalty_per_day'?"),
     ('[lessons.3]\ndue = 2026-12-01T23:59:00\n', """unknown lesson '3' under [lessons]; did you mean [lessons."03"]"""),
     ('[lessons."99"]\ndue = 2026-12-01T23:59:00\n', "unknown lesson '99'"),
@@ -122,7 +126,10 @@ def test_roster_mistakes_in_grade_status_and_export(classroom, roster_text, expe
     ('timezon = "Europe/Berlin"\n', "did you mean 'timezone'?"),
     ('penalty_per_day = 0.1\n', "belongs in [late_policy]"),
     ('late_policy = 3\n', "late_policy must be a table"),
-])
+]
+
+
+@pytest.mark.parametrize("toml, expected", CONFIG_MISTAKES[:2])
 def test_course_config_is_checked_against_its_schema(classroom, toml, expected):
     (classroom / "course.toml").write_text(toml, encoding="utf-8")
     run = autograder("grade", "class", "--out", "results", "--config", "course.toml", cwd=classroom)
@@ -130,6 +137,15 @@ def test_course_config_is_checked_against_its_schema(classroom, toml, expected):
     line = one_error_line(run)
     assert line.startswith("error: course.toml") and expected in line, line
     assert not (classroom / "results").exists()
+
+
+@pytest.mark.parametrize("toml, expected", CONFIG_MISTAKES)
+def test_every_schema_mistake_names_the_close_key(toml, expected):
+    """The same check in this process, for every kind of mistake (the command above shows it reaches the user)."""
+    with pytest.raises(ConfigError, match=re.escape(expected)):
+        parse_config(toml, "course.toml")
+    parse_config('timezone = "Europe/Berlin"\n[late_policy]\npenalty_per_day = 0.1\n'
+                 '[lessons."03"]\ndue = 2026-12-01T23:59:00\nmax_penalty = 0.5\n', "course.toml")
 
 
 def test_a_closed_pipe_ends_status_quietly(tmp_path):
