@@ -423,8 +423,14 @@ def _cmd_export(args):
     target = Path(args.file) if args.file else outputs.root / f"{args.to}.csv"
     from autograder.batch.class_run import write_atomically
 
-    write_atomically(target, EXPORTERS[args.to](results, load_catalog(), roster))
+    write_atomically(target, EXPORTERS[args.to](results, load_catalog(), roster, missing=args.missing))
     print(f"wrote {target}: {len(results)} students, {args.to} gradebook import format")
+    from autograder.reports.exports import not_handed_in
+
+    absent = sum(len(not_handed_in(r, load_catalog().graded_lessons)) for r in results)
+    if absent:
+        print(f"  {absent} lesson(s) not handed in: " + ("exported as 0 (--missing blank leaves them empty)"
+                                                        if args.missing == "zero" else "left empty (--missing blank)"))
     return 0
 
 
@@ -486,6 +492,8 @@ def build_parser():
     export.add_argument("--to", required=True, choices=sorted(EXPORTERS), help="the format")
     export.add_argument("--roster", help="CSV roster with names, sections, SIS ids (see autograder/reports/roster.py)")
     export.add_argument("--file", help="where to write (default: OUT/<format>.csv)")
+    export.add_argument("--missing", choices=("zero", "blank"), default="zero",
+                        help="a lesson not handed in: 0 points (default) or an empty cell")
     export.set_defaults(run=_cmd_export)
 
     status = commands.add_parser("status", help="show the saved results of a grading run")

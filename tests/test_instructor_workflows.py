@@ -142,5 +142,16 @@ def test_per_lesson_totals_and_canvas_export(class_folder, tmp_path):
     assert table[1][0] == "Points Possible" and float(table[1][column]) == LESSON.points
     people = {row[3]: row for row in table[2:]}
     assert people["ana"][:5] == ["Ana Lima", "", "S001", "ana", "A"] and float(people["ana"][column]) == LESSON.points
-    assert float(people["bo"][column]) == 0 and people["cy"][column] == ""  # on the roster, nothing handed in
+    assert float(people["bo"][column]) == 0 and people["cy"][column] == "0"  # cy: on the roster, nothing handed in
     assert people["dan"][2] == "dan"  # not on the roster: matched by the grader's id
+    others = [i for i, name in enumerate(table[0]) if name.startswith("Lesson ") and i != column]
+    assert others and all(people["ana"][i] == "0" for i in others)  # lessons ana did not hand in: 0 by default
+    assert "lesson(s) not handed in: exported as 0 (--missing blank leaves them empty)" in run.stdout
+
+    blank = _run("export", "--out", str(out), "--to", "canvas", "--roster", str(roster), "--missing", "blank",
+                 "--file", str(tmp_path / "blank.csv"))
+    assert blank.returncode == 0, blank.stderr
+    with open(tmp_path / "blank.csv", newline="", encoding="utf-8") as handle:
+        kept = {row[3]: row for row in list(csv.reader(handle))[2:]}
+    assert kept["cy"][column] == "" and all(kept["ana"][i] == "" for i in others)
+    assert float(kept["ana"][column]) == LESSON.points and float(kept["bo"][column]) == 0

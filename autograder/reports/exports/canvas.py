@@ -5,7 +5,9 @@ per lesson (each lesson is its own Canvas assignment, named
 ``Lesson 01: Frames and rotations``; Canvas offers to create assignments it
 does not know). The second row, ``Points Possible``, gives each lesson's
 maximum. Scores are the lesson totals after late penalties, as in
-``grades.csv``. Students are matched in Canvas by ``SIS User ID``: the
+``grades.csv``. A lesson not handed in is 0 (``missing="blank"`` leaves
+its cell empty instead); a student who could not be graded keeps empty cells
+(their grade is unknown). Students are matched in Canvas by ``SIS User ID``: the
 roster's ``sis_id`` when given, else the grader's student id; ``ID`` is the
 roster's ``canvas_id`` (Canvas's own number) when known.
 
@@ -28,8 +30,13 @@ def assignment_name(lesson):
     return f"Lesson {lesson.number}: {lesson.title}" if lesson.title else f"Lesson {lesson.number}"
 
 
-def write(results, catalog, roster=()):
-    """The import file's text for ``results`` (StudentResult), with names and sections from ``roster``."""
+def write(results, catalog, roster=(), missing="zero"):
+    """The import file's text for ``results`` (StudentResult), with names and sections from ``roster``; a lesson
+    not handed in is 0, or an empty cell with ``missing="blank"``."""
+    from autograder.reports.exports import MISSING_CHOICES, not_handed_in
+
+    if missing not in MISSING_CHOICES:
+        raise ValueError(f"missing must be one of {MISSING_CHOICES}, not {missing!r}")
     people = {entry.student_id: entry for entry in roster}
     lessons = catalog.graded_lessons
     buffer = io.StringIO()
@@ -43,6 +50,8 @@ def write(results, catalog, roster=()):
     for result in sorted(results, key=lambda r: r.student_id):
         person = people.get(result.student_id)
         earned = {lesson.number: lesson.points for lesson in result.lessons if lesson.status != "missing"}
+        if missing == "zero":
+            earned.update({number: 0.0 for number in not_handed_in(result, lessons)})
         writer.writerow([csv_cell(value, None) for value in (
             (person.name if person and person.name else result.student_id),
             person.canvas_id if person else "",
