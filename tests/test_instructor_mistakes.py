@@ -12,14 +12,16 @@ import signal
 import subprocess
 import sys
 import time
+from datetime import datetime, timezone
 from pathlib import Path
 
 import pytest
 
-from autograder.batch.class_run import Outputs, Stamp, save_result
+from autograder.batch.class_run import Outputs, Saved, Stamp, regrade_reason, save_result
+from autograder.grading.submissions import submission_hash
 from autograder.grading.results import GRADED_WITH_PROBLEMS, StudentResult
 from autograder.lessons.paths import COURSE
-from autograder.reports.lateness import ConfigError, parse_config
+from autograder.reports.lateness import ConfigError, parse_config, submission_time
 
 USAGE = 2
 
@@ -180,3 +182,52 @@ def test_ctrl_c_says_what_is_saved_and_how_to_resume(classroom):
     last = [line for line in stderr.splitlines() if line.strip()][-1]
     assert last == (f"interrupted: every student graded so far is saved in {Path('results') / 'students'}; run the "
                     "same command again to resume (saved students are not graded twice)"), stderr
+
+
+def _nbgrader_student(root):
+    """submitted/ana/lesson01/ with lesson 01's notebook and nbgrader's timestamp, as `nbgrader collect` leaves it."""
+    folder = root / "submitted" / "ana"
+    (folder / "lesson01").mkdir(parents=True)
+    notebook = folder / "lesson01" / next(COURSE.glob("01_*.ipynb")).name
+    shutil.copy(next(COURSE.glob("01_*.ipynb")), notebook)
+    (folder / "lesson01" / "timestamp.txt").write_text("2026-12-01 10:00:00.000000 UTC", encoding="utf-8")
+    os.utime(notebook, (1_900_000_000, 1_900_000_000))  # collected much later than handed in
+    return folder, notebook
+
+
+def test_the_hand_in_time_comes_from_nbgraders_timestamp_only(tmp_path):
+    """A timestamp.txt the student wrote (beside a notebook deeper down, or in their own folder) is never read."""
+    folder, notebook = _nbgrader_student(tmp_path)
+    assert submission_time(notebook, folder) == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
+    (folder / "timestamp.txt").write_text("2026-11-01 10:00:00 UTC", encoding="utf-8")
+    deeper = folder / "lesson01" / "mine"
+    deeper.mkdir()
+    shutil.copy(notebook, deeper / notebook.name)
+    (deeper / "timestamp.txt").write_text("2026-11-01 10:00:00 UTC", encoding="utf-8")
+    assert submission_time(deeper / notebook.name, folder) == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
+    assert submission_time(notebook, folder) == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
+
+    student = tmp_path / "class" / "bo"  # one folder per student (an LMS download): the file's time as collected
+    student.mkdir(parents=True)
+    shutil.copy(notebook, student / notebook.name)
+    (student / "timestamp.txt").write_text("2026-11-01 10:00:00 UTC", encoding="utf-8")
+    os.utime(student / notebook.name, (1_800_000_000, 1_800_000_000))
+    assert submission_time(student / notebook.name, student) == datetime.fromtimestamp(1_800_000_000, timezone.utc)
+
+
+def test_a_corrected_hand_in_time_re_grades_the_student(tmp_path):
+    """The saved grade depends on when the notebooks were handed in, not on their bytes only."""
+    folder, notebook = _nbgrader_student(tmp_path)
+    stamp = Stamp("0" * 16, {})
+    saved = Saved(stamp, StudentResult(student_id="ana", status=GRADED_WITH_PROBLEMS,
+                                       submission_hash=submission_hash(folder)))
+    assert regrade_reason(saved, stamp, submission_hash(folder)) is None
+    (folder / "lesson01" / "timestamp.txt").write_text("2026-12-03 10:00:00.000000 UTC", encoding="utf-8")
+    assert regrade_reason(saved, stamp, submission_hash(folder)) == "the submission changed"
+
+    student = tmp_path / "class" / "bo"  # without nbgrader: the file's time
+    student.mkdir(parents=True)
+    shutil.copy(notebook, student / notebook.name)
+    before = submission_hash(student)
+    os.utime(student / notebook.name, (1_700_000_000, 1_700_000_000))
+    assert submission_hash(student) != before

@@ -28,9 +28,12 @@ import hashlib
 import os
 import re
 import stat
+from datetime import datetime, timezone
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
+
+from dateutil import parser as date_parser
 
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import (MAX_NOTEBOOK_BYTES, UnreadableNotebook, file_kind, read_master,
@@ -327,8 +330,48 @@ def _work(count):
     return "no answer written" if count == 0 else f"{count} answer{'s' if count > 1 else ''} written"
 
 
+NBGRADER_TIMESTAMP = "timestamp.txt"
+
+
+def handed_in_at(notebook, folder):
+    """When ``notebook`` (under the student's ``folder``) was handed in, from one trusted source, or ``None``.
+
+    - nbgrader's ``timestamp.txt`` at the top level of the submission, ``folder/<assignment>/timestamp.txt``
+      (where ``nbgrader collect`` writes it), for a notebook anywhere under ``<assignment>/``;
+    - else the notebook file's modification time as collected (an LMS download, a copied class).
+
+    A ``timestamp.txt`` anywhere else (beside a notebook in a deeper folder, or in the student's folder itself,
+    which in the one-folder-per-student layout holds only what the student handed in) is the student's file
+    and never read. A damaged or linked ``timestamp.txt`` falls back on the file's time.
+
+    Examples
+    --------
+    >>> handed_in_at(Path("submitted/ana/lesson03/03_exp_and_log.ipynb"), Path("submitted/ana"))  # doctest: +SKIP
+    datetime.datetime(2026, 12, 1, 22, 10, 3, tzinfo=datetime.timezone.utc)
+    """
+    notebook, folder = Path(notebook), Path(folder)
+    try:
+        parts = notebook.relative_to(folder).parts
+    except ValueError:
+        parts = ()
+    if len(parts) >= 2:
+        stamp = folder / parts[0] / NBGRADER_TIMESTAMP
+        try:
+            if stat.S_ISREG(os.lstat(stamp).st_mode):
+                text = read_regular_file(stamp, 200)[0].decode("utf-8", "replace").strip()[:100]
+                moment = date_parser.parse(text)
+                return moment if moment.tzinfo else moment.replace(tzinfo=timezone.utc)
+        except (OSError, ValueError, OverflowError, UnreadableNotebook):
+            pass  # absent or damaged: the file's own time
+    try:
+        return datetime.fromtimestamp(os.lstat(notebook).st_mtime, tz=timezone.utc)
+    except (OSError, ValueError, OverflowError):
+        return None
+
+
 def submission_hash(folder):
-    """SHA-256 over the names and bytes of every notebook of a student (links by their target text).
+    """SHA-256 over the names, bytes and hand-in times (:func:`handed_in_at`) of every notebook of a student
+    (links by their target text), so a corrected hand-in time re-grades the student like changed bytes.
 
     Only regular files are read, at most :data:`MAX_NOTEBOOK_BYTES` + 1 bytes each (a larger one is
     refused whole, so what lies beyond cannot change its grade); a FIFO, socket or device is hashed by
@@ -348,5 +391,7 @@ def submission_hash(folder):
                 digest.update(f"kind:{file_kind(mode)}".encode())
         except OSError as error:
             digest.update(f"unreadable:{error.errno}".encode())
+        moment = handed_in_at(path, folder)
+        digest.update(b"\0" + (moment.isoformat() if moment else "no time").encode())
         digest.update(b"\0")
     return digest.hexdigest()

@@ -13,9 +13,10 @@ The config is TOML (``grade --config course.toml``); everything in it is optiona
     due = 2026-12-01T23:59:00         # TOML date-time, with or without an offset
     penalty_per_day = 0.25            # a lesson may override any policy value
 
-When a lesson was handed in comes from nbgrader's ``timestamp.txt`` (in the
-notebook's folder or a parent, up to the student's folder), else from the
-notebook file's modification time. The raw points are kept beside the
+When a lesson was handed in comes from one trusted source: nbgrader's
+``timestamp.txt`` at the top of the submission (``<student>/<assignment>/``),
+else the notebook file's modification time as collected; never a file inside
+the student's own folders (:func:`~autograder.grading.submissions.handed_in_at`). The raw points are kept beside the
 penalised ones (:class:`~autograder.grading.results.LessonResult`).
 
 Examples
@@ -35,7 +36,7 @@ from datetime import date, datetime, time, timezone
 from pathlib import Path
 from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 
-from dateutil import parser as date_parser
+from autograder.grading.submissions import handed_in_at
 
 POLICY_KEYS = ("grace_minutes", "penalty_per_day", "max_penalty")
 # The config's schema: the keys each table may hold (values are checked where they are read).
@@ -163,22 +164,9 @@ def load_config(path):
 
 
 def submission_time(notebook, folder):
-    """When ``notebook`` was handed in: nbgrader's ``timestamp.txt`` beside it or above it, else its mtime."""
-    notebook, folder = Path(notebook), Path(folder)
-    for directory in [notebook.parent, *notebook.parent.parents]:
-        stamp = directory / "timestamp.txt"
-        if stamp.is_file() and not stamp.is_symlink():
-            try:
-                moment = date_parser.parse(stamp.read_text(encoding="utf-8", errors="replace").strip()[:100])
-                return moment if moment.tzinfo else moment.replace(tzinfo=timezone.utc)
-            except (ValueError, OverflowError):
-                break  # a damaged timestamp: fall back to the file's own time
-        if directory == folder:
-            break
-    try:
-        return datetime.fromtimestamp(notebook.lstat().st_mtime, tz=timezone.utc)
-    except OSError:
-        return None
+    """When ``notebook`` was handed in: one trusted source per layout (see
+    :func:`autograder.grading.submissions.handed_in_at`)."""
+    return handed_in_at(notebook, folder)
 
 
 def _span(seconds):
