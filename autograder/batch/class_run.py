@@ -298,6 +298,8 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
         stale.unlink(missing_ok=True)
     if config is not None:
         parts["course config"] = hashlib.sha256(config.source.encode()).hexdigest()[:16]
+        if config.ignore_file_times:
+            parts["file times"] = "ignored (--ignore-mtimes)"
     stamp = Stamp(fingerprint(parts), parts)
     tasks = []
     for student_id, folder in students:

@@ -15,8 +15,12 @@ The config is TOML (``grade --config course.toml``); everything in it is optiona
 
 When a lesson was handed in comes from nbgrader's ``timestamp.txt`` (in the
 notebook's folder or a parent, up to the student's folder), else from the
-notebook file's modification time. The raw points are kept beside the
-penalised ones (:class:`~autograder.grading.results.LessonResult`).
+notebook file's modification time; ``grade --ignore-mtimes`` takes no time from
+files (:attr:`CourseConfig.ignore_file_times`), since copying or downloading a
+class resets them (:mod:`autograder.reports.copied_times` warns when they look
+like that). The raw points are kept beside the penalised ones
+(:class:`~autograder.grading.results.LessonResult`). Due dates and hand-in times
+are written in the course's timezone.
 
 Examples
 --------
@@ -56,6 +60,8 @@ class CourseConfig:
     policies: dict = field(default_factory=dict)  # lesson number -> LatePolicy
     default_policy: LatePolicy = LatePolicy()
     source: str = ""  # the file's text (part of the grader's fingerprint)
+    zone: ZoneInfo = ZoneInfo("UTC")  # the course's timezone: due dates and hand-in times are shown in it
+    ignore_file_times: bool = False  # grade --ignore-mtimes: no lateness from the notebooks' file times
 
     def policy(self, lesson):
         return self.policies.get(lesson, self.default_policy)
@@ -101,7 +107,7 @@ def parse_config(text, name="course config"):
             due[number] = _aware(table["due"], zone, where)
         if any(key in table for key in POLICY_KEYS):
             policies[number] = _policy(table, default, where)
-    return CourseConfig(due=due, policies=policies, default_policy=default, source=text)
+    return CourseConfig(due=due, policies=policies, default_policy=default, source=text, zone=zone)
 
 
 def load_config(path):
@@ -115,6 +121,11 @@ def load_config(path):
 
 def submission_time(notebook, folder):
     """When ``notebook`` was handed in: nbgrader's ``timestamp.txt`` beside it or above it, else its mtime."""
+    return recorded_time(notebook, folder) or file_time(notebook)
+
+
+def recorded_time(notebook, folder):
+    """The time in nbgrader's ``timestamp.txt`` beside ``notebook`` or above it (up to ``folder``), or None."""
     notebook, folder = Path(notebook), Path(folder)
     for directory in [notebook.parent, *notebook.parent.parents]:
         stamp = directory / "timestamp.txt"
@@ -126,8 +137,13 @@ def submission_time(notebook, folder):
                 break  # a damaged timestamp: fall back to the file's own time
         if directory == folder:
             break
+    return None
+
+
+def file_time(notebook):
+    """The modification time of ``notebook`` (aware, UTC), or None when it cannot be read."""
     try:
-        return datetime.fromtimestamp(notebook.lstat().st_mtime, tz=timezone.utc)
+        return datetime.fromtimestamp(Path(notebook).lstat().st_mtime, tz=timezone.utc)
     except OSError:
         return None
 
@@ -139,8 +155,9 @@ def _span(seconds):
     return " ".join(parts) or f"{max(1, rest // 60)} min"
 
 
-def _utc(moment):
-    return moment.astimezone(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+def local_time(moment, zone):
+    """``moment`` as people read it in the course's timezone ``zone``: ``2026-12-01 23:59 CET``."""
+    return moment.astimezone(zone).strftime("%Y-%m-%d %H:%M %Z")
 
 
 def penalty(config, lesson, handed_in):
@@ -154,17 +171,25 @@ def penalty(config, lesson, handed_in):
         return 0.0, ""
     days = math.ceil(late / 86400)
     fraction = round(min(policy.max_penalty, days * policy.penalty_per_day), 4)
-    return fraction, (f"handed in {_utc(handed_in)}, {_span(late)} after the due date ({_utc(due)}): "
+    return fraction, (f"handed in {local_time(handed_in, config.zone)}, {_span(late)} after the due date "
+                      f"({local_time(due, config.zone)}): "
                       f"{days} day{'s' if days != 1 else ''} late, −{100 * fraction:g}%")
 
 
 def apply_late_policy(result, folder, config):
-    """Record when each lesson was handed in and, past its due date, the penalty (in place)."""
+    """Record when each lesson was handed in, where that time came from, its due date and, past it, the
+    penalty (in place)."""
     for lesson in result.lessons:
+        if config is not None and lesson.number in config.due:
+            lesson.due = local_time(config.due[lesson.number], config.zone)
         if lesson.status == "missing":
             continue
-        handed_in = submission_time(Path(folder) / lesson.notebook, folder)
+        notebook = Path(folder) / lesson.notebook
+        handed_in, lesson.submitted_from = recorded_time(notebook, folder), "timestamp.txt"
+        if handed_in is None and not (config is not None and config.ignore_file_times):
+            handed_in, lesson.submitted_from = file_time(notebook), "file time"
         if handed_in is None:
+            lesson.submitted_from = ""
             continue
         lesson.submitted_at = handed_in.astimezone(timezone.utc).isoformat(timespec="seconds")
         if config is not None:
