@@ -139,7 +139,6 @@ def _print_lateness(results):
     warning = copied_times_warning(results)
     if warning:
         print(f"\nWARNING: {warning}")
-        print(f"WARNING: {warning}", file=sys.stderr)
 
 
 def _read_roster(path):

@@ -15,7 +15,7 @@ Only the saved results are read (each lesson records where its time came from an
 Examples
 --------
 >>> copied_times_warning(results)                                                   # doctest: +SKIP
-'lateness comes from the notebooks’ file times (no timestamp.txt) and they look like a copy: lesson 01: ...'
+'late penalties may be wrong. Without timestamp.txt, ... (lesson 01: 4 of 4 students' notebooks modified ...'
 """
 
 from datetime import datetime
@@ -58,11 +58,11 @@ def copy_signs(results):
         late = sum(1 for *_, is_late in entries if is_late)
         found = []
         if bunch >= LEAST and 2 * bunch >= count:
-            found.append(f"{bunch} of {count} students' notebooks were modified within one minute of each other")
+            found.append(f"{bunch} of {count} students' notebooks modified within one minute")
         if count >= 2 and late == count:
-            found.append(f"all {count} students timed by their files are after the due date")
+            found.append(f"all {count} after the due date")
         if found:
-            signs.append(f"lesson {number}: " + " and ".join(found))
+            signs.append(f"lesson {number}: " + ", ".join(found))
     return signs
 
 
@@ -71,8 +71,7 @@ def copied_times_warning(results):
     signs = copy_signs(results)
     if not signs:
         return ""
-    return ("late penalties may be wrong: there is no timestamp.txt, so when a lesson was handed in comes from "
-            "its notebook's modification time, and these times look like a copy (" + "; ".join(signs) + "). "
-            "Copying or downloading a class resets them. Keep the original times (cp -p, rsync -t, the LMS's "
-            f"submission times as timestamp.txt), or grade again with {OPTION} to take no lateness from "
-            "file times.")
+    return ("late penalties may be wrong. Without timestamp.txt, a lesson's hand-in time is its notebook's "
+            "modification time, and these look like a copy (" + "; ".join(signs) + "): copying or downloading a "
+            f"class resets them. Grade again with {OPTION} to take no lateness from file times, or keep the "
+            "original times (cp -p, rsync -t, nbgrader's timestamp.txt).")
