@@ -249,3 +249,25 @@ def test_class_report_sorts_by_score_without_a_server(graded, tmp_path):
     assert list(students) == [r["student_id"] for r in by_score] + ["zoe"]  # highest first, no submission last
     assert list(students) != sorted(students)
     assert heads[1].get("aria-sort") == "descending"
+
+
+def test_notebook_run_sentences_are_grammatical():
+    """Each outcome of the notebook stage is one correct sentence on the feedback page."""
+    from autograder.grading.nbval_stage import not_run_for_lost_points
+    from autograder.grading.results import ExerciseResult, LessonResult, NotebookRun, StudentResult
+    from autograder.reports.feedback import feedback_html
+
+    def lesson(number, run):
+        return LessonResult(number=number, title="", notebook=f"{number}.ipynb", status="graded", run=run,
+                            exercises=[ExerciseResult(name=f"f{number}", lesson=number, max_points=1, points=1)])
+
+    runs = {"01": NotebookRun("passed", 1, 1), "02": NotebookRun("failed", 1, 0, ["cell 4 raised ValueError"]),
+            "03": not_run_for_lost_points(1)}
+    page = feedback_html(StudentResult("ana", "graded", lessons=[lesson(n, r) for n, r in runs.items()]))
+    assert ("Your answers, placed in the reference notebook, ran top to bottom and reproduced its printed "
+            "outputs.") in page
+    assert "Your answers, placed in the reference notebook, did not run cleanly:" in page
+    assert "cell 4 raised ValueError" in page
+    assert "Your answers were not run in the reference notebook:" in page
+    assert "<li>the point needs every exercise of the lesson to pass its hidden checks</li>" in page
+    assert " was not run" not in page and "was run" not in page

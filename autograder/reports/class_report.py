@@ -158,8 +158,8 @@ def class_report_html(results, catalog, title="Class report", skipped=(), linked
     missing = [r for r in results if r.status == MISSING]
     failed = [r for r in results if r.status == COULD_NOT_GRADE]
     parts = [f"<h1>{escape(title)}</h1>",
-             f'<p>{len(results)} students: {len(graded)} graded, {len(failed)} could not be graded, '
-             f'{len(missing)} missing.</p>']
+             f'<p>{len(results)} student{"" if len(results) == 1 else "s"}: {len(graded)} graded, '
+             f'{len(failed)} could not be graded, {len(missing)} missing.</p>']
     limited = [r for r in results if r.isolation == "limits"]
     if limited:
         parts.append(f'<p class="warning"><strong>{len(limited)} of {len(results)} students were graded with '
