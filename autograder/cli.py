@@ -78,19 +78,15 @@ def _cmd_record(args):
     return 0
 
 
-def _late_cell(result):
-    """``01 −20%, 03 −10%``: the lessons a student handed in late and what each cost."""
-    return ", ".join(f"{lesson.number} −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
-                     if lesson.late_penalty)
-
-
 def _print_table(results, problems_shown=3):
     """The gradebook as a table (with a ``late`` column when anyone lost points for lateness); under a
     student graded with problems, the problems themselves.
     Student text is shown escaped, one line each, bounded (autograder/lessons/untrusted_text.py)."""
     ids = [one_line(r.student_id, 40) for r in results]
     width = max([len("student")] + [len(i) for i in ids])
-    late = [_late_cell(r) for r in results]
+    from autograder.reports.lateness import late_summary
+
+    late = [late_summary(r) for r in results]
     late_width = max(len(cell) for cell in late + ["late"]) if any(late) else 0
     header = f"{'late':<{late_width}}  " if late_width else ""
     print(f"{'student':<{width}}  {'score':>13}  {header}status")
@@ -130,12 +126,12 @@ def _print_lateness(results):
     """Under the table: who was late, each lesson's due date (course timezone), and a loud warning when the
     hand-in times are file times that look like a copy (autograder/reports/copied_times.py)."""
     from autograder.reports.copied_times import copied_times_warning
+    from autograder.reports.lateness import due_dates, late_summary
 
-    late = [r for r in results if _late_cell(r)]
-    due = {lesson.number: lesson.due for r in results for lesson in r.lessons if lesson.due}
+    late = [r for r in results if late_summary(r)]
+    due = due_dates(results)
     if due:
-        print("\ndue: " + ", ".join(f"lesson {number} {when}" for number, when in sorted(due.items()))
-              + f"; {len(late)} of {len(results)} students lost points for lateness (column late)")
+        print(f"\ndue: {due}; {len(late)} of {len(results)} students lost points for lateness (column late)")
     warning = copied_times_warning(results)
     if warning:
         print(f"\nWARNING: {warning}")

@@ -24,6 +24,7 @@ from autograder.reports.attention import stage_warnings, worth_a_look  # noqa: E
 from autograder.reports.class_students import STYLE as TABLE_STYLE  # noqa: E402
 from autograder.reports.class_students import students_table_html  # noqa: E402
 from autograder.reports.copied_times import copied_times_warning  # noqa: E402
+from autograder.reports.lateness import due_dates, late_summary  # noqa: E402
 from autograder.reports.not_written import unwritten_functions  # noqa: E402
 from autograder.sandbox.launcher import LIMITS_ONLY_WARNING  # noqa: E402
 
@@ -169,10 +170,9 @@ def class_report_html(results, catalog, title="Class report", skipped=(), linked
     copied = copied_times_warning(results)
     if copied:
         parts.append(f'<p class="warning"><strong>Warning:</strong> {escape(copied)}</p>')
-    due = {lesson.number: lesson.due for r in results for lesson in r.lessons if lesson.due}
+    due = due_dates(results)
     if due:
-        parts.append("<p>Due: " + ", ".join(f"lesson {escape(n)} {escape(when)}" for n, when in sorted(due.items()))
-                     + f". Late: {sum(1 for r in results if any(l.late_penalty for l in r.lessons))} of "
+        parts.append(f"<p>Due: {escape(due)}. Late: {sum(1 for r in results if late_summary(r))} of "
                      f"{len(results)} students.</p>")
     parts.append(_worth_a_look_html(worth_a_look(results)))
     parts.append(students_table_html(results, linked))

@@ -15,6 +15,7 @@ from urllib.parse import quote
 from autograder.grading.results import MISSING
 from autograder.lessons.untrusted_text import html_text as escape
 from autograder.lessons.untrusted_text import safe_name
+from autograder.reports.lateness import late_summary
 
 STYLE = """
 table.sortable th button { font: inherit; font-weight: bold; background: none; border: 0; padding: 0;
@@ -54,11 +55,6 @@ def feedback_link(student_id):
     return f"feedback/{quote(safe_name(student_id))}.html"
 
 
-def _late(result):
-    return ", ".join(f"{lesson.number} −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
-                     if lesson.late_penalty)
-
-
 def _absent(result):
     if result.status == MISSING:
         return "everything"
@@ -82,7 +78,7 @@ def students_table_html(results, linked=frozenset()):
             shown = f'<a href="{escape(feedback_link(result.student_id), 2000)}">{shown}</a>'
         share = 100 * result.score / result.max_score if result.max_score else -1
         score = f"{result.score:g} / {result.max_score:g}" if result.max_score else "—"
-        late, absent = _late(result), _absent(result)
+        late, absent = late_summary(result), _absent(result)
         status = result.status + (f" — {result.reason}" if result.reason else "")
         rows.append("<tr>" + _cell(shown, result.student_id.lower())
                     + _cell(score, result.score if result.max_score else -1, number=True)

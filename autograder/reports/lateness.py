@@ -195,3 +195,16 @@ def apply_late_policy(result, folder, config):
         if config is not None:
             lesson.late_penalty, lesson.late_note = penalty(config, lesson.number, handed_in)
     return result
+
+
+def late_summary(result):
+    """``01 −20%, 03 −10%``: the lessons ``result`` (a StudentResult) handed in late and what each cost."""
+    return ", ".join(f"{lesson.number} −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
+                     if lesson.late_penalty)
+
+
+def due_dates(results):
+    """``lesson 01 2026-12-01 23:59 CET, lesson 03 ...``: the due dates recorded in ``results`` (StudentResults),
+    in the course's timezone; ``""`` when no lesson had one."""
+    due = {lesson.number: lesson.due for result in results for lesson in result.lessons if lesson.due}
+    return ", ".join(f"lesson {number} {when}" for number, when in sorted(due.items()))
