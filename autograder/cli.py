@@ -82,10 +82,10 @@ def _print_table(results, problems_shown=3):
     """The gradebook as a table (with a ``late`` column when anyone lost points for lateness); under a
     student graded with problems, the problems themselves.
     Student text is shown escaped, one line each, bounded (autograder/lessons/untrusted_text.py)."""
-    ids = [one_line(r.student_id, 40) for r in results]
-    width = max([len("student")] + [len(i) for i in ids])
     from autograder.reports.lateness import late_summary
 
+    ids = [one_line(r.student_id, 40) for r in results]
+    width = max([len("student")] + [len(i) for i in ids])
     late = [late_summary(r) for r in results]
     late_width = max(len(cell) for cell in late + ["late"]) if any(late) else 0
     header = f"{'late':<{late_width}}  " if late_width else ""
