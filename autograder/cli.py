@@ -7,9 +7,11 @@ release [--check]
 record [--only NN ...]
     Re-record the demonstration outputs stored in the masters.
 grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE]
-      [--nbgrader-db PATH] [--force] [--student ID ...] [--config course.toml] [--cluster ADDRESS]
+      [--nbgrader-db PATH] [--force] [--student ID ...] [--config course.toml] [--ignore-mtimes]
+      [--cluster ADDRESS]
     Grade every student folder in PATH (or the bundled sample class); with
     --student, re-grade only those. The gradebook never loses a student.
+    --ignore-mtimes: no lateness from file times, only from timestamp.txt.
     Exit status 3 when the canary fails (nothing is written).
 status --out DIR [--roster FILE]
     Who is graded, who could not be graded and why, who is missing; why a
@@ -137,15 +139,22 @@ def _cmd_record(args):
 
 
 def _print_table(results, problems_shown=3):
-    """The gradebook as a table; under a student graded with problems, the problems themselves.
+    """The gradebook as a table (with a ``late`` column when anyone lost points for lateness); under a
+    student graded with problems, the problems themselves.
     Student text is shown escaped, one line each, bounded (autograder/lessons/untrusted_text.py)."""
+    from autograder.reports.lateness import late_summary
+
     ids = [one_line(r.student_id, 40) for r in results]
     width = max([len("student")] + [len(i) for i in ids])
-    print(f"{'student':<{width}}  {'score':>13}  status")
-    for shown_id, r in zip(ids, results):
+    late = [late_summary(r) for r in results]
+    late_width = max(len(cell) for cell in late + ["late"]) if any(late) else 0
+    header = f"{'late':<{late_width}}  " if late_width else ""
+    print(f"{'student':<{width}}  {'score':>13}  {header}status")
+    for shown_id, r, late_cell in zip(ids, results, late):
         score = f"{r.score:g} / {r.max_score:g}" if r.max_score else "—"
         status = one_line(r.status + (f": {r.reason}" if r.reason else ""))
-        print(f"{shown_id:<{width}}  {score:>13}  {status}")
+        late_cell = f"{late_cell:<{late_width}}  " if late_width else ""
+        print(f"{shown_id:<{width}}  {score:>13}  {late_cell}{status}")
         for problem in r.problems[:problems_shown]:
             print(f"{'':<{width}}  {'':>13}    - {one_line(problem, 160)}")
         if len(r.problems) > problems_shown:
@@ -171,6 +180,21 @@ def _print_skipped(ignored, results, shown=20):
                 print(f"  {line}")
             if len(lines) > shown:
                 print(f"  and {len(lines) - shown} more (`status` lists them all)")
+
+
+def _print_lateness(results):
+    """Under the table: who was late, each lesson's due date (course timezone), and a loud warning when the
+    hand-in times are file times that look like a copy (autograder/reports/copied_times.py)."""
+    from autograder.reports.copied_times import copied_times_warning
+    from autograder.reports.lateness import due_dates, late_summary
+
+    late = [r for r in results if late_summary(r)]
+    due = due_dates(results)
+    if due:
+        print(f"\ndue: {due}; {len(late)} of {len(results)} students lost points for lateness (column late)")
+    warning = copied_times_warning(results)
+    if warning:
+        print(f"\nWARNING: {warning}")
 
 
 def _read_roster(path):
@@ -238,6 +262,12 @@ def _cmd_grade(args):
               "every student and reset between students (SECURITY.md, \"Warm slots\"; AUTOGRADER_WARM=0 turns "
               "them off)")
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
+    if args.ignore_mtimes:  # lateness only from timestamp.txt (autograder/reports/copied_times.py)
+        from dataclasses import replace
+
+        from autograder.reports.lateness import CourseConfig
+
+        config = replace(config or CourseConfig(), ignore_file_times=True)
     runner = None
     if args.cluster:  # students become Dask tasks (autograder/integrations/cluster.py, docs/CLUSTER.md)
         from autograder.integrations.cluster import connect
@@ -266,6 +296,7 @@ def _cmd_grade(args):
             runner.close()
     print()
     _print_table(summary.results)
+    _print_lateness(summary.results)
     print()
     reused = f", {len(summary.skipped)} unchanged and reused" if summary.skipped else ""
     print(f"graded {len(summary.graded)} student(s){reused} in {summary.seconds:.1f} s")
@@ -304,6 +335,7 @@ def _cmd_status(args):
         print(f"WARNING: {len(limited)} of {len(results)} students were graded with resource limits only. "
               f"{LIMITS_ONLY_WARNING}\n")
     _print_table(results)
+    _print_lateness(results)
     because = {}
     for student_id in ids:
         saved = load_saved(outputs, student_id)
@@ -466,6 +498,9 @@ def build_parser():
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
     grade.add_argument("--config", metavar="TOML",
                        help="course config with due dates and the late policy (see autograder/reports/lateness.py)")
+    grade.add_argument("--ignore-mtimes", action="store_true",
+                       help="take no hand-in time from the notebooks' modification times (a copy resets them): "
+                            "only nbgrader's timestamp.txt makes a lesson late")
     grade.add_argument("--student", nargs="+", default=(), metavar="ID",
                        help="re-grade only these students; everyone else keeps their saved grade")
     grade.add_argument("--cluster", metavar="ADDRESS",

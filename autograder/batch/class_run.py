@@ -298,6 +298,8 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
         stale.unlink(missing_ok=True)
     if config is not None:
         parts["course config"] = hashlib.sha256(config.source.encode()).hexdigest()[:16]
+        if config.ignore_file_times:
+            parts["file times"] = "ignored (--ignore-mtimes)"
     stamp = Stamp(fingerprint(parts), parts)
     tasks = []
     for student_id, folder in students:
@@ -399,7 +401,8 @@ def write_reports(outputs, student_ids, submitted=None, unsaved=None):
     catalog = load_catalog()
     write_atomically(outputs.gradebook, gradebook_csv(results, catalog, graded_at))
     try:
-        page = class_report_html(results, catalog, skipped=load_skipped(outputs))
+        linked = {r.student_id for r in results if outputs.feedback_html(r.student_id).is_file()}
+        page = class_report_html(results, catalog, skipped=load_skipped(outputs), linked=linked)
     except Exception as error:
         page = plain_page("Class report", results, f"the full report could not be made ({type(error).__name__}: "
                                                    f"{error})")

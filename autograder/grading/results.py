@@ -66,6 +66,8 @@ class LessonResult:
     submitted_at: str = ""  # ISO 8601, UTC: when this notebook was handed in (autograder.reports.lateness)
     late_penalty: float = 0.0  # fraction of the points taken for lateness, 0..1
     late_note: str = ""  # one sentence: when it was due, how late, how much
+    submitted_from: str = ""  # where submitted_at came from: "timestamp.txt" or "file time" (its mtime)
+    due: str = ""  # the due date as people read it, in the course's timezone ("2026-12-01 23:59 CET")
 
     @property
     def raw_points(self):

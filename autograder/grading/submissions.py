@@ -349,20 +349,32 @@ def handed_in_at(notebook, folder):
     >>> handed_in_at(Path("submitted/ana/lesson03/03_exp_and_log.ipynb"), Path("submitted/ana"))  # doctest: +SKIP
     datetime.datetime(2026, 12, 1, 22, 10, 3, tzinfo=datetime.timezone.utc)
     """
+    return nbgrader_timestamp(notebook, folder) or collected_time(notebook)
+
+
+def nbgrader_timestamp(notebook, folder):
+    """The time in ``folder/<assignment>/timestamp.txt`` for a notebook under ``<assignment>/`` (see
+    :func:`handed_in_at`), or ``None`` when there is none, it is not a regular file, or it cannot be read."""
     notebook, folder = Path(notebook), Path(folder)
     try:
         parts = notebook.relative_to(folder).parts
     except ValueError:
-        parts = ()
-    if len(parts) >= 2:
-        stamp = folder / parts[0] / NBGRADER_TIMESTAMP
-        try:
-            if stat.S_ISREG(os.lstat(stamp).st_mode):
-                text = read_regular_file(stamp, 200)[0].decode("utf-8", "replace").strip()[:100]
-                moment = date_parser.parse(text)
-                return moment if moment.tzinfo else moment.replace(tzinfo=timezone.utc)
-        except (OSError, ValueError, OverflowError, UnreadableNotebook):
-            pass  # absent or damaged: the file's own time
+        return None
+    if len(parts) < 2:
+        return None
+    stamp = folder / parts[0] / NBGRADER_TIMESTAMP
+    try:
+        if stat.S_ISREG(os.lstat(stamp).st_mode):
+            text = read_regular_file(stamp, 200)[0].decode("utf-8", "replace").strip()[:100]
+            moment = date_parser.parse(text)
+            return moment if moment.tzinfo else moment.replace(tzinfo=timezone.utc)
+    except (OSError, ValueError, OverflowError, UnreadableNotebook):
+        pass  # absent or damaged: the caller falls back on the file's own time
+    return None
+
+
+def collected_time(notebook):
+    """The modification time of ``notebook`` as collected (aware, UTC), or ``None`` when it cannot be read."""
     try:
         return datetime.fromtimestamp(os.lstat(notebook).st_mtime, tz=timezone.utc)
     except (OSError, ValueError, OverflowError):

@@ -1,8 +1,10 @@
 """The class report: what the class struggled with, at a glance.
 
 One self-contained HTML page (plots embedded as PNG) with the score
-distribution, and per exercise the share of students who earned full marks,
-the mean points, and the most common failed checks with their hints. Student
+distribution, the students (sortable, each linked to their feedback page, with
+late and missing lessons), and per exercise the share of students who earned
+full marks, the mean points, and the most common failed checks with their hints
+(untouched stubs and unreadable notebooks are counted apart from real mistakes). Student
 ids and messages are HTML-escaped and bounded. Students who could not be graded or
 handed in nothing are listed, not averaged in, and so is what the run skipped.
 """
@@ -19,6 +21,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 from autograder.grading.results import COULD_NOT_GRADE, MISSING  # noqa: E402
 from autograder.lessons.untrusted_text import html_text as escape  # noqa: E402
 from autograder.reports.attention import stage_warnings, worth_a_look  # noqa: E402
+from autograder.reports.class_students import STYLE as TABLE_STYLE  # noqa: E402
+from autograder.reports.class_students import students_table_html  # noqa: E402
+from autograder.reports.copied_times import copied_times_warning  # noqa: E402
+from autograder.reports.lateness import due_dates, late_summary  # noqa: E402
+from autograder.reports.not_written import unwritten_functions  # noqa: E402
 from autograder.sandbox.launcher import LIMITS_ONLY_WARNING  # noqa: E402
 
 STYLE = """
@@ -68,16 +75,27 @@ def pass_rate_chart(names, shares):
 
 
 def exercise_summary(graded, catalog):
-    """Per exercise: (exercise, share with full marks, mean points, [(count, description, hint)])."""
+    """Per exercise: (exercise, share with full marks, mean points, [(count, description, hint)],
+    {"stub": students who left it unwritten, "no notebook": students whose notebook was absent or unreadable}).
+
+    The failed checks count real attempts only: a stub or an unreadable notebook fails every check for
+    one reason, counted once in the last item instead."""
     rows = []
     for exercise in catalog.exercises:
-        entries = [e for r in graded for e in r.exercises if e.name == exercise.name]
+        entries = [(e, lesson) for r in graded for lesson in r.lessons for e in lesson.exercises
+                   if e.name == exercise.name]
         if not entries:
             continue
-        full = sum(1 for e in entries if e.points >= e.max_points) / len(entries)
-        mean = sum(e.points for e in entries) / len(entries)
-        reasons = Counter()
-        for entry in entries:
+        full = sum(1 for e, _ in entries if e.points >= e.max_points) / len(entries)
+        mean = sum(e.points for e, _ in entries) / len(entries)
+        reasons, apart = Counter(), Counter()
+        for entry, lesson in entries:
+            if lesson.status != "graded":
+                apart["no notebook"] += 1
+                continue
+            if unwritten_functions(entry):
+                apart["stub"] += 1
+                continue
             seen = set()
             for check in entry.checks:
                 if not check.passed:
@@ -86,7 +104,7 @@ def exercise_summary(graded, catalog):
                         seen.add(key)
                         reasons[key] += 1
         common = [(count, description, hint) for (description, hint), count in reasons.most_common(3)]
-        rows.append((exercise, full, mean, common))
+        rows.append((exercise, full, mean, common, apart))
     return rows
 
 
@@ -127,22 +145,37 @@ def _skipped_html(skipped, results, shown=200):
     return "\n".join(parts)
 
 
-def class_report_html(results, catalog, title="Class report", skipped=()):
+def _not_attempted(apart):
+    parts = ([f"{apart['stub']} left as the stub"] if apart["stub"] else []) + \
+            ([f"{apart['no notebook']} without a readable notebook"] if apart["no notebook"] else [])
+    return ", ".join(parts) or '<span class="muted">none</span>'
+
+
+def class_report_html(results, catalog, title="Class report", skipped=(), linked=frozenset()):
     """The report page for a list of StudentResult; ``skipped``: entries of the submissions folder that
-    are not students (:class:`~autograder.grading.submissions.Skipped`)."""
+    are not students (:class:`~autograder.grading.submissions.Skipped`); ``linked``: the students whose
+    feedback page exists (``feedback/<id>.html`` beside the report), linked from the students' table."""
     graded = [r for r in results if r.status not in (MISSING, COULD_NOT_GRADE)]
     missing = [r for r in results if r.status == MISSING]
     failed = [r for r in results if r.status == COULD_NOT_GRADE]
     parts = [f"<h1>{escape(title)}</h1>",
-             f'<p>{len(results)} students: {len(graded)} graded, {len(failed)} could not be graded, '
-             f'{len(missing)} missing.</p>']
+             f'<p>{len(results)} student{"" if len(results) == 1 else "s"}: {len(graded)} graded, '
+             f'{len(failed)} could not be graded, {len(missing)} missing.</p>']
     limited = [r for r in results if r.isolation == "limits"]
     if limited:
         parts.append(f'<p class="warning"><strong>{len(limited)} of {len(results)} students were graded with '
                      f'resource limits only.</strong> {escape(LIMITS_ONLY_WARNING)}</p>')
     parts += [f'<p class="warning"><strong>Check the grader:</strong> {escape(w.text)}</p>'
               for w in stage_warnings(results)]
+    copied = copied_times_warning(results)
+    if copied:
+        parts.append(f'<p class="warning"><strong>Warning:</strong> {escape(copied)}</p>')
+    due = due_dates(results)
+    if due:
+        parts.append(f"<p>Due: {escape(due)}. Late: {sum(1 for r in results if late_summary(r))} of "
+                     f"{len(results)} students.</p>")
     parts.append(_worth_a_look_html(worth_a_look(results)))
+    parts.append(students_table_html(results, linked))
     if graded:
         percentages = [100 * r.score / r.max_score if r.max_score else 0.0 for r in graded]
         mean = sum(percentages) / len(percentages)
@@ -157,8 +190,8 @@ def class_report_html(results, catalog, title="Class report", skipped=()):
                          f'{pass_rate_chart([e.name for e, *_ in summary], [s for _, s, *_ in summary])}">')
             parts.append("<h2>Exercises</h2><table><tr><th>lesson</th><th>exercise</th>"
                          '<th class="num">full marks</th><th class="num">mean</th>'
-                         "<th>most common failed checks (students)</th></tr>")
-            for exercise, share, mean_points, common in summary:
+                         "<th>most common failed checks (students)</th><th>not attempted (students)</th></tr>")
+            for exercise, share, mean_points, common, apart in summary:
                 reasons = "".join(
                     f"<li>{escape(description)} <span class='muted'>({count})"
                     + (f" — {escape(hint)}" if hint else "") + "</span></li>"
@@ -168,7 +201,7 @@ def class_report_html(results, catalog, title="Class report", skipped=()):
                     f'<td class="num"><span class="bar" style="width:{40 * share:.0f}px"></span> '
                     f"{100 * share:.0f}%</td>"
                     f'<td class="num">{mean_points:.2f} / {exercise.points:g}</td>'
-                    f"<td><ol>{reasons}</ol></td></tr>")
+                    f"<td><ol>{reasons}</ol></td><td>{_not_attempted(apart)}</td></tr>")
             parts.append("</table>")
         runs = {}  # lesson -> statuses of its notebook runs ("passed", "failed", "skipped")
         for r in graded:
@@ -196,4 +229,4 @@ def class_report_html(results, catalog, title="Class report", skipped=()):
     parts.append(_skipped_html(list(skipped), results))
     body = "\n".join(parts)
     return (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{escape(title)}</title>'
-            f"<style>{STYLE}</style></head><body>{body}</body></html>\n")
+            f"<style>{STYLE}{TABLE_STYLE}</style></head><body>{body}</body></html>\n")

@@ -2,13 +2,16 @@
 
 It shows the score per lesson and exercise, every failed check with its
 one-line reason and hint, what the student's code printed (truncated), and
-the notebook stage. It never shows a hidden test's source: only the
+the notebook stage. An exercise left as its stub gets one line, not one per
+check, and so does a notebook that could not be read
+(:mod:`autograder.reports.not_written`). It never shows a hidden test's source: only the
 sentence that describes each check. Everything that came from a student
 (ids, messages, printed text) is HTML-escaped and bounded
 (:func:`~autograder.lessons.untrusted_text.html_text`).
 """
 
 from autograder.lessons.untrusted_text import html_text
+from autograder.reports.not_written import unwritten_functions
 from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
 
 STYLE = """
@@ -41,6 +44,16 @@ def _css_class(points, max_points):
     return "bad" if points <= 0 else "partial"
 
 
+def _plural(count, noun):
+    return f"{count} {noun}" + ("" if count == 1 else "s")
+
+
+def _names(names):
+    """``rot_x``, ``rot_x and rot_y``, ``rot_x, rot_y and rot_z``, as HTML code."""
+    shown = [f"<code>{_e(name)}</code>" for name in names]
+    return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
+
+
 def _exercise_html(exercise):
     klass = _css_class(exercise.points, exercise.max_points)
     parts = [f'<h3 id="{_e(exercise.name)}"><code>{_e(exercise.name)}</code> '
@@ -49,6 +62,14 @@ def _exercise_html(exercise):
         parts.append(f'<p class="note">{_e(note)}</p>')
     failed = [c for c in exercise.checks if not c.passed]
     passed = [c for c in exercise.checks if c.passed]
+    stubs = unwritten_functions(exercise)
+    if stubs:
+        needs = ("" if stubs == [exercise.name] else
+                 f" (it needs {_names(stubs)}, which {'is' if len(stubs) == 1 else 'are'} not written yet)")
+        parts.append(f'<p><span class="bad">✗</span> Not written yet{_e(needs)}: '
+                     f"{_plural(len(failed), 'check')} could not run. Write {_names(stubs)}, "
+                     "then run the check cell under it in your notebook.</p>")
+        failed = []
     if failed:
         items = []
         for check in failed:
@@ -82,21 +103,29 @@ def _lesson_html(lesson):
         parts.append(f'<p class="note">Late: {_e(lesson.late_note)}. Points before the penalty: '
                      f'{_points(lesson.raw_points, lesson.max_points)}.</p>')
     if lesson.status == "missing":
-        return "\n".join(parts[:1] + [f'<p class="note">{_e(lesson.reason)}: its {len(lesson.exercises)} '
-                                      "exercises were not graded.</p>"])
-    if lesson.status != "graded":
-        parts.append(f'<p class="note">This notebook could not be graded: {_e(lesson.reason)}</p>')
+        return "\n".join(parts[:1] + [f'<p class="note">{_e(lesson.reason)}: its '
+                                      f"{_plural(len(lesson.exercises), 'exercise')} earned no points.</p>"])
+    if lesson.status != "graded":  # one line: each check would only repeat why the notebook could not be read
+        names = [e.name for e in lesson.exercises]
+        parts.append(f'<p class="note"><span class="bad">✗</span> This notebook could not be graded, so its '
+                     f"{_plural(len(names), 'exercise')} ({_names(names)}) earned no points: {_e(lesson.reason)}. "
+                     "Hand in a copy that opens in JupyterLab; if yours no longer opens, copy your answers into "
+                     "a fresh copy of the lesson's notebook.</p>")
+        return "\n".join(parts)
     for exercise in lesson.exercises:
         parts.append(_exercise_html(exercise))
     if lesson.run is not None:
         run = lesson.run
-        verdict = {"passed": "ran top to bottom and reproduced the reference outputs",
-                   "failed": "did not run cleanly", "skipped": "was not run"}.get(run.status, run.status)
+        verdict = {"passed": "Your answers, placed in the reference notebook, ran top to bottom and reproduced "
+                             "its printed outputs.",
+                   "failed": "Your answers, placed in the reference notebook, did not run cleanly:",
+                   "skipped": "Your answers were not run in the reference notebook:"}.get(run.status, run.status)
         parts.append(f"<h3>Notebook run <span class=\"{_css_class(run.points, run.max_points)}\">"
                      f"{_points(run.points, run.max_points)}</span></h3>"
-                     f"<p>Your answers, placed in the reference notebook, {_e(verdict)}.</p>")
+                     f"<p>{_e(verdict)}</p>")
         if run.failures:
-            parts.append('<ul class="checks">' + "".join(f"<li>{_e(f)}</li>" for f in run.failures) + "</ul>")
+            failures = [f.removeprefix("not run: ") for f in run.failures]  # the sentence above says it
+            parts.append('<ul class="checks">' + "".join(f"<li>{_e(f)}</li>" for f in failures) + "</ul>")
     return "\n".join(parts)
 
 

@@ -16,8 +16,13 @@ The config is TOML (``grade --config course.toml``); everything in it is optiona
 When a lesson was handed in comes from one trusted source: nbgrader's
 ``timestamp.txt`` at the top of the submission (``<student>/<assignment>/``),
 else the notebook file's modification time as collected; never a file inside
-the student's own folders (:func:`~autograder.grading.submissions.handed_in_at`). The raw points are kept beside the
-penalised ones (:class:`~autograder.grading.results.LessonResult`).
+the student's own folders (:func:`~autograder.grading.submissions.handed_in_at`).
+``grade --ignore-mtimes`` takes no time from files
+(:attr:`CourseConfig.ignore_file_times`), since copying or downloading a class
+resets them (:mod:`autograder.reports.copied_times` warns when they look like
+that). The raw points are kept beside the penalised ones
+(:class:`~autograder.grading.results.LessonResult`). Due dates and hand-in times
+are written in the course's timezone.
 
 Examples
 --------
@@ -36,7 +41,7 @@ from datetime import date, datetime, time, timezone
 from pathlib import Path
 from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 
-from autograder.grading.submissions import handed_in_at
+from autograder.grading.submissions import collected_time, handed_in_at, nbgrader_timestamp
 
 POLICY_KEYS = ("grace_minutes", "penalty_per_day", "max_penalty")
 # The config's schema: the keys each table may hold (values are checked where they are read).
@@ -61,6 +66,8 @@ class CourseConfig:
     policies: dict = field(default_factory=dict)  # lesson number -> LatePolicy
     default_policy: LatePolicy = LatePolicy()
     source: str = ""  # the file's text (part of the grader's fingerprint)
+    zone: ZoneInfo = ZoneInfo("UTC")  # the course's timezone: due dates and hand-in times are shown in it
+    ignore_file_times: bool = False  # grade --ignore-mtimes: no lateness from the notebooks' file times
 
     def policy(self, lesson):
         return self.policies.get(lesson, self.default_policy)
@@ -151,7 +158,7 @@ def parse_config(text, name="course config", lessons=None):
             due[number] = _aware(table["due"], zone, where)
         if any(key in table for key in POLICY_KEYS):
             policies[number] = _policy(table, default, where)
-    return CourseConfig(due=due, policies=policies, default_policy=default, source=text)
+    return CourseConfig(due=due, policies=policies, default_policy=default, source=text, zone=zone)
 
 
 def load_config(path):
@@ -169,6 +176,16 @@ def submission_time(notebook, folder):
     return handed_in_at(notebook, folder)
 
 
+def recorded_time(notebook, folder):
+    """The time nbgrader recorded for ``notebook`` (``<student>/<assignment>/timestamp.txt``), or None."""
+    return nbgrader_timestamp(notebook, folder)
+
+
+def file_time(notebook):
+    """The modification time of ``notebook`` as collected (aware, UTC), or None when it cannot be read."""
+    return collected_time(notebook)
+
+
 def _span(seconds):
     days, rest = divmod(int(seconds), 86400)
     hours, rest = divmod(rest, 3600)
@@ -176,8 +193,9 @@ def _span(seconds):
     return " ".join(parts) or f"{max(1, rest // 60)} min"
 
 
-def _utc(moment):
-    return moment.astimezone(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+def local_time(moment, zone):
+    """``moment`` as people read it in the course's timezone ``zone``: ``2026-12-01 23:59 CET``."""
+    return moment.astimezone(zone).strftime("%Y-%m-%d %H:%M %Z")
 
 
 def penalty(config, lesson, handed_in):
@@ -191,19 +209,40 @@ def penalty(config, lesson, handed_in):
         return 0.0, ""
     days = math.ceil(late / 86400)
     fraction = round(min(policy.max_penalty, days * policy.penalty_per_day), 4)
-    return fraction, (f"handed in {_utc(handed_in)}, {_span(late)} after the due date ({_utc(due)}): "
+    return fraction, (f"handed in {local_time(handed_in, config.zone)}, {_span(late)} after the due date "
+                      f"({local_time(due, config.zone)}): "
                       f"{days} day{'s' if days != 1 else ''} late, −{100 * fraction:g}%")
 
 
 def apply_late_policy(result, folder, config):
-    """Record when each lesson was handed in and, past its due date, the penalty (in place)."""
+    """Record when each lesson was handed in, where that time came from, its due date and, past it, the
+    penalty (in place)."""
     for lesson in result.lessons:
+        if config is not None and lesson.number in config.due:
+            lesson.due = local_time(config.due[lesson.number], config.zone)
         if lesson.status == "missing":
             continue
-        handed_in = submission_time(Path(folder) / lesson.notebook, folder)
+        notebook = Path(folder) / lesson.notebook
+        handed_in, lesson.submitted_from = recorded_time(notebook, folder), "timestamp.txt"
+        if handed_in is None and not (config is not None and config.ignore_file_times):
+            handed_in, lesson.submitted_from = file_time(notebook), "file time"
         if handed_in is None:
+            lesson.submitted_from = ""
             continue
         lesson.submitted_at = handed_in.astimezone(timezone.utc).isoformat(timespec="seconds")
         if config is not None:
             lesson.late_penalty, lesson.late_note = penalty(config, lesson.number, handed_in)
     return result
+
+
+def late_summary(result):
+    """``01 −20%, 03 −10%``: the lessons ``result`` (a StudentResult) handed in late and what each cost."""
+    return ", ".join(f"{lesson.number} −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
+                     if lesson.late_penalty)
+
+
+def due_dates(results):
+    """``lesson 01 2026-12-01 23:59 CET, lesson 03 ...``: the due dates recorded in ``results`` (StudentResults),
+    in the course's timezone; ``""`` when no lesson had one."""
+    due = {lesson.number: lesson.due for result in results for lesson in result.lessons if lesson.due}
+    return ", ".join(f"lesson {number} {when}" for number, when in sorted(due.items()))
