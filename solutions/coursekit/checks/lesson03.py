@@ -344,9 +344,8 @@ def _(exp_so3):
 
 
 # ---------------------------------------------------------------- log_so3
-COLUMN_HINT = ("near π the axis comes from a column of B = (R + Rᵀ)/2 - cos θ I = (1 - cos θ) u uᵀ, and a fixed "
-               "column is zero (or all rounding) when u is nearly perpendicular to its axis: take the column with "
-               "the largest diagonal entry")
+COLUMN_HINT = ("near π take the axis from the column of B = (R + Rᵀ)/2 - cos θ I with the largest diagonal entry: "
+               "a fixed column of B = (1 - cos θ) u uᵀ is zero when u is nearly perpendicular to its axis")
 
 
 def _symmetric_part(R):
