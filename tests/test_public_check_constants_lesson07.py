@@ -117,6 +117,7 @@ def test_transform_points_slips():
     for (value, *_), c in zip(checks.TRANSFORM_SLIPS, computed):
         same(value, c)
     assert len(checks.TRANSFORM_SLIPS) == len(computed)
+    same(checks.COLUMNS_SLIP[0], R @ P + t[:, None])
 
 
 def test_homogeneous_slips():

@@ -15,6 +15,7 @@ as inputs (compared with the same function's answer for arrays).
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit.checks.lesson01 import SQUARE_BATCH_HINT
 from coursekit.diagnose import close
 
 from autograder.sandbox.session import StudentError
@@ -304,9 +305,14 @@ def test_rotate_point_single(student):
 
 @exercise("rotate_point", weight=2)
 def test_rotate_point_batch(student):
-    """rotates N points given as rows, shape (N, 3)"""
+    """rotates N points given as rows, shape (N, 3), for N = 7 and for N = 3 (a square batch)"""
     R = random_rotations(1, seed=133)[0]
-    P = np.random.default_rng(134).normal(size=(7, 3))
+    for count in (7, 3):
+        _rotate_rows(student, R, np.random.default_rng(134 + count).normal(size=(count, 3)))
+
+
+def _rotate_rows(student, R, P):
+    count = len(P)
     try:
         value = student.rotate_point(R, P)
     except StudentError as error:
@@ -319,11 +325,11 @@ def test_rotate_point_batch(student):
             hint = "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T"
         else:
             hint = "the points are the rows of P: P @ R.T rotates each of them"
-        raise Wrong(f"rotate_point(R, P) for 7 points: {error}", hint) from None
-    got = expect_array(value, (7, 3), "rotate_point(R, P) for 7 points")
+        raise Wrong(f"rotate_point(R, P) for {count} points: {error}", hint) from None
+    got = expect_array(value, (count, 3), f"rotate_point(R, P) for {count} points")
     hint = _first_match(got, [(P @ R, "looks like P @ R, which rotates each row by R.T (the inverse): for rows use "
-                                      "P @ R.T")])
-    expect_close(got, (R @ P.T).T, TOL, "rotate_point(R, P) for 7 points", hint)
+                                      "P @ R.T")] + ([(R @ P, SQUARE_BATCH_HINT)] if count == 3 else []))
+    expect_close(got, (R @ P.T).T, TOL, f"rotate_point(R, P) for {count} points", hint)
 
 
 @exercise("rotate_point", weight=1)

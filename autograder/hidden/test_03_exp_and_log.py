@@ -24,7 +24,7 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
-from coursekit.checks.lesson03 import REAL_AXIS_HINT, vee_hint
+from coursekit.checks.lesson03 import COLUMN_HINT, REAL_AXIS_HINT, column_logs, vee_hint, weak_column
 from coursekit.diagnose import explains
 
 from .properties import angle_text, decade_vectors, expect_within, for_all, given_forms, rotation_vectors
@@ -374,6 +374,8 @@ def _log_hint(got, R, expected):
                     "by rounding, and arccos of it is NaN: clip it first (or use atan2)")
         if angle < 1e-3:
             return "NaN or inf at θ = 0: θ/sin θ is 0/0 there; use its series 1 + θ²/6 (or return 0) for tiny θ"
+        if angle > 3.0 and weak_column(R):
+            return COLUMN_HINT
         if angle > 3.0:
             return "NaN or inf near θ = π, where sin θ → 0: the log needs a branch there, with the axis from (R + Rᵀ)/2"
         return "NaN or inf: look for a division by zero or an arccos outside [-1, 1]"
@@ -397,6 +399,8 @@ def _log_hint(got, R, expected):
             angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
                 "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ")
+    if angle > 3.0 and any(explains(got, candidate, expected) for candidate in column_logs(R, theta, a)):
+        return COLUMN_HINT
     if angle > 3.0:
         return "the log is off near π: take the axis from the symmetric part (R + Rᵀ)/2 there, and its sign from R - Rᵀ"
     return "w = θ a/|a| with a = vee(R - Rᵀ)/2 and θ = atan2(|a|, (tr R - 1)/2)"

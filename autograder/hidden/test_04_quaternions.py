@@ -86,6 +86,8 @@ PRODUCT_HINTS = {
     "no_cross": "the cross product is missing: the vector part is p_w q_v + q_w p_v + p_v × q_v",
     "dot_plus": "the scalar part is p_w q_w - p_v · q_v (minus the dot product)",
     "elementwise": "multiplied entry by entry: every component of p ⊗ q mixes all four components of p and q",
+    "normalised": "the product is divided by its norm: p ⊗ q of quaternions that are not unit has norm |p| |q|; "
+                  "return the product itself",
 }
 PRODUCT_GENERIC = "compare each of the 16 terms with p ⊗ q = [p_w q_w - p_v · q_v, p_w q_v + q_w p_v + p_v × q_v]"
 
@@ -97,7 +99,8 @@ def product_hint(got, p, q, ref, tol, up_to_sign=False):
     candidates = {"swapped": np.asarray(ref.quat_multiply(q, p), dtype=float),
                   "no_cross": exact - np.concatenate([[0.0], np.cross(p[1:], q[1:])]),
                   "dot_plus": exact + np.concatenate([[2.0 * (p[1:] @ q[1:])], np.zeros(3)]),
-                  "elementwise": p * q}
+                  "elementwise": p * q,
+                  "normalised": exact / np.linalg.norm(exact)}
     same = same_rotation_quat if up_to_sign else close
     matches = [key for key, value in candidates.items() if not close(value, exact, tol) and same(got, value, tol)]
     return PRODUCT_HINTS[matches[0]] if len(matches) == 1 else PRODUCT_GENERIC

@@ -161,9 +161,10 @@ def _angles_hint(got, R):
 ANGLES_GENERAL_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
                        "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
 
-NO_LOCK_BRANCH_HINT = ("no separate gimbal-lock branch: at |pitch| = π/2 the entries R[0, 0], R[1, 0], R[2, 1], "
-                       "R[2, 2] are rounding noise, so atan2 of them is arbitrary; there set roll = 0 and "
-                       "yaw = atan2(-R[0, 1], R[1, 1])")
+NO_LOCK_BRANCH_HINT = ("no separate gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 the "
+                       "entries R[0, 0], R[1, 0], R[2, 1], R[2, 2] are rounding noise (about 1e-16, seldom exactly 0), "
+                       "so atan2 of them is arbitrary; call it locked when cos(pitch) < about 1e-12, and there set "
+                       "roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
 ASIN_HINT = ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by √(2ε)): "
              "get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
 
@@ -415,8 +416,9 @@ def test_euler_zyx_to_quat_unit_and_lock(student):
 QUAT_ASIN_HINT = ("the lecture's formulas lose digits next to the lock: asin(2(wy - xz)) near ±1, and the atan2 "
                   "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums (w ± y, x + z, z - x) "
                   "and atan2")
-QUAT_NO_LOCK_HINT = ("no gimbal-lock branch: at |pitch| = π/2 both arguments of the atan2 formulas for yaw and roll "
-                     "are rounding noise; there set roll = 0 and give the whole turn to yaw")
+QUAT_NO_LOCK_HINT = ("no gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 both arguments "
+                     "of the atan2 formulas for yaw and roll are rounding noise (about 1e-16, seldom exactly 0); "
+                     "call it locked below about 1e-12, and there set roll = 0 and give the whole turn to yaw")
 
 
 def _lecture_angles(q, normalise=True):

@@ -134,7 +134,9 @@ def _boxplus_hint(got, R, d, right, fallback=""):
                       ((np.eye(3) + _skew(d)) @ R, "that is (I + [δ]×) R, only the first-order approximation "
                        "and not a rotation: use Exp(δ) @ R"),
                       (_exp(-d) @ R, "turned by -δ: check the sign (Exp(δ) @ R, not Exp(δ)ᵀ @ R)"),
-                      (_exp(d) @ R.T, "that is Exp(δ) Rᵀ: R got transposed; boxplus_left is Exp(δ) @ R")]
+                      (_exp(d) @ R.T, "that is Exp(δ) Rᵀ: R got transposed; boxplus_left is Exp(δ) @ R"),
+                      (R @ _exp(R @ d), "that is R Exp(R δ): with R first the left perturbation is R Exp(Rᵀ δ) "
+                       "(Rᵀ, not R: R Exp(v) Rᵀ = Exp(R v)); or simply Exp(δ) @ R")]
     candidates.append((R + _skew(d), "that is R + [δ]×: rotations do not add, the sum is not a rotation; "
                        "compose with Exp(δ) instead"))
     return _diagnose(got, truth, candidates, fallback)

@@ -21,7 +21,8 @@ from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
-from coursekit.diagnose import as_float_array
+from coursekit.checks.lesson01 import SQUARE_BATCH_HINT
+from coursekit.diagnose import as_float_array, close
 
 from .properties import (GENERIC_AXIS, as_given, decade_edges, expect_within, for_all, points,
                          rotation_vectors)
@@ -349,12 +350,14 @@ def _transform_hint(got, T, P):
 
 @exercise("transform_points", weight=3)
 def test_transform_points_rows(student):
-    """p_a = R_ab p_b + t_ab for N points as rows, shape (N, 3)"""
+    """p_a = R_ab p_b + t_ab for N points as rows, shape (N, 3), N = 9 and N = 3 (a square batch)"""
     rng = np.random.default_rng(751)
-    for T in _random_poses(8, seed=752):
-        P = rng.normal(size=(9, 3)) * 3.0
-        got = expect_array(student.transform_points(T, P), (9, 3), "transform_points(T, P) for 9 points")
-        expect_close(got, P @ T[:3, :3].T + T[:3, 3], TOL, "transform_points(T, P)", _transform_hint(got, T, P))
+    for count, T in zip([9, 3] * 4, _random_poses(8, seed=752)):
+        P = rng.normal(size=(count, 3)) * 3.0
+        got = expect_array(student.transform_points(T, P), (count, 3), f"transform_points(T, P) for {count} points")
+        as_columns = count == 3 and close(got, T[:3, :3] @ P + T[:3, 3:], 1e-6)   # the points taken as columns
+        hint = SQUARE_BATCH_HINT if as_columns else _transform_hint(got, T, P)
+        expect_close(got, P @ T[:3, :3].T + T[:3, 3], TOL, "transform_points(T, P)", hint)
 
 
 @exercise("transform_points", weight=1)

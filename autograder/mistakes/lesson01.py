@@ -55,6 +55,15 @@ def rotate_point(R_wb, p_b):
     p_b = np.asarray(p_b, dtype=float)
     return R_wb @ p_b
 ''', hint='works for one point', public_hint='works for one point'),
+    Mistake("rotate_point_square_batch_as_columns", "rotate_point",
+            "tells one point from a batch by shape[0] == 3, so a batch of 3 points is read as columns", '''
+def rotate_point(R_wb, p_b):
+    R_wb = np.asarray(R_wb, dtype=float)
+    p_b = np.asarray(p_b, dtype=float)
+    if p_b.shape[0] == 3:
+        return R_wb @ p_b
+    return p_b @ R_wb.T
+''', hint="read as 3 columns", public_hint="read as 3 columns"),
     Mistake("compose_reversed", "compose", "multiplies in the wrong order", '''
 def compose(R_ab, R_bc):
     return np.asarray(R_bc, dtype=float) @ np.asarray(R_ab, dtype=float)

@@ -293,6 +293,26 @@ def axis_from_eigen(R):
     values, vectors = np.linalg.eigh(np.asarray(R, dtype=float))
     return vectors[:, int(np.argmin(np.abs(values - 1.0)))]
 ''', hint="eigh assumes", public_hint="eigh assumes"),
+    Mistake('log_so3_pi_branch_fixed_column', 'log_so3',
+            'has the near-π branch, but always takes column 0 of (R + Rᵀ)/2 - cos θ I for the axis', '''
+def log_so3(R):
+    R = np.asarray(R, dtype=float)
+    a = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])   # sin θ · u
+    s = np.sqrt(a @ a)                                                              # sin θ
+    c = 0.5 * (np.trace(R) - 1.0)                                                   # cos θ
+    theta = np.arctan2(s, c)
+    if c > 0.0:                                   # θ < π/2: the antisymmetric part is reliable
+        if s == 0.0:
+            return np.zeros(3)
+        return (theta / s) * a
+    B = 0.5 * (R + R.T) - c * np.eye(3)            # (1 - cos θ) u uᵀ
+    j = 0
+    u = B[:, j] / np.sqrt(B[:, j] @ B[:, j])       # ± u
+    if u @ a < 0.0:
+        u = -u
+    return theta * u
+''',
+            hint='largest diagonal entry', public_hint='largest diagonal entry'),
 ]
 
 ALTERNATIVES = [

@@ -308,6 +308,15 @@ def quat_slerp(q0, q1, t):
     with np.errstate(invalid="ignore", divide="ignore"):
         return (np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega)
 ''', hint="when sin Ω is tiny", public_hint="when sin Ω is tiny"),
+    Mistake('quat_multiply_normalised', 'quat_multiply',
+            'normalises the product (right for unit quaternions only)', '''
+def quat_multiply(p, q):
+    p = np.asarray(p, dtype=float)
+    q = np.asarray(q, dtype=float)
+    r = np.concatenate([[p[0] * q[0] - p[1:] @ q[1:]], p[0] * q[1:] + q[0] * p[1:] + np.cross(p[1:], q[1:])])
+    return r / np.linalg.norm(r)
+''',
+            hint='divided by its norm', public_hint='divided by its norm'),
 ]
 
 ALTERNATIVES = [

@@ -183,6 +183,28 @@ def euler_rates_matrix(pitch, roll):
 def euler_rates_matrix(pitch, roll):
     return np.eye(3)
 ''', hint='Euler-angle rates as body rates', public_hint='Euler-angle rates as body rates'),
+    Mistake('matrix_to_euler_lock_test_too_strict', 'matrix_to_euler_zyx',
+            'has a gimbal-lock branch, but tests cos(pitch) == 0, which rounding seldom gives', '''
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+
+    def half_open(angle):
+        # atan2 may return -π; the course's range is (-π, π].
+        return float(angle + 2 * np.pi) if angle <= -np.pi else float(angle)
+
+    # cos(pitch) is the length of (R00, R10) and also of (R21, R22): average both.
+    cos_pitch = np.sqrt(0.5 * (R[0, 0] ** 2 + R[1, 0] ** 2 + R[2, 1] ** 2 + R[2, 2] ** 2))
+    pitch = np.arctan2(-R[2, 0], cos_pitch)          # never nan, accurate next to ±π/2
+    if cos_pitch == 0.0:
+        # Gimbal lock: roll = 0, and R = Rz(yaw) Ry(±π/2) has middle column (-sin yaw, cos yaw, 0).
+        return half_open(np.arctan2(-R[0, 1], R[1, 1])), float(pitch), 0.0
+    yaw = np.arctan2(R[1, 0], R[0, 0])
+    # Undo the yaw: Rz(yaw)ᵀ R = Ry(pitch) Rx(roll), whose middle row is (0, cos roll, -sin roll).
+    c, s = np.cos(yaw), np.sin(yaw)
+    roll = np.arctan2(s * R[0, 2] - c * R[1, 2], c * R[1, 1] - s * R[0, 1])
+    return half_open(yaw), float(pitch), half_open(roll)
+''',
+            hint='no separate gimbal-lock branch, or a lock test too strict', public_hint='no separate gimbal-lock branch, or a lock test too strict'),
 ]
 
 ALTERNATIVES = [

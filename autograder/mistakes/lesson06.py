@@ -242,6 +242,13 @@ def right_jacobian_inv_so3(w):
 def right_jacobian_inv_so3(w):
     return np.eye(3) + 0.5 * skew(w)
 ''', hint='only the first-order part', public_hint='only the first-order part'),
+    Mistake('boxplus_left_adjoint_with_R', 'boxplus_left',
+            'moves Exp(δ) to the right of R with R δ instead of Rᵀ δ', '''
+def boxplus_left(R, d):
+    R = np.asarray(R, dtype=float)
+    return R @ Exp(R @ np.asarray(d, dtype=float))
+''',
+            hint='R Exp(R δ)', public_hint='Rᵀ, not R'),
 ]
 
 ALTERNATIVES = [

@@ -43,6 +43,15 @@ def transform_points(T, P):
     moved = P_h @ T
     return moved[..., :3] / moved[..., 3:]
 ''', hint='P_h @ T.T', public_hint='P_h @ T.T'),
+    Mistake("transform_points_square_batch_as_columns", "transform_points",
+            "tells one point from a batch by shape[0] == 3, so a batch of 3 points is read as columns", '''
+def transform_points(T, P):
+    T = np.asarray(T, dtype=float)
+    P = np.asarray(P, dtype=float)
+    if P.shape[0] == 3:
+        return T[:3, :3] @ P + (T[:3, 3:] if P.ndim == 2 else T[:3, 3])
+    return P @ T[:3, :3].T + T[:3, 3]
+''', hint="read as 3 columns", public_hint="read as 3 columns"),
     Mistake("transform_points_no_translation", "transform_points", "rotates the points but forgets the shift", '''
 def transform_points(T, P):
     T = np.asarray(T, dtype=float)

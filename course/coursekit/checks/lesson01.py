@@ -192,6 +192,21 @@ def _(rotate_point):
                        "for rows, use P @ R.T (each row p becomes (R p)ᵀ = pᵀ Rᵀ)")
 
 
+SQUARE_BATCH_HINT = ("a batch of 3 points, shape (3, 3), was read as 3 columns: tell one point from a batch by "
+                     "p.ndim (1 or 2), never by shape[0] == 3; P @ R.T handles both")
+
+
+@public_check("rotate_point", "reads a batch of exactly 3 points (shape (3, 3)) as rows too")
+def _(rotate_point):
+    points = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [1.0, 1.0, 3.0]])
+    got = require_shape(rotate_point(QUARTER_TURN_Z, points), (3, 3))
+    one_by_one = np.array([QUARTER_TURN_Z @ p for p in points])
+    if not close(got, one_by_one, 1e-9):
+        hint = SQUARE_BATCH_HINT if close(got, QUARTER_TURN_Z @ points, 1e-9) else \
+            "for rows, use P @ R.T (each row p becomes (R p)ᵀ = pᵀ Rᵀ)"
+        raise Mismatch(f"the 3 rows do not match rotating each point on its own ({off_by(got, one_by_one)})", hint)
+
+
 @public_check("rotate_point", "accepts plain lists")
 def _(rotate_point):
     require_same_with_lists(rotate_point, (QUARTER_TURN_X, [0.5, -1.0, 2.0]), (3,), "rotate_point")

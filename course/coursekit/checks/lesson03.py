@@ -349,6 +349,34 @@ def _(exp_so3):
 
 
 # ---------------------------------------------------------------- log_so3
+COLUMN_HINT = ("near π take the axis from the column of B = (R + Rᵀ)/2 - cos θ I with the largest diagonal entry: "
+               "a fixed column of B = (1 - cos θ) u uᵀ is zero when u is nearly perpendicular to its axis")
+
+
+def _symmetric_part(R):
+    """B = (R + Rᵀ)/2 - cos θ I = (1 - cos θ) u uᵀ."""
+    R = np.asarray(R, dtype=float)
+    return 0.5 * (R + R.T) - 0.5 * (np.trace(R) - 1.0) * np.eye(3)
+
+
+def weak_column(R):
+    """Some column of B is (nearly) zero: a branch that always takes it divides by ~0 there."""
+    diagonal = np.diag(_symmetric_part(R))
+    return float(np.min(diagonal)) <= 1e-8 * float(np.max(diagonal))
+
+
+def column_logs(R, theta, a):
+    """θ u with u from a fixed column j = 0, 1, 2 of B (signed by a): what a near-π branch without argmax gives."""
+    B = _symmetric_part(R)
+    logs = []
+    for j in range(3):
+        norm = np.sqrt(B[:, j] @ B[:, j])
+        if norm > 0.0 and j != int(np.argmax(np.diag(B))):
+            u = B[:, j] / norm
+            logs.append(theta * (-u if u @ a < 0.0 else u))
+    return logs
+
+
 def _log_hint(got, R, expected, slips):
     """The slip behind a wrong log_so3(R) = ``got``; ``slips`` holds what each slip returns for this R."""
     got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
@@ -358,6 +386,8 @@ def _log_hint(got, R, expected, slips):
             return "NaN: (tr R - 1)/2 is just outside [-1, 1] by rounding, and arccos of it is NaN: clip it first"
         if angle < 1e-3:
             return "NaN or inf at θ = 0: θ/sin θ is 0/0 there; use its series 1 + θ²/6 (or return 0) for tiny θ"
+        if angle > 3.0 and weak_column(R):
+            return COLUMN_HINT
         return "NaN or inf near θ = π, where sin θ → 0: the log needs a branch there, with the axis from (R + Rᵀ)/2"
     if angle == 0.0:
         return "the identity's log is the zero vector"
@@ -379,6 +409,9 @@ def _log_hint(got, R, expected, slips):
             angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
                 "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ")
+    if angle > 3.0 and any(explains(got, candidate, expected)
+                           for candidate in column_logs(R, angle, expected * np.sin(angle) / angle)):
+        return COLUMN_HINT
     if angle > 3.0:
         return "the log is off near π: take the axis from the symmetric part (R + Rᵀ)/2 there, and its sign from R - Rᵀ"
     return "w = θ a/|a| with a = vee(R - Rᵀ)/2 and θ = atan2(|a|, (tr R - 1)/2)"

@@ -148,7 +148,27 @@ def _(boxplus_left):
         raise Mismatch("turned about the body's z axis instead of the world z axis",
                        "that is the right perturbation R Exp(δ); the left one is Exp(δ) @ R")
     raise Mismatch(f"the body z axis went to {fmt(got[:, 2])}, expected [1, 0, 0] ({off_by(got, expected)} overall)",
-                   _boxplus_hint(got, LEFT_SLIPS_AT_QUARTER, "the left perturbation is Exp(δ) @ R"))
+                   _left_hint_confirmed(boxplus_left, got))
+
+
+_LEFT_GENERIC_HINT = ("the left perturbation is Exp(δ) @ R; written with R first it is R @ Exp(Rᵀ δ) (Rᵀ, not R: "
+                      "R Exp(v) Rᵀ = Exp(R v))")
+
+
+def _left_hint_confirmed(boxplus_left, got_at_quarter):
+    """The slip's hint only when the generic sample (R_SAMPLE, D_SAMPLE) shows the same slip: at the quarter turns
+    some other mistakes coincide with a slip (R Exp(R δ) equals Exp(-δ) R there, since R² δ = -δ)."""
+    at_quarter = _boxplus_hint(got_at_quarter, LEFT_SLIPS_AT_QUARTER)
+    at_sample = _boxplus_hint(require_shape(boxplus_left(R_SAMPLE, D_SAMPLE), (3, 3)), LEFT_SLIPS_AT_SAMPLE)
+    return at_quarter if at_quarter is not None and at_quarter == at_sample else _LEFT_GENERIC_HINT
+
+
+@public_check("boxplus_left", "equals Exp(δ) @ R for a generic R and δ (no special axes)")
+def _(boxplus_left):
+    got = require_shape(boxplus_left(R_SAMPLE, D_SAMPLE), (3, 3))
+    if not close(got, EXP_D_R_AT_SAMPLE, 1e-12):
+        raise Mismatch(f"boxplus_left(R, δ) is {off_by(got, EXP_D_R_AT_SAMPLE)} from Exp(δ) R",
+                       _boxplus_hint(got, LEFT_SLIPS_AT_SAMPLE, _LEFT_GENERIC_HINT))
 
 
 # ---------------------------------------------------------------- boxminus

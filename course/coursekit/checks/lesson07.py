@@ -13,6 +13,7 @@ from ..checking import Mismatch, public_check
 from ..diagnose import close
 from ..lie import Exp
 from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape  # noqa: F401
+from .lesson01 import SQUARE_BATCH_HINT
 
 # A quarter turn about z (x goes to y) followed by a shift of (1, 2, 3) m, written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -167,7 +168,7 @@ def _(transform_points):
     expected = np.array([[1.0, 3.0, 3.0], [1.0, 2.0, 3.0], [-1.0, 2.0, 2.0]])
     if close(got, expected, 1e-12):
         return
-    found = _transform_mistake(got, TRANSFORM_SLIPS)
+    found = _transform_mistake(got, TRANSFORM_SLIPS + [COLUMNS_SLIP])
     if found:
         raise Mismatch(*found)
     raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)} ({off_by(got, expected)})",
@@ -188,6 +189,9 @@ TRANSFORM_SLIPS = [
     ([[-2.0, 2.0, 3.0], [-2.0, 1.0, 3.0], [-4.0, 1.0, 2.0]],           # R (p + t)
      "the points were shifted, then turned", "rotate first, then shift: R p + t"),
 ]
+# R P + t, the points taken as columns: a batch of 3 points is square, and shape[0] == 3 does not tell it from one point
+COLUMNS_SLIP = ([[1.0, 1.0, 1.0], [3.0, 2.0, 2.0], [3.0, 5.0, 2.0]], "the 3 points (shape (3, 3)) were read as columns",
+                SQUARE_BATCH_HINT)
 
 
 def _transform_mistake(got, slips, row=None):

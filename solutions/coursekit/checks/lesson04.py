@@ -42,6 +42,8 @@ NO_CROSS_HINT = ("your product is commutative (p ⊗ q = q ⊗ p for every pair 
                  "from the vector part p_w q_v + q_w p_v + p_v × q_v")
 DOT_PLUS_HINT = "the scalar part is p_w q_w - p_v · q_v (minus the dot product): i ⊗ i = -1"
 ELEMENTWISE_HINT = "multiplied entry by entry: every component of p ⊗ q mixes all four components of p and q"
+NORMALISED_HINT = ("the product is divided by its norm: p ⊗ q of quaternions that are not unit has norm |p| |q|; "
+                   "return the product itself")
 PRODUCT_GENERIC = "check each of the 16 terms of the product against the formula"
 
 
@@ -57,6 +59,8 @@ def _product_diagnosis(quat_multiply):
         return JPL_HINT
     if close(pq, qp, 1e-12):
         return NO_CROSS_HINT
+    if abs(np.linalg.norm(pq) - 1.0) < 1e-12 and abs(np.linalg.norm(LONG) - 1.0) > 0.1:
+        return NORMALISED_HINT
     return PRODUCT_GENERIC
 
 

@@ -114,7 +114,9 @@ def _(align_gauss_newton):
     R1 = _rotation_of(got, "align_gauss_newton(..., iters=1)", hint)
     before, after = _cost(R0, POINTS, TURNED), _cost(R1, POINTS, TURNED)
     if close(R1, R0, 1e-12):
-        raise Mismatch("one iteration did not move R0", "use the iters argument: do exactly iters updates")
+        raise Mismatch("one iteration returned R0 unchanged",
+                       "the update R ← R Exp(δ) never reaches what you return: start from a copy of R0, "
+                       "update that estimate once per iteration (iters of them) and return it")
     if not after < 0.1 * before:
         raise Mismatch(f"one step only took the cost from {before:.3g} to {after:.3g}", hint)
 

@@ -531,7 +531,9 @@ def _(align_pose_gauss_newton):
     got = require_shape(align_pose_gauss_newton(BOARD, BOARD_SEEN, T0, iters=1), (4, 4),
                         "align_pose_gauss_newton(..., iters=1)")
     if close(got, T0, 1e-12):
-        raise Mismatch("one iteration did not move T0", "use the iters argument: do exactly iters updates")
+        raise Mismatch("one iteration returned T0 unchanged",
+                       "the update T ← T Exp(ξ) never reaches what you return: start from a copy of T0, "
+                       "update that estimate once per iteration (iters of them) and return it")
     hint = _gn_pose_hint(align_pose_gauss_newton, got, T0, 1)
     if not close(got[:3, :3].T @ got[:3, :3], np.eye(3), 1e-9) or not close(got[3], [0.0, 0.0, 0.0, 1.0], 1e-12):
         raise Mismatch("after one iteration the result is not a pose", hint)
