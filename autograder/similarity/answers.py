@@ -1,0 +1,78 @@
+"""Which answer each student wrote for each exercise, read the way the grader reads it.
+
+The notebooks of a class folder are found and matched to lessons by
+:mod:`autograder.grading.submissions`, and each exercise's answer cell is taken
+by :func:`autograder.grading.extract.lesson_program` (by ``grade_id``, else by
+the function it defines), so the similarity stage compares exactly what was
+graded. A student whose folder cannot be read costs that student only: the
+reason is kept in :attr:`ClassAnswers.unread`.
+
+Examples
+--------
+>>> answers = read_class(Path("class"), load_catalog())        # doctest: +SKIP
+>>> answers.by_exercise["rot_z"]["ada"][:14]
+'def rot_z(angle'
+"""
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
+
+from autograder.grading.extract import lesson_program
+from autograder.grading.submissions import match_lessons, scan_submissions
+from autograder.lessons import cells
+from autograder.lessons.notebook_files import read_master, read_submission
+from autograder.lessons.paths import COURSE
+
+
+@dataclass
+class ClassAnswers:
+    """``by_exercise[exercise][author] = answer source``; ``unread[author] = why`` nothing was read."""
+
+    by_exercise: dict = field(default_factory=dict)
+    unread: dict = field(default_factory=dict)
+
+    @property
+    def authors(self):
+        return sorted({author for answers in self.by_exercise.values() for author in answers} | set(self.unread))
+
+
+def student_answers(folder, catalog):
+    """``{exercise: source}`` of one student's folder (lessons matched by content, cells by grade_id)."""
+    found = {}
+    files = match_lessons(Path(folder), catalog)
+    for lesson in catalog.graded_lessons:
+        path = files.chosen.get(lesson.number)
+        if path is None or path in files.unreadable:
+            continue
+        program = lesson_program(read_submission(path, root=folder), lesson)
+        found.update(program.cells)
+    return found
+
+
+def read_class(path, catalog, prefix=""):
+    """Every student's answers under ``path`` (any layout :mod:`~autograder.grading.submissions` reads).
+
+    ``prefix`` is put before each student id (``"past term/"`` for a past class), so authors from
+    different folders never share a name.
+    """
+    answers = ClassAnswers()
+    for student_id, folder in scan_submissions(path).files:
+        author = f"{prefix}{student_id}"
+        try:
+            for exercise, source in student_answers(folder, catalog).items():
+                answers.by_exercise.setdefault(exercise, {})[author] = source
+        except Exception as error:  # this student's folder only
+            answers.unread[author] = f"{type(error).__name__}: {error}"
+    return answers
+
+
+@lru_cache(maxsize=None)
+def released_stubs(course_dir=COURSE):
+    """``{exercise: the answer cell as released in course/}``: what every student started from."""
+    stubs = {}
+    for path in sorted(Path(course_dir).glob("[0-9][0-9]_*.ipynb")):
+        for cell in read_master(path).cells:
+            if cells.is_answer_cell(cell):
+                stubs[cells.grade_id(cell)] = cells.source_text(cell)
+    return stubs
