@@ -127,9 +127,10 @@ def _skipped_html(skipped, results, shown=200):
     return "\n".join(parts)
 
 
-def class_report_html(results, catalog, title="Class report", skipped=()):
+def class_report_html(results, catalog, title="Class report", skipped=(), extra_sections=()):
     """The report page for a list of StudentResult; ``skipped``: entries of the submissions folder that
-    are not students (:class:`~autograder.grading.submissions.Skipped`)."""
+    are not students (:class:`~autograder.grading.submissions.Skipped`); ``extra_sections``: HTML fragments
+    made by other stages (the similarity stage's), placed after the exercises, already escaped."""
     graded = [r for r in results if r.status not in (MISSING, COULD_NOT_GRADE)]
     missing = [r for r in results if r.status == MISSING]
     failed = [r for r in results if r.status == COULD_NOT_GRADE]
@@ -193,6 +194,7 @@ def class_report_html(results, catalog, title="Class report", skipped=()):
             parts.append(f"<li><code>{escape(r.student_id)}</code>: {escape(r.status)}"
                          + (f" — {escape(r.reason)}" if r.reason else "") + "</li>")
         parts.append("</ul>")
+    parts += [section for section in extra_sections if section]
     parts.append(_skipped_html(list(skipped), results))
     body = "\n".join(parts)
     return (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{escape(title)}</title>'

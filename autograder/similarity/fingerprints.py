@@ -34,7 +34,10 @@ from markupsafe import escape
 from scipy import sparse
 
 K = 12  # characters of normalised code per k-gram (a name is one character)
-WINDOW = 3  # winnowing window: any common run of K + WINDOW - 1 characters is seen
+# copydetect hashes k-grams with Python's hash(), salted per process: with a window above 1, winnowing
+# would keep other k-grams in each run and a report would change between runs. Answers are a few hundred
+# characters, so every k-gram is kept (window 1): the same class gives the same scores every time.
+WINDOW = 1
 MARK_OPEN, MARK_CLOSE = "<mark>", "</mark>"
 
 
