@@ -298,6 +298,7 @@ def _cmd_book(args):
 
 
 def _cmd_similarity(args):
+    from autograder.similarity.report import reference_matches_by_student
     from autograder.similarity.stage import similarity_of_class, write_findings
 
     for folder in [args.path, *args.past]:
@@ -311,9 +312,9 @@ def _cmd_similarity(args):
     for number, cluster in enumerate(findings.clusters, 1):
         print(f"finding {number}, worth a look: {', '.join(one_line(m, 40) for m in cluster.members)} "
               f"on {', '.join(cluster.exercises)} (up to {100 * cluster.score:.0f}% shared)")
-    for pair in findings.reference_matches:
-        print(f"close to the reference solution: {one_line(pair.first, 40)} on {pair.exercise} "
-              f"({100 * pair.score:.0f}% shared)")
+    for student, pairs in reference_matches_by_student(findings).items():
+        names = ", ".join(p.exercise for p in pairs[:5]) + (f" and {len(pairs) - 5} more" if len(pairs) > 5 else "")
+        print(f"close to the reference solution: {one_line(student, 40)}, {len(pairs)} answer(s): {names}")
     for author, why in sorted(findings.unread.items()):
         print(f"not read: {one_line(author, 40)}: {one_line(why, 200)}")
     print(f"wrote {csv_path} and {html_path}")

@@ -8,11 +8,10 @@ identifiers, reworded comments, reformatting, reordered independent lines, inser
 """
 
 import ast
-import io
 import random
-import tokenize
 from pathlib import Path
 
+from autograder.authoring.sample_class import rename_locals
 from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
@@ -90,26 +89,9 @@ def honest_answers():
 
 # -- disguises ---------------------------------------------------------------------------------------
 
-def _local_names(tree):
-    function = tree.body[0]
-    names = {a.arg for a in function.args.args}
-    names |= {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
-    return sorted(names - {function.name})
-
-
 def rename(source, seed=0):
     """Every argument and local variable renamed (attributes and keywords left alone)."""
-    rng = random.Random(seed)
-    words = ["val", "tmp", "item", "acc", "mat", "vec", "num", "res", "buf", "elem", "part", "aux"]
-    mapping = {name: f"{rng.choice(words)}_{i}" for i, name in enumerate(_local_names(ast.parse(source)))}
-    out, previous = [], None
-    for token in tokenize.generate_tokens(io.StringIO(source).readline):
-        text = token.string
-        if token.type == tokenize.NAME and text in mapping and previous != ".":
-            text = mapping[text]
-        out.append((token.type, text))
-        previous = token.string
-    return tokenize.untokenize(out)
+    return rename_locals(source, prefix=random.Random(seed).choice(["val_", "tmp_", "acc_", "aux_", "my_"]))
 
 
 def reword_comments(source, seed=0):

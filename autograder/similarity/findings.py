@@ -12,8 +12,10 @@ alike (short, one obvious formula) raises its own bar; with fewer than
 copies among seven answers would be its median) and the floor alone is used. An answer is a reference
 match when it shares at least :data:`REFERENCE_FLOOR` with the published
 solution: that bar is absolute, since copying the reference is the same
-finding however many students did it. Two answers that both match the
-reference are explained by it and are not a pair finding. Flagged pairs are
+finding however many students did it. A pair that shares no more with each
+other than each of them shares with the reference (two students who both
+started from the published solution) is explained by it and is not a pair
+finding. Flagged pairs are
 joined into clusters (connected components over all exercises).
 
 Examples
@@ -98,13 +100,15 @@ def _exercise_pairs(exercise, current, past, reference, stub, findings):
     is_current = np.array([author in current for author in authors], dtype=bool)
     findings.compared[exercise] = int(is_current.sum())
     matches_reference = np.zeros(len(authors), dtype=bool)
+    reference_scores = np.zeros(len(authors))
     if reference is not None:
         reference_fp = fingerprint(reference, stub)
         if _long_enough(reference_fp):
             findings.fingerprints[exercise, REFERENCE] = reference_fp
-            scores = shared_share(prints + [reference_fp])[-1, :-1]
-            matches_reference = scores >= REFERENCE_FLOOR
-            findings.reference_matches += [Pair(exercise, authors[i], REFERENCE, float(scores[i]), REFERENCE_FLOOR)
+            reference_scores = shared_share(prints + [reference_fp])[-1, :-1]
+            matches_reference = reference_scores >= REFERENCE_FLOOR
+            findings.reference_matches += [Pair(exercise, authors[i], REFERENCE, float(reference_scores[i]),
+                                                REFERENCE_FLOOR)
                                            for i in np.flatnonzero(matches_reference & is_current)]
     if len(authors) < 2:
         findings.thresholds[exercise] = PAIR_FLOOR
@@ -112,7 +116,7 @@ def _exercise_pairs(exercise, current, past, reference, stub, findings):
     scores = shared_share(prints)
     first, second = np.triu_indices(len(authors), k=1)
     both_current = is_current[first] & is_current[second]
-    explained = matches_reference[first] & matches_reference[second]
+    explained = scores[first, second] <= np.minimum(reference_scores[first], reference_scores[second])
     baseline = both_current & ~explained
     threshold = pair_threshold(scores[first, second][baseline],
                                len(set(first[baseline]) | set(second[baseline])))

@@ -60,6 +60,14 @@ def _cluster_html(findings, number, cluster):
             f"<p>Students: {members}. Exercises: {exercises}.</p>" + "".join(views))
 
 
+def reference_matches_by_student(findings):
+    """``{student: [reference-match Pair, ...]}``, students in order."""
+    grouped = {}
+    for pair in findings.reference_matches:
+        grouped.setdefault(pair.first, []).append(pair)
+    return grouped
+
+
 def similar_answers_html(findings):
     """The "Similar answers" section (an HTML fragment with its own small style sheet)."""
     parts = [f"<style>{STYLE}</style><h2>Similar answers</h2><p>{escape(LOCAL)}</p>"]
@@ -76,12 +84,14 @@ def similar_answers_html(findings):
     else:
         parts.append("<p class='muted'>No pair of students' answers stands out from the rest of the class.</p>")
     if findings.reference_matches:
-        rows = "".join(f"<tr><td><code>{escape(p.first)}</code></td><td><code>{escape(p.exercise)}</code></td>"
-                       f'<td class="num">{100 * p.score:.0f}%</td></tr>' for p in findings.reference_matches)
+        rows = "".join(f"<tr><td><code>{escape(student)}</code></td><td class='num'>{len(pairs)}</td><td>"
+                       + ", ".join(f"<code>{escape(p.exercise)}</code> {100 * p.score:.0f}%" for p in pairs)
+                       + "</td></tr>" for student, pairs in reference_matches_by_student(findings).items())
         parts.append("<h3>Answers close to the published reference solution</h3><p>The course's solutions are "
                      "public: these answers share most of their fingerprints with the reference answer "
                      "(names, comments and layout aside). Worth a look.</p>"
-                     f'<table><tr><th>student</th><th>exercise</th><th class="num">shared</th></tr>{rows}</table>')
+                     "<table><tr><th>student</th><th class='num'>answers</th><th>exercises (shared)</th></tr>"
+                     f"{rows}</table>")
         parts.append(_side_by_side(findings, findings.reference_matches[0]))
     if findings.unread:
         rows = "".join(f"<li><code>{escape(a)}</code>: {escape(why)}</li>" for a, why in sorted(findings.unread.items()))
