@@ -14,6 +14,7 @@ Examples
 'def rot_z(angle'
 """
 
+import multiprocessing
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -50,20 +51,34 @@ def student_answers(folder, catalog):
     return found
 
 
-def read_class(path, catalog, prefix=""):
+def _one_student(folder, catalog):
+    """``(answers, None)``, or ``(None, why)`` when the folder could not be read (that student only)."""
+    try:
+        return student_answers(folder, catalog), None
+    except Exception as error:
+        return None, f"{type(error).__name__}: {error}"
+
+
+def read_class(path, catalog, prefix="", jobs=1):
     """Every student's answers under ``path`` (any layout :mod:`~autograder.grading.submissions` reads).
 
     ``prefix`` is put before each student id (``"past term/"`` for a past class), so authors from
-    different folders never share a name.
+    different folders never share a name. ``jobs``: forked processes reading students' folders.
     """
     answers = ClassAnswers()
-    for student_id, folder in scan_submissions(path).files:
+    students = scan_submissions(path).files
+    tasks = [(folder, catalog) for _, folder in students]
+    if jobs > 1 and len(tasks) > 20 and "fork" in multiprocessing.get_all_start_methods():
+        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+            read = pool.starmap(_one_student, tasks, chunksize=max(1, len(tasks) // (4 * jobs)))
+    else:
+        read = [_one_student(*task) for task in tasks]
+    for (student_id, _), (found, why) in zip(students, read):
         author = f"{prefix}{student_id}"
-        try:
-            for exercise, source in student_answers(folder, catalog).items():
-                answers.by_exercise.setdefault(exercise, {})[author] = source
-        except Exception as error:  # this student's folder only
-            answers.unread[author] = f"{type(error).__name__}: {error}"
+        if why is not None:
+            answers.unread[author] = why
+        for exercise, source in (found or {}).items():
+            answers.by_exercise.setdefault(exercise, {})[author] = source
     return answers
 
 

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from autograder.similarity.fingerprints import fingerprint, shared_share
+from autograder.similarity.fingerprints import fingerprint_many, shared_share
 
 MIN_LENGTH = 40  # normalised characters of an answer outside the stub (a name counts as one)
 PAIR_FLOOR = 0.7  # a pair below this share is never flagged, however unusual for its exercise
@@ -88,21 +88,17 @@ def _long_enough(fp):
     return fp.token_coverage >= MIN_LENGTH
 
 
-def _exercise_pairs(exercise, current, past, reference, stub, findings):
-    """Score one exercise's answers; add its reference matches to ``findings``; return its flagged pairs."""
-    authors, prints = [], []
-    for author, source in list(current.items()) + list(past.items()):
-        fp = fingerprint(source, stub)
-        if _long_enough(fp):
-            authors.append(author)
-            prints.append(fp)
-            findings.fingerprints[exercise, author] = fp
+def _exercise_pairs(exercise, current, prints, reference_fp, findings):
+    """Score one exercise's answers (``prints``: ``{author: fingerprint}``, current and past); add its reference
+    matches to ``findings``; return its flagged pairs."""
+    authors = [author for author, fp in prints.items() if _long_enough(fp)]
+    prints = [prints[author] for author in authors]
+    findings.fingerprints.update(((exercise, author), fp) for author, fp in zip(authors, prints))
     is_current = np.array([author in current for author in authors], dtype=bool)
     findings.compared[exercise] = int(is_current.sum())
     matches_reference = np.zeros(len(authors), dtype=bool)
     reference_scores = np.zeros(len(authors))
-    if reference is not None:
-        reference_fp = fingerprint(reference, stub)
+    if reference_fp is not None:
         if _long_enough(reference_fp):
             findings.fingerprints[exercise, REFERENCE] = reference_fp
             reference_scores = shared_share(prints + [reference_fp])[-1, :-1]
@@ -151,7 +147,7 @@ def clusters_of(pairs):
     return sorted(found, key=lambda c: (-len(c.exercises), -c.score, c.members))
 
 
-def find_similar(current, references, stubs, past=None, unread=None):
+def find_similar(current, references, stubs, past=None, unread=None, jobs=1):
     """The findings of a class.
 
     Parameters
@@ -166,6 +162,8 @@ def find_similar(current, references, stubs, past=None, unread=None):
         ``{exercise: {author: source}}`` of past terms (authors named apart from this class's).
     unread : dict, optional
         ``{author: why}`` for the folders that could not be read.
+    jobs : int
+        Processes that fingerprint the answers.
 
     Returns
     -------
@@ -173,10 +171,24 @@ def find_similar(current, references, stubs, past=None, unread=None):
     """
     past = past or {}
     findings = Findings(unread=dict(unread or {}))
+    keys, items = [], []
+    for exercise in sorted(current):
+        stub = stubs.get(exercise, "")
+        for author, source in list(current[exercise].items()) + list(past.get(exercise, {}).items()):
+            if source.strip() != stub.strip():  # the untouched stub: nothing to compare
+                keys.append((exercise, author))
+                items.append((source, stub))
+        if exercise in references:
+            keys.append((exercise, REFERENCE))
+            items.append((references[exercise], stub))
+    prints = {}
+    for (exercise, author), fp in zip(keys, fingerprint_many(items, jobs)):
+        prints.setdefault(exercise, {})[author] = fp
     pairs = []
     for exercise in sorted(current):
-        pairs += _exercise_pairs(exercise, current[exercise], past.get(exercise, {}), references.get(exercise),
-                                 stubs.get(exercise, ""), findings)
+        found = prints.get(exercise, {})
+        reference_fp = found.pop(REFERENCE, None)
+        pairs += _exercise_pairs(exercise, current[exercise], found, reference_fp, findings)
     findings.clusters = clusters_of(pairs)
     findings.reference_matches.sort(key=lambda p: (p.first, p.exercise))
     return findings

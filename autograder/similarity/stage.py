@@ -11,6 +11,7 @@ Examples
 >>> paths = write_findings(findings, Path("out"))                          # doctest: +SKIP
 """
 
+import os
 from pathlib import Path
 
 from autograder.lessons.catalog import load_catalog
@@ -23,21 +24,24 @@ CSV_NAME = "similar_answers.csv"
 HTML_NAME = "similar_answers.html"
 
 
-def similarity_of_class(path, past=()):
+def similarity_of_class(path, past=(), jobs=None):
     """The :class:`~autograder.similarity.findings.Findings` of the class under ``path``.
 
     ``past``: folders of past terms' submissions (same layouts); their authors are named
-    ``"<folder name>/<student>"``, and pairs within a past term are not compared.
+    ``"<folder name>/<student>"``, and pairs within a past term are not compared. ``jobs``: processes
+    that fingerprint the answers (default: the number of cores).
     """
     catalog = load_catalog()
-    current = read_class(path, catalog)
+    jobs = jobs or os.cpu_count() or 1
+    current = read_class(path, catalog, jobs=jobs)
     earlier, unread = {}, dict(current.unread)
     for folder in past:
-        answers = read_class(folder, catalog, prefix=f"{Path(folder).name}/")
+        answers = read_class(folder, catalog, prefix=f"{Path(folder).name}/", jobs=jobs)
         unread.update(answers.unread)
         for exercise, by_author in answers.by_exercise.items():
             earlier.setdefault(exercise, {}).update(by_author)
-    return find_similar(current.by_exercise, answer_sources(), released_stubs(), earlier, unread)
+    return find_similar(current.by_exercise, answer_sources(), released_stubs(), earlier, unread,
+                        jobs=jobs)
 
 
 def write_findings(findings, out_dir, write=None):
