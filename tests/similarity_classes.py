@@ -66,9 +66,9 @@ def exp_so3(w):
 ''',
     "to_homogeneous": '''
 def to_homogeneous(points):
-    points = np.asarray(points, dtype=float)
-    column = np.ones(points.shape[:-1] + (1,))
-    return np.concatenate((points, column), axis=-1)
+    coordinates = np.array(points, dtype=float)
+    padding = [(0, 0)] * (coordinates.ndim - 1) + [(0, 1)]
+    return np.pad(coordinates, padding, constant_values=1.0)
 ''',
 }
 
