@@ -11,7 +11,8 @@ import sys
 import pytest
 
 from autograder.lessons.paths import PROJECT_ROOT
-from autograder.similarity.answers import released_stubs
+from autograder.lessons.catalog import load_catalog
+from autograder.similarity.answers import MAX_ANSWER_CHARACTERS, read_class, released_stubs
 from autograder.similarity.findings import PAIR_FLOOR, find_similar, pair_threshold
 from autograder.similarity.report import similar_answers_html
 from similarity_classes import honest_answers, planted_answers, write_class
@@ -101,3 +102,11 @@ def test_student_text_is_escaped_in_the_section():
     findings = find_similar({"quat_multiply": {evil: source, "b": source + f"\n# {evil}\n"}}, {}, released_stubs())
     html = similar_answers_html(findings)
     assert findings.clusters and "<script>" not in html and "&lt;script&gt;" in html
+
+
+def test_a_huge_answer_costs_no_more_than_a_long_one(tmp_path):
+    source = planted_answers()[0]["pair_rename"]["quat_multiply"]
+    huge = source + "\n    unused = [" + "1, " * 400_000 + "]\n"  # one line: a notebook's lines are bounded
+    write_class(tmp_path / "class", {"ana": {"quat_multiply": huge}, "bo": {"quat_multiply": source}})
+    answers = read_class(tmp_path / "class", load_catalog())
+    assert len(answers.by_exercise["quat_multiply"]["ana"]) == MAX_ANSWER_CHARACTERS

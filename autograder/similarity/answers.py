@@ -5,7 +5,9 @@ The notebooks of a class folder are found and matched to lessons by
 by :func:`autograder.grading.extract.lesson_program` (by ``grade_id``, else by
 the function it defines), so the similarity stage compares exactly what was
 graded. A student whose folder cannot be read costs that student only: the
-reason is kept in :attr:`ClassAnswers.unread`.
+reason is kept in :attr:`ClassAnswers.unread`. An answer is compared on its
+first :data:`MAX_ANSWER_CHARACTERS` characters, so a cell of megabytes costs
+no more than a long answer.
 
 Examples
 --------
@@ -24,6 +26,8 @@ from autograder.grading.submissions import match_lessons, scan_submissions
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master, read_submission
 from autograder.lessons.paths import COURSE
+
+MAX_ANSWER_CHARACTERS = 20_000  # a long answer is a few thousand
 
 
 @dataclass
@@ -47,7 +51,7 @@ def student_answers(folder, catalog):
         if path is None or path in files.unreadable:
             continue
         program = lesson_program(read_submission(path, root=folder), lesson)
-        found.update(program.cells)
+        found.update((name, source[:MAX_ANSWER_CHARACTERS]) for name, source in program.cells)
     return found
 
 
