@@ -8,6 +8,9 @@ stage's seconds and share of the whole run.
 """
 
 import argparse
+import copy
+import resource
+import os
 import subprocess
 import sys
 import tempfile
@@ -26,13 +29,20 @@ from autograder.similarity.stage import similarity_of_class
 def write_big_class(folder, students):
     references = answer_sources()
     for lesson in load_catalog().graded_lessons:
+        released = read_master(COURSE / lesson.filename)
         for number in range(students):
-            nb = read_master(COURSE / lesson.filename)
+            nb = copy.deepcopy(released)
             for cell in nb.cells:
                 if cells.is_answer_cell(cell):
                     cell.source = rename_locals(references[cells.grade_id(cell)], prefix=f"s{number}_")
             (folder / f"student{number:03d}").mkdir(parents=True, exist_ok=True)
             (folder / f"student{number:03d}" / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
+
+
+def _cpu_seconds():
+    """CPU seconds of this process and of its finished children (the stage's forked workers)."""
+    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
 
 
 def main():
@@ -43,11 +53,12 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         folder = Path(work) / "class"
         write_big_class(folder, args.students)
-        started = time.perf_counter()
+        started, cpu = time.perf_counter(), _cpu_seconds()
         findings = similarity_of_class(folder)
-        seconds = time.perf_counter() - started
+        seconds, cpu = time.perf_counter() - started, _cpu_seconds() - cpu
         print(f"{args.students} students x {len(findings.compared)} exercises: "
-              f"{sum(findings.compared.values())} answers compared in {seconds:.1f} s")
+              f"{sum(findings.compared.values())} answers compared in {seconds:.1f} s "
+              f"({cpu:.1f} s of CPU, this process and its workers; load average {os.getloadavg()[0]:.1f})")
         if args.sample:
             out = Path(work) / "out"
             started = time.perf_counter()
