@@ -103,7 +103,7 @@ def honest_answers():
 # -- disguises ---------------------------------------------------------------------------------------
 
 def rename(source, seed=0):
-    """Every argument and local variable renamed (attributes and keywords left alone)."""
+    """Every local variable renamed (the signature, attributes and keywords left alone)."""
     return rename_locals(source, prefix=random.Random(seed).choice(["val_", "tmp_", "acc_", "aux_", "my_"]))
 
 

@@ -78,12 +78,13 @@ def _wrong(source):
 
 
 def rename_locals(source, prefix="my_"):
-    """``source`` (one function) with each argument and local variable renamed ``prefix + name``
-    (attributes, keywords and the function's own name left alone): the simplest disguise of a copy."""
+    """``source`` (one function) with each local variable renamed ``prefix + name``: the simplest disguise
+    of a copy. The signature stays as released (callers may pass arguments by name); attributes,
+    keywords and the function's own name are left alone."""
     function = ast.parse(source).body[0]
-    names = {a.arg for a in function.args.args}
-    names |= {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
-    names.discard(function.name)
+    arguments = {a.arg for a in ast.walk(function.args) if isinstance(a, ast.arg)}
+    names = {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+    names -= arguments | {function.name}
     out, previous = [], None
     for token in tokenize.generate_tokens(io.StringIO(source).readline):
         text = prefix + token.string if token.type == tokenize.NAME and token.string in names \
