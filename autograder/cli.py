@@ -281,7 +281,7 @@ def _cmd_grade(args):
         summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
                               progress=Progress(sys.stderr), roster=roster,
                               only=tuple(args.student), announce=lambda line: print(line, flush=True),
-                              config=config, runner=runner)
+                              config=config, runner=runner, similarity=not args.no_similarity)
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
         return 3
@@ -307,6 +307,12 @@ def _cmd_grade(args):
         print(f"  {len(summary.kept)} graded earlier and not under {path}, kept as they were: "
               + ", ".join(one_line(k, 40) for k in summary.kept[:10]) + (" ..." if len(summary.kept) > 10 else ""))
     _print_skipped(summary.ignored, summary.results)
+    if summary.similarity is not None:
+        print(f"similar answers: {len(summary.similarity.clusters)} finding(s) worth a look, "
+              f"{len(summary.similarity.reference_matches)} answer(s) close to the reference "
+              f"({summary.similarity_seconds:.1f} s, on this machine): see the report and {out / 'similar_answers.csv'}")
+    elif summary.similarity_note:
+        print(f"similar answers: {summary.similarity_note}")
     if args.nbgrader_db:
         from autograder.integrations.nbgrader_export import export_to_gradebook
 
@@ -388,6 +394,30 @@ def _cmd_book(args):
     if warnings.strip():
         print(f"{len(warnings.strip().splitlines())} Sphinx warning(s), see {out.parent / 'book-warnings.txt'}")
     print(f"wrote the book ({len(pages)} pages) to {out}: open {out / 'index.html'} in a browser")
+    return 0
+
+
+def _cmd_similarity(args):
+    from autograder.similarity.report import reference_matches_by_student
+    from autograder.similarity.stage import similarity_of_class, write_findings
+
+    for folder in [args.path, *args.past]:
+        if not Path(folder).is_dir():
+            print(f"error: {folder} is not a folder of student submissions", file=sys.stderr)
+            return 2
+    findings = similarity_of_class(Path(args.path), past=[Path(p) for p in args.past])
+    csv_path, html_path = write_findings(findings, Path(args.out or args.path))
+    print(f"compared {sum(findings.compared.values())} answers over {len(findings.compared)} exercises on this "
+          "machine (nothing was sent anywhere)")
+    for number, cluster in enumerate(findings.clusters, 1):
+        print(f"finding {number}, worth a look: {', '.join(one_line(m, 40) for m in cluster.members)} "
+              f"on {', '.join(cluster.exercises)} (up to {100 * cluster.score:.0f}% shared)")
+    for student, pairs in reference_matches_by_student(findings).items():
+        names = ", ".join(p.exercise for p in pairs[:5]) + (f" and {len(pairs) - 5} more" if len(pairs) > 5 else "")
+        print(f"close to the reference solution: {one_line(student, 40)}, {len(pairs)} answer(s): {names}")
+    for author, why in sorted(findings.unread.items()):
+        print(f"not read: {one_line(author, 40)}: {one_line(why, 200)}")
+    print(f"wrote {csv_path} and {html_path}")
     return 0
 
 
@@ -506,7 +536,16 @@ def build_parser():
     grade.add_argument("--cluster", metavar="ADDRESS",
                        help="grade on a Dask cluster: tcp://HOST:8786 (a running scheduler), or local:N "
                             "(N local worker processes); see docs/CLUSTER.md")
+    grade.add_argument("--no-similarity", action="store_true",
+                       help="do not compare the students' answers with each other (the 'Similar answers' section)")
     grade.set_defaults(run=_cmd_grade)
+
+    similar = commands.add_parser("similarity", help="compare a class's answers with each other, the reference "
+                                                     "solution and past terms (on this machine)")
+    similar.add_argument("path", help="one folder per student, or nbgrader's submitted/ layout")
+    similar.add_argument("--out", default=None, help="where similar_answers.csv and .html go (default: PATH)")
+    similar.add_argument("--past", nargs="+", default=(), metavar="DIR", help="past terms' submissions")
+    similar.set_defaults(run=_cmd_similarity)
 
     canary = commands.add_parser("canary", help="grade the reference solutions: does every stage work here?")
     canary.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="only these lessons")

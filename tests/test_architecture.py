@@ -16,7 +16,8 @@ import pytest
 
 from autograder.lessons.paths import PACKAGE
 
-STAGES = ("lessons", "authoring", "sandbox", "grading", "reports", "batch", "integrations", "mutants")
+STAGES = ("lessons", "authoring", "sandbox", "grading", "reports", "similarity", "batch", "integrations",
+          "mutants")
 DATA = ("hidden", "mistakes")  # the hidden suite and the mistake corpus: content, not stages
 
 

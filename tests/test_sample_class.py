@@ -202,3 +202,18 @@ def test_verdicts_match_the_golden_gradebook(run):
     changed = record_golden.differences(record_golden.read_golden(), record_golden.verdicts(out / "grades.csv"))
     assert not changed, ("verdicts moved:\n" + "\n".join(changed[:40]) +
                          "\n(re-record with `python -m tests.record_golden` only if the change is intended)")
+
+
+def test_similar_answers_are_in_the_class_report_and_never_in_a_feedback_page(run):
+    out, stdout, _ = run
+    report = (out / "report.html").read_text(encoding="utf-8")
+    section = report[report.index("<h2>Similar answers</h2>"):]
+    assert "no answer was sent anywhere" in section and "<mark>" in section
+    with open(out / "similar_answers.csv", newline="", encoding="utf-8") as handle:
+        pairs = {(row["first"], row["second"], row["exercise"]) for row in csv.DictReader(handle)
+                 if row["kind"] == "students"}
+    assert {("ivy", "kim", "quat_slerp"), ("ivy", "kim", "matrix_to_euler_zyx")} <= pairs
+    assert "similar answers:" in stdout
+    for page in (out / "feedback").glob("*.html"):
+        text = page.read_text(encoding="utf-8").lower()
+        assert "similar" not in text and "reference solution" not in text, page.name

@@ -8,11 +8,16 @@ Each student starts from the released notebooks in ``course/`` (exactly what
 a real student downloads) and fills in answers: the reference answer, the
 untouched stub, or one of the typical mistakes of :mod:`autograder.mistakes`.
 Two students cheat, one crashes and hangs, one hands in a damaged notebook,
-and one has an id that a spreadsheet would evaluate as a formula.
+and one has an id that a spreadsheet would evaluate as a formula. Two share
+answers (the same correct alternative, one with its variables renamed), so
+the class report's "Similar answers" shows what a finding looks like.
 """
 
+import ast
+import io
 import json
 import shutil
+import tokenize
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -21,7 +26,7 @@ from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import COURSE
 from autograder.lessons.reference import answer_sources
-from autograder.mistakes import all_mistakes, sample_assignments
+from autograder.mistakes import all_alternatives, all_mistakes, sample_assignments
 
 # A numpy monkeypatch that gives full marks in a grader that compares inside the student's kernel.
 MONKEYPATCH = '''import numpy as np
@@ -31,6 +36,7 @@ np.isclose = lambda a, b, *args, **kwargs: np.ones(np.shape(a), dtype=bool)
 np.array_equal = lambda *args, **kwargs: True
 '''
 WRONG_ANSWER = "    return None\n"
+SHARED = ("quat_slerp_power", "matrix_to_euler_undo_yaw")  # what two sample students share
 
 
 @dataclass(frozen=True)
@@ -40,6 +46,8 @@ class SampleStudent:
     answers: str = "reference"  # "reference", "stub", "first_half" or "wrong"
     cheat: str = ""  # "", "monkeypatch" or "edit_checks"
     damage: str = ""  # "": none; "corrupt_first": the first lesson's notebook is not valid JSON
+    shared: tuple = ()  # correct alternatives (names in autograder.mistakes) this student hands in
+    renamed: bool = False  # ... with every argument and local variable renamed (a disguised copy)
 
 
 STUDENTS = [
@@ -53,9 +61,11 @@ STUDENTS = [
                   answers="wrong", cheat="monkeypatch"),
     SampleStudent("hugo", "wrong answers, and rewrote the check cells to print success",
                   answers="wrong", cheat="edit_checks"),
-    SampleStudent("ivy", "right answers, except one endless loop, one os._exit and one infinite recursion"),
-    SampleStudent("kim", "right answers, but the first notebook was damaged by a text editor",
-                  damage="corrupt_first"),
+    SampleStudent("ivy", "right answers, except one endless loop, one os._exit and one infinite recursion",
+                  shared=SHARED),
+    SampleStudent("kim", "right answers, but the first notebook was damaged by a text editor; shares two "
+                         "answers with ivy, variables renamed (see 'Similar answers')",
+                  damage="corrupt_first", shared=SHARED, renamed=True),
     SampleStudent('=HYPERLINK("evil","click me")', "an id a spreadsheet would run as a formula"),
 ]
 
@@ -67,7 +77,29 @@ def _wrong(source):
     return "\n".join(kept).rstrip() + "\n" + WRONG_ANSWER
 
 
+def rename_locals(source, prefix="my_"):
+    """``source`` (one function) with each local variable renamed ``prefix + name``: the simplest disguise
+    of a copy. The signature stays as released (callers may pass arguments by name); attributes,
+    keywords and the function's own name are left alone."""
+    function = ast.parse(source).body[0]
+    arguments = {a.arg for a in ast.walk(function.args) if isinstance(a, ast.arg)}
+    names = {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+    names -= arguments | {function.name}
+    out, previous = [], None
+    for token in tokenize.generate_tokens(io.StringIO(source).readline):
+        text = prefix + token.string if token.type == tokenize.NAME and token.string in names \
+            and previous != "." else token.string
+        out.append((token.type, text))
+        previous = token.string
+    return tokenize.untokenize(out)
+
+
 def _answer_for(student, exercise_name, index, count, stub, references, mistakes, chosen):
+    for name in student.shared:
+        alternative = all_alternatives()[name]
+        if alternative.exercise == exercise_name:
+            source = alternative.source.strip("\n") + "\n"
+            return rename_locals(source) if student.renamed else source
     for name in chosen:
         if mistakes[name].exercise == exercise_name:
             return mistakes[name].source.strip("\n")

@@ -230,6 +230,9 @@ class RunSummary:
     ignored: list = field(default_factory=list)  # Skipped: entries of the submissions folder that are not students
     canary: object = None  # CanaryResult
     seconds: float = 0.0
+    similarity: object = None  # similarity Findings (None: turned off, or it failed: see similarity_note)
+    similarity_note: str = ""  # why the similarity stage wrote no findings
+    similarity_seconds: float = 0.0
 
 
 def _prewarm():
@@ -257,7 +260,7 @@ def saved_student_ids(outputs):
 
 
 def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=(),
-                only=(), announce=None, config=None, runner=None):
+                only=(), announce=None, config=None, runner=None, similarity=True):
     """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
@@ -267,6 +270,8 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     ``runner``: how the students' tasks run, with the signature of
     :func:`~autograder.sandbox.forking.fork_each` (default: forks of this process, ``jobs`` at a time); a
     runner calls ``_grade_task(task)`` somewhere and ``on_done(task, problem)`` here, as each ends.
+    ``similarity``: compare the class's answers (:mod:`autograder.similarity`) and add the "Similar answers"
+    section and ``similar_answers.csv``; a failure there costs that section only.
     The gradebook never shrinks: students graded earlier into ``out_dir`` stay in it, with their
     saved results, even when ``path`` no longer holds their folder (``RunSummary.kept`` names them).
 
@@ -350,7 +355,8 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     summary.kept = sorted(earlier - submitted)
     everyone = submitted | earlier
     write_atomically(outputs.skipped, json.dumps([asdict(item) for item in found.skipped], indent=1))
-    summary.results = write_reports(outputs, sorted(everyone | set(roster)), everyone, unsaved)
+    section = _similarity_section(path, outputs, summary) if similarity else ""
+    summary.results = write_reports(outputs, sorted(everyone | set(roster)), everyone, unsaved, section)
     summary.seconds = time.monotonic() - started
     return summary
 
@@ -389,8 +395,29 @@ def load_skipped(outputs):
         return []
 
 
-def write_reports(outputs, student_ids, submitted=None, unsaved=None):
+def _similarity_section(path, outputs, summary):
+    """Run the similarity stage on the class under ``path``: write its CSV and page into ``outputs``,
+    keep the findings in ``summary`` and return the report's section (a short note if it failed)."""
+    from autograder.similarity.report import similar_answers_html
+    from autograder.similarity.stage import similarity_of_class, write_findings
+
+    started = time.monotonic()
+    try:
+        summary.similarity = similarity_of_class(path)
+        write_findings(summary.similarity, outputs.root, write_atomically)
+        section = similar_answers_html(summary.similarity)
+    except Exception as error:  # the grades do not depend on it
+        summary.similarity = None
+        summary.similarity_note = f"the similarity stage failed ({type(error).__name__}: {error})"
+        section = f"<h2>Similar answers</h2><p>Not available: {one_line(summary.similarity_note, 300)}.</p>"
+    summary.similarity_seconds = time.monotonic() - started
+    return section
+
+
+def write_reports(outputs, student_ids, submitted=None, unsaved=None, extra_section=""):
     """Write grades.csv and report.html for ``student_ids``; return their results.
+
+    ``extra_section``: HTML added to the report (the similarity stage's "Similar answers").
 
     The report is always written: if the full page cannot be made, a plain one lists every student's
     status and says why.
@@ -402,7 +429,8 @@ def write_reports(outputs, student_ids, submitted=None, unsaved=None):
     write_atomically(outputs.gradebook, gradebook_csv(results, catalog, graded_at))
     try:
         linked = {r.student_id for r in results if outputs.feedback_html(r.student_id).is_file()}
-        page = class_report_html(results, catalog, skipped=load_skipped(outputs), linked=linked)
+        page = class_report_html(results, catalog, skipped=load_skipped(outputs), linked=linked,
+                                 extra_sections=[extra_section])
     except Exception as error:
         page = plain_page("Class report", results, f"the full report could not be made ({type(error).__name__}: "
                                                    f"{error})")

@@ -151,10 +151,12 @@ def _not_attempted(apart):
     return ", ".join(parts) or '<span class="muted">none</span>'
 
 
-def class_report_html(results, catalog, title="Class report", skipped=(), linked=frozenset()):
+def class_report_html(results, catalog, title="Class report", skipped=(), linked=frozenset(), extra_sections=()):
     """The report page for a list of StudentResult; ``skipped``: entries of the submissions folder that
     are not students (:class:`~autograder.grading.submissions.Skipped`); ``linked``: the students whose
-    feedback page exists (``feedback/<id>.html`` beside the report), linked from the students' table."""
+    feedback page exists (``feedback/<id>.html`` beside the report), linked from the students' table;
+    ``extra_sections``: HTML fragments made by other stages (the similarity stage's), placed after the
+    exercises, already escaped."""
     graded = [r for r in results if r.status not in (MISSING, COULD_NOT_GRADE)]
     missing = [r for r in results if r.status == MISSING]
     failed = [r for r in results if r.status == COULD_NOT_GRADE]
@@ -226,6 +228,7 @@ def class_report_html(results, catalog, title="Class report", skipped=(), linked
             parts.append(f"<li><code>{escape(r.student_id)}</code>: {escape(r.status)}"
                          + (f" — {escape(r.reason)}" if r.reason else "") + "</li>")
         parts.append("</ul>")
+    parts += [section for section in extra_sections if section]
     parts.append(_skipped_html(list(skipped), results))
     body = "\n".join(parts)
     return (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{escape(title)}</title>'

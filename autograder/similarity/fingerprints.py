@@ -1,0 +1,139 @@
+"""Fingerprints of answers and how much two of them share, with copydetect.
+
+copydetect (PyPI, maintained) tokenises Python with Pygments and replaces every
+name by one letter, drops comments, docstrings' whitespace and layout, hashes
+the k-grams of what is left and keeps a winnowed subset (Schleimer, Wilkerson
+and Aiken 2003, the method of MOSS). Fingerprints that also occur in the
+released stub are removed (copydetect's boilerplate), so the signature and
+docstring every student was given never count; the stub's docstring, when an
+answer still holds it unchanged, is cut before tokenising (it is most of the
+text, and most of the time). So renamed identifiers,
+rewritten comments and docstrings and reformatting change nothing; reordered
+independent lines and inserted dead code change only the k-grams that cross
+them.
+
+The score of a pair is the share of the smaller answer's fingerprints that
+the other answer also has (what MOSS reports for the shorter file), computed
+for all pairs of an exercise at once as a sparse product; copydetect's own
+``compare_files`` finds the matching spans of the pairs that are shown.
+
+Examples
+--------
+>>> stub = "def f(x):\\n    raise NotImplementedError\\n"
+>>> a = fingerprint("def f(x):\\n    y = x * 2\\n    return y + 1  # add\\n", stub)
+>>> b = fingerprint("def f(value):\\n    twice = value * 2\\n    return twice + 1\\n", stub)
+>>> round(float(shared_share([a, b])[0, 1]), 2)
+1.0
+"""
+
+import ast
+import io
+import multiprocessing
+import warnings
+from functools import lru_cache
+
+import numpy as np
+from copydetect import CodeFingerprint, compare_files
+from copydetect.utils import highlight_overlap
+from markupsafe import escape
+from scipy import sparse
+
+K = 12  # characters of normalised code per k-gram (a name is one character)
+# copydetect hashes k-grams with Python's hash(), salted per process: with a window above 1, winnowing
+# would keep other k-grams in each run and a report would change between runs. Answers are a few hundred
+# characters, so every k-gram is kept (window 1): the same class gives the same scores every time.
+WINDOW = 1
+MARK_OPEN, MARK_CLOSE = "<mark>", "</mark>"
+
+
+def fingerprint(source, boilerplate_source=""):
+    """copydetect's :class:`CodeFingerprint` of ``source`` without the fingerprints of ``boilerplate_source``.
+
+    Parameters
+    ----------
+    source : str
+        An answer cell.
+    boilerplate_source : str
+        The released stub of the same exercise.
+
+    Returns
+    -------
+    copydetect.CodeFingerprint
+        ``hashes`` (a set), ``token_coverage`` (normalised characters not in the stub) and the spans.
+    """
+    if not boilerplate_source:
+        return _fingerprint(source, [])
+    boilerplate, docstring = _boilerplate(boilerplate_source)
+    if docstring and docstring in source:  # most of a stub's text; tokenising it is most of the time
+        source = source.replace(docstring, "", 1)
+    return _fingerprint(source, boilerplate)
+
+
+def fingerprint_many(items, jobs=1):
+    """``[fingerprint(source, stub) for source, stub in items]``, in ``jobs`` forked processes.
+
+    Forked, not spawned: copydetect's hash is salted per interpreter, and a fork keeps its parent's salt,
+    so fingerprints made in different workers can be compared.
+    """
+    items = list(items)
+    if jobs <= 1 or len(items) < 200 or "fork" not in multiprocessing.get_all_start_methods():
+        return [fingerprint(source, stub) for source, stub in items]
+    with multiprocessing.get_context("fork").Pool(jobs) as pool:
+        return pool.starmap(fingerprint, items, chunksize=max(1, len(items) // (8 * jobs)))
+
+
+@lru_cache(maxsize=512)
+def _boilerplate(stub):
+    """The stub's fingerprints (sorted, as copydetect wants them) and its docstring's lines as released."""
+    hashes = np.array(sorted(_fingerprint(stub, []).hashes), dtype=np.int64)
+    docstring = ""
+    try:
+        function = ast.parse(stub).body[0]
+        first = function.body[0]
+        if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) and isinstance(first.value.value, str):
+            docstring = "\n".join(stub.splitlines()[first.lineno - 1:first.end_lineno]) + "\n"
+    except (SyntaxError, IndexError, AttributeError):
+        pass
+    return hashes, docstring
+
+
+def _fingerprint(source, boilerplate):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return CodeFingerprint("answer.py", K, WINDOW, boilerplate=boilerplate, language="python",
+                               fp=io.StringIO(source))
+
+
+def shared_share(fingerprints):
+    """``S[i, j]``: share of the smaller of answers i and j's fingerprints that both have, shape (n, n).
+
+    The diagonal is 1 for an answer with fingerprints; an answer without any shares nothing.
+    """
+    columns = {}
+    rows, cols = [], []
+    for row, fp in enumerate(fingerprints):
+        for value in fp.hashes:
+            rows.append(row)
+            cols.append(columns.setdefault(value, len(columns)))
+    n = len(fingerprints)
+    incidence = sparse.csr_matrix((np.ones(len(rows), dtype=np.int32), (rows, cols)), shape=(n, max(len(columns), 1)))
+    shared = (incidence @ incidence.T).toarray().astype(float)
+    sizes = np.array([len(fp.hashes) for fp in fingerprints], dtype=float)
+    smaller = np.minimum.outer(sizes, sizes)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(smaller > 0, shared / np.where(smaller > 0, smaller, 1), 0.0)
+
+
+def highlighted(first, second, limit=6000):
+    """Both answers as escaped HTML with the spans they share in ``<mark>``; ``limit`` characters each."""
+    _, _, (slices_first, slices_second) = compare_files(first, second)
+    return _marked(first.raw_code, slices_first, limit), _marked(second.raw_code, slices_second, limit)
+
+
+def _marked(code, slices, limit):
+    code = code[:limit]
+    slices = np.asarray(slices, dtype=int).reshape(2, -1) if np.size(slices) else np.zeros((2, 0), dtype=int)
+    slices = np.minimum(slices[:, slices[0] < len(code)], len(code))
+    if slices.shape[1] == 0:
+        return str(escape(code))
+    return highlight_overlap(code, slices, MARK_OPEN, MARK_CLOSE, escape_html=True)[0]

@@ -1,0 +1,112 @@
+"""The similarity stage on a planted class (every planted finding reported) and an honest one (none).
+
+One module-scoped fixture writes both classes as notebooks (tests/similarity_classes.py) and runs the
+real command, ``python -m autograder similarity``, on each; the rest reads its outputs.
+"""
+
+import csv
+import subprocess
+import sys
+
+import pytest
+
+from autograder.lessons.paths import PROJECT_ROOT
+from autograder.lessons.catalog import load_catalog
+from autograder.similarity.answers import MAX_ANSWER_CHARACTERS, read_class, released_stubs
+from autograder.similarity.findings import PAIR_FLOOR, find_similar, pair_threshold
+from autograder.similarity.report import similar_answers_html
+from similarity_classes import honest_answers, planted_answers, write_class
+
+
+def _run(folder, out, *past):
+    result = subprocess.run([sys.executable, "-m", "autograder", "similarity", str(folder), "--out", str(out),
+                             *(["--past", *map(str, past)] if past else [])],
+                            cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-2000:]
+    with open(out / "similar_answers.csv", newline="", encoding="utf-8") as handle:
+        rows = list(csv.DictReader(handle))
+    return rows, (out / "similar_answers.html").read_text(encoding="utf-8"), result.stdout
+
+
+@pytest.fixture(scope="module")
+def classes(tmp_path_factory):
+    root = tmp_path_factory.mktemp("similarity")
+    students, planted = planted_answers()
+    honest = write_class(root / "honest", honest_answers())
+    planted_class = write_class(root / "planted", students)
+    return {"honest": _run(honest, root / "honest_out"), "planted": _run(planted_class, root / "planted_out"),
+            "planted findings": planted}
+
+
+def _findings(rows):
+    """``{finding number: (members, exercises)}`` of the student rows; reference rows apart."""
+    found = {}
+    for row in rows:
+        if row["kind"] != "reference":
+            members, exercises = found.setdefault(row["finding"], (set(), set()))
+            members |= {row["first"], row["second"]}
+            exercises.add(row["exercise"])
+    return found, {(row["first"], row["exercise"]) for row in rows if row["kind"] == "reference"}
+
+
+def test_every_planted_finding_is_reported_and_nothing_else(classes):
+    rows, _, _ = classes["planted"]
+    found, reference = _findings(rows)
+    clusters = {(frozenset(members), frozenset(exercises)) for members, exercises in found.values()}
+    expected = {(frozenset(m), frozenset(e)) for kind, m, e in classes["planted findings"] if kind == "cluster"}
+    assert clusters == expected
+    assert reference == {(student, exercise) for kind, student, exercise in classes["planted findings"]
+                         if kind == "reference"}
+
+
+def test_the_honest_class_has_no_finding(classes):
+    rows, html, stdout = classes["honest"]
+    assert rows == []
+    assert "No pair of students' answers stands out" in html
+    assert "nothing was sent anywhere" in stdout
+
+
+def test_the_page_marks_shared_spans_says_worth_a_look_and_never_copied(classes):
+    _, html, _ = classes["planted"]
+    assert html.count("<mark>") >= 6 and "worth a look" in html
+    assert "copied" not in html.lower() and "no answer was sent anywhere" in html
+
+
+def test_the_stub_never_counts_and_short_answers_are_not_compared():
+    stubs = released_stubs()
+    answers = {"rot_z": {"a": stubs["rot_z"], "b": stubs["rot_z"]},
+               "invert_rotation": {"a": "def invert_rotation(R):\n    return R.T\n",
+                                   "b": "def invert_rotation(M):\n    return M.T\n"}}
+    findings = find_similar(answers, {}, stubs)
+    assert findings.clusters == [] and findings.compared == {"rot_z": 0, "invert_rotation": 0}
+
+
+def test_a_past_term_answer_is_compared_with_this_class(tmp_path):
+    students, _ = planted_answers()
+    write_class(tmp_path / "now", {"ana": {"quat_multiply": students["pair_rename"]["quat_multiply"]}})
+    write_class(tmp_path / "2025", {"ben": {"quat_multiply": students["pair_rename_source"]["quat_multiply"]}})
+    rows, _, _ = _run(tmp_path / "now", tmp_path / "out", tmp_path / "2025")
+    assert [(r["kind"], r["first"], r["second"]) for r in rows] in ([("past term", "ana", "2025/ben")],
+                                                                     [("past term", "2025/ben", "ana")])
+
+
+def test_the_bar_rises_with_an_exercise_whose_answers_all_look_alike():
+    alike = [0.8, 0.82, 0.85, 0.8, 0.83, 0.81] * 20
+    assert pair_threshold(alike, answers=30) > 0.85 > PAIR_FLOOR
+    assert pair_threshold(alike, answers=5) == PAIR_FLOOR
+
+
+def test_student_text_is_escaped_in_the_section():
+    evil = '<script>alert(1)</script>'
+    source = planted_answers()[0]["pair_rename"]["quat_multiply"]
+    findings = find_similar({"quat_multiply": {evil: source, "b": source + f"\n# {evil}\n"}}, {}, released_stubs())
+    html = similar_answers_html(findings)
+    assert findings.clusters and "<script>" not in html and "&lt;script&gt;" in html
+
+
+def test_a_huge_answer_costs_no_more_than_a_long_one(tmp_path):
+    source = planted_answers()[0]["pair_rename"]["quat_multiply"]
+    huge = source + "\n    unused = [" + "1, " * 400_000 + "]\n"  # one line: a notebook's lines are bounded
+    write_class(tmp_path / "class", {"ana": {"quat_multiply": huge}, "bo": {"quat_multiply": source}})
+    answers = read_class(tmp_path / "class", load_catalog())
+    assert len(answers.by_exercise["quat_multiply"]["ana"]) == MAX_ANSWER_CHARACTERS
