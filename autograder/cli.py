@@ -39,6 +39,7 @@ import sys
 from collections import Counter
 from pathlib import Path
 
+from autograder.lessons.untrusted_text import one_line
 from autograder.reports.exports import EXPORTERS
 
 
@@ -76,18 +77,40 @@ def _cmd_record(args):
 
 
 def _print_table(results, problems_shown=3):
-    """The gradebook as a table; under a student graded with problems, the problems themselves."""
-    width = max([len("student")] + [len(r.student_id) for r in results])
+    """The gradebook as a table; under a student graded with problems, the problems themselves.
+    Student text is shown escaped, one line each, bounded (autograder/lessons/untrusted_text.py)."""
+    ids = [one_line(r.student_id, 40) for r in results]
+    width = max([len("student")] + [len(i) for i in ids])
     print(f"{'student':<{width}}  {'score':>13}  status")
-    for r in results:
+    for shown_id, r in zip(ids, results):
         score = f"{r.score:g} / {r.max_score:g}" if r.max_score else "—"
-        status = r.status + (f": {r.reason}" if r.reason else "")
-        print(f"{r.student_id:<{width}}  {score:>13}  {status}")
+        status = one_line(r.status + (f": {r.reason}" if r.reason else ""))
+        print(f"{shown_id:<{width}}  {score:>13}  {status}")
         for problem in r.problems[:problems_shown]:
-            print(f"{'':<{width}}  {'':>13}    - {problem[:160]}")
+            print(f"{'':<{width}}  {'':>13}    - {one_line(problem, 160)}")
         if len(r.problems) > problems_shown:
             print(f"{'':<{width}}  {'':>13}    - and {len(r.problems) - problems_shown} more "
                   "(see the student's feedback page)")
+
+
+def _print_skipped(ignored, results, shown=20):
+    """What was not graded: entries of the submissions folder (``ignored``) and, per student, what the
+    walk of their folder skipped; at most ``shown`` lines of each (``status`` lists them all)."""
+    inside = [r for r in results if r.skipped]
+    sections = [
+        (f"not graded: {len(ignored)} entr{'y' if len(ignored) == 1 else 'ies'} of the submissions folder that are "
+         "not student folders:", [one_line(item.line(), 200) for item in ignored]),
+        (f"not read: {len(inside)} student folder(s) hold entries the grader skipped (hidden, links, too deep):",
+         [f"{one_line(r.student_id, 40)}: {one_line('; '.join(r.skipped), 200)}" for r in inside])]
+    if ignored or inside:
+        print()
+    for title, lines in sections:
+        if lines:
+            print(title)
+            for line in lines[:shown]:
+                print(f"  {line}")
+            if len(lines) > shown:
+                print(f"  and {len(lines) - shown} more (`status` lists them all)")
 
 
 def _read_roster(path):
@@ -183,7 +206,8 @@ def _cmd_grade(args):
             print(f"  {count} re-graded: {because}")
     if summary.kept:
         print(f"  {len(summary.kept)} graded earlier and not under {path}, kept as they were: "
-              + ", ".join(summary.kept[:10]) + (" ..." if len(summary.kept) > 10 else ""))
+              + ", ".join(one_line(k, 40) for k in summary.kept[:10]) + (" ..." if len(summary.kept) > 10 else ""))
+    _print_skipped(summary.ignored, summary.results)
     if args.nbgrader_db:
         from autograder.integrations.nbgrader_export import export_to_gradebook
 
@@ -197,7 +221,7 @@ def _cmd_grade(args):
 
 
 def _cmd_status(args):
-    from autograder.batch.class_run import Outputs, collect_results, load_saved, saved_student_ids
+    from autograder.batch.class_run import Outputs, collect_results, load_saved, load_skipped, saved_student_ids
     from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
 
     outputs = Outputs(Path(args.out))
@@ -220,7 +244,8 @@ def _cmd_status(args):
     if because:
         print("\nwhy the last grading of a student was a re-grade:")
         for student_id, reason in sorted(because.items()):
-            print(f"  {student_id}: {reason}")
+            print(f"  {one_line(student_id, 40)}: {one_line(reason)}")
+    _print_skipped(load_skipped(outputs), results, shown=10_000)
     counts = Counter(r.status for r in results)
     print()
     print(", ".join(f"{count} {status}" for status, count in sorted(counts.items())))

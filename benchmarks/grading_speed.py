@@ -30,7 +30,6 @@ import os
 import shutil
 import subprocess
 import sys
-import threading
 import time
 from pathlib import Path
 
@@ -41,54 +40,8 @@ sys.path.insert(0, str(ROOT / "tests"))
 from autograder.authoring.sample_class import build_sample_class  # noqa: E402
 from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit)  # noqa: E402
 from autograder.lessons.catalog import load_catalog  # noqa: E402
+from process_memory import PeakMemory  # noqa: E402
 from support import benchmark_class  # noqa: E402
-
-
-class PeakMemory:
-    """Samples the resident memory of a process and all its descendants."""
-
-    def __init__(self, pid, interval=0.2):
-        self.pid, self.interval, self.peak = pid, interval, 0
-        self._stop = threading.Event()
-        self._thread = threading.Thread(target=self._run, daemon=True)
-
-    def __enter__(self):
-        self._thread.start()
-        return self
-
-    def __exit__(self, *exc):
-        self._stop.set()
-        self._thread.join()
-
-    def _tree(self):
-        children = {}
-        for entry in os.listdir("/proc"):
-            if entry.isdigit():
-                try:
-                    stat = open(f"/proc/{entry}/stat").read()
-                    children.setdefault(int(stat[stat.rfind(")") + 2:].split()[1]), []).append(int(entry))
-                except OSError:
-                    pass
-        found, stack = [self.pid], [self.pid]
-        while stack:
-            for child in children.get(stack.pop(), []):
-                found.append(child)
-                stack.append(child)
-        return found
-
-    def _rss(self, pid):
-        try:
-            for line in open(f"/proc/{pid}/status"):
-                if line.startswith("VmRSS:"):
-                    return int(line.split()[1]) * 1024
-        except OSError:
-            pass
-        return 0
-
-    def _run(self):
-        while not self._stop.is_set():
-            self.peak = max(self.peak, sum(self._rss(p) for p in self._tree()))
-            self._stop.wait(self.interval)
 
 
 def machine_cpu_seconds():

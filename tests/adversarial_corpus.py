@@ -189,6 +189,23 @@ def cases(context):
         Case("old_format", "a notebook in format 3", "lesson_zero", damage="nbformat3", reason="format"),
         Case("formula_id_plus", "a student id that starts with +", "full", student_id="+SUM(1;1)"),
         Case("formula_id_at", "a student id that starts with @", "full", student_id="@evil"),
+        # the grader's own walls (issue 32): every family of input that once stopped or stalled the batch
+        Case("fifo_notebook", "hands in a FIFO named like the notebook (reading it would block)", "lesson_zero",
+             damage="fifo", reason="FIFO"),
+        Case("metadata_100000_deep", "valid JSON whose metadata nests lists 100,000 deep", "lesson_zero",
+             damage="deep_metadata", reason="nests its JSON"),
+        Case("a_million_tiny_lists", "metadata of a million empty lists (each costs the parser memory)",
+             "lesson_zero", damage="tiny_lists", reason="JSON lists and objects"),
+        Case("answer_100000_deep", "an answer whose expression is nested 100,000 deep", "zero",
+             "def rot_z(a):\n    return " + "-" * 100_000 + "1\n"),
+        Case("prints_lone_surrogates", "prints text no encoder accepts, then answers right", "full",
+             "def rot_z(a):\n    print('\\ud800\\udcff')\n" + RIGHT_ROT_Z.split("\n", 1)[1]),
+        Case("id_with_escape_sequences", "an id that clears the screen and sets the window title", "full",
+             student_id="esc\x1b[2J\x1b]0;title\x07"),
+        Case("id_with_a_newline", "an id whose second line forges a row of the grade table", "full",
+             student_id="nl\nforged_row        12 ∕ 12  graded"),
+        Case("id_of_250_bytes", "an id as long as a file name may be", "full", student_id="L" * 250),
+        Case("id_not_utf8", "an id with bytes that are not UTF-8", "full", student_id="bytes\udcff\udce9"),
     ]
 
 
@@ -203,6 +220,12 @@ def damage_notebook(case, nb, text):
     if case.damage == "huge":
         nb.cells[0].setdefault("attachments", {})["big.txt"] = {"text/plain": "x" * (30 * 1024 * 1024)}
         return json.dumps(nb)
+    if case.damage in ("deep_metadata", "tiny_lists"):
+        data = json.loads(text)
+        data["metadata"]["hostile"] = "@@"
+        value = "[" * 100_000 + "]" * 100_000 if case.damage == "deep_metadata" else \
+            "[" + ",".join(["[]"] * 1_000_000) + "]"
+        return json.dumps(data).replace('"@@"', value)
     if case.damage == "nbformat3":
         data = json.loads(text)
         data["nbformat"] = 3

@@ -10,21 +10,30 @@ finished, and nothing outside the sandbox may have changed.
 import csv
 import json
 import os
+import signal
 import socket
+import stat
+import string
 import subprocess
 import sys
 import threading
 import time
+import unicodedata
 from pathlib import Path
 
 import pytest
 
 from adversarial_corpus import cases, damage_notebook
+from autograder.batch import class_run
 from autograder.batch.class_run import safe_name
-from autograder.grading.results import StudentResult
+from autograder.grading import pipeline, submissions
+from autograder.grading.results import LessonResult, StudentResult
+from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
-from autograder.lessons.notebook_files import read_master
-from autograder.lessons.paths import PROJECT_ROOT, SOLUTIONS
+from autograder.lessons.notebook_files import (NotARegularFile, UnreadableNotebook, canonical_text, parse_notebook,
+                                               read_master, read_regular_file, read_submission)
+from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
+from autograder.lessons.untrusted_text import csv_cell, html_text, one_line
 from autograder.sandbox import launcher
 from support import build_submission
 
@@ -74,6 +83,9 @@ def _build(case, folder):
         notebook.symlink_to(SOLUTIONS / LESSON.filename)
     elif case.damage == "symlink_folder":
         (folder / "solutions_link").symlink_to(SOLUTIONS, target_is_directory=True)
+    elif case.damage == "fifo":
+        notebook.unlink()
+        os.mkfifo(notebook)
     elif case.damage:
         text = damage_notebook(case, read_master(notebook), notebook.read_text(encoding="utf-8"))
         notebook.write_bytes(text.encode("latin-1", errors="replace") if case.damage == "latin1" else text.encode("utf-8"))
@@ -203,3 +215,228 @@ def test_recreated_and_duplicated_cells_are_reported(corpus):
     assert any("not found by its id" in p for p in recreated.problems)
     duplicate = corpus["results"]["duplicate_grade_id"]
     assert any("the last one was graded" in p for p in duplicate.problems)
+
+
+def test_student_text_reaches_the_terminal_escaped(corpus):
+    for stream in (corpus["run"].stdout, corpus["run"].stderr):
+        assert "\x1b" not in stream and "\x07" not in stream
+        assert not any(line.startswith("forged_row") for line in stream.splitlines())
+    assert "nl\\nforged_row" in corpus["run"].stdout
+
+
+# ------------------------------------------------------------------ the grader's own walls, one step at a time
+# (issue 32, item 1: each per-student step outside the sandbox is contained whatever the folder holds;
+# tests/test_hostile_class.py grades a whole class of such students, as root and as an ordinary user)
+
+HOSTILE_TEXTS = ["esc\x1b[2J\x1b]0;title\x07", "two\nlines\r\n", "bidi\u202eevil\u202c\u200b", "lone\ud800\udcff",
+                 "nul\0del\x7f", "x" * 100_000, "=1+1", "\t=cmd", "é" * 200, "%41~" * 50]
+
+
+class _Alarm:
+    """Fail instead of hanging: the block must end within ``seconds``."""
+
+    def __init__(self, seconds=10):
+        self.seconds = seconds
+
+    def __enter__(self):
+        def ring(signum, frame):
+            raise AssertionError(f"blocked for more than {self.seconds} s")
+        self.previous = signal.signal(signal.SIGALRM, ring)
+        signal.alarm(self.seconds)
+
+    def __exit__(self, *exc):
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, self.previous)
+
+
+def _make_special(kind, path):
+    if kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "socket":
+        server = socket.socket(socket.AF_UNIX)
+        server.bind(str(path))
+        server.close()
+    elif kind == "device":
+        if os.geteuid() != 0:
+            pytest.skip("only root makes device files")
+        os.mknod(path, 0o644 | stat.S_IFCHR, os.makedev(1, 5))  # /dev/zero: endless
+    elif kind == "link_to_device":
+        path.symlink_to("/dev/zero")
+    elif kind == "folder":
+        path.mkdir()
+
+
+@pytest.mark.parametrize("kind", ["fifo", "socket", "device", "link_to_device", "folder"])
+def test_only_regular_files_are_ever_opened(kind, tmp_path):
+    path = tmp_path / "01_frames_and_rotations.ipynb"
+    _make_special(kind, path)
+    with _Alarm():
+        with pytest.raises(NotARegularFile):
+            read_regular_file(path, 1000)
+        with pytest.raises(UnreadableNotebook, match="symbolic link|not a regular file"):
+            read_submission(path, root=tmp_path)
+        submissions.submission_hash(tmp_path)
+        files = submissions.match_lessons(tmp_path, load_catalog())
+    if kind != "folder":
+        assert files.chosen["01"] == path  # graded as unreadable, so the reason reaches the student
+
+
+def test_reading_is_bounded_whatever_the_file_size(tmp_path):
+    path = tmp_path / "01_frames_and_rotations.ipynb"
+    with open(path, "wb") as handle:
+        handle.truncate(8 * 2**30)  # sparse: 8 GiB that cost no disk
+    started = time.monotonic()
+    data, size = read_regular_file(path, 1000)
+    assert len(data) == 1000 and size == 8 * 2**30
+    with pytest.raises(UnreadableNotebook, match="over the"):
+        read_submission(path, root=tmp_path)
+    submissions.submission_hash(tmp_path)
+    assert time.monotonic() - started < 30
+
+
+def _notebook_with(value_text, where="metadata"):
+    nb = read_master(COURSE / LESSON.filename)
+    data = json.loads(canonical_text(nb))
+    (data if where == "metadata" else data["cells"][0])["metadata"]["hostile"] = "@@"
+    return json.dumps(data).replace('"@@"', value_text).encode("utf-8")
+
+
+@pytest.mark.parametrize("value, words", [
+    ("[" * 100_000 + "]" * 100_000, "nests its JSON"),
+    ('{"a":' * 100_000 + "0" + "}" * 100_000, "nests its JSON"),
+    ("[" * 900 + "]" * 900, "nests its JSON"),
+    ("[" * 70 + "]" * 70, "nests its JSON"),
+    ("[" + ",".join(["{}"] * 300_000) + "]", "JSON lists and objects"),
+    ("[" + ",".join(["1e9"] * 1_100_000) + "]", "JSON values"),
+])
+def test_notebook_json_is_bounded_in_depth_and_size(value, words):
+    for where in ("metadata", "cell"):
+        with pytest.raises(UnreadableNotebook, match=words):
+            parse_notebook(_notebook_with(value, where))
+
+
+def test_a_notebook_within_the_bounds_still_reads():
+    nb = parse_notebook(_notebook_with("[" * 50 + "]" * 50))
+    assert nb.cells and nb.metadata["hostile"]
+
+
+def test_too_many_cells_is_refused():
+    data = json.loads(canonical_text(read_master(COURSE / LESSON.filename)))
+    data["cells"] += [{"cell_type": "raw", "metadata": {}, "source": ""}] * 6000
+    with pytest.raises(UnreadableNotebook, match="cells"):
+        parse_notebook(json.dumps(data).encode())
+
+
+@pytest.mark.parametrize("source", [
+    "x = " + "-" * 100_000 + "1", "x = y" + ".a" * 100_000, "x = f" + "(1)" * 100_000, "x = 1" + "**1" * 100_000,
+    "x = " + "not " * 100_000 + "y", "x = " + "(" * 100_000 + ")" * 100_000, "def f():\n    return '\0'\n",
+    "def f():\n" + "    x = 1\n" * 100_000, "def f(:\n",
+])
+def test_any_cell_source_parses_or_gives_none(source):
+    assert cells.parse_source(source) is None
+
+
+def test_an_unexpected_error_on_one_notebook_costs_that_notebook(tmp_path, monkeypatch):
+    folder = build_submission(tmp_path / "ada", lessons=("01", "02"))
+
+    def broken(nb, lesson):
+        if lesson.number == "01":
+            raise KeyError("something the grader did not foresee")
+        return original(nb, lesson)
+
+    original = pipeline.extract.lesson_program
+    monkeypatch.setattr(pipeline.extract, "lesson_program", broken)
+    lessons, _, _ = pipeline._read_lessons(folder, load_catalog(), ("01", "02"))
+    by_number = {shell.number: (shell, program) for shell, _, program in lessons}
+    assert by_number["01"][0].status == "unreadable" and "KeyError" in by_number["01"][0].reason
+    assert by_number["02"][0].status == "graded" and by_number["02"][1] is not None
+
+
+def test_the_walk_of_a_folder_is_bounded_and_lists_what_it_skips(tmp_path):
+    folder = build_submission(tmp_path / "ada", lessons=("01",))
+    build_submission(folder / ".hidden", lessons=("01",))
+    build_submission(folder / "a" / "b" / "c", lessons=("01",))
+    (folder / "linked").symlink_to(tmp_path, target_is_directory=True)
+    for index in range(submissions.MAX_ENTRIES + 50):
+        (folder / f"z{index:05d}.txt").touch()
+    for index in range(submissions.MAX_NOTEBOOKS + 5):
+        (folder / f"n{index:02d}.ipynb").write_text("{}", encoding="utf-8")
+    found = submissions.scan_folder(folder)
+    assert folder / LESSON.filename in found.files and len(found.files) == submissions.MAX_NOTEBOOKS
+    lines = "\n".join(item.line() for item in found.skipped)
+    for words in (".hidden/: a hidden folder", "a/b/c/: deeper than", "linked: a symbolic link",
+                  "at most 50 notebooks", "more than 10,000 entries"):
+        assert words in lines, lines
+    assert len(found.skipped) <= submissions.MAX_SKIPPED_LISTED + 1
+
+
+def test_entries_that_are_not_students_are_listed_with_why(tmp_path):
+    build_submission(tmp_path / "ada", lessons=("01",))
+    build_submission(tmp_path / ".hidden", lessons=("01",))
+    (tmp_path / "stray.ipynb").write_text("{}", encoding="utf-8")
+    (tmp_path / "copy").symlink_to(tmp_path / "ada")
+    os.mkfifo(tmp_path / "pipe")
+    with _Alarm():
+        found = submissions.scan_submissions(tmp_path)
+    assert [sid for sid, _ in found.files] == ["ada"]
+    why = {item.path: item.why for item in found.skipped}
+    assert set(why) == {".hidden", "stray.ipynb", "copy", "pipe"}
+    assert "hidden" in why[".hidden"] and "symbolic link" in why["copy"] and "FIFO" in why["pipe"]
+
+
+@pytest.mark.parametrize("text", HOSTILE_TEXTS)
+def test_student_text_is_one_line_bounded_and_encodable(text):
+    for shown in (one_line(text), csv_cell(text), html_text(text, 300)):
+        assert len(shown) < 400
+        shown.encode("utf-8")  # never raises
+        assert not {c for c in shown if unicodedata.category(c) in ("Cc", "Cf", "Cs", "Zl", "Zp")} - {"\n", "\t"}
+    assert "\n" not in one_line(text) and "\t" not in one_line(text)
+    assert "<" not in html_text("<b>" + text) and not csv_cell(text).startswith(("=", "+", "-", "@"))
+
+
+def test_safe_names_are_bounded_portable_and_distinct():
+    ids = HOSTILE_TEXTS + ["", ".", "..", "../etc/passwd", "a/b", "aA", "a%41", "a~b", "L" * 250, "L" * 249 + "M",
+                           "S" * 200 + "-one", "S" * 200 + "-two", "é" * 127, "e\u0301", "é", "\udce9", "\ud800"]
+    names = [safe_name(i) for i in ids]
+    assert len(set(names)) == len(ids)
+    for name in names:
+        assert 0 < len(name) <= 120 and name not in (".", "..")
+        assert set(name) <= set(string.ascii_letters + string.digits + "._-%~")
+
+
+def _graded(student_id):
+    return StudentResult(student_id=student_id, status="graded", lessons=[
+        LessonResult(number="01", title="Frames", notebook="01.ipynb", status="graded")])
+
+
+def test_a_result_that_cannot_be_saved_still_reaches_the_gradebook(tmp_path, monkeypatch):
+    outputs = class_run.Outputs(tmp_path / "out")
+    stamp = class_run.Stamp("f", {})
+    monkeypatch.setattr(class_run, "save_result", lambda *a: (_ for _ in ()).throw(OSError(28, "No space left")))
+    task = ("mallory", str(tmp_path / "missing"), None, str(outputs.root), stamp, None)
+    result = class_run._record_death(task, "the grading process was killed by SIGKILL")
+    assert result.status == "could not grade" and "could not be saved" in result.problems[-1]
+    monkeypatch.undo()
+    class_run.save_result(outputs, _graded("ada"), stamp, "now")
+    results = class_run.write_reports(outputs, ["ada", "mallory"], {"ada", "mallory"}, {"mallory": result})
+    assert {r.student_id: r.status for r in results} == {"ada": "graded", "mallory": "could not grade"}
+    assert "mallory" in outputs.gradebook.read_text(encoding="utf-8")
+
+
+def test_the_report_is_written_even_when_the_full_page_fails(tmp_path, monkeypatch):
+    from autograder.reports import class_report
+
+    outputs = class_run.Outputs(tmp_path / "out")
+    class_run.save_result(outputs, _graded("esc\x1b[2J"), class_run.Stamp("f", {}), "now")
+    monkeypatch.setattr(class_report, "class_report_html", lambda *a, **k: 1 / 0)
+    class_run.write_reports(outputs, ["esc\x1b[2J"], {"esc\x1b[2J"})
+    page = outputs.report.read_text(encoding="utf-8")
+    assert "ZeroDivisionError" in page and "esc\\x1b[2J" in page and "\x1b" not in page
+
+
+def test_a_page_that_cannot_be_made_keeps_the_grade(tmp_path, monkeypatch):
+    outputs = class_run.Outputs(tmp_path / "out")
+    monkeypatch.setattr(class_run.feedback, "feedback_html", lambda result: 1 / 0)
+    class_run.save_result(outputs, _graded("ada"), class_run.Stamp("f", {}), "now")
+    assert class_run.load_saved(outputs, "ada").result.status == "graded"
+    assert "could not be made" in outputs.feedback_html("ada").read_text(encoding="utf-8")

@@ -2,7 +2,7 @@
 
 As root (CI, servers) the sandboxes run as unprivileged uids of their own; as an ordinary user (an
 instructor's laptop) bubblewrap makes a user namespace and every sandbox is that user. This test runs
-the files that test the walls a second time as ``nobody`` (tests/unprivileged.py) and requires them to
+the files that test the walls a second time as ``nobody`` (tests/ordinary_user.py) and requires them to
 pass. When the whole suite already runs as an ordinary user, it is skipped: those files ran that way.
 """
 
@@ -13,22 +13,26 @@ from pathlib import Path
 
 import pytest
 
-from unprivileged import as_ordinary_user, possible
+import ordinary_user
 
 ROOT = Path(__file__).resolve().parent.parent
-WALLS = ["test_sandbox.py", "test_warm_slots.py", "test_watching.py", "test_cleanup.py",
+WALLS = ["test_sandbox.py", "test_warm_slots.py", "test_feeder.py", "test_watching.py", "test_cleanup.py",
          "test_notebook_stage_walls.py", "test_adversarial.py"]
 
 
-@pytest.mark.skipif(not possible(), reason="runs only as root; as an ordinary user the files ran that way already")
+@pytest.mark.skipif(not ordinary_user.running_as_root() or ordinary_user.available() is not None,
+                    reason="runs only as root; as an ordinary user the files ran that way already")
 def test_the_walls_hold_as_an_ordinary_user():
     work = Path(tempfile.mkdtemp(prefix="walls-as-nobody-"))  # not under pytest's root-only folder
+    (work / "holds").mkdir()
     work.chmod(0o777)
     files = [str(ROOT / "tests" / name) for name in WALLS if (ROOT / "tests" / name).exists()]
     command = [sys.executable, "-m", "pytest", *files, "-p", "no:cacheprovider", "-n", "1", "-q",
                "--rootdir", str(ROOT), "-o", "addopts="]
     try:
-        done = subprocess.run(as_ordinary_user(command), cwd=work, capture_output=True, text=True, timeout=2400)
+        argv = ordinary_user.as_ordinary_user(["env", "HOME=/tmp", *command], reach=[ROOT, work],
+                                              holds=work / "holds")
+        done = subprocess.run(argv, cwd=work, capture_output=True, text=True, timeout=2400)
     finally:
         subprocess.run(["rm", "-rf", str(work)], check=False)
     summary = (done.stdout.strip().splitlines() or [""])[-1]

@@ -47,3 +47,21 @@ def test_a_file_a_link_and_nothing(tmp_path):
     assert remove_tree(tmp_path / "link") and (tmp_path / "f").exists()
     assert remove_tree(tmp_path / "f") and not (tmp_path / "f").exists()
     assert remove_tree(tmp_path / "never-made")
+
+
+def test_a_killed_graders_folders_are_swept_and_a_live_ones_kept(tmp_path, monkeypatch):
+    import subprocess
+    import tempfile
+
+    from autograder.sandbox import cleanup
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    gone = subprocess.Popen(["true"])
+    gone.wait()  # a pid that no process has now
+    stale = tmp_path / f"autograder-slot0-p{gone.pid}-x1"
+    (stale / "scratch" / "deep").mkdir(parents=True)
+    mine = cleanup.private_folder("sandbox")
+    other = tmp_path / "autograder-notes"  # not one of ours
+    other.mkdir()
+    assert cleanup.sweep_stale() == 1
+    assert not stale.exists() and os.path.isdir(mine) and other.exists()

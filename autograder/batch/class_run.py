@@ -12,7 +12,16 @@ Before any student, the canary (:mod:`autograder.grading.canary`) grades the
 reference solutions through the same pipeline; if they do not get full marks
 the batch stops and nothing is written.
 
+Every per-student step is contained: whatever a student's folder holds,
+and whatever goes wrong while grading, saving or recording that student
+(any exception; a result that cannot be saved is kept in memory for this
+run's gradebook), costs that student alone, with the reason, and the
+gradebook and the class report are always written. Entries of the
+submissions folder that are not students (hidden, links, stray files) are
+listed with why in ``OUT/skipped.json``, the run's output and the report.
+
 Each student's result is written atomically to ``OUT/students/<id>.json``
+(a bounded, collision-free file name: :func:`~autograder.lessons.untrusted_text.safe_name`)
 as soon as it is ready, with the content hash of the submission and the
 grader's fingerprint (:mod:`autograder.grading.fingerprint`: its code, the masters,
 the hidden suite, coursekit, the options, the isolation mode, the library
@@ -25,10 +34,11 @@ import hashlib
 import json
 import os
 import signal
+import sys
 import time
 import traceback
 from contextlib import nullcontext
-from dataclasses import dataclass, field, replace
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
 from autograder.grading import submissions
@@ -39,39 +49,25 @@ from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.reference import load_reference
+from autograder.lessons.untrusted_text import one_line, safe_name
 from autograder.reports import feedback
 from autograder.reports.gradebook import gradebook_csv
 from autograder.reports.gradescope_results import results_json
 from autograder.reports.lateness import apply_late_policy
-from autograder.sandbox import launcher, process_tree, warm
+from autograder.reports.plain_page import plain_page
+from autograder.sandbox import cleanup, launcher, process_tree, warm
 from autograder.sandbox.forking import fork_each
 
 STUDENT_TIMEOUT = 900
 
 
-def safe_name(student_id):
-    """A file name for a student id: letters, digits, ``._-`` kept, the rest %-escaped.
-
-    Examples
-    --------
-    >>> safe_name("=cmd|' /C calc'!A0")
-    '%3Dcmd%7C%27%20%2FC%20calc%27%21A0'
-    """
-    out = []
-    for char in student_id:
-        if char.isascii() and (char.isalnum() or char in "._-"):
-            out.append(char)
-        else:
-            out.append("".join(f"%{b:02X}" for b in char.encode("utf-8")))
-    name = "".join(out)
-    return name if name not in ("", ".", "..") else f"%{name}"
-
-
 def write_atomically(path, text):
+    """Write ``text`` to ``path`` through a temporary file and a rename; text that UTF-8 cannot encode
+    (lone surrogates) is written as backslash escapes rather than failing."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    with open(tmp, "w", encoding="utf-8") as handle:
+    with open(tmp, "w", encoding="utf-8", errors="backslashreplace") as handle:
         handle.write(text)
         handle.flush()
         os.fsync(handle.fileno())
@@ -96,6 +92,11 @@ class Outputs:
     @property
     def gradebook(self):
         return self.root / "grades.csv"
+
+    @property
+    def skipped(self):
+        """Entries of the submissions folder that are not students, with why (JSON)."""
+        return self.root / "skipped.json"
 
     @property
     def report(self):
@@ -145,11 +146,24 @@ def regrade_reason(saved, stamp, submission_hash, force=False):
 
 
 def save_result(outputs, result, stamp, graded_at):
+    """Write a student's feedback page, Gradescope JSON and saved result (last: it marks the student done).
+
+    A page that cannot be made from the result is replaced by a plain one that says why; the grade is kept.
+    """
     payload = {"fingerprint": stamp.fingerprint, "fingerprint_parts": stamp.parts,
                "graded_because": stamp.because, "graded_at": graded_at, "result": json.loads(result.to_json())}
-    write_atomically(outputs.feedback_html(result.student_id), feedback.feedback_html(result))
-    write_atomically(outputs.gradescope_json(result.student_id),
-                     json.dumps(results_json(result, seconds=result.seconds), indent=1, ensure_ascii=False))
+    try:
+        page = feedback.feedback_html(result)
+    except Exception as error:
+        page = plain_page(f"Feedback for {result.student_id}", [result],
+                          f"the full feedback page could not be made ({type(error).__name__}: {error})")
+    try:
+        gradescope = results_json(result, seconds=result.seconds)
+    except Exception as error:
+        gradescope = {"score": result.score, "output": f"the detailed results could not be made "
+                                                       f"({type(error).__name__}: {error})"}
+    write_atomically(outputs.feedback_html(result.student_id), page)
+    write_atomically(outputs.gradescope_json(result.student_id), json.dumps(gradescope, indent=1, ensure_ascii=False))
     write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
 
 
@@ -169,21 +183,40 @@ def _grade_task(task):
     except Exception as error:  # our fault, not the student's: report, keep the batch going
         result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                                reason=f"{type(error).__name__}: {error}",
-                               submission_hash=submissions.submission_hash(folder))
+                               submission_hash=_hash_or_blank(folder))
         result.problems.append(traceback.format_exc(limit=3).strip().splitlines()[-1])
     finally:
         signal.alarm(0)
         process_tree.kill_descendants()
-    save_result(outputs, result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
+    try:
+        save_result(outputs, result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
+    except Exception as error:  # the parent records this student from what it knows (_record_death)
+        print(one_line(f"could not save the result of {student_id}: {type(error).__name__}: {error}"),
+              file=sys.stderr)
+
+
+def _hash_or_blank(folder):
+    try:
+        return submissions.submission_hash(folder)
+    except Exception:  # the folder went away or cannot be listed: the next run grades it again anyway
+        return ""
 
 
 def _record_death(task, problem):
-    """The child grading a student died: save a 'could not grade' result that says why."""
+    """The child grading a student died: save a 'could not grade' result that says why, and return it.
+
+    Never raises: when even this result cannot be saved, it is returned with a note, and the run keeps
+    it in memory for this run's gradebook and report.
+    """
     student_id, folder, _, out_root, stamp, _ = task
     result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                            reason=f"{problem}; nothing else was affected, run grade again to retry",
-                           submission_hash=submissions.submission_hash(folder))
-    save_result(Outputs(Path(out_root)), result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
+                           submission_hash=_hash_or_blank(folder))
+    try:
+        save_result(Outputs(Path(out_root)), result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
+    except Exception as error:
+        result.problems.append(f"this result could not be saved ({type(error).__name__}: {error}); it is in "
+                               "this run's gradebook and report only")
     return result
 
 
@@ -194,6 +227,7 @@ class RunSummary:
     results: list = field(default_factory=list)  # StudentResult of everyone in the gradebook
     reasons: dict = field(default_factory=dict)  # student id -> why it was (re-)graded
     kept: list = field(default_factory=list)  # graded earlier, not under this run's path: kept as saved
+    ignored: list = field(default_factory=list)  # Skipped: entries of the submissions folder that are not students
     canary: object = None  # CanaryResult
     seconds: float = 0.0
 
@@ -245,13 +279,15 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     """
     started = time.monotonic()
     outputs = Outputs(Path(out_dir))
-    students = submissions.student_folders(path)
+    found = submissions.scan_submissions(path)
+    students = found.files
     unknown = sorted(set(only) - {student_id for student_id, _ in students})
     if unknown:
         raise UnknownStudents(f"no submission folder under {path} for: {', '.join(unknown)}")
     _prewarm()
+    cleanup.sweep_stale()  # the temporary folders of a grader that was killed mid-batch
     parts = fingerprint_parts(options)
-    summary = RunSummary()
+    summary = RunSummary(ignored=found.skipped)
     if announce:
         announce("canary: grading the reference solutions first (once per grader version)...")
     summary.canary = ensure_reference_passes(options, parts)
@@ -268,8 +304,11 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
         if only and student_id not in only:
             summary.skipped.append(student_id)
             continue
-        because = regrade_reason(load_saved(outputs, student_id), stamp, submissions.submission_hash(folder),
-                                 force or bool(only))
+        try:
+            because = regrade_reason(load_saved(outputs, student_id), stamp, submissions.submission_hash(folder),
+                                     force or bool(only))
+        except Exception as error:  # this student only: grade them, and say why
+            because = f"graded: whether the submission changed could not be checked ({type(error).__name__})"
         if because is None:
             summary.skipped.append(student_id)
             continue
@@ -279,10 +318,14 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     if progress:
         progress.start(len(tasks))
 
+    unsaved = {}  # student id -> a result that could not be saved: it still goes into this run's reports
+
     def on_done(task, problem):
         saved = None if problem else load_saved(outputs, task[0])
         if saved is None:
             result = _record_death(task, problem or "the grading process ended without saving a result")
+            if load_saved(outputs, task[0]) is None:
+                unsaved[task[0]] = result
         else:
             result = saved.result
         row = (result.student_id, result.score, result.max_score, result.status, result.seconds)
@@ -304,13 +347,18 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     earlier = set(saved_student_ids(outputs))
     summary.kept = sorted(earlier - submitted)
     everyone = submitted | earlier
-    summary.results = write_reports(outputs, sorted(everyone | set(roster)), everyone)
+    write_atomically(outputs.skipped, json.dumps([asdict(item) for item in found.skipped], indent=1))
+    summary.results = write_reports(outputs, sorted(everyone | set(roster)), everyone, unsaved)
     summary.seconds = time.monotonic() - started
     return summary
 
 
-def collect_results(outputs, student_ids, submitted=None):
-    """Saved results for ``student_ids``; a student without one is missing or not finished."""
+def collect_results(outputs, student_ids, submitted=None, unsaved=None):
+    """Saved results for ``student_ids``; a student without one is missing or not finished.
+
+    ``unsaved``: ``{student_id: StudentResult}`` of this run that could not be saved, used when no saved
+    result can be read.
+    """
     results, graded_at = [], {}
     for student_id in student_ids:
         path = outputs.student_json(student_id)
@@ -319,7 +367,9 @@ def collect_results(outputs, student_ids, submitted=None):
             results.append(StudentResult.from_json(json.dumps(data["result"])))
             graded_at[student_id] = data.get("graded_at", "")
         except (OSError, ValueError, KeyError, TypeError):
-            if submitted is not None and student_id not in submitted:
+            if unsaved and student_id in unsaved:
+                results.append(unsaved[student_id])
+            elif submitted is not None and student_id not in submitted:
                 results.append(StudentResult(student_id=student_id, status=MISSING,
                                              reason="no submission folder"))
             else:
@@ -329,12 +379,29 @@ def collect_results(outputs, student_ids, submitted=None):
     return results, graded_at
 
 
-def write_reports(outputs, student_ids, submitted=None):
-    """Write grades.csv and report.html for ``student_ids``; return their results."""
+def load_skipped(outputs):
+    """The entries of the submissions folder that the last run did not grade, as ``Skipped``."""
+    try:
+        return [submissions.Skipped(**item) for item in json.loads(outputs.skipped.read_text(encoding="utf-8"))]
+    except (OSError, ValueError, TypeError):
+        return []
+
+
+def write_reports(outputs, student_ids, submitted=None, unsaved=None):
+    """Write grades.csv and report.html for ``student_ids``; return their results.
+
+    The report is always written: if the full page cannot be made, a plain one lists every student's
+    status and says why.
+    """
     from autograder.reports.class_report import class_report_html
 
-    results, graded_at = collect_results(outputs, student_ids, submitted)
+    results, graded_at = collect_results(outputs, student_ids, submitted, unsaved)
     catalog = load_catalog()
     write_atomically(outputs.gradebook, gradebook_csv(results, catalog, graded_at))
-    write_atomically(outputs.report, class_report_html(results, catalog))
+    try:
+        page = class_report_html(results, catalog, skipped=load_skipped(outputs))
+    except Exception as error:
+        page = plain_page("Class report", results, f"the full report could not be made ({type(error).__name__}: "
+                                                   f"{error})")
+    write_atomically(outputs.report, page)
     return results

@@ -18,13 +18,13 @@ CanaryResult(cached=True, seconds=0.0, ...)
 
 import json
 import os
-import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 from autograder.grading.fingerprint import fingerprint
 from autograder.grading.results import StudentResult
+from autograder.sandbox import cleanup
 from autograder.sandbox.forking import fork_each
 
 
@@ -105,7 +105,7 @@ def ensure_reference_passes(options, parts, timeout=900):
     from autograder.authoring.sample_class import build_reference_submission
 
     started = time.monotonic()
-    with tempfile.TemporaryDirectory(prefix="autograder-canary-") as base:
+    with cleanup.private_folder_for("canary") as base:
         folder = build_reference_submission(Path(base) / "reference", lessons=options.lessons)
         target = Path(base) / "result.json"
         deaths = []

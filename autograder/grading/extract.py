@@ -27,11 +27,19 @@ def _defines(tree, name):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name == name]
 
 
-def _parse(source):
-    try:
-        return ast.parse(source)
-    except (SyntaxError, ValueError):
-        return None
+def _definitions(code_cells):
+    """``{index: names of the top-level functions}`` of the code cells that may hold an answer (each cell
+    parsed once, whatever the number of exercises looked for)."""
+    found = {}
+    for index, cell in code_cells:
+        if cells.is_check_cell(cell) or cells.is_setup_cell(cell):
+            continue
+        source = cells.source_text(cell)
+        tree = cells.parse_source(source) if "def" in source else None
+        if tree is not None:
+            found[index] = {node.name for node in tree.body
+                            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))}
+    return found
 
 
 def _fallback_source(source, tree, name):
@@ -76,6 +84,7 @@ def lesson_program(nb, lesson):
         ``problems`` lists what was odd (duplicates, fallbacks, missing cells).
     """
     code_cells = [(index, cell) for index, cell in enumerate(nb.cells) if cell.get("cell_type") == "code"]
+    defined = None  # index -> names of the functions a cell defines, worked out once, when first needed
     chosen, problems = [], []
     for exercise in lesson.exercises:
         name = exercise.name
@@ -86,18 +95,14 @@ def lesson_program(nb, lesson):
             index, cell = tagged[-1]
             chosen.append((index, name, cells.source_text(cell)))
             continue
-        fallback = None
-        for index, cell in code_cells:
-            if cells.is_check_cell(cell) or cells.is_setup_cell(cell):
-                continue
-            source = cells.source_text(cell)
-            tree = _parse(source)
-            if tree is not None and _defines(tree, name):
-                fallback = (index, name, _fallback_source(source, tree, name))
-        if fallback:
+        if defined is None:
+            defined = _definitions(code_cells)
+        found = [index for index, names in defined.items() if name in names]
+        if found:
+            source = cells.source_text(nb.cells[found[-1]])
             problems.append(f"{name}: the answer cell was not found by its id; graded the definition "
-                            f"of {name} found in cell {fallback[0] + 1}")
-            chosen.append(fallback)
+                            f"of {name} found in cell {found[-1] + 1}")
+            chosen.append((found[-1], name, _fallback_source(source, cells.parse_source(source), name)))
         else:
             problems.append(f"{name}: no answer cell and no definition of {name} found in the notebook")
     chosen.sort()

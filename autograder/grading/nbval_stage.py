@@ -26,7 +26,6 @@ import os
 import select
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -34,7 +33,7 @@ from autograder.grading.results import NotebookRun
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import SOLUTIONS
-from autograder.sandbox import launcher
+from autograder.sandbox import cleanup, launcher
 from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
 
 SANITIZE = """[hex addresses]
@@ -92,7 +91,7 @@ def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS):
     runs = {}
     sandboxes, channels, problems = _student_channels(runnable, options)
     try:
-        with tempfile.TemporaryDirectory(prefix="autograder-nbval-") as base:
+        with cleanup.private_folder_for("nbval") as base:
             sandbox_dir, scratch_dir = launcher.prepare_dirs(base)
             (sandbox_dir / "nbval_sanitize.cfg").write_text(SANITIZE)
             names = []

@@ -20,6 +20,7 @@ from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for
 from autograder.grading.results import (COULD_NOT_GRADE, GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult,
                                         LessonResult, NotebookRun, StudentResult)
 from autograder.grading.suite import StudentProxy, run_hidden_suite
+from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import UnreadableNotebook, read_submission
 from autograder.lessons.reference import load_reference
@@ -47,9 +48,8 @@ def _score(max_points, checks):
 
 def _calls_to_other_exercises(source, names):
     """Exercise names (from ``names``) that a student's answer cell refers to."""
-    try:
-        tree = ast.parse(source)
-    except (SyntaxError, ValueError):
+    tree = cells.parse_source(source)
+    if tree is None:
         return set()
     return {node.id for node in ast.walk(tree) if isinstance(node, ast.Name) and node.id in names}
 
@@ -70,12 +70,13 @@ def _note_failed_prerequisites(shell, program):
 
 
 def _read_lessons(folder, catalog, only=()):
-    """For each graded lesson: (LessonResult shell, notebook path, program or None); and notes on the files
-    (which of several notebooks was graded, notebooks that belong to no lesson)."""
+    """For each graded lesson: (LessonResult shell, notebook path, program or None); notes on the files
+    (which of several notebooks was graded, notebooks that belong to no lesson); and one line for each
+    thing of the folder that was skipped (hidden, a link, too deep), with why."""
     files = submissions.match_lessons(folder, catalog)
     notes = [files.notes[number] for number in sorted(files.notes) if not only or number in only]
-    notes += [f"{path.relative_to(folder)} was not graded: it holds no exercise of the course "
-              "(no answer cell and no exercise function)" for path in files.unmatched]
+    notes += [f"{path.relative_to(folder)} was not graded: " + (files.unreadable.get(path) or "it holds no exercise "
+              "of the course (no answer cell and no exercise function)") for path in files.unmatched]
     found = []
     for lesson in catalog.graded_lessons:
         if only and lesson.number not in only:
@@ -88,13 +89,16 @@ def _read_lessons(folder, catalog, only=()):
             continue
         shell.notebook = str(path.relative_to(folder))
         try:
-            nb = read_submission(path, root=folder)
+            program = extract.lesson_program(read_submission(path, root=folder), lesson)
         except UnreadableNotebook as error:
             shell.status, shell.reason = "unreadable", str(error)
-            found.append((shell, path, None))
-            continue
-        found.append((shell, path, extract.lesson_program(nb, lesson)))
-    return found, notes
+            program = None
+        except Exception as error:  # whatever else this notebook does to the grader costs this notebook only
+            shell.status = "unreadable"
+            shell.reason = f"the grader could not read this notebook ({type(error).__name__}: {error})"
+            program = None
+        found.append((shell, path, program))
+    return found, notes, [item.line() for item in files.skipped]
 
 
 def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=None):
@@ -105,7 +109,7 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
     result = StudentResult(student_id=student_id, status=GRADED,
                            submission_hash=submissions.submission_hash(folder),
                            isolation=launcher.isolation()[0])
-    lessons, file_notes = _read_lessons(folder, catalog, options.lessons)
+    lessons, file_notes, result.skipped = _read_lessons(folder, catalog, options.lessons)
     result.problems.extend(file_notes)
     programs = {shell.number: program for shell, _, program in lessons if program is not None}
     unavailable = {shell.number: f"{shell.notebook}: {shell.reason}" for shell, _, program in lessons
@@ -151,14 +155,18 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
         # runs only where it can still change the grade; the other lessons say why it did not run.
         worth_running = [(shell, path, program) for shell, path, program in lessons
                          if program is not None and full_hidden_marks(shell)]
-        runs = run_notebooks(folder, worth_running, options, catalog) if worth_running else {}
+        stage_failed = ""
+        try:
+            runs = run_notebooks(folder, worth_running, options, catalog) if worth_running else {}
+        except Exception as error:  # costs this student's notebook points, with the reason
+            runs, stage_failed = {}, f"the notebook stage failed ({type(error).__name__}: {error})"
         for shell, _, program in lessons:
             if program is not None and not full_hidden_marks(shell):
                 shell.run = not_run_for_lost_points(options.notebook_points)
             else:
                 shell.run = runs.get(shell.number) or NotebookRun(
                     status="failed", max_points=options.notebook_points,
-                    failures=[shell.reason or "the notebook stage did not run"])
+                    failures=[shell.reason or stage_failed or "the notebook stage did not run"])
             award(shell)
 
     result.problems.extend(suite_problems)

@@ -92,6 +92,7 @@ class StudentResult:
     problems: list = field(default_factory=list)
     seconds: float = 0.0
     isolation: str = ""  # "namespaces" or "limits": how the student's code was isolated (sandbox.launcher)
+    skipped: list = field(default_factory=list)  # "path: why" for what the grader saw in the folder and did not use
 
     @property
     def score(self):

@@ -13,53 +13,197 @@ several notebooks match one lesson, the one holding the most of the
 student's own work is graded and the choice is explained; notebooks that
 match no lesson are listed. A notebook that cannot be read at all is matched
 by its file name (or its ``NN_`` prefix), so its reason reaches the student.
-Symbolic links are never followed.
+
+Whatever a folder holds, looking at it costs a bounded time and memory and
+never blocks: symbolic links are never followed, only regular files are
+opened (:func:`~autograder.lessons.notebook_files.read_regular_file`), walks
+are iterative and bounded (:func:`scan_folder`), and a notebook that cannot
+be read or parsed costs that notebook only. Everything skipped is listed with
+why (:class:`Skipped`): hidden entries, links, stray files at the top of the
+submissions folder, folders deeper than the search depth.
 """
 
 import ast
 import hashlib
 import os
 import re
+import stat
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
 from autograder.lessons import cells
-from autograder.lessons.notebook_files import UnreadableNotebook, read_master, read_submission
+from autograder.lessons.notebook_files import (MAX_NOTEBOOK_BYTES, UnreadableNotebook, file_kind, read_master,
+                                               read_regular_file, read_submission)
 from autograder.lessons.paths import COURSE
 
-MAX_DEPTH = 2
+MAX_DEPTH = 2  # folders searched below a student's folder
+MAX_ENTRIES = 10_000  # entries looked at in one student's folder, all levels together
+MAX_NOTEBOOKS = 50  # notebooks read per student (a course has 9)
+MAX_SKIPPED_LISTED = 50  # skipped entries listed one by one per student; the rest are counted
+
+
+@dataclass(frozen=True)
+class Skipped:
+    """Something the grader saw and did not use: ``path`` (as found, relative) and ``why``."""
+
+    path: str
+    why: str
+
+    def line(self):
+        return f"{self.path}: {self.why}"
+
+
+@dataclass
+class Found:
+    """What a folder holds for the grader: the files it asked for, and what it skipped with why."""
+
+    files: list = field(default_factory=list)  # Paths
+    skipped: list = field(default_factory=list)  # Skipped
+
+
+def _top_level_why(entry):
+    """Why an entry of the submissions folder is not a student, or ``None`` when it is one."""
+    if entry.name.startswith("."):
+        return "hidden (its name starts with a dot): not graded"
+    try:
+        mode = entry.stat(follow_symlinks=False).st_mode
+    except OSError as error:
+        return f"cannot be read ({error.strerror}): not graded"
+    if stat.S_ISDIR(mode):
+        return None
+    if stat.S_ISLNK(mode):
+        return "a symbolic link: links are never followed, not graded"
+    return f"{file_kind(mode)}, not a student folder (each student's notebooks go in a folder of their own)"
+
+
+def scan_submissions(path):
+    """The students under ``path`` and what was skipped there (see the module docstring).
+
+    Returns
+    -------
+    Found
+        ``files``: sorted ``[(student_id, folder)]``; ``skipped``: hidden entries, links, stray files.
+    """
+    path = Path(path)
+    if (path / "submitted").is_dir() and not (path / "submitted").is_symlink():
+        path = path / "submitted"
+    found = Found()
+    with os.scandir(path) as entries:
+        for entry in sorted(entries, key=lambda e: e.name):
+            why = _top_level_why(entry)
+            if why is None:
+                found.files.append((entry.name, Path(entry.path)))
+            else:
+                found.skipped.append(Skipped(entry.name, why))
+    return found
 
 
 def student_folders(path):
     """Sorted ``[(student_id, folder)]`` under ``path`` (see the module docstring)."""
-    path = Path(path)
-    if (path / "submitted").is_dir() and not (path / "submitted").is_symlink():
-        path = path / "submitted"
-    found = []
-    for entry in sorted(path.iterdir()):
-        if entry.is_dir() and not entry.is_symlink() and not entry.name.startswith("."):
-            found.append((entry.name, entry))
-    return found
+    return scan_submissions(path).files
 
 
 def is_notebook_name(name):
     return name.endswith(".ipynb") and not name.startswith(".")
 
 
-def files_in(folder, wanted):
-    """Paths of the files (and links) whose name ``wanted(name)`` accepts, up to two levels down,
-    in sorted order, skipping hidden folders and never following a link."""
+def _listing(directory, budget, wanted, max_files):
+    """The entries of one folder, sorted by name: the first ``budget`` of any kind, and beyond them
+    at most ``max_files`` more that ``wanted`` accepts or that are folders (so a flood of files cannot
+    hide the notebooks); and how many were passed over."""
+    entries, extra, passed_over = [], 0, 0
+    with os.scandir(directory) as scan:
+        for entry in scan:
+            if len(entries) < budget:
+                entries.append(entry)
+            elif extra < max_files and (wanted(entry.name) or _is_folder(entry)):
+                entries.append(entry)
+                extra += 1
+            else:
+                passed_over += 1
+    return sorted(entries, key=lambda e: e.name), passed_over
+
+
+def _is_folder(entry):
+    try:
+        return entry.is_dir(follow_symlinks=False)
+    except OSError:
+        return False
+
+
+def scan_folder(folder, wanted=is_notebook_name, max_files=MAX_NOTEBOOKS):
+    """The files of a student's ``folder`` that ``wanted(name)`` accepts, and everything skipped, with why.
+
+    The walk is iterative and bounded: :data:`MAX_DEPTH` folders down, :data:`MAX_ENTRIES` entries and
+    ``max_files`` wanted files in all. Links are never followed (a link named like a wanted file is
+    returned, so that reading it can say why it is refused); hidden folders and hidden notebooks, links
+    to folders, folders too deep, folders that cannot be read and what is over a bound are listed in
+    ``skipped``. Files are in the order of a top-down walk with sorted names.
+
+    Examples
+    --------
+    >>> found = scan_folder(Path("class/dan"))                               # doctest: +SKIP
+    >>> [p.name for p in found.files], [s.line() for s in found.skipped]
+    (['dan_exp_log_final.ipynb'], ['.ipynb_checkpoints/: a hidden folder, not searched'])
+    """
     folder = Path(folder)
-    for root, dirs, files in os.walk(folder, followlinks=False):
-        depth = len(Path(root).relative_to(folder).parts)
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and depth < MAX_DEPTH)
-        yield from (Path(root) / name for name in sorted(files) if wanted(name))
+    found, budget = Found(), MAX_ENTRIES
+    stack = [(folder, 0)]
+    while stack:
+        directory, depth = stack.pop()
+        relative = directory.relative_to(folder).as_posix() + "/" if directory != folder else ""
+        try:
+            entries, passed_over = _listing(directory, max(budget, 0), wanted, max_files)
+        except OSError as error:
+            found.skipped.append(Skipped(relative or "./", f"cannot be read ({error.strerror}), not searched"))
+            continue
+        budget -= len(entries)
+        if passed_over:
+            found.skipped.append(Skipped(relative or "./", f"more than {MAX_ENTRIES:,} entries in the submission: "
+                                                          f"past them only notebooks and folders were looked at, "
+                                                          f"{passed_over:,} other entries were not"))
+        subfolders = []
+        for entry in entries:
+            name = f"{relative}{entry.name}"
+            try:
+                is_link, is_dir = entry.is_symlink(), entry.is_dir(follow_symlinks=False)
+            except OSError as error:
+                found.skipped.append(Skipped(name, f"cannot be read ({error.strerror})"))
+                continue
+            if entry.name.startswith("."):
+                if is_dir or entry.name.endswith(".ipynb"):
+                    what = "a hidden folder, not searched" if is_dir else "a hidden notebook, not graded"
+                    found.skipped.append(Skipped(name + ("/" if is_dir else ""), what))
+            elif is_dir:
+                if depth < MAX_DEPTH:
+                    subfolders.append(Path(entry.path))
+                else:
+                    found.skipped.append(Skipped(name + "/", f"deeper than {MAX_DEPTH} folders below the "
+                                                             "student's folder, not searched"))
+            elif wanted(entry.name):
+                if len(found.files) < max_files:
+                    found.files.append(Path(entry.path))
+                else:
+                    found.skipped.append(Skipped(name, f"not read: at most {max_files} notebooks are read "
+                                                       "per student"))
+            elif is_link:
+                found.skipped.append(Skipped(name, "a symbolic link, not followed"))
+        stack.extend((sub, depth + 1) for sub in reversed(subfolders))
+    if len(found.skipped) > MAX_SKIPPED_LISTED:
+        more = len(found.skipped) - MAX_SKIPPED_LISTED
+        found.skipped[MAX_SKIPPED_LISTED:] = [Skipped("…", f"and {more:,} more entries skipped as above")]
+    return found
+
+
+def files_in(folder, wanted):
+    """Paths of the files (and links) whose name ``wanted(name)`` accepts (see :func:`scan_folder`)."""
+    return scan_folder(folder, wanted).files
 
 
 def notebooks_in(folder):
     """Regular ``.ipynb`` files and links to them up to two levels down, as paths."""
-    return list(files_in(folder, is_notebook_name))
+    return scan_folder(folder).files
 
 
 @dataclass
@@ -69,50 +213,51 @@ class LessonFiles:
     chosen: dict = field(default_factory=dict)  # lesson number -> Path
     notes: dict = field(default_factory=dict)  # lesson number -> why this file among several
     unmatched: list = field(default_factory=list)  # Paths of notebooks that belong to no graded lesson
+    unreadable: dict = field(default_factory=dict)  # Path -> why it could not be read (unmatched or chosen)
+    skipped: list = field(default_factory=list)  # Skipped: what the walk of the folder did not use
 
 
-def _normalised(source):
-    return re.sub(r"\s+", " ", source or "").strip()
+def _fingerprint(source):
+    """A short digest of a cell's source, whitespace normalised: what "is this the stub?" compares."""
+    text = re.sub(r"\s+", " ", source or "").strip()
+    return hashlib.sha256(text.encode("utf-8", "surrogatepass")).digest()
 
 
 @lru_cache(maxsize=None)
 def _stubs(filename):
-    """``{exercise: answer-cell source}`` of the released notebook (what untouched work looks like)."""
+    """``{exercise: fingerprint of its answer cell}`` in the released notebook (untouched work)."""
     try:
         nb = read_master(COURSE / filename)
     except OSError:
         return {}
-    return {cells.grade_id(c): _normalised(cells.source_text(c)) for c in nb.cells if cells.is_answer_cell(c)}
+    return {cells.grade_id(c): _fingerprint(cells.source_text(c)) for c in nb.cells if cells.is_answer_cell(c)}
 
 
 def _code_cells(nb):
-    """``[(grade_id, source, names of the functions it defines)]`` for a notebook's code cells, check
-    cells excepted; each cell is parsed once (and only if it can define a function)."""
+    """``[(grade_id, fingerprint of the source, names of the functions it defines)]`` for a notebook's code
+    cells, check cells excepted; each cell is parsed once (and only if it can define a function). Only
+    fingerprints are kept, so a student's megabytes of source are not held while others are read."""
     found = []
     for cell in nb.cells:
         if cell.get("cell_type") != "code" or cells.is_check_cell(cell):
             continue
         source = cells.source_text(cell)
-        defined = ()
-        if "def" in source:
-            try:
-                defined = tuple(node.name for node in ast.parse(source).body if isinstance(node, ast.FunctionDef))
-            except (SyntaxError, ValueError):
-                pass
-        found.append((cells.grade_id(cell), source, defined))
+        tree = cells.parse_source(source) if "def" in source else None
+        defined = tuple(node.name for node in tree.body if isinstance(node, ast.FunctionDef)) if tree else ()
+        found.append((cells.grade_id(cell), _fingerprint(source), defined))
     return found
 
 
 def _answers(code_cells, names):
-    """``{exercise: source}`` for the exercises of ``names`` these cells hold (by grade_id, else by def)."""
+    """``{exercise: fingerprint}`` for the exercises of ``names`` these cells hold (by grade_id, else by def)."""
     found = {}
-    for grade_id, source, defined in code_cells:
+    for grade_id, fingerprint, defined in code_cells:
         if grade_id in names:
-            found[grade_id] = source
+            found[grade_id] = fingerprint
             continue
         for name in defined:
             if name in names:
-                found.setdefault(name, source)
+                found.setdefault(name, fingerprint)
     return found
 
 
@@ -135,15 +280,20 @@ def match_lessons(folder, catalog, notebooks=None):
     ('dan_exp_log_final.ipynb', [])
     """
     folder = Path(folder)
-    notebooks = notebooks_in(folder) if notebooks is None else notebooks
+    skipped = []
+    if notebooks is None:
+        scan = scan_folder(folder)
+        notebooks, skipped = scan.files, scan.skipped
     lessons = catalog.graded_lessons
-    readable, unreadable = {}, []
+    readable, unreadable = {}, {}
     for path in notebooks:
         try:
             readable[path] = _code_cells(read_submission(path, root=folder))
-        except UnreadableNotebook:
-            unreadable.append(path)
-    files = LessonFiles()
+        except UnreadableNotebook as error:
+            unreadable[path] = str(error)
+        except Exception as error:  # anything else costs this notebook only
+            unreadable[path] = f"the grader could not read it ({type(error).__name__}: {error})"
+    files = LessonFiles(skipped=skipped, unreadable=unreadable)
     claimed = set()
     for lesson in lessons:
         names = {e.name for e in lesson.exercises}
@@ -152,7 +302,7 @@ def match_lessons(folder, catalog, notebooks=None):
         for path, code_cells in readable.items():
             answers = _answers(code_cells, names)
             if answers:
-                work = sum(1 for name, source in answers.items() if _normalised(source) != stubs.get(name))
+                work = sum(1 for name, fingerprint in answers.items() if fingerprint != stubs.get(name))
                 candidates.append((work, len(answers), path.name == lesson.filename, path))
         if not candidates:  # only a damaged file under the lesson's name: grade it, so its reason is shown
             damaged = [p for p in unreadable if _name_matches(p, lesson)]
@@ -178,19 +328,25 @@ def _work(count):
 
 
 def submission_hash(folder):
-    """SHA-256 over the names and bytes of every notebook of a student (links by their target text)."""
+    """SHA-256 over the names and bytes of every notebook of a student (links by their target text).
+
+    Only regular files are read, at most :data:`MAX_NOTEBOOK_BYTES` + 1 bytes each (a larger one is
+    refused whole, so what lies beyond cannot change its grade); a FIFO, socket or device is hashed by
+    its kind. It never blocks and never raises for what the folder holds.
+    """
     digest = hashlib.sha256()
     folder = Path(folder)
     for path in notebooks_in(folder):
-        digest.update(str(path.relative_to(folder)).encode("utf-8") + b"\0")
-        if path.is_symlink():
-            digest.update(b"link:" + os.readlink(path).encode("utf-8", "replace"))
-        else:
-            try:
-                with open(path, "rb") as handle:
-                    for block in iter(lambda: handle.read(1 << 20), b""):
-                        digest.update(block)
-            except OSError as error:
-                digest.update(f"unreadable:{error.errno}".encode())
+        digest.update(str(path.relative_to(folder)).encode("utf-8", "surrogatepass") + b"\0")
+        try:
+            mode = os.lstat(path).st_mode
+            if stat.S_ISLNK(mode):
+                digest.update(b"link:" + os.fsencode(os.readlink(path)))
+            elif stat.S_ISREG(mode):
+                digest.update(read_regular_file(path, MAX_NOTEBOOK_BYTES + 1)[0])
+            else:
+                digest.update(f"kind:{file_kind(mode)}".encode())
+        except OSError as error:
+            digest.update(f"unreadable:{error.errno}".encode())
         digest.update(b"\0")
     return digest.hexdigest()

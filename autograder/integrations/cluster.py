@@ -71,6 +71,7 @@ from collections import deque
 from pathlib import Path
 
 from autograder.grading.submissions import files_in, is_notebook_name
+from autograder.lessons.notebook_files import MAX_NOTEBOOK_BYTES, read_regular_file
 
 STRENGTH = {"limits": 0, "namespaces": 1}  # isolation modes, weakest first
 WORKER_WAIT = 120  # seconds to wait for a first worker (or for one that can grade)
@@ -103,8 +104,8 @@ def pack_submission(folder):
             continue
         if not stat.S_ISREG(info.st_mode):
             continue  # a fifo or a device named like a notebook: never read (the grader says why)
-        try:
-            entries.append((relative, "file", path.read_bytes(), info.st_mtime_ns))
+        try:  # never more than the grader reads (a larger notebook is refused whole either way)
+            entries.append((relative, "file", read_regular_file(path, MAX_NOTEBOOK_BYTES + 1)[0], info.st_mtime_ns))
         except OSError:
             continue  # unreadable here too: the grader gives the same reason on the worker
     return {"name": folder.name, "entries": entries}

@@ -22,6 +22,8 @@ A lesson master (``solutions/NN_*.ipynb``) is an nbgrader source notebook:
 The constructors below build such cells for authors; the predicates read them.
 """
 
+import ast
+
 import nbformat
 
 NBGRADER_SCHEMA = 3
@@ -83,6 +85,32 @@ def points(cell):
 def source_text(cell):
     source = cell.get("source", "")
     return "".join(source) if isinstance(source, list) else str(source)
+
+
+MAX_PARSED_SOURCE = 200_000  # characters; an answer cell has a few hundred
+
+
+def parse_source(source):
+    """The ``ast.Module`` of a cell's source, or ``None`` when it is not Python the grader can read.
+
+    A student's cell may be anything: a syntax error, an expression nested 100,000 levels deep (the
+    parser then raises ``RecursionError`` or ``MemoryError``), or megabytes long (its tree could take
+    gigabytes). Each of these gives ``None``, for that cell only; longer sources than
+    :data:`MAX_PARSED_SOURCE` are not parsed at all. Student code is never run here.
+
+    Examples
+    --------
+    >>> [node.name for node in parse_source("def rot_z(a):\n    return a").body]
+    ['rot_z']
+    >>> parse_source("-" * 100_000 + "1") is None
+    True
+    """
+    if len(source) > MAX_PARSED_SOURCE:
+        return None
+    try:
+        return ast.parse(source)
+    except Exception:  # SyntaxError, ValueError, RecursionError, MemoryError: all the same to us
+        return None
 
 
 # ---------------------------------------------------------------- constructors for authors

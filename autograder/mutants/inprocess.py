@@ -51,7 +51,9 @@ class InProcessSandbox:
     def __init__(self, programs, limits=None):
         worker = _worker_module()
         self.limits = limits or Limits()
-        self.worker = worker.Worker(None, None)
+        from autograder.sandbox.child import probes
+
+        self.worker = worker.Worker(None, None, local_probes=probes)
         self.hung, self.time_used, self.outcomes = {}, 0.0, []
         self.last_stdout, self.last_changed = "", []
         with _kept_streams():
@@ -62,9 +64,8 @@ class InProcessSandbox:
     def _exec(self, lesson, label, source):
         namespace = self.worker.namespace(lesson)
         code = compile(source, f"<lesson {lesson} cell {label}>", "exec")
-        ok, result = self.worker.run_guarded(lambda: exec(code, namespace), self.limits.load_timeout)
-        self.outcomes.append(CellOutcome(lesson, label, ok, "" if ok else str(result.get("message", "")),
-                                         self.worker.output.text()))
+        ok, result, printed = self.worker.run_guarded(lambda: exec(code, namespace), self.limits.load_timeout)
+        self.outcomes.append(CellOutcome(lesson, label, ok, "" if ok else str(result.get("message", "")), printed))
 
     def namespace(self, lesson):
         return self.worker.namespace(lesson)
@@ -72,7 +73,7 @@ class InProcessSandbox:
     def _reply(self, text, timeout):
         call = _worker_module().wire.loads(text)  # the worker's own wire module: its Probe class
         with _kept_streams():
-            return self.worker.call_for_batch(call, timeout)
+            return self.worker.call_reply(call, timeout)
 
     def check_callable(self, lesson, name):
         return StudentSandbox.check_callable(self, lesson, name)

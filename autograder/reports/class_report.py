@@ -3,14 +3,13 @@
 One self-contained HTML page (plots embedded as PNG) with the score
 distribution, and per exercise the share of students who earned full marks,
 the mean points, and the most common failed checks with their hints. Student
-ids and messages are HTML-escaped. Students who could not be graded or
-handed in nothing are listed, not averaged in.
+ids and messages are HTML-escaped and bounded. Students who could not be graded or
+handed in nothing are listed, not averaged in, and so is what the run skipped.
 """
 
 import base64
 import io
 from collections import Counter
-from html import escape
 
 import matplotlib
 
@@ -18,6 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from autograder.grading.results import COULD_NOT_GRADE, MISSING  # noqa: E402
+from autograder.lessons.untrusted_text import html_text as escape  # noqa: E402
 from autograder.reports.attention import stage_warnings, worth_a_look  # noqa: E402
 from autograder.sandbox.launcher import LIMITS_ONLY_WARNING  # noqa: E402
 
@@ -108,8 +108,28 @@ def _worth_a_look_html(concerns):
             f'<th>what</th><th class="num">times</th><th>for example</th></tr>{rows}</table>')
 
 
-def class_report_html(results, catalog, title="Class report"):
-    """The report page for a list of StudentResult."""
+def _skipped_html(skipped, results, shown=200):
+    """What the run did not grade: entries of the submissions folder (``skipped``: ``Skipped``), and
+    per student what the walk of their folder skipped."""
+    inside = [(r.student_id, r.skipped) for r in results if r.skipped]
+    if not skipped and not inside:
+        return ""
+    parts = ["<h2>Skipped</h2>"]
+    if skipped:
+        rows = "".join(f"<li><code>{escape(s.path, 300)}</code>: {escape(s.why)}</li>" for s in skipped[:shown])
+        more = f"<li>and {len(skipped) - shown} more</li>" if len(skipped) > shown else ""
+        parts.append(f"<p>In the submissions folder, not graded as students:</p><ul>{rows}{more}</ul>")
+    if inside:
+        rows = "".join(f"<li><code>{escape(student, 300)}</code>: " + "; ".join(escape(line, 300) for line in lines[:5])
+                       + (f"; and {len(lines) - 5} more (see the feedback page)" if len(lines) > 5 else "") + "</li>"
+                       for student, lines in inside[:shown])
+        parts.append(f"<p>Inside students' folders, not read (hidden, links, too deep):</p><ul>{rows}</ul>")
+    return "\n".join(parts)
+
+
+def class_report_html(results, catalog, title="Class report", skipped=()):
+    """The report page for a list of StudentResult; ``skipped``: entries of the submissions folder that
+    are not students (:class:`~autograder.grading.submissions.Skipped`)."""
     graded = [r for r in results if r.status not in (MISSING, COULD_NOT_GRADE)]
     missing = [r for r in results if r.status == MISSING]
     failed = [r for r in results if r.status == COULD_NOT_GRADE]
@@ -173,6 +193,7 @@ def class_report_html(results, catalog, title="Class report"):
             parts.append(f"<li><code>{escape(r.student_id)}</code>: {escape(r.status)}"
                          + (f" — {escape(r.reason)}" if r.reason else "") + "</li>")
         parts.append("</ul>")
+    parts.append(_skipped_html(list(skipped), results))
     body = "\n".join(parts)
     return (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{escape(title)}</title>'
             f"<style>{STYLE}</style></head><body>{body}</body></html>\n")

@@ -4,11 +4,11 @@ It shows the score per lesson and exercise, every failed check with its
 one-line reason and hint, what the student's code printed (truncated), and
 the notebook stage. It never shows a hidden test's source: only the
 sentence that describes each check. Everything that came from a student
-(ids, messages, printed text) is HTML-escaped.
+(ids, messages, printed text) is HTML-escaped and bounded
+(:func:`~autograder.lessons.untrusted_text.html_text`).
 """
 
-from html import escape
-
+from autograder.lessons.untrusted_text import html_text
 from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
 
 STYLE = """
@@ -28,7 +28,7 @@ details { margin: .3rem 0 .3rem .5rem; } .note { background: #fff8c5; padding: .
 
 
 def _e(text):
-    return escape(str(text), quote=True)
+    return html_text(text)
 
 
 def _points(points, max_points):
@@ -111,6 +111,10 @@ def feedback_html(result):
         items = "".join(f"<li>{_e(p)}</li>" for p in ([result.reason] if result.reason else []) + result.problems)
         problems = f"<h2>Worth a look</h2><ul>{items}</ul>"
     lessons = "\n".join(_lesson_html(lesson) for lesson in result.lessons)
+    if result.skipped:
+        lessons += ('\n<h2>Not looked at</h2><p class="muted">What your folder holds that the grader did not '
+                    "read (hidden, a link, too deep):</p><ul>" + "".join(f"<li>{_e(s)}</li>" for s in result.skipped)
+                    + "</ul>")
     isolation = f'<p class="note">{_e(LIMITS_ONLY_WARNING)}</p>' if result.isolation == "limits" else ""
     raw = (f' <span class="muted">({_points(result.raw_score, result.max_score)} before late penalties)</span>'
            if result.raw_score != result.score else "")

@@ -9,27 +9,18 @@ export columns that apply: ``raw_score`` (before late penalties) and
 ``timestamp`` (when the newest notebook was handed in); ``graded_at`` and
 ``problems``.
 
-Every text cell that a spreadsheet could read as a formula (starting with
-``=``, ``+``, ``-``, ``@``, a tab or a carriage return) is prefixed with an
-apostrophe, so a student named ``=HYPERLINK(...)`` stays a name.
+Every text cell is one line, bounded, with control characters escaped, and a
+cell that a spreadsheet could read as a formula (starting with ``=``, ``+``,
+``-``, ``@``) is prefixed with an apostrophe, so a student named
+``=HYPERLINK(...)`` stays a name (:func:`~autograder.lessons.untrusted_text.csv_cell`).
 """
 
 import csv
 import io
 
-FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+from autograder.lessons.untrusted_text import csv_cell, spreadsheet_safe  # noqa: F401 (spreadsheet_safe: API)
 
-
-def spreadsheet_safe(text):
-    """``text`` with a leading apostrophe if a spreadsheet would evaluate it.
-
-    Examples
-    --------
-    >>> spreadsheet_safe("=1+1"), spreadsheet_safe("ada")
-    ("'=1+1", 'ada')
-    """
-    text = str(text)
-    return "'" + text if text.startswith(FORMULA_STARTS) else text
+MAX_ID_CHARACTERS = 1100  # an id from a folder name (255 bytes) with every byte escaped fits
 
 
 def _number(value):
@@ -48,8 +39,8 @@ def columns(catalog, with_notebooks):
 def row(result, catalog, with_notebooks, graded_at=""):
     earned = {e.name: e.points for e in result.exercises}
     lessons = {lesson.number: lesson for lesson in result.lessons}
-    values = [spreadsheet_safe(result.student_id), _number(result.score), _number(result.max_score),
-              spreadsheet_safe(result.status)]
+    values = [csv_cell(result.student_id, MAX_ID_CHARACTERS), _number(result.score), _number(result.max_score),
+              csv_cell(result.status)]
     values += [_number(lessons[l.number].points) if l.number in lessons else "" for l in catalog.graded_lessons]
     values += [_number(earned[e.name]) if e.name in earned else "" for e in catalog.exercises]
     if with_notebooks:
@@ -58,8 +49,8 @@ def row(result, catalog, with_notebooks, graded_at=""):
     late = "; ".join(f"{lesson.number}: −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
                      if lesson.late_penalty)
     problems = "; ".join(([result.reason] if result.reason else []) + list(result.problems))
-    values += [late, _number(result.raw_score), spreadsheet_safe(result.submitted_at), spreadsheet_safe(graded_at),
-               spreadsheet_safe(problems[:2000])]
+    values += [late, _number(result.raw_score), csv_cell(result.submitted_at), csv_cell(graded_at),
+               csv_cell(problems, 2000)]
     return values
 
 

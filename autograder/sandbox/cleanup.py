@@ -15,8 +15,11 @@ Examples
 True
 """
 
+import contextlib
 import os
+import re
 import stat
+import tempfile
 
 _DIR_FLAGS = os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC
 
@@ -141,3 +144,42 @@ def _remove_child_folder(fd, child_stat, depth, stuck):
                 except OSError:
                     stuck.add((depth, entry.name))
                 return
+
+
+def private_folder(kind):
+    """A new folder under the temporary directory, named for this process (``autograder-KIND-pPID-…``),
+    so that :func:`sweep_stale` can tell one a killed grader left behind."""
+    return tempfile.mkdtemp(prefix=f"autograder-{kind}-p{os.getpid()}-")
+
+
+@contextlib.contextmanager
+def private_folder_for(kind):
+    """:func:`private_folder` for a ``with`` block, removed (whatever is in it) at its end."""
+    path = private_folder(kind)
+    try:
+        yield path
+    finally:
+        remove_tree(path)
+
+
+_OURS = re.compile(r"^autograder-[a-z0-9]+-p(\d+)-")
+
+
+def sweep_stale():
+    """Remove the folders of :func:`private_folder` whose process is gone (a grader killed mid-batch).
+    Returns how many were removed."""
+    removed = 0
+    base = tempfile.gettempdir()
+    for name in os.listdir(base):
+        match = _OURS.match(name)
+        if not match or int(match[1]) == os.getpid():
+            continue
+        try:
+            os.kill(int(match[1]), 0)
+            continue  # its grader still runs
+        except ProcessLookupError:
+            pass
+        except PermissionError:
+            continue  # another user's grader, alive
+        removed += remove_tree(os.path.join(base, name))
+    return removed

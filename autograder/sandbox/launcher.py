@@ -33,12 +33,11 @@ import signal
 import site
 import subprocess
 import sys
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from autograder.lessons.paths import PROJECT_ROOT
-from autograder.sandbox import cgroups
+from autograder.sandbox import cgroups, cleanup
 
 NOBODY = 65534
 ZYGOTE_CAPABILITIES = ("CAP_SETUID", "CAP_SETGID", "CAP_KILL")
@@ -240,7 +239,7 @@ _LIMITS_PROBE_PROGRAM = "import sys; sys.path.insert(0, sys.argv[1]); import jai
 
 def _probe_namespaces(bwrap, child_dir):
     """Run the probe program in bubblewrap; return '' when it worked, else why not (one line)."""
-    probe_dir = Path(tempfile.mkdtemp(prefix="autograder-probe-"))
+    probe_dir = Path(cleanup.private_folder("probe"))
     try:
         shutil.copy2(Path(child_dir) / "jail.py", probe_dir / "jail.py")
         os.chmod(probe_dir, 0o755)

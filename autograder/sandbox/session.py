@@ -21,7 +21,6 @@ import selectors
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 from dataclasses import dataclass, field
 
@@ -128,7 +127,7 @@ class StudentSandbox:
     def _dirs(self):
         if self._tmp is None:
             if self._base_dir is None:
-                self._tmp = base = tempfile.mkdtemp(prefix="autograder-sandbox-")
+                self._tmp = base = cleanup.private_folder("sandbox")
             else:
                 base = self._base_dir
             self.sandbox_dir, self.scratch_dir = launcher.prepare_dirs(base)

@@ -34,7 +34,6 @@ import signal
 import socket
 import subprocess
 import sys
-import tempfile
 import time
 from dataclasses import replace
 
@@ -129,7 +128,7 @@ class WarmSlot:
             self.discard()
 
     def _spawn(self):
-        self._base = tempfile.mkdtemp(prefix=f"autograder-slot{self.index}-")
+        self._base = cleanup.private_folder(f"slot{self.index}")
         uid = launcher.sandbox_uid() + PID_LIMIT * (self.index + 1)
         sandbox_dir, scratch_dir = launcher.prepare_dirs(self._base, uid)
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)

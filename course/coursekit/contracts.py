@@ -57,6 +57,11 @@ FORBIDDEN = {
     "matrix_to_euler_zyx": SCIPY_ROTATIONS,
     "euler_zyx_to_quat": SCIPY_ROTATIONS,
     "quat_to_euler_zyx": SCIPY_ROTATIONS,
+    # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)
+    "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
+    "log_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
+    # lesson 09: q^t is the job (scipy's Slerp and Rotation powers do it)
+    "quat_power": SCIPY_ROTATIONS,
 }
 
 CHANGED_HINT = ("work on a copy, e.g. `p = np.array(p, dtype=float)`, and build the result in a new array; "

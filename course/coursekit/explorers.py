@@ -177,9 +177,10 @@ def explore_slerp(figure=None, q0=None, q1=None):
     """Slide t from 0 to 1: slerp and normalised lerp (nlerp) between two attitudes, side by side.
 
     Left: the path of the body's x axis on the unit sphere, with a dot at every
-    tenth of t for each method (slerp's dots are evenly spaced, nlerp's bunch up
-    in the middle). Right: the angle turned so far against t (a straight line
-    for slerp, an S for nlerp).
+    tenth of t for each method (slerp's dots are evenly spaced; nlerp's crowd
+    together near the ends and spread out in the middle, where it turns fastest).
+    Right: the angle turned so far against t (a straight line for slerp, an S
+    for nlerp).
     """
     q0 = np.array([1.0, 0.0, 0.0, 0.0]) if q0 is None else np.asarray(q0, dtype=float)
     q1 = Rotation.from_rotvec([0.4, 1.4, 2.6]).as_quat(scalar_first=True) if q1 is None else np.asarray(q1, float)

@@ -19,7 +19,7 @@ Examples
 import csv
 import io
 
-from autograder.reports.gradebook import spreadsheet_safe
+from autograder.lessons.untrusted_text import csv_cell
 
 FIXED = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
 
@@ -43,7 +43,7 @@ def write(results, catalog, roster=()):
     for result in sorted(results, key=lambda r: r.student_id):
         person = people.get(result.student_id)
         earned = {lesson.number: lesson.points for lesson in result.lessons if lesson.status != "missing"}
-        writer.writerow([spreadsheet_safe(value) for value in (
+        writer.writerow([csv_cell(value, None) for value in (
             (person.name if person and person.name else result.student_id),
             person.canvas_id if person else "",
             (person.sis_id if person and person.sis_id else result.student_id),

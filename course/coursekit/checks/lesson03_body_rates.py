@@ -1,0 +1,61 @@
+"""Public checks for lesson 03, section 8: body and world angular velocity.
+
+A body rolled a quarter turn about x (its y axis points up) spins at 1 rad/s about the world's vertical; its
+attitude and the derivative of its attitude are written out by hand, and so are the values the usual slips
+return for them (``tests/test_public_check_constants_lesson03_body_rates.py`` recomputes every one).
+"""
+
+import numpy as np
+
+from ..checking import Mismatch, public_check
+from ..diagnose import close
+from .common import fmt, off_by, require_same_with_lists, require_shape
+
+ROLLED = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])        # a quarter turn about x
+ROLLED_DOT = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])     # its derivative, spinning about world z
+BODY_RATE = np.array([0.0, 1.0, 0.0])                                          # the spin about the body's own y
+WORLD_RATE = np.array([0.0, 0.0, 1.0])
+VEE_OF_R_DOT = np.array([0.0, 0.5, 0.5])          # the "vee" of Ṙ itself (not skew-symmetric)
+TURNED_TWICE = np.array([0.0, 0.0, -1.0])         # Rᵀ applied to the body rate once more
+
+WORLD_HINT = ("that is the world rate ω_w (Ṙ Rᵀ = [ω_w]×); the gyroscope's rate is in body axes: "
+              "use ω_w = R ω_b to get back to the body frame")
+SIGN_HINT = "the opposite spin: check the order of the product (Rᵀ Ṙ and Ṙᵀ R are negatives of each other)"
+IGNORES_R_HINT = "Ṙ alone is not skew-symmetric: it still holds the attitude R; remove it first"
+TWICE_HINT = "the rate was turned into body axes twice: one factor Rᵀ is enough"
+SLIPS = [(WORLD_RATE, WORLD_HINT), (-BODY_RATE, SIGN_HINT), (VEE_OF_R_DOT, IGNORES_R_HINT),
+         (TURNED_TWICE, TWICE_HINT), (-WORLD_RATE, WORLD_HINT)]
+
+
+def _slip_hint(got, scale=1.0):
+    for value, hint in SLIPS:
+        if close(got, scale * value, 1e-9 * scale):
+            return hint
+    return None
+
+
+@public_check("body_angular_velocity", "a body rolled a quarter turn about x, spinning about the world's vertical, "
+                                       "spins about its own y")
+def _(body_angular_velocity):
+    got = require_shape(body_angular_velocity(ROLLED, ROLLED_DOT), (3,), "body_angular_velocity(R, Ṙ)")
+    if not close(got, BODY_RATE, 1e-12):
+        raise Mismatch(f"got {fmt(got)} rad/s, expected {fmt(BODY_RATE)} ({off_by(got, BODY_RATE)})",
+                       _slip_hint(got) or "combine Ṙ = [ω_w]× R with ω_w = R ω_b and solve for ω_b")
+
+
+@public_check("body_angular_velocity", "keeps a tiny spin (1e-12 rad/s) to 1e-9 of its size, and doubles with Ṙ")
+def _(body_angular_velocity):
+    tiny = require_shape(body_angular_velocity(ROLLED, 1e-12 * ROLLED_DOT), (3,), "body_angular_velocity(R, 1e-12 Ṙ)")
+    if not close(tiny, 1e-12 * BODY_RATE, 1e-21):
+        raise Mismatch(f"for a spin of 1e-12 rad/s got {fmt(tiny / 1e-12)} × 1e-12 rad/s",
+                       _slip_hint(tiny, 1e-12) or "nothing here needs a threshold: the formula is linear in Ṙ")
+    double = require_shape(body_angular_velocity(ROLLED, 2.0 * ROLLED_DOT), (3,), "body_angular_velocity(R, 2 Ṙ)")
+    single = require_shape(body_angular_velocity(ROLLED, ROLLED_DOT), (3,), "body_angular_velocity(R, Ṙ)")
+    if not close(double, 2.0 * single, 1e-12):
+        raise Mismatch("twice the rate of change does not give twice the angular velocity",
+                       "ω_b is linear in Ṙ: no normalisation, no square roots")
+
+
+@public_check("body_angular_velocity", "accepts plain lists")
+def _(body_angular_velocity):
+    require_same_with_lists(body_angular_velocity, (ROLLED, ROLLED_DOT), (3,), "body_angular_velocity(R, Ṙ)")

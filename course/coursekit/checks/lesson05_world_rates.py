@@ -1,0 +1,85 @@
+"""Public checks for lesson 05, section 9: Euler-angle rates in world axes.
+
+The angular velocity in world axes is computed here by central differences of scipy's z-y-x Euler angles
+(ω_w from Ṙ Rᵀ), one rate at a time; the values the usual slips return at yaw π/3, pitch π/6 are stored as
+numbers (``tests/test_public_check_constants_lesson05_world_rates.py`` recomputes them).
+"""
+
+import numpy as np
+
+from ..checking import Mismatch, public_check
+from ..diagnose import close
+from .common import fmt, off_by, require_same_with_lists, require_shape
+
+YAW, PITCH = np.pi / 3, np.pi / 6
+TRANSPOSED_TURNS = np.array([[0.0, 0.8660254037844386, 0.4330127018922194],
+                             [0.0, 0.5000000000000001, -0.8660254037844386],
+                             [1.0, 0.0, 0.25]])
+ROLL_UNPITCHED = np.array([[0.0, -0.8660254037844386, 0.5000000000000001],
+                           [0.0, 0.5000000000000001, 0.8660254037844386],
+                           [1.0, 0.0, 0.0]])
+IGNORES_YAW = np.array([[0.0, 0.0, 0.8660254037844387], [0.0, 1.0, 0.0], [1.0, 0.0, -0.4999999999999999]])
+REVERSED = np.array([[0.4330127018922194, -0.8660254037844386, 0.0],
+                     [0.75, 0.5000000000000001, 0.0],
+                     [-0.4999999999999999, 0.0, 1.0]])
+TRANSPOSED_HINT = ("the axes were turned by transposes, as in the body-rate matrix: in world axes each Euler axis is "
+                   "turned by the rotations to its left in Rz Ry Rx (the pitch axis by Rz, the roll axis by Rz Ry)")
+ROLL_UNPITCHED_HINT = "the roll axis is the body x axis after the yaw and the pitch: turn e_x by Rz(ψ) Ry(θ), not Rz(ψ) alone"
+IGNORES_YAW_HINT = "the yaw turns the pitch and roll axes about the vertical: the answer depends on the yaw"
+REVERSED_HINT = "the columns go in the order of the rates: [yaw_rate, pitch_rate, roll_rate]"
+SLIPS = [(TRANSPOSED_TURNS, TRANSPOSED_HINT), (ROLL_UNPITCHED, ROLL_UNPITCHED_HINT), (IGNORES_YAW, IGNORES_YAW_HINT),
+         (REVERSED, REVERSED_HINT)]
+
+
+def _world_rates_by_differences(yaw, pitch, roll, h=1e-6):
+    """The 3×3 matrix of ω_w per unit yaw, pitch and roll rate, by central differences (scipy's z-y-x angles)."""
+    from scipy.spatial.transform import Rotation
+
+    def matrix(angles):
+        return Rotation.from_euler("ZYX", angles).as_matrix()
+
+    angles = np.array([yaw, pitch, roll])
+    R = matrix(angles)
+    columns = []
+    for e in np.eye(3):
+        W = (matrix(angles + h * e) - matrix(angles - h * e)) / (2 * h) @ R.T
+        columns.append(0.5 * np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]]))
+    return np.column_stack(columns)
+
+
+@public_check("euler_rates_matrix_world", "E_w @ rates is the world angular velocity (finite differences at "
+                                          "yaw π/3, pitch π/6, for two different rolls)")
+def _(euler_rates_matrix_world):
+    got = require_shape(euler_rates_matrix_world(YAW, PITCH), (3, 3), "euler_rates_matrix_world(π/3, π/6)")
+    for roll in (0.0, 1.2):
+        numeric = _world_rates_by_differences(YAW, PITCH, roll)
+        if not close(got, numeric, 1e-8):
+            hint = next((h for value, h in SLIPS if close(got, value, 1e-9)), None)
+            raise Mismatch(f"E_w @ rates misses the world angular velocity at roll {roll:g} "
+                           f"({off_by(got, numeric)})", hint or "ω_w is defined by Ṙ Rᵀ = [ω_w]×: differentiate "
+                           "Rz Ry Rx and multiply by Rᵀ on the right")
+
+
+@public_check("euler_rates_matrix_world", "level and facing x: yaw about z, pitch about y, roll about x; det = -cos θ")
+def _(euler_rates_matrix_world):
+    level = require_shape(euler_rates_matrix_world(0.0, 0.0), (3, 3), "euler_rates_matrix_world(0, 0)")
+    expected = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])
+    if not close(level, expected, 1e-15):
+        raise Mismatch(f"E_w(0, 0) = {fmt(level)}, expected {fmt(expected)}",
+                       REVERSED_HINT if close(level, expected[:, ::-1], 1e-15) else
+                       "level, every Euler axis is a world axis: yaw about z, pitch about y, roll about x")
+    for pitch in (0.3, -1.1, np.pi / 2):
+        det = np.linalg.det(require_shape(euler_rates_matrix_world(0.8, pitch), (3, 3), "euler_rates_matrix_world"))
+        if abs(det + np.cos(pitch)) > 1e-12:
+            raise Mismatch(f"det E_w = {det:.6f} at pitch {pitch:.3g}, expected -cos(pitch) = {-np.cos(pitch):.6f}",
+                           "E_w = R E with a rotation R, so both determinants are -cos(pitch)")
+
+
+@public_check("euler_rates_matrix_world", "accepts integers and NumPy scalars alike")
+def _(euler_rates_matrix_world):
+    floats = require_shape(euler_rates_matrix_world(1.0, 0.0), (3, 3), "euler_rates_matrix_world(1.0, 0.0)")
+    ints = require_shape(euler_rates_matrix_world(1, 0), (3, 3), "euler_rates_matrix_world(1, 0)")
+    scalars = require_shape(euler_rates_matrix_world(np.float64(1.0), np.float32(0.0)), (3, 3),
+                            "euler_rates_matrix_world(np.float64(1), np.float32(0))")
+    if not (close(floats, ints, 1e-15) and close(floats, scalars, 1e-7)):
+        raise Mismatch("the answer changes with the type of the angles", "work with np.cos and np.sin of the angles")

@@ -1,0 +1,57 @@
+"""Public checks for lesson 06, section 9: a world point seen from the body.
+
+The Jacobian is compared with central differences of (R Exp(δ))ᵀ p_w taken here (scipy's Exp); the values
+the usual slips return at a quarter turn about z and p_w = (1, 2, -0.5) are stored as numbers
+(``tests/test_public_check_constants_lesson06_point_to_body.py`` recomputes them).
+"""
+
+import numpy as np
+
+from ..checking import Mismatch, public_check
+from ..diagnose import close
+from ..lie import Exp
+from .common import off_by, require_same_with_lists, require_shape
+
+QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+P_WORLD = np.array([1.0, 2.0, -0.5])
+LEFT = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [-2.0, 1.0, 0.0]])
+SIGN = np.array([[0.0, -0.5, 1.0], [0.5, 0.0, 2.0], [-1.0, -2.0, 0.0]])
+NO_R = np.array([[0.0, 0.5, 2.0], [-0.5, 0.0, -1.0], [-2.0, 1.0, 0.0]])
+FORWARD = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [2.0, -1.0, 0.0]])
+LEFT_HINT = ("Rᵀ [p_w]× belongs to the left perturbation Exp(δ) R; for R Exp(δ) the turn acts on the body-frame "
+             "point Rᵀ p_w")
+SIGN_HINT = "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ ≈ (I - [δ]×) Rᵀ, and -[δ]× v = +[v]× δ"
+NO_R_HINT = "the point seen from the body is Rᵀ p_w, not p_w: R belongs in the answer"
+FORWARD_HINT = ("-R [p]× is the Jacobian of R p (body to world); here the map is Rᵀ p_w (world to body), "
+                "and the perturbation sits inside a transpose")
+SLIPS = [(LEFT, LEFT_HINT), (SIGN, SIGN_HINT), (NO_R, NO_R_HINT), (FORWARD, FORWARD_HINT)]
+
+
+def _central(f, h=1e-6):
+    return np.column_stack([(f(h * e) - f(-h * e)) / (2 * h) for e in np.eye(3)])
+
+
+@public_check("jacobian_point_to_body", "matches finite differences of (R Exp(δ))ᵀ p_w (quarter turn about z)")
+def _(jacobian_point_to_body):
+    J = require_shape(jacobian_point_to_body(QUARTER_Z, P_WORLD), (3, 3), "jacobian_point_to_body(R, p_w)")
+    numeric = _central(lambda d: (QUARTER_Z @ Exp(d)).T @ P_WORLD)
+    if not close(J, numeric, 1e-8):
+        raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
+                       next((hint for value, hint in SLIPS if close(J, value, 1e-12)), None) or
+                       "expand (R (I + [δ]×))ᵀ p_w and move δ to the right of the cross product")
+
+
+@public_check("jacobian_point_to_body", "a turn about the point's own body-frame direction does not move it")
+def _(jacobian_point_to_body):
+    R = Exp([0.4, -0.9, 0.3])
+    p_w = np.array([0.5, 1.5, -2.0])
+    J = require_shape(jacobian_point_to_body(R, p_w), (3, 3), "jacobian_point_to_body(R, p_w)")
+    moved = J @ (R.T @ p_w)
+    if np.max(np.abs(moved)) > 1e-12:
+        raise Mismatch(f"a turn about the direction of Rᵀ p_w moves the point by {np.max(np.abs(moved)):.2g} m/rad",
+                       "turning about the line of sight leaves the point on it: J (Rᵀ p_w) must be 0")
+
+
+@public_check("jacobian_point_to_body", "accepts plain lists")
+def _(jacobian_point_to_body):
+    require_same_with_lists(jacobian_point_to_body, (QUARTER_Z, P_WORLD), (3, 3), "jacobian_point_to_body(R, p_w)")

@@ -1,0 +1,53 @@
+"""Public checks for lesson 07, section 9: the relative pose of two frames known in the world.
+
+The checks use poses written out by hand (quarter turns and shifts), the defining property T_wa T_ab = T_wb,
+and the values the usual slips return for them, stored as numbers
+(``tests/test_public_check_constants_lesson07_relative_pose.py`` recomputes them).
+"""
+
+import numpy as np
+
+from ..checking import Mismatch, public_check
+from ..diagnose import close
+from .common import fmt, off_by, require_same_with_lists, require_shape
+
+T_WA = np.array([[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+T_WB = np.array([[0.0, 0.0, 1.0, 3.0], [1.0, 0.0, 0.0, -1.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
+T_AB = np.array([[1.0, 0.0, 0.0, -3.0], [0.0, 0.0, -1.0, -2.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
+WORLD_DIFFERENCE = np.array([[0.0, 0.0, 1.0, 3.0], [0.0, 1.0, 0.0, -3.0], [-1.0, 0.0, 0.0, 3.0],
+                             [0.0, 0.0, 0.0, 1.0]])
+TRANSPOSED = np.array([[1.0, 0.0, 0.0, -1.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [2.0, 0.0, 1.0, 2.0]])
+REVERSED = np.array([[1.0, 0.0, 0.0, 3.0], [0.0, 0.0, 1.0, -2.0], [0.0, -1.0, 0.0, -2.0], [0.0, 0.0, 0.0, 1.0]])
+UNROTATED = np.array([[1.0, 0.0, 0.0, 2.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
+WORLD_HINT = ("that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain (b, then w); "
+              "T_ab = T_aw T_wb = T_wa⁻¹ T_wb")
+TRANSPOSED_HINT = "the inverse of a pose is not its transpose: T⁻¹ = [[Rᵀ, -Rᵀ t], [0, 1]]"
+REVERSED_HINT = "that is T_ba, a seen from b: swap the roles, T_ab = T_wa⁻¹ T_wb"
+UNROTATED_HINT = "the shift t_wb - t_wa is written in world axes: turn it into a's axes with R_waᵀ"
+SLIPS = [(WORLD_DIFFERENCE, WORLD_HINT), (TRANSPOSED, TRANSPOSED_HINT), (REVERSED, REVERSED_HINT),
+         (UNROTATED, UNROTATED_HINT)]
+
+
+@public_check("relative_pose", "T_wa T_ab = T_wb for two poses that turn and shift")
+def _(relative_pose):
+    got = require_shape(relative_pose(T_WA, T_WB), (4, 4), "relative_pose(T_wa, T_wb)")
+    if not close(got, T_AB, 1e-12):
+        raise Mismatch(f"T_wa @ T_ab misses T_wb ({off_by(T_WA @ got, T_WB)})",
+                       next((hint for value, hint in SLIPS if close(got, value, 1e-12)), None) or
+                       "T_ab = T_aw T_wb: the inner letters chain")
+
+
+@public_check("relative_pose", "a frame seen from itself is the identity; b seen from the world is T_wb")
+def _(relative_pose):
+    same = require_shape(relative_pose(T_WB, T_WB), (4, 4), "relative_pose(T_wb, T_wb)")
+    if not close(same, np.eye(4), 1e-12):
+        raise Mismatch(f"relative_pose(T, T) = {fmt(same)}, not the identity",
+                       TRANSPOSED_HINT if not close(same[3], [0.0, 0.0, 0.0, 1.0], 1e-12) else None)
+    from_world = require_shape(relative_pose(np.eye(4), T_WB), (4, 4), "relative_pose(I, T_wb)")
+    if not close(from_world, T_WB, 1e-12):
+        raise Mismatch(f"seen from the world itself, b should be T_wb ({off_by(from_world, T_WB)})")
+
+
+@public_check("relative_pose", "accepts plain lists")
+def _(relative_pose):
+    require_same_with_lists(relative_pose, (T_WA, T_WB), (4, 4), "relative_pose(T_wa, T_wb)")

@@ -1,0 +1,33 @@
+"""The numbers stored in lesson 05's public checks of euler_rates_matrix_world, recomputed from their definitions."""
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from coursekit.checks import lesson05_world_rates as checks
+
+
+def rz(a):
+    return Rotation.from_rotvec([0.0, 0.0, a]).as_matrix()
+
+
+def ry(a):
+    return Rotation.from_rotvec([0.0, a, 0.0]).as_matrix()
+
+
+def world_rates(yaw, pitch):
+    ex, ey, ez = np.eye(3)
+    return np.column_stack([ez, rz(yaw) @ ey, rz(yaw) @ ry(pitch) @ ex])
+
+
+def test_the_answer_matches_finite_differences():
+    assert np.allclose(world_rates(checks.YAW, checks.PITCH),
+                       checks._world_rates_by_differences(checks.YAW, checks.PITCH, 0.4), atol=1e-8)
+
+
+def test_the_slips():
+    ex, ey, ez = np.eye(3)
+    y, p = checks.YAW, checks.PITCH
+    assert np.allclose(checks.TRANSPOSED_TURNS, np.column_stack([ez, rz(y).T @ ey, ry(p).T @ rz(y).T @ ex]), atol=1e-15)
+    assert np.allclose(checks.ROLL_UNPITCHED, np.column_stack([ez, rz(y) @ ey, rz(y) @ ex]), atol=1e-15)
+    assert np.allclose(checks.IGNORES_YAW, world_rates(0.0, p), atol=1e-15)
+    assert np.allclose(checks.REVERSED, world_rates(y, p)[:, ::-1], atol=1e-15)
