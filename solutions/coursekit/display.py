@@ -5,20 +5,11 @@ The demonstration cells of the lessons print their results through
 rounded to a fixed number of decimals and negative zeros are printed as
 zeros. The grader compares these printed lines with the reference notebook,
 so two correct answers that differ by 1e-16 print the same thing.
-
-It also decides how a notebook shows an exercise that is not written yet:
-any cell that calls a stub (a worked example, a figure, a check) ends in
-one line naming the exercise, never a traceback (:func:`stub_message`,
-installed in the kernel when ``coursekit`` is imported).
 """
-
-import traceback
 
 import numpy as np
 
-__all__ = ["show", "format_value", "stub_message"]
-
-RED, RESET = "\x1b[0;31m", "\x1b[0m"
+__all__ = ["show", "format_value"]
 
 
 def _is_vector(items):
@@ -115,73 +106,3 @@ def show(label, value, digits=4):
         display(_Shown(line))
     else:
         print(line)
-
-
-def stub_message(error):
-    """One line for a ``NotImplementedError`` raised by an unwritten exercise, or None for any other.
-
-    The stub is the function whose body raised it: the innermost frame of the
-    traceback, when that frame is a function outside ``coursekit``.
-
-    Parameters
-    ----------
-    error : NotImplementedError
-        The error, with its traceback.
-
-    Returns
-    -------
-    str or None
-
-    Examples
-    --------
-    >>> def rot_x(a):
-    ...     raise NotImplementedError("this exercise is not written yet")
-    >>> try:
-    ...     rot_x(0.3)
-    ... except NotImplementedError as error:
-    ...     print(stub_message(error))
-    this cell needs rot_x, which is not written yet: write rot_x (its exercise is above), run its cell, then run this cell again
-    """
-    frames = traceback.extract_tb(error.__traceback__)
-    if not frames:
-        return None
-    innermost = frames[-1]
-    name = innermost.name
-    if not name.isidentifier() or "coursekit" in innermost.filename.replace("\\", "/").split("/"):
-        return None
-    return (f"this cell needs {name}, which is not written yet: write {name} (its exercise is above), "
-            "run its cell, then run this cell again")
-
-
-def _show_stub_in_one_line(shell, etype, value, tb, tb_offset=None):
-    """IPython's handler for ``NotImplementedError``: errors that render themselves keep their own line,
-    an unwritten exercise gets :func:`stub_message`, anything else its usual traceback."""
-    render = getattr(value, "_render_traceback_", None)
-    if render is not None:
-        lines = render()
-    else:
-        message = stub_message(value)
-        lines = ([f"{RED}{etype.__name__}{RESET}: {message}"] if message is not None else
-                 shell.InteractiveTB.structured_traceback(etype, value, tb, tb_offset=tb_offset))
-    shell._showtraceback(etype, value, lines)
-    return lines
-
-
-def install_stub_handler():
-    """Show every ``NotImplementedError`` that reaches a notebook cell through :func:`stub_message`.
-
-    Does nothing outside an IPython kernel, or when another custom handler is installed.
-    Returns True when the handler is in place.
-    """
-    if not _in_a_kernel():
-        return False
-    from IPython import get_ipython
-
-    shell = get_ipython()
-    if shell.custom_exceptions not in ((), (NotImplementedError,)):
-        return False
-    shell.set_custom_exc((NotImplementedError,), _show_stub_in_one_line)
-    return True
-
-
-install_stub_handler()
