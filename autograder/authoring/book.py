@@ -26,12 +26,14 @@ from pathlib import Path
 
 import nbformat
 
+from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
 from autograder.lessons.paths import SOLUTIONS
 
 FRONT_PAGE = "00_start_here"
 SUPPORT_PACKAGE = "coursekit"
 SOLUTION_MARKERS = ("### BEGIN SOLUTION", "### END SOLUTION")
+READER_EDITION_VARIABLE = "COURSEKIT_EDITION"  # read by solutions/coursekit/edition.py
 
 CONF_PY = '''\
 project = "Rotations, hands on"
@@ -82,7 +84,9 @@ def _mathjax_file():
 
 
 def _reader_copy(nb):
-    """The master as a reader sees it: answers in place, without nbgrader's solution markers."""
+    """The master as a reader sees it: answers in place, without nbgrader's solution markers, and
+    without the cells tagged student-only (check cells, hand-in, how grading works)."""
+    nb.cells = [cell for cell in nb.cells if not cells.is_student_only(cell)]
     for cell in nb.cells:
         if cell.cell_type == "code":
             lines = cell.source.splitlines()
@@ -141,6 +145,7 @@ def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=N
         env = {key: value for key, value in os.environ.items()
                if key not in ("JPY_SESSION_NAME", "MPLBACKEND", "PYDEVD_DISABLE_FILE_VALIDATION")}
         env["PYTHONHASHSEED"] = "0"
+        env[READER_EDITION_VARIABLE] = "reader"  # coursekit.edition: "the reference log_so3", not "your"
         env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
         warnings = Path(tmp) / "warnings.txt"
         run = subprocess.run(
