@@ -18,10 +18,12 @@ Examples
 """
 
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
+from html import escape as html_escape
 from pathlib import Path
 
 import nbformat
@@ -97,6 +99,29 @@ def _reader_copy(nb):
     return nb
 
 
+_PATH_AS_ALT = re.compile(r'<img alt="(_images/[^"]+\.png)" src="\1"')
+
+
+def _alt_text_from_captions(page, root):
+    """Give every figure of ``page`` its caption as alt text (docutils' default is the file path).
+
+    The book's kernels write each figure's caption into its PNG's ``Title``
+    text chunk (``coursekit.edition``); a figure without a caption gets
+    "Figure without a caption" rather than a file name.
+    """
+    from PIL import Image
+
+    def alt(match):
+        with Image.open(root / match.group(1)) as image:
+            caption = image.text.get("Title", "") if hasattr(image, "text") else ""
+        return f'<img alt="{html_escape(caption or "Figure without a caption")}" src="{match.group(1)}"'
+
+    text = page.read_text(encoding="utf-8")
+    changed = _PATH_AS_ALT.sub(alt, text)
+    if changed != text:
+        page.write_text(changed, encoding="utf-8")
+
+
 def stage(solutions_dir, staging):
     """Write the book's sources into ``staging``: the solved lessons, coursekit, conf.py and MathJax."""
     solutions_dir, staging = Path(solutions_dir), Path(staging)
@@ -160,6 +185,8 @@ def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=N
                 shutil.rmtree(target)
             elif target.exists():
                 target.unlink()
+        for page in html.glob("*.html"):
+            _alt_text_from_captions(page, html)
         if out.exists():
             shutil.rmtree(out)
         out.parent.mkdir(parents=True, exist_ok=True)

@@ -11,9 +11,11 @@
 
 from .checking import check
 from .display import show
+from .edition import install_caption_metadata
 from .handin import ready_to_hand_in
 from .stubs import install_stub_handler
 
 install_stub_handler()
+install_caption_metadata()
 
 __all__ = ["check", "show", "ready_to_hand_in"]
