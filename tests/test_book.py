@@ -63,12 +63,15 @@ def _plain_runs(markdown, shortest=25):
 
 
 def _student_only_text():
-    """(lesson, phrase) pairs from every cell a master tags student-only."""
+    """(lesson, phrase) pairs from every cell a master tags student-only, but for phrases that a cell
+    kept in the book also says (a lesson's title, a link)."""
     for path in sorted(SOLUTIONS.glob("[0-9][0-9]_*.ipynb")):
-        for cell in nbformat.read(str(path), as_version=4).cells:
+        nb = nbformat.read(str(path), as_version=4)
+        kept = " ".join(" ".join(c.source.split()) for c in nb.cells if not cells.is_student_only(c))
+        for cell in nb.cells:
             if cells.is_student_only(cell):
                 phrases = list(_plain_runs(cell.source)) if cell.cell_type == "markdown" else [cell.source.strip()]
-                yield from ((path.stem, phrase) for phrase in phrases)
+                yield from ((path.stem, phrase) for phrase in phrases if " ".join(phrase.split()) not in kept)
 
 
 def _page_text(page):

@@ -66,10 +66,14 @@ def _with_caption(printer):
 
 
 def _caption_every_png(shell):
+    import importlib
+
     import matplotlib
     from matplotlib.figure import Figure
 
-    matplotlib.get_backend()  # selects the backend now: the inline one registers its PNG printer on load
+    backend = matplotlib.get_backend()
+    if backend.startswith("module://"):  # load it now: the inline backend registers its PNG printer on import
+        importlib.import_module(backend[len("module://"):])
 
     formatter = shell.display_formatter.formatters["image/png"]
     try:
