@@ -7,7 +7,7 @@ page and on the class report: no violation of impact "serious" or "critical"
 (colour contrast on two book pages: see CONTRAST_LESSON).
 Every figure of the book has its caption as alt text, never its file path, and
 lesson 03's Figure 3 tells its two series apart by more than colour.
-Screenshots of the pages are kept as artefacts (their folder is printed).
+Screenshots of the pages are kept in test-artifacts/accessibility/ (the path is printed).
 """
 
 import re
@@ -23,7 +23,7 @@ import numpy as np  # noqa: E402
 
 from autograder.grading.results import CheckResult, ExerciseResult, LessonResult, NotebookRun, StudentResult  # noqa: E402,E501
 from autograder.lessons.catalog import load_catalog  # noqa: E402
-from autograder.lessons.paths import SOLUTIONS  # noqa: E402
+from autograder.lessons.paths import PROJECT_ROOT, SOLUTIONS  # noqa: E402
 from autograder.lessons.reference import load_reference  # noqa: E402
 from autograder.reports.class_report import class_report_html  # noqa: E402
 from autograder.reports.feedback import feedback_html  # noqa: E402
@@ -40,8 +40,10 @@ def book(tmp_path_factory, request):
 
 
 @pytest.fixture(scope="module")
-def screenshots(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("accessibility-screenshots")
+def screenshots():
+    """test-artifacts/accessibility/ (ignored by git, kept after the run, unlike pytest's temporary folders)."""
+    folder = PROJECT_ROOT / "test-artifacts" / "accessibility"
+    folder.mkdir(parents=True, exist_ok=True)
     print(f"\naccessibility screenshots: {folder}")
     return folder
 
@@ -80,9 +82,9 @@ def _student(student_id, failing):
         check = CheckResult(exercise=exercise.name, description=f"{exercise.name} on random rotations", weight=1.0,
                             passed=not lost, reason="off by 0.5 at θ = 1.2" if lost else "",
                             hint="looks like the transpose" if lost else "")
-        exercises.append(ExerciseResult(name=exercise.name, lesson="01", max_points=2.0,
-                                        points=0.0 if lost else 2.0, checks=[check]))
-    lesson = LessonResult(number="01", title="Frames, points and rotations", notebook="01_frames_and_rotations.ipynb",
+        exercises.append(ExerciseResult(name=exercise.name, lesson="01", max_points=exercise.points,
+                                        points=0.0 if lost else exercise.points, checks=[check]))
+    lesson = LessonResult(number="01", title=load_catalog().lesson("01").title, notebook="01_frames_and_rotations.ipynb",
                           status="graded", exercises=exercises,
                           run=NotebookRun(status="passed", points=1.0, max_points=1.0))
     return StudentResult(student_id=student_id, status="graded", lessons=[lesson])
