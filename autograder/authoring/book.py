@@ -8,6 +8,11 @@ HTML to ``--out``. The front page is ``00_start_here``; open
 ``OUT/index.html`` in any browser: math is typeset by a copy of MathJax inside
 the book, so it reads offline, from disk, with no server and no Python.
 
+It is the reader's edition: cells a master tags ``student-only`` (check cells,
+hand-in, grading) are left out, its kernels run with ``COURSEKIT_EDITION=reader``
+(legends say "the reference log_so3", not "your log_so3"), and every figure's
+alt text is its caption.
+
 What the book never holds: the course's stubs (``course/``), the hidden
 tests and the grader (``autograder/``), the public checks' source or the
 notebooks' sources (only the executed pages).
