@@ -123,7 +123,7 @@ def test_typed_answer_turns_a_check_green(session):
 
 
 def test_gimbal_slider_changes_the_figure(session):
-    """Lesson 05's explorer: pressing End on the pitch slider redraws the gimbal (the canvas changes)."""
+    """Lesson 05's explorer: Tab reaches the pitch slider and End moves it, which redraws the gimbal."""
     name = next(n for n in LESSONS if n.startswith("05_"))
     page = _run(session, f"solutions/{name}")
     explorer = page.locator(".coursekit-explorer").first
@@ -132,7 +132,13 @@ def test_gimbal_slider_changes_the_figure(session):
     page.wait_for_timeout(500)
     before = canvas.evaluate("c => c.toDataURL()")
     handle = explorer.locator(".widget-slider", has_text="pitch").locator(".noUi-handle").first
-    handle.focus()
+    explorer.locator(".widget-slider", has_text="yaw").locator(".noUi-handle").first.focus()
+    for _ in range(3):                                     # the keyboard alone reaches the next slider
+        page.keyboard.press("Tab")                         # (past the yaw slider's editable readout)
+        if handle.evaluate("h => h === document.activeElement"):
+            break
+    assert handle.evaluate("h => h === document.activeElement"), "Tab from the yaw slider never reaches pitch"
+    assert handle.get_attribute("role") == "slider"
     page.keyboard.press("End")                             # pitch to +90°: the lock
     page.wait_for_function("([c, b]) => c.toDataURL() !== b", arg=[canvas.element_handle(), before],
                            timeout=20_000)

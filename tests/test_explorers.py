@@ -46,3 +46,22 @@ def test_it_says_what_stops_it(monkeypatch, error, words):
 def test_the_hand_out_explorers_solve_nothing_themselves():
     source = (COURSE / "coursekit" / "explorers.py").read_text(encoding="utf-8")
     assert "lstsq" not in source and "linalg.svd" not in source and np.linalg.solve.__name__ + "(" not in source
+
+
+def test_the_gimbal_title_says_the_angle_its_slider_shows(monkeypatch):
+    """Pitch moves in steps of 0.5°: at 88.5 the title must not round to 88 while the slider says 88.5."""
+    from coursekit import explorers
+
+    captured = {}
+    monkeypatch.setattr(explorers, "_explore", lambda draw, controls, *args, **kwargs: captured.update(
+        draw=draw, controls=controls))
+    explorers.explore_gimbal(figure="5")
+    plt.close("all")
+    fig = plt.figure()
+    captured["draw"](fig, yaw=-12.0, pitch=88.5, roll=20.0)
+    title = fig.axes[0].get_title()
+    plt.close(fig)
+    for value in (-12.0, 88.5, 20.0):
+        readout = format(value, explorers.READOUT_FORMAT)  # what the slider prints
+        assert f"{readout}°" in title, (readout, title)
+    assert captured["controls"]["pitch"][3] == 0.5

@@ -5,8 +5,12 @@ Run in Jupyter's kernel (nbclient), lesson 01 as released (stubs) and as solved:
   that names the exercise, not a traceback into coursekit;
 - the lesson's last cell, "Ready to hand in?", lists every unwritten exercise for the stubs and
   ends in one red line naming them (the error that scores the notebook point 0 in nbgrader);
-  it says "ready to hand in" for the reference and raises nothing.
+  it says "ready to hand in" for the reference and raises nothing (and shows no value under it);
+- every other cell that reaches a stub (a worked example, a figure) also ends in one line naming the
+  exercise to write, while a NotImplementedError raised inside a library keeps its traceback.
 """
+
+import shutil
 
 import nbformat
 import pytest
@@ -67,6 +71,40 @@ def test_the_hand_in_cell_lists_what_is_left(released, solved):
     done, errors = _hand_in(solved)
     assert f"All {len(EXERCISES)} exercises pass their public checks: ready to hand in" in done and "✗" not in done
     assert not errors
+    cell = next(c for c in solved.cells if c.get("id") == "ready-to-hand-in")
+    assert not [o for o in cell.outputs if o.get("output_type") == "execute_result"], "a value under the cell"
+
+
+def test_every_cell_that_reaches_a_stub_says_so_in_one_line(released):
+    reached = [c for c in released.cells if _errors(c) and not cells.is_check_cell(c)
+               and c.get("id") != "ready-to-hand-in"]
+    assert reached, "no worked example or figure of lesson 01 calls an exercise: the test would hold nothing"
+    for cell in reached:
+        (error,) = _errors(cell)
+        assert error["ename"] == "NotImplementedError" and len(error["traceback"]) == 1, error["traceback"][:3]
+        named = [name for name in EXERCISES if f"{name} is not written yet: write {name}" in error["traceback"][0]]
+        assert named and named[0] in cell.source, (cell.source[:200], error["traceback"][0])
+
+
+def test_only_a_stub_gets_the_one_line(tmp_path):
+    """A NotImplementedError from a library, or raised where no stub is, keeps IPython's traceback."""
+    shutil.copytree(SOLUTIONS / "coursekit", tmp_path / "coursekit")
+    nb = nbformat.v4.new_notebook(cells=[
+        nbformat.v4.new_code_cell("import coursekit\nimport numpy as np"),
+        nbformat.v4.new_code_cell("def rot_x(angle):\n    raise NotImplementedError('not written yet')"),
+        nbformat.v4.new_code_cell("[rot_x(a) for a in np.linspace(0, 1, 3)]"),
+        nbformat.v4.new_code_cell("import numbers\nnumbers.Complex.real.fget(1j)"),  # raised in numbers.py
+        nbformat.v4.new_code_cell("raise NotImplementedError('typed at the top level')"),
+    ])
+    NotebookClient(nb, timeout=60, allow_errors=True, kernel_name="python3",
+                   resources={"metadata": {"path": str(tmp_path)}}).execute()
+    (stub,) = _errors(nb.cells[2])
+    assert len(stub["traceback"]) == 1 and "rot_x is not written yet: write rot_x" in stub["traceback"][0]
+    for cell in nb.cells[3:]:
+        (error,) = _errors(cell)
+        assert error["ename"] == "NotImplementedError", error
+        assert "not written yet: write" not in "".join(error["traceback"]), error["traceback"]
+        assert len(error["traceback"]) > 1, error["traceback"]
 
 
 def test_every_lesson_ends_with_its_hand_in_cell():

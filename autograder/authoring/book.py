@@ -8,6 +8,11 @@ HTML to ``--out``. The front page is ``00_start_here``; open
 ``OUT/index.html`` in any browser: math is typeset by a copy of MathJax inside
 the book, so it reads offline, from disk, with no server and no Python.
 
+It is the reader's edition: cells a master tags ``student-only`` (check cells,
+hand-in, grading) are left out, its kernels run with ``COURSEKIT_EDITION=reader``
+(legends say "the reference log_so3", not "your log_so3"), and every figure's
+alt text is its caption.
+
 What the book never holds: the course's stubs (``course/``), the hidden
 tests and the grader (``autograder/``), the public checks' source or the
 notebooks' sources (only the executed pages).
@@ -18,20 +23,24 @@ Examples
 """
 
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
+from html import escape as html_escape
 from pathlib import Path
 
 import nbformat
 
+from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
 from autograder.lessons.paths import SOLUTIONS
 
 FRONT_PAGE = "00_start_here"
 SUPPORT_PACKAGE = "coursekit"
 SOLUTION_MARKERS = ("### BEGIN SOLUTION", "### END SOLUTION")
+READER_EDITION_VARIABLE = "COURSEKIT_EDITION"  # read by solutions/coursekit/edition.py
 
 CONF_PY = '''\
 project = "Rotations, hands on"
@@ -82,7 +91,9 @@ def _mathjax_file():
 
 
 def _reader_copy(nb):
-    """The master as a reader sees it: answers in place, without nbgrader's solution markers."""
+    """The master as a reader sees it: answers in place, without nbgrader's solution markers, and
+    without the cells tagged student-only (check cells, hand-in, how grading works)."""
+    nb.cells = [cell for cell in nb.cells if not cells.is_student_only(cell)]
     for cell in nb.cells:
         if cell.cell_type == "code":
             lines = cell.source.splitlines()
@@ -91,6 +102,29 @@ def _reader_copy(nb):
                 cell.source = "\n".join(kept)
             cell.outputs, cell.execution_count = [], None
     return nb
+
+
+_PATH_AS_ALT = re.compile(r'<img alt="(_images/[^"]+\.png)" src="\1"')
+
+
+def _alt_text_from_captions(page, root):
+    """Give every figure of ``page`` its caption as alt text (docutils' default is the file path).
+
+    The book's kernels write each figure's caption into its PNG's ``Title``
+    text chunk (``coursekit.edition``); a figure without a caption gets
+    "Figure without a caption" rather than a file name.
+    """
+    from PIL import Image
+
+    def alt(match):
+        with Image.open(root / match.group(1)) as image:
+            caption = image.text.get("Title", "") if hasattr(image, "text") else ""
+        return f'<img alt="{html_escape(caption or "Figure without a caption")}" src="{match.group(1)}"'
+
+    text = page.read_text(encoding="utf-8")
+    changed = _PATH_AS_ALT.sub(alt, text)
+    if changed != text:
+        page.write_text(changed, encoding="utf-8")
 
 
 def stage(solutions_dir, staging):
@@ -141,6 +175,7 @@ def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=N
         env = {key: value for key, value in os.environ.items()
                if key not in ("JPY_SESSION_NAME", "MPLBACKEND", "PYDEVD_DISABLE_FILE_VALIDATION")}
         env["PYTHONHASHSEED"] = "0"
+        env[READER_EDITION_VARIABLE] = "reader"  # coursekit.edition: "the reference log_so3", not "your"
         env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
         warnings = Path(tmp) / "warnings.txt"
         run = subprocess.run(
@@ -155,6 +190,8 @@ def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=N
                 shutil.rmtree(target)
             elif target.exists():
                 target.unlink()
+        for page in html.glob("*.html"):
+            _alt_text_from_captions(page, html)
         if out.exists():
             shutil.rmtree(out)
         out.parent.mkdir(parents=True, exist_ok=True)

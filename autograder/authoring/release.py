@@ -5,7 +5,7 @@
 1. normalises each master in place (no execution counts, no outputs except the
    recorded ones of ``nbval-check-output`` cells, no editor metadata), so that
    diffs of the masters show only what an author changed;
-2. writes ``course/NN_*.ipynb`` with nbgrader's own preprocessors: solution
+2. writes ``course/NN_*.ipynb`` without the book's ``reader-only`` cells, with nbgrader's own preprocessors: solution
    regions replaced by a stub that raises ``NotImplementedError``, outputs
    cleared, check cells locked, checksums computed as ``nbgrader
    generate_assignment`` would;
@@ -85,6 +85,7 @@ def student_version(master):
                                         ClearSolutions, ComputeChecksums, LockCells)
 
     nb = normalize_master(master)
+    nb.cells = [cell for cell in nb.cells if not cells.is_reader_only(cell)]
     resources = {}
     for preprocessor in (
         ClearSolutions(code_stub={"python": CODE_STUB}),

@@ -29,6 +29,10 @@ import nbformat
 NBGRADER_SCHEMA = 3
 SETUP_TAG = "setup"
 CHECK_OUTPUT_TAG = "nbval-check-output"
+# The lab and the book come from one master: the book drops student-only cells (hand-in, grading, check
+# cells), the students' copy drops reader-only cells (the book's own wording where one is needed).
+STUDENT_ONLY_TAG = "student-only"
+READER_ONLY_TAG = "reader-only"
 CHECK_PREFIX = "check_"
 HAND_IN_GRADE_ID = "ready-to-hand-in"  # also its cell id
 BEGIN_SOLUTION = "### BEGIN SOLUTION"
@@ -71,6 +75,14 @@ def is_hand_in_cell(cell):
 
 def is_setup_cell(cell):
     return cell.get("cell_type") == "code" and SETUP_TAG in tags(cell)
+
+
+def is_student_only(cell):
+    return STUDENT_ONLY_TAG in tags(cell)
+
+
+def is_reader_only(cell):
+    return READER_ONLY_TAG in tags(cell)
 
 
 def checks_output(cell):
@@ -162,6 +174,7 @@ def hand_in(lesson_number, points_value=1):
     cell.metadata.update(_meta(True, False, True, HAND_IN_GRADE_ID, points_value))
     cell.metadata["editable"] = False
     cell.metadata["deletable"] = False
+    cell.metadata["tags"] = [STUDENT_ONLY_TAG]
     cell.id = HAND_IN_GRADE_ID
     return cell
 
@@ -172,5 +185,6 @@ def check(name, points_value):
     cell.metadata.update(_meta(True, False, True, CHECK_PREFIX + name, points_value))
     cell.metadata["editable"] = False
     cell.metadata["deletable"] = False
+    cell.metadata["tags"] = [STUDENT_ONLY_TAG]
     cell.id = CHECK_PREFIX + name
     return cell

@@ -218,7 +218,7 @@ def check(exercise, function):
                 "`raise NotImplementedError(...)` with your code, then run this cell again."
             )
             _stop_the_cell(NotWrittenYet(
-                f"{exercise} is not written yet, so Run All stopped here: write {exercise} next"))
+                f"{exercise} is not written yet: write {exercise} next"))
         except Mismatch as mismatch:
             failed += 1
             line = f"  ✗ {description}: {_one_line(mismatch.reason)}"
@@ -243,6 +243,6 @@ def check(exercise, function):
     if failed:
         print(f"{passed} of {total} public checks passed. Fix the ✗ lines above and run this cell again.")
         _stop_the_cell(CheckFailed(f"{failed} of {total} public checks failed for {exercise}: "
-                                   "fix the ✗ lines above (Run All stopped here)"))
+                                   "fix the ✗ lines above"))
     passed_text = "The public check passed" if total == 1 else f"All {total} public checks passed"
     print(f"{passed_text}. The hidden checks run when your notebook is graded.")

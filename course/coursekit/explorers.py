@@ -35,12 +35,16 @@ RING_COLORS = ("#0072B2", "#009E73", "#D55E00")  # yaw (outer), pitch (middle), 
 # The machinery shared by every explorer
 # ---------------------------------------------------------------------------------------------------------
 
+# How a slider prints its value; a title that repeats the value uses the same format, so both say 88.5.
+READOUT_FORMAT = ".3g"
+
+
 def _slider(spec):
     import ipywidgets as widgets
 
     label, low, high, step, value = spec
     return widgets.FloatSlider(value=value, min=low, max=high, step=step, description=label,
-                               continuous_update=True, readout_format=".3g",
+                               continuous_update=True, readout_format=READOUT_FORMAT,
                                style={"description_width": "initial"},
                                layout=widgets.Layout(width="340px"))
 
@@ -308,7 +312,8 @@ def explore_gimbal(figure=None):
             return
         ax = fig.add_subplot(projection="3d")
         draw_gimbal(ax, np.deg2rad(yaw), np.deg2rad(pitch), np.deg2rad(roll),
-                     _title(figure, f"Gimbal at yaw {yaw:.0f}°, pitch {pitch:.0f}°, roll {roll:.0f}° "
+                     _title(figure, f"Gimbal at yaw {yaw:{READOUT_FORMAT}}°, pitch {pitch:{READOUT_FORMAT}}°, "
+                                    f"roll {roll:{READOUT_FORMAT}}° "
                                     f"(cos pitch = {np.cos(np.deg2rad(pitch)):.2f})"))
 
     controls = {"yaw": ("yaw ψ [°]", -180.0, 180.0, 1.0, 25.0),

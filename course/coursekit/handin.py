@@ -45,8 +45,8 @@ def ready_to_hand_in(lesson, namespace=None):
 
     Returns
     -------
-    list of str
-        Empty: every exercise passes its public checks.
+    None
+        Nothing, so that a clean run shows no value under the cell.
 
     Raises
     ------
@@ -73,7 +73,5 @@ def ready_to_hand_in(lesson, namespace=None):
         print(f"{len(names) - len(unfinished)} of {len(names)} exercises pass their public checks. "
               f"Still to do: {', '.join(unfinished)}. Each one's check cell says more.")
         raise NotReadyYet(f"still to do in lesson {lesson}: {', '.join(unfinished)}")
-    else:
-        print(f"All {len(names)} exercises pass their public checks: ready to hand in. "
-              "Save the notebook (Ctrl+S) and hand in this file; the hidden checks run when it is graded.")
-    return unfinished
+    print(f"All {len(names)} exercises pass their public checks: ready to hand in. "
+          "Save the notebook (Ctrl+S) and hand in this file; the hidden checks run when it is graded.")
