@@ -142,6 +142,7 @@ def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=N
                if key not in ("JPY_SESSION_NAME", "MPLBACKEND", "PYDEVD_DISABLE_FILE_VALIDATION")}
         env["PYTHONHASHSEED"] = "0"
         env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
+        env["COURSEKIT_BOOK"] = "1"   # explorers embed precomputed frames under an offline slider (coursekit)
         warnings = Path(tmp) / "warnings.txt"
         run = subprocess.run(
             [sys.executable, "-m", "sphinx", "-b", "html", "-q", "-j", str(jobs), "-d", str(Path(tmp) / "doctrees"),

@@ -32,6 +32,7 @@ __all__ = [
     "live_front_end",
     "widgets_live",
     "hide_figure_header",
+    "book_build",
 ]
 
 # Okabe-Ito vermillion, bluish green and blue: red, green and blue that colour-blind readers tell apart.
@@ -59,6 +60,15 @@ def live_front_end():
     return shell is not None and hasattr(shell, "kernel")
 
 
+def book_build():
+    """True in the kernels of ``python -m autograder book``, which set ``COURSEKIT_BOOK=1``.
+
+    There the explorers embed precomputed frames under an offline slider, and
+    ``interactive_figures()`` says that the other figures are still pictures.
+    """
+    return os.environ.get("COURSEKIT_BOOK") == "1"
+
+
 def interactive_figures():
     """In a live JupyterLab, draw figures with ipympl's widget backend (``%matplotlib widget``).
 
@@ -66,8 +76,16 @@ def interactive_figures():
     explorers of ``coursekit.explorers`` update their figure in place.
     Anywhere else (no front end, or ipympl not installed) this does nothing,
     so a notebook that calls it still runs under nbval, the grader and the
-    book builder. It returns nothing, so the cell that calls it shows nothing.
+    book builder. It returns nothing, so the cell that calls it shows nothing, except
+    in the book, where it says in one line that the figures there are pictures.
     """
+    if book_build():
+        from IPython.display import Markdown, display
+
+        display(Markdown("*In this book the figures are pictures and the explorers move through precomputed "
+                         "frames; open the lesson in JupyterLab (see Start here) to turn the 3D figures with "
+                         "the mouse.*"))
+        return
     if not live_front_end():
         return
     try:
