@@ -26,7 +26,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation, Slerp
 
 from .lie import Exp, Log, skew
-from .plotting import (AXIS_COLORS, book_build, draw_circle, draw_frame, draw_point, finish_3d_axes, hide_figure_header,
+from .plotting import (AXIS_COLORS, book_build, keep_toolbar_off_axes, draw_circle, draw_frame, draw_point, finish_3d_axes, hide_figure_header,
                        live_front_end, new_3d_axes, widgets_live)
 
 __all__ = ["explore_exp", "explore_slerp", "explore_gimbal", "explore_step_size", "explore_gauss_newton", "draw_gimbal"]
@@ -76,7 +76,7 @@ def _explore(draw, controls, figsize, static, static_figsize=None, sweep=None):
         with plt.ioff():
             fig = plt.figure(figsize=figsize, layout="constrained")
         hide_figure_header(fig)
-        fig.canvas.toolbar_position = "right"
+        keep_toolbar_off_axes(fig)
 
         def update(_change=None):
             views = _views(fig)
@@ -238,8 +238,8 @@ def explore_slerp(figure=None, q0=None, q1=None):
         return (1.0 - t) * q0 + t * q1
 
     def draw(fig, t, static=False):
-        ax = fig.add_subplot(1, 2, 1, projection="3d")
-        ax2 = fig.add_subplot(1, 2, 2)
+        ax = fig.add_subplot(2, 1, 1, projection="3d")     # stacked: the lesson column is narrow
+        ax2 = fig.add_subplot(2, 1, 2)
         new_3d_axes("the body's x axis on the unit sphere", ax=ax, limit=1.15, zoom=0.85, unit="unitless")
         ax.set_xlabel("$x$ (unitless)")
         ax.set_ylabel("$y$ (unitless)")
@@ -280,7 +280,7 @@ def explore_slerp(figure=None, q0=None, q1=None):
         ax2.legend(loc="upper left", fontsize=9)
         fig.suptitle(_title(figure, "Slerp turns at constant speed; normalised lerp hurries through the middle"))
 
-    return _explore(draw, {"t": ("t (unitless)", 0.0, 1.0, 0.01, 0.3)}, (11.0, 4.9), {"t": 0.3},
+    return _explore(draw, {"t": ("t (unitless)", 0.0, 1.0, 0.01, 0.3)}, (7.0, 9.4), {"t": 0.3},
                     sweep=("t", 0.0, 1.0, 21))
 
 
@@ -346,7 +346,7 @@ def explore_gimbal(figure=None):
     def draw(fig, yaw, pitch, roll, static=False):
         if static:
             for k, p in enumerate((30.0, 88.0)):
-                ax = fig.add_subplot(1, 2, k + 1, projection="3d")
+                ax = fig.add_subplot(2, 1, k + 1, projection="3d")
                 draw_gimbal(ax, np.deg2rad(yaw), np.deg2rad(p), np.deg2rad(roll),
                              f"yaw {yaw:.0f}°, pitch {p:.0f}°, roll {roll:.0f}°", legend=k == 0)
             fig.suptitle(_title(figure, "Turn the gimbal: near pitch 90° the roll axis meets the yaw axis"))
@@ -360,7 +360,7 @@ def explore_gimbal(figure=None):
                 "pitch": ("pitch θ [°]", -90.0, 90.0, 0.5, 30.0),
                 "roll": ("roll φ [°]", -180.0, 180.0, 1.0, 20.0)}
     return _explore(draw, controls, (6.4, 5.8), {"yaw": 25.0, "pitch": 30.0, "roll": 20.0},
-                    static_figsize=(10.5, 5.4), sweep=("pitch", 0.0, 90.0, 31))
+                    static_figsize=(6.4, 10.6), sweep=("pitch", 0.0, 90.0, 31))
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -477,8 +477,8 @@ def explore_gauss_newton(align_gauss_newton, figure=None, P=None, Q=None):
     def draw(fig, iteration, start, static=False):
         path, problem = _gauss_newton_path(align_gauss_newton, P, Q, R_best @ Exp(start * axis), max_iters)
         k = min(int(round(iteration)), len(path) - 1)
-        ax = fig.add_subplot(1, 2, 1, projection="3d")
-        ax2 = fig.add_subplot(1, 2, 2)
+        ax = fig.add_subplot(2, 1, 1, projection="3d")     # stacked: the lesson column is narrow
+        ax2 = fig.add_subplot(2, 1, 2)
         new_3d_axes(f"iteration {k}: $R_{{{k}}}\\,p_i$ against $q_i$", ax=ax, limit=1.15, zoom=0.85,
                     unit="unitless")
         ax.set_xlabel("$x$ (unitless)")
@@ -511,5 +511,5 @@ def explore_gauss_newton(align_gauss_newton, figure=None, P=None, Q=None):
 
     controls = {"iteration": ("iteration k (count)", 0.0, float(max_iters), 1.0, 0.0),
                 "start": ("start angle [rad]", 0.1, 3.0, 0.1, 2.0)}
-    return _explore(draw, controls, (11.0, 5.0), {"iteration": 1.0, "start": 2.0},
+    return _explore(draw, controls, (7.0, 9.6), {"iteration": 1.0, "start": 2.0},
                     sweep=("iteration", 0.0, float(max_iters), max_iters + 1))
