@@ -30,8 +30,9 @@ def test_the_walls_hold_as_an_ordinary_user():
     command = [sys.executable, "-m", "pytest", *files, "-p", "no:cacheprovider", "-n", "1", "-q",
                "--rootdir", str(ROOT), "-o", "addopts="]
     try:
-        argv = ordinary_user.as_ordinary_user(["env", "HOME=/tmp", *command], reach=[ROOT, work],
-                                              holds=work / "holds")
+        # -u: an earlier test of this worker may have left the variable set, and -n needs xdist loaded
+        wrapped = ["env", "-u", "PYTEST_DISABLE_PLUGIN_AUTOLOAD", "HOME=/tmp", *command]
+        argv = ordinary_user.as_ordinary_user(wrapped, reach=[ROOT, work], holds=work / "holds")
         done = subprocess.run(argv, cwd=work, capture_output=True, text=True, timeout=2400)
     finally:
         subprocess.run(["rm", "-rf", str(work)], check=False)

@@ -150,7 +150,9 @@ def _said(result):
     lines = [result.reason, *result.problems, *result.skipped]
     for lesson in result.lessons:
         lines.append(lesson.reason)
-        lines += [note for exercise in lesson.exercises for note in exercise.notes]
+        for exercise in lesson.exercises:
+            lines += exercise.notes
+            lines += [check.reason for check in exercise.checks if not check.passed]
     return "\n".join(lines)
 
 

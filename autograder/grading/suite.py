@@ -26,6 +26,7 @@ How it runs (speed; the ``--no-nbval`` path is this module plus the sandbox):
   runs one thread (its pool made a 4×4 ``expm`` 50× slower).
 """
 
+import contextlib
 import functools
 import os
 import sys
@@ -184,8 +185,21 @@ class _Grabber:
         self.items = list(items)
 
 
-def _pytest_args(files):
+@contextlib.contextmanager
+def _no_plugin_autoload():
+    """Inner pytest runs load no installed plugins; the process's environment is left as it was."""
+    before = os.environ.get("PYTEST_DISABLE_PLUGIN_AUTOLOAD")
     os.environ["PYTEST_DISABLE_PLUGIN_AUTOLOAD"] = "1"
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop("PYTEST_DISABLE_PLUGIN_AUTOLOAD", None)
+        else:
+            os.environ["PYTEST_DISABLE_PLUGIN_AUTOLOAD"] = before
+
+
+def _pytest_args(files):
     return [str(f) for f in files] + [
         "-c", str(HIDDEN_SUITE / "pytest.ini"), "--rootdir", str(HIDDEN_SUITE.parent.parent),
         "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings",
@@ -210,8 +224,9 @@ def hidden_tests():
     only those; write the test with them, or extend :data:`FIXTURES`).
     """
     grabber = _Grabber()
-    code = pytest.main(_pytest_args(sorted(HIDDEN_SUITE.glob("test_*.py"))) + ["--collect-only"],
-                       plugins=[grabber])
+    with _no_plugin_autoload():
+        code = pytest.main(_pytest_args(sorted(HIDDEN_SUITE.glob("test_*.py"))) + ["--collect-only"],
+                           plugins=[grabber])
     if code != pytest.ExitCode.OK or not grabber.items:
         raise SuiteError(f"the hidden suite could not be collected (pytest exit status {int(code)})")
     tests, problems = [], []
@@ -477,7 +492,8 @@ def run_hidden_suite_with_pytest(proxy, reference, lessons=None):
         files = [f for f in files if f.stem.split("_")[1] in lessons]
     if not files:
         return [], []
-    code = pytest.main(_pytest_args(files), plugins=[collector])
+    with _no_plugin_autoload():
+        code = pytest.main(_pytest_args(files), plugins=[collector])
     if code not in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) or not collector.results:
         raise SuiteError(f"the hidden suite did not run (pytest exit status {int(code)}, "
                          f"{len(collector.results)} checks collected)")
