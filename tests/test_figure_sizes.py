@@ -127,8 +127,8 @@ def survey(out_json, png_dir=None):
         for cell in nb.cells:
             if cell.cell_type == "code":
                 result = shell.run_cell(cell.source.replace("%matplotlib", "# %matplotlib"), silent=True)
-                if result.error_in_exec is not None and not isinstance(result.error_in_exec, AssertionError):
-                    raise RuntimeError(f"{path.name}: {result.error_in_exec!r}")
+                if not result.success:                 # a syntax error, or an exception while running
+                    raise RuntimeError(f"{path.name}: {result.error_before_exec or result.error_in_exec!r}")
         show()
     Path(out_json).write_text(json.dumps(records, indent=1), encoding="utf-8")
 
