@@ -21,6 +21,8 @@ Examples
 >>> explore_gimbal(figure="2b")          # doctest: +SKIP
 """
 
+import re
+
 import matplotlib.pyplot as plt
 import numpy as np
 from scipy.spatial.transform import Rotation, Slerp
@@ -148,6 +150,8 @@ def _show_frames(draw, controls, figsize, sweep):
         html = animation.to_jshtml(fps=6, default_mode="once")
     plt.close(fig)
     label = controls[name][0]
+    # matplotlib links Font Awesome from a CDN for its buttons' icons: a book read offline loads nothing remote
+    html = re.sub(r'<link[^>]*font-awesome[^>]*>', "", html)
     html = html.replace('name="points"', f'name="points" aria-label="{label}: frame"')
     kept = ", ".join(f"{controls[key][0]} = {value:g}" for key, value in fixed.items())
     note = (f"In this book the explorer is {count} precomputed frames: drag the slider below (or focus it and "
