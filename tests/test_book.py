@@ -166,3 +166,48 @@ def test_the_browser_check_catches_a_broken_page(book, tmp_path):
         browser.close()
     for case, (_, expected) in cases.items():
         assert expected in found[case], (case, found[case])
+
+
+EXPLORER_LESSONS = sorted(path.stem for path in SOLUTIONS.glob("[0-9][0-9]_*.ipynb")
+                          if "explore_" in path.read_text(encoding="utf-8"))
+
+
+def test_every_explorer_moves_in_the_book_and_the_gimbal_reaches_the_lock(book):
+    """From file://, with no kernel: lesson 05's gimbal slider dragged to its last frame (pitch 90°) shows another frame.
+
+    Every lesson with an explorer holds its frames under a slider, and says in a
+    line that the book's explorer is precomputed. The screenshot is kept.
+    """
+    sync_api = require_chromium()
+    artifacts = PROJECT_ROOT / "test-artifacts" / "book"
+    artifacts.mkdir(parents=True, exist_ok=True)
+    sizes = {name: (book / f"{name}.html").stat().st_size / 2**20 for name in EXPLORER_LESSONS}
+    print("book: explorer pages " + ", ".join(f"{name[:2]} {mib:.1f} MiB" for name, mib in sizes.items()))
+    browser = Browser(sync_api)
+    try:
+        for name in EXPLORER_LESSONS:
+            page = browser.page()
+            open_book_page(page, book / f"{name}.html")
+            frames = page.locator(".coursekit-explorer-frames")
+            assert frames.count() >= 1, f"{name}: no explorer frames in the book"
+            assert "precomputed frames" in frames.first.inner_text(), name
+            if name.startswith("05_"):
+                explorer = frames.filter(has_text="pitch").first
+                explorer.scroll_into_view_if_needed()
+                picture = explorer.locator("img").first
+                slider = explorer.locator("input[type=range]").first
+                first = picture.get_attribute("src")
+                last = int(slider.get_attribute("max"))
+                slider.focus()
+                page.keyboard.press("End")                     # the keyboard's drag to the far end: pitch 90°
+                page.wait_for_function("([img, before]) => img.getAttribute('src') !== before",
+                                       arg=[picture.element_handle(), first], timeout=10_000)
+                shot = artifacts / "book_05_gimbal_locked.png"
+                explorer.screenshot(path=str(shot))
+                print(f"book: the gimbal at the lock, from file:// -> {shot}")
+                assert last >= 20 and slider.input_value() == str(last), (last, slider.input_value())
+                assert "pitch" in explorer.inner_text() and "from 0 to 90" in explorer.inner_text()
+            assert not page.js_errors, (name, page.js_errors)
+            page.close()
+    finally:
+        browser.close()

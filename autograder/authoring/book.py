@@ -177,6 +177,7 @@ def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=N
         env["PYTHONHASHSEED"] = "0"
         env[READER_EDITION_VARIABLE] = "reader"  # coursekit.edition: "the reference log_so3", not "your"
         env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
+        env["COURSEKIT_BOOK"] = "1"   # explorers embed precomputed frames under an offline slider (coursekit)
         warnings = Path(tmp) / "warnings.txt"
         run = subprocess.run(
             [sys.executable, "-m", "sphinx", "-b", "html", "-q", "-j", str(jobs), "-d", str(Path(tmp) / "doctrees"),

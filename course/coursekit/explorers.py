@@ -6,8 +6,11 @@ iteration count) and shows sliders for them:
 - in a live JupyterLab with ipympl (``coursekit.plotting.interactive_figures()``)
   the sliders redraw the figure in place, and 3D panels still turn with the mouse;
 - in a live front end without ipympl, the sliders redraw an ordinary picture;
-- anywhere else (the grader's notebook stage, ``record``, the book) the
-  explorer draws one static figure that makes the same point, and no widget.
+- in the book (``python -m autograder book``), the explorer's main control is
+  swept through a few dozen precomputed frames under an offline JavaScript
+  slider (matplotlib's ``Animation.to_jshtml``), with a line saying so;
+- anywhere else (the grader's notebook stage, ``record``) the explorer draws
+  one static figure that makes the same point, and no widget.
 
 Explorers use ``coursekit.lie`` (built on scipy), never the functions you
 write in the exercises, so an unfinished answer cannot break them. Nothing
@@ -18,16 +21,19 @@ Examples
 >>> explore_gimbal(figure="2b")          # doctest: +SKIP
 """
 
+import re
+
 import matplotlib.pyplot as plt
 import numpy as np
 from scipy.spatial.transform import Rotation, Slerp
 
 from .lie import Exp, Log, skew
-from .plotting import (AXIS_COLORS, draw_circle, draw_frame, draw_point, finish_3d_axes, hide_figure_header,
+from .plotting import (AXIS_COLORS, book_build, keep_toolbar_off_axes, draw_circle, draw_frame, draw_point, finish_3d_axes, hide_figure_header,
                        live_front_end, new_3d_axes, widgets_live)
 
 __all__ = ["explore_exp", "explore_slerp", "explore_gimbal", "explore_step_size", "explore_gauss_newton", "draw_gimbal"]
 
+BOOK_FRAME_DPI = 100  # as figure.dpi in the lessons: a frame is as big as the live figure
 RING_COLORS = ("#0072B2", "#009E73", "#D55E00")  # yaw (outer), pitch (middle), roll (inner) rings
 
 
@@ -59,10 +65,12 @@ def _restore(fig, views):
             ax.view_init(elev=view[0], azim=view[1])
 
 
-def _explore(draw, controls, figsize, static, static_figsize=None):
+def _explore(draw, controls, figsize, static, static_figsize=None, sweep=None):
     """Show ``draw(fig, **values)`` with a slider per control, or ``draw(fig, **static)`` as a picture.
 
     ``controls`` maps a keyword of ``draw`` to ``(label, min, max, step, start)``.
+    ``sweep`` = ``(name, first, last, count)``: in the book (``book_build()``) the
+    explorer is ``count`` frames of that one control, under a slider that needs no kernel.
     Returns None: the explorer is displayed here, and a returned widget would be
     displayed a second time as the cell's value (two views of one ipympl canvas).
     """
@@ -74,7 +82,7 @@ def _explore(draw, controls, figsize, static, static_figsize=None):
         with plt.ioff():
             fig = plt.figure(figsize=figsize, layout="constrained")
         hide_figure_header(fig)
-        fig.canvas.toolbar_position = "right"
+        keep_toolbar_off_axes(fig)
 
         def update(_change=None):
             views = _views(fig)
@@ -112,10 +120,49 @@ def _explore(draw, controls, figsize, static, static_figsize=None):
             box.add_class("coursekit-explorer")
             display(box)
             return None
+    if sweep is not None and book_build():
+        _show_frames(draw, controls, figsize, sweep)
+        return None
     fig = plt.figure(figsize=static_figsize or figsize, layout="constrained")
     draw(fig, static=True, **static)
     plt.show()
     return None
+
+
+def _show_frames(draw, controls, figsize, sweep):
+    """The book's explorer: ``draw`` at every value of one control, as a slider of frames that needs no kernel.
+
+    ``sweep`` is ``(name, first, last, count)``; the other controls stay at their
+    start values. matplotlib's ``Animation.to_jshtml`` embeds the frames (
+    JPEG at the lessons' 100 dpi) and a JavaScript slider in the page.
+    """
+    from IPython.display import HTML, display
+    from matplotlib.animation import FuncAnimation
+
+    name, first, last, count = sweep
+    values = np.linspace(first, last, count)
+    fixed = {key: spec[4] for key, spec in controls.items() if key != name}
+    with plt.ioff():
+        fig = plt.figure(figsize=figsize, layout="constrained", dpi=BOOK_FRAME_DPI)
+
+    def frame(k):
+        fig.clear()
+        draw(fig, **fixed, **{name: values[k]})
+
+    animation = FuncAnimation(fig, frame, frames=count, init_func=lambda: frame(0), repeat=False)
+    with plt.rc_context({"animation.frame_format": "jpeg"}):   # half the size of PNG frames (1.4 MB for 31)
+        html = animation.to_jshtml(fps=6, default_mode="once")
+    plt.close(fig)
+    label = controls[name][0]
+    # matplotlib links Font Awesome from a CDN for its buttons' icons: a book read offline loads nothing remote
+    html = re.sub(r'<link[^>]*font-awesome[^>]*>', "", html)
+    html = html.replace('name="points"', f'name="points" aria-label="{label}: frame"')
+    kept = ", ".join(f"{controls[key][0]} = {value:g}" for key, value in fixed.items())
+    note = (f"In this book the explorer is {count} precomputed frames: drag the slider below (or focus it and "
+            f"press the arrow keys, Home, End) to move <b>{label}</b> from {first:g} to {last:g}"
+            + (f", with {kept}" if kept else "") + ". Open the lesson in JupyterLab to move every slider and "
+            "turn the 3D view.")
+    display(HTML(f'<div class="coursekit-explorer-frames"><p>{note}</p>{html}</div>'))
 
 
 def _title(figure, text):
@@ -166,7 +213,8 @@ def explore_exp(figure=None):
     controls = {"azimuth": ("axis azimuth [°]", -180.0, 180.0, 1.0, 30.0),
                 "elevation": ("axis elevation [°]", -90.0, 90.0, 1.0, 40.0),
                 "theta": ("angle θ [rad]", 0.0, 2 * np.pi, 0.01, 2.0)}
-    return _explore(draw, controls, (6.4, 5.6), {"azimuth": 30.0, "elevation": 40.0, "theta": 2.0})
+    return _explore(draw, controls, (6.4, 5.6), {"azimuth": 30.0, "elevation": 40.0, "theta": 2.0},
+                    sweep=("theta", 0.0, 2 * np.pi, 33))
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -198,8 +246,8 @@ def explore_slerp(figure=None, q0=None, q1=None):
         return (1.0 - t) * q0 + t * q1
 
     def draw(fig, t, static=False):
-        ax = fig.add_subplot(1, 2, 1, projection="3d")
-        ax2 = fig.add_subplot(1, 2, 2)
+        ax = fig.add_subplot(2, 1, 1, projection="3d")     # stacked: the lesson column is narrow
+        ax2 = fig.add_subplot(2, 1, 2)
         new_3d_axes("the body's x axis on the unit sphere", ax=ax, limit=1.15, zoom=0.85, unit="unitless")
         ax.set_xlabel("$x$ (unitless)")
         ax.set_ylabel("$y$ (unitless)")
@@ -221,7 +269,7 @@ def explore_slerp(figure=None, q0=None, q1=None):
         ax.scatter(*dots_n.T, color="#E69F00", s=22, marker="x", depthshade=False)
         R_s = slerp([t]).as_matrix()[0]
         draw_frame(ax, R_s, name="s", length=0.8, linewidth=2.2)
-        ax.legend(loc="upper left", fontsize=8.5)
+        ax.legend(loc="upper left", fontsize=9)
         finish_3d_axes(ax)
 
         angle_s = [np.linalg.norm(Log(_quat_matrix(q0).T @ m)) for m in slerp(ts).as_matrix()]
@@ -237,10 +285,11 @@ def explore_slerp(figure=None, q0=None, q1=None):
         ax2.set_title(f"at t = {t:.2f}: slerp {np.interp(t, ts, angle_s):.3f} rad, "
                       f"nlerp {np.interp(t, ts, angle_n):.3f} rad", fontsize=10)
         ax2.grid(True, alpha=0.3)
-        ax2.legend(loc="upper left", fontsize=8.5)
+        ax2.legend(loc="upper left", fontsize=9)
         fig.suptitle(_title(figure, "Slerp turns at constant speed; normalised lerp hurries through the middle"))
 
-    return _explore(draw, {"t": ("t (unitless)", 0.0, 1.0, 0.01, 0.3)}, (11.0, 4.9), {"t": 0.3})
+    return _explore(draw, {"t": ("t (unitless)", 0.0, 1.0, 0.01, 0.3)}, (7.0, 9.4), {"t": 0.3},
+                    sweep=("t", 0.0, 1.0, 21))
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -291,7 +340,7 @@ def draw_gimbal(ax, yaw, pitch, roll, title, legend=True):
     ax.text2D(0.02, 0.02, f"angle between roll and yaw axes: {gap:.1f}°" + ("  ← gimbal lock" if locked else ""),
               transform=ax.transAxes, fontsize=9, color="#D55E00" if locked else "black")
     if legend:
-        ax.legend(loc="upper left", fontsize=8.5)
+        ax.legend(loc="upper left", fontsize=9)
     finish_3d_axes(ax)
 
 
@@ -305,7 +354,7 @@ def explore_gimbal(figure=None):
     def draw(fig, yaw, pitch, roll, static=False):
         if static:
             for k, p in enumerate((30.0, 88.0)):
-                ax = fig.add_subplot(1, 2, k + 1, projection="3d")
+                ax = fig.add_subplot(2, 1, k + 1, projection="3d")
                 draw_gimbal(ax, np.deg2rad(yaw), np.deg2rad(p), np.deg2rad(roll),
                              f"yaw {yaw:.0f}°, pitch {p:.0f}°, roll {roll:.0f}°", legend=k == 0)
             fig.suptitle(_title(figure, "Turn the gimbal: near pitch 90° the roll axis meets the yaw axis"))
@@ -320,7 +369,7 @@ def explore_gimbal(figure=None):
                 "pitch": ("pitch θ [°]", -90.0, 90.0, 0.5, 30.0),
                 "roll": ("roll φ [°]", -180.0, 180.0, 1.0, 20.0)}
     return _explore(draw, controls, (6.4, 5.8), {"yaw": 25.0, "pitch": 30.0, "roll": 20.0},
-                    static_figsize=(10.5, 5.4))
+                    static_figsize=(6.4, 10.6), sweep=("pitch", 0.0, 90.0, 31))
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -374,7 +423,7 @@ def explore_step_size(figure=None, R=None, p=None):
         ax.legend(loc="upper center", fontsize=9)
 
     return _explore(draw, {"log10_h": ("log₁₀ of the step h [rad]", -15.0, -1.0, 0.1, -6.0)}, (7.6, 4.8),
-                    {"log10_h": -6.0})
+                    {"log10_h": -6.0}, sweep=("log10_h", -15.0, -1.0, 29))
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -437,8 +486,8 @@ def explore_gauss_newton(align_gauss_newton, figure=None, P=None, Q=None):
     def draw(fig, iteration, start, static=False):
         path, problem = _gauss_newton_path(align_gauss_newton, P, Q, R_best @ Exp(start * axis), max_iters)
         k = min(int(round(iteration)), len(path) - 1)
-        ax = fig.add_subplot(1, 2, 1, projection="3d")
-        ax2 = fig.add_subplot(1, 2, 2)
+        ax = fig.add_subplot(2, 1, 1, projection="3d")     # stacked: the lesson column is narrow
+        ax2 = fig.add_subplot(2, 1, 2)
         new_3d_axes(f"iteration {k}: $R_{{{k}}}\\,p_i$ against $q_i$", ax=ax, limit=1.15, zoom=0.85,
                     unit="unitless")
         ax.set_xlabel("$x$ (unitless)")
@@ -453,7 +502,7 @@ def explore_gauss_newton(align_gauss_newton, figure=None, P=None, Q=None):
             first = P @ path[0].T
             ax.scatter(*first.T, color="#56B4E9", s=12, marker="^", depthshade=False, label="$R_0\\,p_i$ (start)")
         draw_point(ax, [0.0, 0.0, 0.0], color="0.3", size=10)
-        ax.legend(loc="upper left", fontsize=8)
+        ax.legend(loc="upper left", fontsize=9)
         finish_3d_axes(ax)
 
         costs = [cost(R) for R in path]
@@ -466,9 +515,10 @@ def explore_gauss_newton(align_gauss_newton, figure=None, P=None, Q=None):
         ax2.set_ylabel(r"cost $\sum_i |q_i - R_k\,p_i|^2$ (unitless)")
         ax2.set_title(problem or f"cost {costs[k]:.3g} after {k} step(s)", fontsize=10, wrap=True)
         ax2.grid(True, which="major", alpha=0.3)
-        ax2.legend(fontsize=8.5)
+        ax2.legend(fontsize=9)
         fig.suptitle(_title(figure, "Gauss-Newton on SO(3), one iteration at a time"))
 
     controls = {"iteration": ("iteration k (count)", 0.0, float(max_iters), 1.0, 0.0),
                 "start": ("start angle [rad]", 0.1, 3.0, 0.1, 2.0)}
-    return _explore(draw, controls, (11.0, 5.0), {"iteration": 1.0, "start": 2.0})
+    return _explore(draw, controls, (7.0, 9.6), {"iteration": 1.0, "start": 2.0},
+                    sweep=("iteration", 0.0, float(max_iters), max_iters + 1))

@@ -32,6 +32,8 @@ __all__ = [
     "live_front_end",
     "widgets_live",
     "hide_figure_header",
+    "book_build",
+    "keep_toolbar_off_axes",
 ]
 
 # Okabe-Ito vermillion, bluish green and blue: red, green and blue that colour-blind readers tell apart.
@@ -59,6 +61,15 @@ def live_front_end():
     return shell is not None and hasattr(shell, "kernel")
 
 
+def book_build():
+    """True in the kernels of ``python -m autograder book``, which set ``COURSEKIT_BOOK=1``.
+
+    There the explorers embed precomputed frames under an offline slider, and
+    ``interactive_figures()`` says that the other figures are still pictures.
+    """
+    return os.environ.get("COURSEKIT_BOOK") == "1"
+
+
 def interactive_figures():
     """In a live JupyterLab, draw figures with ipympl's widget backend (``%matplotlib widget``).
 
@@ -66,8 +77,16 @@ def interactive_figures():
     explorers of ``coursekit.explorers`` update their figure in place.
     Anywhere else (no front end, or ipympl not installed) this does nothing,
     so a notebook that calls it still runs under nbval, the grader and the
-    book builder. It returns nothing, so the cell that calls it shows nothing.
+    book builder. It returns nothing, so the cell that calls it shows nothing, except
+    in the book, where it says in one line that the figures there are pictures.
     """
+    if book_build():
+        from IPython.display import Markdown, display
+
+        display(Markdown("*In this book the figures are pictures and the explorers move through precomputed "
+                         "frames; open the lesson in JupyterLab (see Start here) to turn the 3D figures with "
+                         "the mouse.*"))
+        return
     if not live_front_end():
         return
     try:
@@ -78,15 +97,43 @@ def interactive_figures():
     get_ipython().run_line_magic("matplotlib", "widget")
     # The figure's own title says which figure it is: no "Figure 1" header above it. The header is a
     # trait of each canvas, so a pyplot hook (run on every new figure) turns it off figure by figure.
-    hook = f"{__name__}:hide_figure_header"
-    if hook not in plt.rcParams["figure.hooks"]:
-        plt.rcParams["figure.hooks"] = [*plt.rcParams["figure.hooks"], hook]
+    for name in ("hide_figure_header", "keep_toolbar_off_axes"):
+        hook = f"{__name__}:{name}"
+        if hook not in plt.rcParams["figure.hooks"]:
+            plt.rcParams["figure.hooks"] = [*plt.rcParams["figure.hooks"], hook]
 
 
 def hide_figure_header(fig):
     """Hide ipympl's "Figure N" header above ``fig`` (a no-op for figures that are pictures)."""
     if hasattr(fig.canvas, "header_visible"):
         fig.canvas.header_visible = False
+    return fig
+
+
+TOOLBAR_PX = 44  # ipympl's toolbar: one column of 32 px buttons, and a margin
+
+
+def keep_toolbar_off_axes(fig):
+    """Put ipympl's toolbar in a strip at the right of ``fig`` that no axes, label or legend uses.
+
+    ipympl lays its toolbar over the canvas (absolutely positioned, by default
+    at the left, over the y labels). Here it goes to the right, and the figure's
+    layout (constrained, tight or none) leaves ``TOOLBAR_PX`` free there. A
+    no-op for figures that are pictures.
+
+    Examples
+    --------
+    >>> fig = keep_toolbar_off_axes(plt.figure(figsize=(6, 4), layout="constrained"))   # doctest: +SKIP
+    """
+    if not hasattr(fig.canvas, "toolbar_position"):
+        return fig
+    fig.canvas.toolbar_position = "right"
+    free = 1.0 - TOOLBAR_PX / (fig.get_figwidth() * fig.dpi)
+    engine = fig.get_layout_engine()
+    if engine is not None and "rect" in engine.get():
+        engine.set(rect=(0.0, 0.0, free, 1.0))
+    elif engine is None:
+        fig.subplots_adjust(right=min(fig.subplotpars.right, free - 0.02))
     return fig
 
 
