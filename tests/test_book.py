@@ -211,3 +211,21 @@ def test_every_explorer_moves_in_the_book_and_the_gimbal_reaches_the_lock(book):
             page.close()
     finally:
         browser.close()
+
+
+def test_the_readers_edition_drops_points_from_exercise_headings():
+    """Every master's exercise headings lose their "(N points)" in the book, and nothing else does."""
+    import re
+
+    from autograder.authoring.book import _reader_copy
+    from autograder.lessons.notebook_files import read_master
+    from autograder.lessons.paths import SOLUTIONS
+
+    headings = 0
+    for path in sorted(SOLUTIONS.glob("[0-9][0-9]_*.ipynb")):
+        for cell in _reader_copy(read_master(path)).cells:
+            if cell.cell_type == "markdown":
+                exercise_lines = re.findall(r"^#+ Exercise \d+: .*$", cell.source, re.MULTILINE)
+                headings += len(exercise_lines)
+                assert not [line for line in exercise_lines if re.search(r"\(\d+(\.\d+)? points?\)", line)]
+    assert headings >= 50

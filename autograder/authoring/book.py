@@ -90,11 +90,17 @@ def _mathjax_file():
     return path
 
 
+_POINTS_IN_HEADING = re.compile(r"^(#+ Exercise \d+: .*?) \(\d+(?:\.\d+)? points?\)[ \t]*$", re.MULTILINE)
+
+
 def _reader_copy(nb):
     """The master as a reader sees it: answers in place, without nbgrader's solution markers, and
-    without the cells tagged student-only (check cells, hand-in, how grading works)."""
+    without the cells tagged student-only (check cells, hand-in, how grading works), and without the points
+    in exercise headings."""
     nb.cells = [cell for cell in nb.cells if not cells.is_student_only(cell)]
     for cell in nb.cells:
+        if cell.cell_type == "markdown":
+            cell.source = _POINTS_IN_HEADING.sub(r"\1", cell.source)  # points are the grader's business
         if cell.cell_type == "code":
             lines = cell.source.splitlines()
             kept = [line for line in lines if line.strip() not in SOLUTION_MARKERS]
