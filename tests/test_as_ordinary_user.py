@@ -27,8 +27,9 @@ def test_the_walls_hold_as_an_ordinary_user():
     (work / "holds").mkdir()
     work.chmod(0o777)
     files = [str(ROOT / "tests" / name) for name in WALLS if (ROOT / "tests" / name).exists()]
+    # --basetemp: pytest's own clean-up of older numbered folders is recursive, and these tests make deep trees
     command = [sys.executable, "-m", "pytest", *files, "-p", "no:cacheprovider", "-n", "1", "-q",
-               "--rootdir", str(ROOT), "-o", "addopts="]
+               "--rootdir", str(ROOT), "-o", "addopts=", "--basetemp", str(work / "tmp")]
     try:
         # -u: an earlier test of this worker may have left the variable set, and -n needs xdist loaded
         wrapped = ["env", "-u", "PYTEST_DISABLE_PLUGIN_AUTOLOAD", "HOME=/tmp", *command]

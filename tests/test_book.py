@@ -16,7 +16,7 @@ import pytest
 from bs4 import BeautifulSoup
 
 from autograder.lessons import cells
-from autograder.lessons.paths import COURSE, SOLUTIONS
+from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from book_build import shared_book
 from browser_support import BOOK_SELECTORS, Browser, open_book_page, page_problems, require_chromium
 

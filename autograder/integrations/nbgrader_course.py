@@ -23,6 +23,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+import nbformat
+
+from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE
 
@@ -51,10 +54,19 @@ def build_course(root, lessons=None, solutions_dir=SOLUTIONS):
             continue
         source = root / "source" / assignment_name(lesson)
         source.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(Path(solutions_dir) / lesson.filename, source / lesson.filename)
+        _write_student_master(Path(solutions_dir) / lesson.filename, source / lesson.filename)
         shutil.copytree(Path(solutions_dir) / SUPPORT_PACKAGE, source / SUPPORT_PACKAGE,
                         ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True)
     return root
+
+
+def _write_student_master(master, target):
+    """``master`` as nbgrader's source: the lab's edition, without the cells only the book shows
+    (tagged ``reader-only``, :mod:`autograder.lessons.cells`), as ``release`` leaves them out."""
+    nb = nbformat.read(str(master), as_version=4)
+    nb.cells = [cell for cell in nb.cells if not cells.is_reader_only(cell)]
+    nbformat.write(nb, str(target))
+    shutil.copystat(master, target)
 
 
 def submit(root, student_id, lesson, notebook):

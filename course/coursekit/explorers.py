@@ -22,6 +22,7 @@ Examples
 """
 
 import re
+from html import escape as html_escape
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -152,17 +153,30 @@ def _show_frames(draw, controls, figsize, sweep):
     animation = FuncAnimation(fig, frame, frames=count, init_func=lambda: frame(0), repeat=False)
     with plt.rc_context({"animation.frame_format": "jpeg"}):   # half the size of PNG frames (1.4 MB for 31)
         html = animation.to_jshtml(fps=6, default_mode="once")
+    frame(0)
+    caption = _caption_of(fig)
     plt.close(fig)
     label = controls[name][0]
     # matplotlib links Font Awesome from a CDN for its buttons' icons: a book read offline loads nothing remote
     html = re.sub(r'<link[^>]*font-awesome[^>]*>', "", html)
     html = html.replace('name="points"', f'name="points" aria-label="{label}: frame"')
+    alt = html_escape(f"{caption} (precomputed frames: {label} from {first:g} to {last:g})", quote=True)
+    html = re.sub(r'<img id="(_anim_img\w+)"', lambda m: f'<img id="{m.group(1)}" alt="{alt}"', html)
     kept = ", ".join(f"{controls[key][0]} = {value:g}" for key, value in fixed.items())
     note = (f"In this book the explorer is {count} precomputed frames: drag the slider below (or focus it and "
             f"press the arrow keys, Home, End) to move <b>{label}</b> from {first:g} to {last:g}"
             + (f", with {kept}" if kept else "") + ". Open the lesson in JupyterLab to move every slider and "
             "turn the 3D view.")
     display(HTML(f'<div class="coursekit-explorer-frames"><p>{note}</p>{html}</div>'))
+
+
+def _caption_of(fig):
+    """The figure's title as one line (its suptitle, else its first axes' title): the frames' alt text."""
+    suptitle = getattr(fig, "_suptitle", None)
+    text = suptitle.get_text() if suptitle is not None else ""
+    if not text:
+        text = next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
+    return " ".join(text.split()) or "An explorer's frames"
 
 
 def _title(figure, text):

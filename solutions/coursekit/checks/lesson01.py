@@ -175,6 +175,9 @@ def _(rotate_point):
         raise Mismatch(f"got {fmt(p_w)}, expected [0, 1, 0]")
 
 
+ROWS_HINT = "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T"
+
+
 @public_check("rotate_point", "handles N points at once (shape (N, 3))")
 def _(rotate_point):
     points = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 3.0], [1.0, 1.0, 1.0]])
@@ -184,12 +187,23 @@ def _(rotate_point):
         if "broadcast" in str(error):
             raise _crash(error, "numpy could not broadcast R * P: an elementwise product is not a rotation of "
                                 "the rows; use the matrix product, P @ R.T") from None
-        raise _crash(error, "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T") from None
+        raise _crash(error, ROWS_HINT) from None
     got = require_shape(value, (4, 3))
     one_by_one = np.array([QUARTER_TURN_Z @ p for p in points])
     if not close(got, one_by_one, 1e-9):
         raise Mismatch(f"rows do not match rotating each point on its own ({off_by(got, one_by_one)})",
                        "for rows, use P @ R.T (each row p becomes (R p)ᵀ = pᵀ Rᵀ)")
+
+
+def _batch_of_four(rotate_point):
+    """What ``rotate_point`` does with 4 points as rows (a shape that cannot be misread): "rows" when it
+    rotates each row, "raises" when it cannot take a batch, else "wrong"."""
+    points = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 3.0], [1.0, 1.0, 1.0]])
+    try:
+        got = np.asarray(rotate_point(QUARTER_TURN_Z, points), dtype=float)
+    except Exception:
+        return "raises"
+    return "rows" if got.shape == (4, 3) and close(got, points @ QUARTER_TURN_Z.T, 1e-9) else "wrong"
 
 
 SQUARE_BATCH_HINT = ("a batch of 3 points, shape (3, 3), was read as 3 columns: tell one point from a batch by "
@@ -202,8 +216,13 @@ def _(rotate_point):
     got = require_shape(rotate_point(QUARTER_TURN_Z, points), (3, 3))
     one_by_one = np.array([QUARTER_TURN_Z @ p for p in points])
     if not close(got, one_by_one, 1e-9):
-        hint = SQUARE_BATCH_HINT if close(got, QUARTER_TURN_Z @ points, 1e-9) else \
-            "for rows, use P @ R.T (each row p becomes (R p)ᵀ = pᵀ Rᵀ)"
+        four = _batch_of_four(rotate_point)  # the check above has the hint when no batch works
+        if four == "raises":
+            hint = ROWS_HINT
+        elif four == "rows" and close(got, QUARTER_TURN_Z @ points, 1e-9):
+            hint = SQUARE_BATCH_HINT
+        else:
+            hint = "for rows, use P @ R.T (each row p becomes (R p)ᵀ = pᵀ Rᵀ)"
         raise Mismatch(f"the 3 rows do not match rotating each point on its own ({off_by(got, one_by_one)})", hint)
 
 
