@@ -102,12 +102,7 @@ def _write(fd, data):
 def wait_and_report(pid, replies_fd):
     """Direct mode (``worker.start``): wait for the runner; if it did not end by the caller's ``bye``,
     say how it ended (its raw wait status), as :meth:`Feeder.report_death` does. Never returns."""
-    while True:
-        try:
-            _, status = os.waitpid(pid, 0)
-            break
-        except InterruptedError:
-            continue
+    _, status = os.waitpid(pid, 0)  # retried by Python itself when a signal interrupts it (PEP 475)
     if not (os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0):
         try:
             _write(replies_fd, wire.dumps({"died": status, "id": 0}).encode() + b"\n")
