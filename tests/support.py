@@ -6,6 +6,10 @@ Examples
 >>> result = grade(folder, lessons=("01",))                                             # doctest: +SKIP
 """
 
+import csv
+import os
+import subprocess
+import sys
 from functools import lru_cache
 from pathlib import Path
 
@@ -13,7 +17,7 @@ from autograder.grading.pipeline import GradingOptions, grade_student
 from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
-from autograder.lessons.paths import COURSE
+from autograder.lessons.paths import COURSE, PROJECT_ROOT
 from autograder.lessons.reference import answer_sources
 from autograder.mistakes import all_mistakes
 
@@ -83,3 +87,20 @@ def grade(folder, lessons=(), nbval=False):
 
 def points_by_exercise(result):
     return {e.name: (e.points, e.max_points) for e in result.exercises}
+
+
+def grade_sample_class(out, sandbox=None):
+    """Run the README's main command (the bundled sample class, nbval included) into ``out``.
+
+    ``sandbox="limits"`` asks for resource limits only (``AUTOGRADER_SANDBOX=limits``).
+    Returns ``(out, stdout, {student_id: grades.csv row})``.
+    """
+    env = {key: value for key, value in os.environ.items() if key != "AUTOGRADER_SANDBOX"}
+    if sandbox:
+        env["AUTOGRADER_SANDBOX"] = sandbox
+    result = subprocess.run([sys.executable, "-m", "autograder", "grade", "--out", str(out)],
+                            cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=1500, env=env)
+    assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-2000:]
+    with open(Path(out) / "grades.csv", newline="", encoding="utf-8") as handle:
+        rows = {row["student_id"]: row for row in csv.DictReader(handle)}
+    return out, result.stdout, rows

@@ -14,7 +14,7 @@ import re
 
 import pytest
 
-from autograder.lessons.paths import PACKAGE
+from autograder.lessons.paths import PACKAGE, PROJECT_ROOT
 
 STAGES = ("lessons", "authoring", "sandbox", "grading", "reports", "similarity", "batch", "integrations",
           "mutants")
@@ -97,3 +97,13 @@ def test_the_sandbox_child_imports_no_grader_code():
     for path in sorted((PACKAGE / "sandbox" / "child").glob("*.py")):
         outside = {n for n in _imported_names(path) if not n.startswith("autograder.sandbox.child")}
         assert not outside, f"{path.name} imports grader code: {outside}"
+
+
+def test_the_slowest_first_order_names_real_test_files():
+    """conftest's ``SLOWEST_FILES_FIRST`` schedules the heavy files first: a renamed file would
+    silently fall back to the end of the run."""
+    import conftest
+
+    present = {path.name for path in (PROJECT_ROOT / "tests").glob("test_*.py")}
+    assert set(conftest.SLOWEST_FILES_FIRST) <= present, set(conftest.SLOWEST_FILES_FIRST) - present
+    assert len(set(conftest.SLOWEST_FILES_FIRST)) == len(conftest.SLOWEST_FILES_FIRST)

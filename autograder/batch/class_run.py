@@ -346,7 +346,7 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
         jobs = min(jobs, len(tasks))
         with warm.SlotPool(jobs, options.limits) if warm.enabled() else nullcontext() as slots:
             learn_reference_in_sandbox(load_reference(), load_catalog(), options.limits,
-                                       slots.slots[0] if slots else None)
+                                       slots.slots[0] if slots else None, lessons=options.lessons)
             fork_each(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
     if progress:
         progress.finish()

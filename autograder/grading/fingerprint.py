@@ -55,8 +55,9 @@ def _versions():
     return ", ".join(found)
 
 
-def fingerprint_parts(options, solutions_dir=SOLUTIONS):
-    """``{ingredient: digest or readable value}`` for everything besides the submission that decides a grade."""
+def content_parts(solutions_dir=SOLUTIONS):
+    """``{ingredient: digest or readable value}`` of what the grader runs: its code, the reference
+    solutions, coursekit, the hidden suite and the library versions (no options, no isolation mode)."""
     solutions_dir = Path(solutions_dir)
     support = solutions_dir / SUPPORT_PACKAGE
     hidden = [p for p in HIDDEN_SUITE.rglob("*") if p.is_file() and "__pycache__" not in p.parts]
@@ -65,9 +66,19 @@ def fingerprint_parts(options, solutions_dir=SOLUTIONS):
         "reference solutions": _digest_files(solutions_dir.glob("[0-9][0-9]_*.ipynb"), solutions_dir),
         "coursekit": _digest_files([p for p in support.rglob("*.py") if "__pycache__" not in p.parts], support),
         "hidden suite": _digest_files(hidden, HIDDEN_SUITE),
+        "libraries": _versions(),
+    }
+
+
+def fingerprint_parts(options, solutions_dir=SOLUTIONS):
+    """``{ingredient: digest or readable value}`` for everything besides the submission that decides a grade."""
+    content = content_parts(solutions_dir)
+    libraries = content.pop("libraries")
+    return {
+        **content,
         "grading options": hashlib.sha256(repr(options).encode()).hexdigest()[:16],
         "isolation mode": launcher.isolation()[0],
-        "libraries": _versions(),
+        "libraries": libraries,
     }
 
 

@@ -35,6 +35,7 @@ from types import SimpleNamespace
 
 import pytest
 
+from autograder.grading import transcript_cache
 from autograder.grading.results import CheckResult
 from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, independent_prefix
 from autograder.hidden.own_work import CHANGED_HINT, DELEGATED_HINT, forbidden_for
@@ -250,20 +251,47 @@ def hidden_tests():
 
 
 _TRANSCRIPTS = {}  # id(reference) -> (reference, {nodeid: Transcript})
+_LEARNED = {}  # id(reference) -> the lessons whose tests this process (or the disk cache) ran in a sandbox
+
+
+def _is_default_reference(reference):
+    """True for the reference of the project's own masters, the only one whose transcripts go to disk."""
+    from autograder.lessons.reference import load_reference
+
+    return reference is load_reference()
 
 
 def transcripts_for(reference, catalog):
-    """``{nodeid: Transcript}``: every hidden test run once on ``reference``, its calls recorded."""
+    """``{nodeid: Transcript}``: every hidden test run once on ``reference``, its calls recorded.
+
+    For the project's own reference the transcripts are read from, and saved to,
+    :mod:`autograder.grading.transcript_cache`, so a machine records them once per grader version.
+    """
     kept = _TRANSCRIPTS.get(id(reference))
     if kept is not None and kept[0] is reference:
         return kept[1]
     if not _TRANSCRIPTS:
         single_threaded_blas()  # as in the sandbox, so that equal answers are equal bit for bit
+    tests = hidden_tests()[0]
+    saved = transcript_cache.load() if _is_default_reference(reference) else None
+    if saved is not None and set(saved[0]) == {test.nodeid for test in tests}:
+        found, learned = saved
+        _LEARNED[id(reference)] = learned
+    else:
+        found = _record_transcripts(reference, catalog, tests)
+        if _is_default_reference(reference):
+            transcript_cache.save(found)
+    _TRANSCRIPTS[id(reference)] = (reference, found)
+    return found
+
+
+def _record_transcripts(reference, catalog, tests):
+    """Run each test on ``reference`` twice (as is, then nudged) and keep its independent calls."""
     recorder, nudging = ReferenceRecorder(reference), ReferenceRecorder(reference, nudge=True)
     proxy, nudged_proxy = StudentProxy(recorder, catalog), StudentProxy(nudging, catalog)
     nudged_reference = NudgedReference(reference)
     found = {}
-    for test in hidden_tests()[0]:
+    for test in tests:
         transcript = recorder.start()
         passed, _, _ = _call_test(test, proxy, reference)
         transcript.passed = passed
@@ -274,7 +302,6 @@ def transcripts_for(reference, catalog):
         transcript.cut(independent_prefix(transcript.calls, second.calls))
         found[test.nodeid] = transcript
     recorder.transcript = nudging.transcript = None
-    _TRANSCRIPTS[id(reference)] = (reference, found)
     return found
 
 
@@ -286,12 +313,9 @@ def reference_programs(catalog):
             for lesson in catalog.graded_lessons}
 
 
-_LEARNED = set()  # id(reference) of the references already run in a sandbox by this process
-
-
-def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None):
-    """Run the hidden suite once on the reference solutions in a sandbox, as a student; return how many
-    tests taught a new passing list of values.
+def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None, lessons=()):
+    """Run the hidden tests of ``lessons`` (all when empty) once on the reference solutions in a sandbox,
+    as a student; return how many tests taught a new passing list of values.
 
     The reference's values computed in a sandbox can differ from this process's
     recording in the last bits (BLAS takes other paths on differently aligned
@@ -300,12 +324,17 @@ def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None):
     it passed with every call answered from its batch, in the recorded order,
     so a student who returns the same values, bit for bit, would pass it the
     same way (:meth:`~autograder.grading.transcripts.Replay.note_if_passed`).
+    Lessons learned once, by this process or one before it on this machine
+    (:mod:`autograder.grading.transcript_cache`), are not run again.
     Speed only: any failure here just leaves the memo as it was.
     """
-    if id(reference) in _LEARNED:
-        return 0
-    _LEARNED.add(id(reference))
     transcripts = transcripts_for(reference, catalog)
+    done = _LEARNED.setdefault(id(reference), set())
+    wanted = {lesson.number for lesson in catalog.graded_lessons if not lessons or lesson.number in lessons}
+    todo = wanted - done
+    if not todo:
+        return 0
+    done |= todo
     learned = 0
     try:
         with StudentSandbox(reference_programs(catalog), limits=limits, slot=slot) as sandbox:
@@ -313,7 +342,7 @@ def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None):
             replay = proxy._replay = Replay(sandbox)
             for test in hidden_tests()[0]:
                 transcript = transcripts.get(test.nodeid)
-                if transcript is None or not transcript.passed:
+                if test.lesson not in todo or transcript is None or not transcript.passed:
                     continue
                 replay.prefetch(transcript)
                 if replay.passes_as_recorded():
@@ -322,7 +351,9 @@ def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None):
                 learned += replay.note_if_passed(passed)
                 replay.stop()
     except (SandboxUnavailable, StudentError):
-        pass
+        return learned
+    if _is_default_reference(reference):
+        transcript_cache.save(transcripts, done)
     return learned
 
 
