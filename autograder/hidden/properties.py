@@ -31,11 +31,17 @@ Examples
 >>> for_all(angles(low=1e-12), check)
 """
 
+import contextlib
 import math
 
 import numpy as np
 from hypothesis import HealthCheck, Phase, example, given, settings
 from hypothesis import strategies as st
+
+try:
+    from hypothesis.internal.conjecture import providers as _providers
+except ImportError:  # an older Hypothesis, which has no local constants to turn off
+    _providers = None
 
 from .helpers import Wrong
 
@@ -60,12 +66,38 @@ def for_all(strategy, check, examples=EXAMPLES, explicit=()):
     for value in reversed(list(explicit)):
         run = example(value)(run)
     try:
-        run()
+        with _no_local_constants():
+            run()
     except BaseException as error:
         notes = getattr(error, "__notes__", None)
         if notes is not None:
             error.__notes__ = []  # Hypothesis's "Falsifying example" report: the reason already says it
         raise
+
+
+@contextlib.contextmanager
+def _no_local_constants():
+    """Hypothesis without its "local constants" while a property runs.
+
+    Hypothesis 6.131 and later also draws literals it finds in the project's modules
+    loaded at the time. The grader, the test suite and the mutation tool load different
+    modules, so the same property would try other inputs in each, and a recording of the
+    reference's calls made in one process would not be the calls of another
+    (``tests/test_suite_runner.py`` checks it across processes). Only the global constants,
+    the same in every process, stay.
+    """
+    original = getattr(_providers, "_get_local_constants", None)
+    if original is None:
+        yield
+        return
+    empty = _providers.Constants()
+    _providers.CONSTANTS_CACHE.cache.clear()  # it may hold constants drawn before
+    _providers._get_local_constants = lambda: empty
+    try:
+        yield
+    finally:
+        _providers._get_local_constants = original
+        _providers.CONSTANTS_CACHE.cache.clear()
 
 
 # ---------------------------------------------------------------- strategies
