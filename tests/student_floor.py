@@ -18,6 +18,7 @@ Examples
 --------
 $ python3 tests/student_floor.py --out /tmp/floor --jobs 2
 $ python3 tests/student_floor.py --out /tmp/floor --python /usr/bin/python3 --lessons 01 03
+$ python3 tests/student_floor.py --out /tmp/debian --python /usr/bin/python3 --newest   # a student's install
 """
 
 import argparse
@@ -84,8 +85,9 @@ def oldest_python(floor):
     return found[0][1]
 
 
-def install(python, out, module):
-    """A fresh venv in ``out/venv`` with the student list at its floors; returns its Python and the seconds."""
+def install(python, out, module, floors=True):
+    """A fresh venv in ``out/venv`` with the student list (at its floors, or as pip picks for a student);
+    returns its Python and the seconds."""
     venv = out / "venv"
     shutil.rmtree(venv, ignore_errors=True)
     (out / "requirements.txt").write_text(module.requirements_text(), encoding="utf-8")
@@ -94,11 +96,11 @@ def install(python, out, module):
     subprocess.run([python, "-m", "venv", str(venv)], check=True)
     floor_python = str(venv / "bin" / "python")
     pip = subprocess.run([floor_python, "-m", "pip", "install", "-q", "--disable-pip-version-check",
-                          "-r", str(out / "requirements.txt"), "-c", str(out / "floors.txt")],
+                          "-r", str(out / "requirements.txt")] + (["-c", str(out / "floors.txt")] if floors else []),
                          capture_output=True, text=True)
     if pip.returncode != 0:
         noise = "WARNING: Location"  # a local mirror that pip's configuration names but this machine lacks
-        raise SystemExit("the student list did not install at its floors:\n"
+        raise SystemExit("the student list did not install:\n"
                          + "\n".join(line for line in pip.stderr.splitlines() if not line.startswith(noise)))
     return floor_python, time.monotonic() - start
 
@@ -144,6 +146,8 @@ def main(argv=None):
     parser.add_argument("--python", help="the Python to build the venv with (default: the oldest here)")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--lessons", nargs="*", default=(), help="two-digit numbers (default: all)")
+    parser.add_argument("--newest", action="store_true",
+                        help="install as a student does, the newest versions for this Python, not the floors")
     args = parser.parse_args(argv)
     module = student_install()
     out = args.out.resolve()
@@ -151,14 +155,14 @@ def main(argv=None):
     (out / "summary.json").unlink(missing_ok=True)
     start = time.monotonic()
     python = args.python or oldest_python(module.PYTHON_FLOOR)
-    floor_python, install_seconds = install(python, out, module)
+    floor_python, install_seconds = install(python, out, module, floors=not args.newest)
     notebooks = lessons_folder(out, tuple(args.lessons))
     shutil.rmtree(out / "executed", ignore_errors=True)
     (out / "executed").mkdir()
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         runs = dict(zip((n.name for n in notebooks), pool.map(lambda n: run_lesson(floor_python, n, out), notebooks)))
     summary = {
-        "python": ".".join(map(str, version_of(floor_python))), "python_path": python,
+        "python": ".".join(map(str, version_of(floor_python))), "python_path": python, "floors": not args.newest,
         "versions": installed_versions(floor_python, module),
         "install_seconds": round(install_seconds, 1), "seconds": round(time.monotonic() - start, 1),
         "lessons": runs, "ok": all(not run["errors"] for run in runs.values()),
