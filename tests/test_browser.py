@@ -14,10 +14,12 @@ Screenshots go to ``test-artifacts/browser/``.
 import re
 import shutil
 import time
+import zipfile
 
 import nbformat
 import pytest
 
+from autograder.authoring.handout import build_handout
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from browser_support import (LAB_SELECTORS, Browser, JupyterLab, changed_figures, figure_pictures, open_and_run_all,
                              page_problems, require_chromium)
@@ -50,6 +52,25 @@ def _run(session, relative):
     open_and_run_all(session["lab"], page, relative)
     TIMINGS[relative] = time.monotonic() - started
     return page
+
+
+def test_the_handout_notebooks_open_unmodified(session):
+    """Opening a lesson of the hand-out changes nothing: no dirty dot on its tab, so closing it asks
+    nothing and the file a student hands in is the one they saved (first here, before any run)."""
+    folder = session["root"] / "handout"
+    with zipfile.ZipFile(build_handout(session["root"] / "course.zip")) as archive:
+        archive.extractall(folder)
+    page = session["browser"].page()
+    dirty = []
+    for name in LESSONS:
+        page.goto(session["lab"].url(f"handout/rotations-course/{name}"))
+        page.wait_for_selector(".jp-NotebookPanel .jp-Cell", timeout=90_000)
+        page.wait_for_function("() => document.body.innerText.includes('Idle')", timeout=90_000)
+        page.wait_for_timeout(1500)  # widgets and the trust check run right after loading
+        if page.locator(".lm-TabBar-tab.jp-mod-dirty").count():
+            dirty.append(name)
+    page.close()
+    assert not dirty, f"opened as modified: {dirty}"
 
 
 @pytest.mark.parametrize("name", LESSONS)
