@@ -39,14 +39,12 @@ perturbations and Jacobians, poses, a capstone, and estimation on Lie groups.
 
 ## Which Python
 
-Python {pythons} work, on Linux, macOS (Intel and Apple silicon) and
-Windows: every lesson is run with the oldest versions below, and the install
-list is checked to resolve from ready-made wheels for each of these Pythons
-on each of these systems. Check yours with `python3 --version` (on Windows,
+Python {pythons} work, on Linux, macOS (Intel and Apple
+silicon) and Windows: every lesson is run on Python {floor} with the oldest
+versions below, and the install list is checked to resolve from ready-made
+wheels for each of these Pythons on each of these systems. Check yours with `python3 --version` (on Windows,
 `py --version`).
 
-| package | tested from | up to (not incl.) | why this floor |
-| --- | --- | --- | --- |
 {table}
 ## Install and start
 
