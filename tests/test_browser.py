@@ -11,13 +11,16 @@ copy of a lesson is broken three ways and the same check must report each.
 Screenshots go to ``test-artifacts/browser/``.
 """
 
+import json
 import re
 import shutil
 import time
+import zipfile
 
 import nbformat
 import pytest
 
+from autograder.authoring.handout import build_handout
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from browser_support import (LAB_SELECTORS, Browser, JupyterLab, changed_figures, figure_pictures, open_and_run_all,
                              page_problems, require_chromium)
@@ -50,6 +53,42 @@ def _run(session, relative):
     open_and_run_all(session["lab"], page, relative)
     TIMINGS[relative] = time.monotonic() - started
     return page
+
+
+def test_the_handout_notebooks_open_unmodified(session):
+    """Opening a lesson of the hand-out changes nothing but what the kernel states about itself.
+
+    JupyterLab writes the kernel's ``language_info`` (with its Python's version) into the notebook
+    when the kernel starts, which marks the tab modified unless it is already there word for word:
+    with students on Pythons 3.10 to 3.14 no hand-out can match them all, so that one key is set
+    aside. Anything else that changed on opening (cell ids, the format's version, widget state, a
+    cell's source) is a modification the student did not make: opened, saved, and compared here.
+    """
+    folder = session["root"] / "handout"
+    with zipfile.ZipFile(build_handout(session["root"] / "course.zip")) as archive:
+        archive.extractall(folder)
+    page = session["browser"].page()
+    changed = {}
+    for name in LESSONS:
+        path = folder / "rotations-course" / name
+        before = json.loads(path.read_text(encoding="utf-8"))
+        page.goto(session["lab"].url(f"handout/rotations-course/{name}"))
+        page.wait_for_selector(".jp-NotebookPanel .jp-Cell", timeout=90_000)
+        page.wait_for_function("() => document.body.innerText.includes('Idle')", timeout=90_000)
+        page.wait_for_timeout(1500)  # widgets and the kernel's info arrive right after it starts
+        page.keyboard.press("Control+s")
+        page.wait_for_function("() => !document.querySelector('.lm-TabBar-tab.jp-mod-current.jp-mod-dirty')",
+                               timeout=30_000)
+        after = json.loads(path.read_text(encoding="utf-8"))
+        assert after["metadata"]["language_info"]["name"] == "python"
+        for notebook in (before, after):
+            notebook["metadata"].pop("language_info")
+        if after != before:
+            changed[name] = [key for key in ("metadata", "nbformat", "nbformat_minor") if after[key] != before[key]] + [
+                index for index, (old, new) in enumerate(zip(before["cells"], after["cells"])) if old != new]
+        session["lab"].shut_down_kernel(f"handout/rotations-course/{name}")
+    page.close()
+    assert not changed, f"changed by opening and saving (keys, cell numbers): {changed}"
 
 
 @pytest.mark.parametrize("name", LESSONS)

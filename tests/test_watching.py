@@ -7,6 +7,8 @@ copy taken before the call, compared bit for bit; the names of library functions
 that uses the forbidden function internally (allowed), a function that switches the watching off.
 """
 
+import sys
+
 import numpy as np
 import pytest
 
@@ -100,3 +102,14 @@ def test_the_sandbox_turns_delegation_into_a_student_error(box):
     with pytest.raises(StudentError) as error:
         box.call("01", "exp_so3", [[0.0, 0.0, 0.5]], forbid=("coursekit.lie",))
     assert error.value.kind == "delegated" and "coursekit.lie.Exp" in error.value.message
+
+
+def test_a_code_object_without_a_qualified_name_is_named_by_its_plain_name():
+    """Python 3.10, the students' floor, has no ``co_qualname``: the tracer falls back to ``co_name``."""
+    from types import SimpleNamespace
+
+    from coursekit.watching import _qualname
+
+    assert _qualname(SimpleNamespace(co_name="expm")) == "expm"
+    method = _main("class Turn:\n    def about_z(self):\n        return 1")["Turn"].about_z
+    assert _qualname(method.__code__) == ("Turn.about_z" if sys.version_info >= (3, 11) else "about_z")

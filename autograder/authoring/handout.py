@@ -3,11 +3,12 @@
 The zip holds one folder, ``rotations-course/``, with
 
 - the released notebooks of ``course/`` and the ``coursekit`` package beside them;
-- ``requirements.txt``: what a student installs, pinned exactly as in
-  ``environment.txt`` but only what the notebooks need (JupyterLab, numpy,
-  scipy, matplotlib, ipywidgets and their dependencies): none of the
-  instructor's tools (nbgrader and its menus, nbval, pytest, the sandbox);
-- ``README.md``: how to install, where to start, what to hand in.
+- ``requirements.txt``: what a student installs: the notebooks' and coursekit's direct
+  requirements, each with its tested range (:mod:`autograder.authoring.student_install`), not
+  the instructor's exact lock, so the Python a student already has works (3.10 and newer);
+  none of the instructor's tools (nbgrader, nbval, pytest, the sandbox);
+- ``check_python.py``: one line on whether this Python is new enough, run before pip;
+- ``README.md``: which Pythons work, how to install, where to start, what to hand in.
 
 Nothing in it is a solution, a hidden test or the grader; a test reads every
 file of the zip to make sure it never names them.
@@ -18,38 +19,59 @@ Examples
 PosixPath('course.zip')
 """
 
-import re
+import os
 import stat
+import time
 import zipfile
-from importlib import metadata
 from pathlib import Path
 
-from packaging.requirements import Requirement
-
-from autograder.lessons.paths import COURSE, PROJECT_ROOT, SUPPORT_PACKAGE
+from autograder.authoring.student_install import (PYTHONS, check_python_text, floor_table, python_floor_text,
+                                                  requirements_text)
+from autograder.lessons.paths import COURSE, SUPPORT_PACKAGE
 
 FOLDER = "rotations-course"
-# What the notebooks import or run in; everything they pull in is added from the pins.
-STUDENT_ROOTS = ("jupyterlab", "ipykernel", "ipywidgets", "ipympl", "numpy", "scipy", "matplotlib")
 
 README = """# Rotations, hands on — your copy of the course
 
 A Jupyter course on 3D rotations: frames and rotation matrices, the Lie
 algebra and Rodrigues' formula, quaternions, Euler angles and gimbal lock,
-perturbations and Jacobians, poses, and a capstone.
+perturbations and Jacobians, poses, a capstone, and estimation on Lie groups.
 
-## Start
+## Which Python
 
-With Python {python} or newer:
+Python {pythons} work, on Linux, macOS (Intel and Apple
+silicon) and Windows: every lesson is run on Python {floor} with the oldest
+versions below, and the install list is checked to resolve from ready-made
+wheels for each of these Pythons on each of these systems. Check yours with `python3 --version` (on Windows,
+`py --version`).
+
+{table}
+## Install and start
+
+In a terminal, in this folder. Linux and macOS:
 
 ```bash
-python3 -m venv .venv
-.venv/bin/pip install -r requirements.txt
+python3 check_python.py && python3 -m venv .venv && .venv/bin/pip install -r requirements.txt
 .venv/bin/jupyter lab 00_start_here.ipynb
 ```
 
-(On Windows: `py -m venv .venv`, then `.venv\\Scripts\\pip install -r requirements.txt`
-and `.venv\\Scripts\\jupyter lab 00_start_here.ipynb`.)
+Windows, in Command Prompt (`cmd`):
+
+```bat
+py check_python.py && py -m venv .venv && .venv\\Scripts\\pip install -r requirements.txt
+.venv\\Scripts\\jupyter lab 00_start_here.ipynb
+```
+
+`check_python.py` prints one line before anything is installed: that your
+Python is fine, or which Python you have and that the course needs {floor}
+or newer. On Debian or Ubuntu, if `venv` says that `ensurepip` is not
+available, install it first with `sudo apt install python3-venv`.
+
+**An older Python?** Install a newer one beside it and use that one in the
+install line: from [python.org](https://www.python.org/downloads/) on macOS
+and Windows (then `python3.12` in place of `python3` on macOS, `py -3.12` in
+place of `py` on Windows), or with your package manager on Linux. Your
+older Python stays as it is.
 
 Start with `00_start_here.ipynb`: it explains how the lessons, the exercises
 and the check cells work. Keep the `coursekit` folder next to the notebooks:
@@ -68,51 +90,19 @@ the check cells and figures use it.
 """
 
 
-def _closure(roots, pins):
-    """The pinned distributions that ``roots`` need, following installed metadata (and requested extras)."""
-    needed, seen, todo = set(), set(), [(name, frozenset()) for name in roots]
-    while todo:
-        name, extras = todo.pop()
-        key = _canonical(name)
-        if (key, extras) in seen or key not in pins:
-            continue
-        seen.add((key, extras))
-        needed.add(key)
-        for line in metadata.requires(pins[key][0]) or []:
-            requirement = Requirement(line)
-            wanted = requirement.marker is None or any(
-                requirement.marker.evaluate({"extra": extra}) for extra in ("", *extras))
-            if wanted:
-                todo.append((requirement.name, frozenset(requirement.extras)))
-    return needed
-
-
-def _canonical(name):
-    return re.sub(r"[-_.]+", "-", name).lower()
-
-
-def _pins():
-    pins = {}
-    for line in (PROJECT_ROOT / "environment.txt").read_text(encoding="utf-8").splitlines():
-        line = line.split("#", 1)[0].strip()
-        if "==" in line:
-            name, version = line.split("==", 1)
-            pins[_canonical(name)] = (name, version)
-    return pins
-
-
 def student_requirements():
-    """The students' ``requirements.txt`` text: the pins the notebooks need, nothing else."""
-    pins = _pins()
-    names = sorted(_closure(STUDENT_ROOTS, pins), key=lambda key: pins[key][0].lower())
-    lines = ["# What the course notebooks need, pinned (generated from the course's environment.txt)."]
-    return "\n".join(lines + [f"{pins[key][0]}=={pins[key][1]}" for key in names]) + "\n"
+    """The students' ``requirements.txt`` text: the direct requirements, each with its tested range."""
+    return requirements_text()
+
+
+def readme():
+    """The hand-out's ``README.md``: which Pythons and versions work, how to install, how to hand in."""
+    pythons = ", ".join(PYTHONS[:-1]) + " and " + PYTHONS[-1]
+    return README.format(pythons=pythons, floor=python_floor_text(), table=floor_table())
 
 
 def handout_files():
     """``{path inside the zip: bytes}`` for the hand-out."""
-    from autograder import MINIMUM_PYTHON
-
     files = {}
     for path in sorted(COURSE.glob("*.ipynb")):
         files[f"{FOLDER}/{path.name}"] = path.read_bytes()
@@ -120,17 +110,31 @@ def handout_files():
         if "__pycache__" not in path.parts:
             files[f"{FOLDER}/{path.relative_to(COURSE).as_posix()}"] = path.read_bytes()
     files[f"{FOLDER}/requirements.txt"] = student_requirements().encode()
-    files[f"{FOLDER}/README.md"] = README.format(python=MINIMUM_PYTHON).encode()
+    files[f"{FOLDER}/check_python.py"] = check_python_text().encode()
+    files[f"{FOLDER}/README.md"] = readme().encode()
     return files
+
+
+def packed_at():
+    """The date every file of the zip carries: now, or ``SOURCE_DATE_EPOCH`` for reproducible bytes.
+
+    A real date, because unzipping gives each file this time: a fixed date in the past would make an
+    untouched notebook look handed in long ago, and one in the future would look newer than a
+    student's saved work.
+    """
+    epoch = os.environ.get("SOURCE_DATE_EPOCH")
+    moment = time.gmtime(int(epoch)) if epoch else time.localtime()
+    return tuple(max(moment[:6], (1980, 1, 1, 0, 0, 0)))  # the zip format starts in 1980
 
 
 def build_handout(out):
     """Write the hand-out zip to ``out``; return its path."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
+    date = packed_at()
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as archive:
         for name, data in handout_files().items():
-            info = zipfile.ZipInfo(name, date_time=(2026, 1, 1, 0, 0, 0))  # reproducible bytes
+            info = zipfile.ZipInfo(name, date_time=date)
             info.external_attr = (stat.S_IFREG | 0o644) << 16
             info.compress_type = zipfile.ZIP_DEFLATED
             archive.writestr(info, data)

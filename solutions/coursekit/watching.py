@@ -100,6 +100,19 @@ def changed_arguments(function, args, kwargs, before):
     return [labels[i] for i in changed]
 
 
+def _qualname(code):
+    """``code``'s qualified name (``"Rotation.from_matrix"``). Before Python 3.11 a code object has
+    only its plain name (``"from_matrix"``), which is enough here: every function that
+    ``coursekit.contracts.FORBIDDEN`` names one by one lives at the top of its module, and a module
+    entry matches on the module's name alone.
+
+    >>> def f(): pass
+    >>> _qualname(f.__code__)
+    'f'
+    """
+    return getattr(code, "co_qualname", code.co_name)
+
+
 class _Tracer:
     """A profile hook that notes calls into forbidden functions made directly from notebook code."""
 
@@ -115,7 +128,7 @@ class _Tracer:
 
     def __call__(self, frame, event, arg):
         if event == "call" and frame.f_back is not None:
-            self._note(frame.f_back, f"{frame.f_globals.get('__name__', '')}.{frame.f_code.co_qualname}")
+            self._note(frame.f_back, f"{frame.f_globals.get('__name__', '')}.{_qualname(frame.f_code)}")
         elif event == "c_call":
             module = getattr(arg, "__module__", None) or ""
             self._note(frame, f"{module}.{getattr(arg, '__qualname__', '')}")
