@@ -39,6 +39,7 @@ SLOWEST_FILES_FIRST = (
     "test_hostile_class.py",         # a class of hostile students, twice
     "test_as_ordinary_user.py",      # the walls' tests again as nobody
     "test_browser.py",               # JupyterLab in Chromium
+    "test_student_floor_grading.py", # notebooks run at the students' floor versions, graded
     "test_speed_verdicts.py",        # the benchmark class against its golden gradebook
     "test_book.py",                  # Sphinx builds the book
     "test_accessibility.py",         # axe-core in Chromium
