@@ -45,3 +45,20 @@ def test_students_install_only_what_the_notebooks_need(tmp_path):
     names = {line.split("==")[0].lower() for line in wanted}
     assert {"jupyterlab", "numpy", "scipy", "matplotlib", "ipywidgets", "ipykernel"} <= names
     assert not names & {name.lower() for name in INSTRUCTOR_ONLY}, names & {n.lower() for n in INSTRUCTOR_ONLY}
+
+
+def test_the_handout_is_dated_when_the_course_was_released(tmp_path, monkeypatch):
+    """Every entry carries the release's date (SOURCE_DATE_EPOCH, else the last commit of course/), not a
+    made-up one, and the same date gives the same bytes."""
+    import time
+
+    from autograder.authoring.handout import build_handout, release_date
+
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1785000000")           # 2026-07-25 17:20 UTC
+    first, second = build_handout(tmp_path / "a.zip"), build_handout(tmp_path / "b.zip")
+    assert first.read_bytes() == second.read_bytes()
+    with zipfile.ZipFile(first) as archive:
+        assert {info.date_time for info in archive.infolist()} == {(2026, 7, 25, 17, 20, 0)}
+    monkeypatch.delenv("SOURCE_DATE_EPOCH")
+    committed = release_date()
+    assert 1_700_000_000 < committed <= time.time() + 60

@@ -18,8 +18,11 @@ Examples
 PosixPath('course.zip')
 """
 
+import os
 import re
 import stat
+import subprocess
+import time
 import zipfile
 from importlib import metadata
 from pathlib import Path
@@ -124,13 +127,32 @@ def handout_files():
     return files
 
 
+def release_date():
+    """When the course was released, as seconds since the epoch: the files' date inside the zip.
+
+    ``SOURCE_DATE_EPOCH`` when set (reproducible builds' convention), else the
+    date of the last commit that changed ``course/``, else now. The same commit
+    gives the same bytes, and a student's file manager shows a real date, not
+    a made-up one.
+    """
+    if os.environ.get("SOURCE_DATE_EPOCH", "").strip().isdigit():
+        return int(os.environ["SOURCE_DATE_EPOCH"])
+    try:
+        found = subprocess.run(["git", "log", "-1", "--format=%ct", "--", str(COURSE)], cwd=PROJECT_ROOT,
+                               capture_output=True, text=True, timeout=30).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        found = ""
+    return int(found) if found.isdigit() else int(time.time())
+
+
 def build_handout(out):
     """Write the hand-out zip to ``out``; return its path."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
+    stamp = time.gmtime(max(release_date(), 315532800))[:6]  # zip dates start in 1980
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as archive:
         for name, data in handout_files().items():
-            info = zipfile.ZipInfo(name, date_time=(2026, 1, 1, 0, 0, 0))  # reproducible bytes
+            info = zipfile.ZipInfo(name, date_time=stamp)  # reproducible bytes for a given release
             info.external_attr = (stat.S_IFREG | 0o644) << 16
             info.compress_type = zipfile.ZIP_DEFLATED
             archive.writestr(info, data)

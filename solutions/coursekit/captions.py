@@ -112,7 +112,11 @@ def readable_text(text):
 
 
 def figure_caption(fig):
-    """A figure's caption as readable text: its suptitle, else its first axes title ("" when it has neither).
+    """A figure's caption as readable text: its suptitle, then its axes' titles ("" when it has none).
+
+    A live figure's title may change (an explorer's "Gimbal at pitch 88.5°"):
+    the caption says it, so the alt text and the accessible name tell what the
+    figure shows now, not only what it is.
 
     Parameters
     ----------
@@ -121,9 +125,11 @@ def figure_caption(fig):
     Returns
     -------
     str
-        E.g. ``"Figure 2. The gimbal at pitch 88.5°"`` (:func:`readable_text` of the title).
+        E.g. ``"Figure 5. Turn the gimbal — Gimbal at yaw 30°, pitch 88.5°"``: the titles,
+        :func:`readable_text`, joined by " — ".
     """
     suptitle = getattr(fig, "_suptitle", None)
     texts = [suptitle.get_text()] if suptitle is not None else []
     texts += [ax.get_title() for ax in fig.axes]
-    return next((readable_text(t) for t in texts if t and t.strip()), "")
+    readable = [readable_text(t) for t in texts if t and t.strip()]
+    return " — ".join(dict.fromkeys(readable))
