@@ -14,6 +14,7 @@ Last, a copy of a lesson is broken three ways and the same check must report
 each. Screenshots go to ``test-artifacts/browser/``.
 """
 
+import json
 import re
 import shutil
 import time
@@ -117,14 +118,17 @@ def nb_has_hand_in(name):
 def live_figure_names(page):
     """``[(role, accessible name)]`` of every live figure (ipympl canvas) in Chromium's accessibility tree.
 
-    The name is what a screen reader says for the canvas, as Chromium computes it (``role`` and
-    ``aria-label`` set by ``coursekit.plotting``); a canvas without one is ``(None, "")``.
+    The name is what a screen reader says for the canvas, as Chromium computes it (Playwright's ARIA
+    snapshot of the element; ``role`` and ``aria-label`` are set by ``coursekit.plotting``); a canvas
+    without them is ``(None, "")``.
     """
     page.wait_for_timeout(500)                                   # the naming script runs on the next frame
+    canvases = page.locator(".jupyter-matplotlib-canvas-div")
     found = []
-    for element in page.locator(".jupyter-matplotlib-canvas-div").element_handles():
-        tree = page.accessibility.snapshot(root=element) or {}
-        found.append((tree.get("role"), tree.get("name") or ""))
+    for k in range(canvases.count()):
+        tree = canvases.nth(k).aria_snapshot().strip().splitlines()
+        match = re.match(r'- (\w+)(?: "(.*)")?:?$', tree[0]) if tree else None
+        found.append((match.group(1), json.loads(f'"{match.group(2) or ""}"')) if match else (None, ""))
     return found
 
 

@@ -40,6 +40,7 @@ __all__ = [
     "book_build",
     "keep_toolbar_off_axes",
     "name_live_figure",
+    "name_live_figure_when_drawn",
 ]
 
 # Okabe-Ito vermillion, bluish green and blue: red, green and blue that colour-blind readers tell apart.
@@ -105,14 +106,12 @@ def interactive_figures():
     shell = get_ipython()
     shell.run_line_magic("matplotlib", "widget")
     # The figure's own title says which figure it is: no "Figure 1" header above it. The header is a
-    # trait of each canvas, so a pyplot hook (run on every new figure) turns it off figure by figure.
-    for name in ("hide_figure_header", "keep_toolbar_off_axes"):
+    # trait of each canvas, so a pyplot hook (run on every new figure) turns it off figure by figure;
+    # another names the figure by its caption each time it is drawn (its title is set after it is made).
+    for name in ("hide_figure_header", "keep_toolbar_off_axes", "name_live_figure_when_drawn"):
         hook = f"{__name__}:{name}"
         if hook not in plt.rcParams["figure.hooks"]:
             plt.rcParams["figure.hooks"] = [*plt.rcParams["figure.hooks"], hook]
-    # A figure gets its title after it is made: name the figures once each cell has run.
-    if _name_open_figures not in shell.events.callbacks["post_run_cell"]:
-        shell.events.register("post_run_cell", _name_open_figures)
     from IPython.display import Javascript, display
 
     display(Javascript(NAME_CANVASES_JS))
@@ -153,8 +152,9 @@ def name_live_figure(fig):
     readable text (``coursekit.captions``: "R_z(δ)", not TeX). ipympl keeps it
     as the figure's label (its hidden header, and the name of a downloaded
     PNG); the page script ``NAME_CANVASES_JS`` makes the canvas an image named
-    by it. ``interactive_figures`` names every open figure after each cell;
-    an explorer names its figure after each redraw, as its title changes.
+    by it. ``interactive_figures`` makes every new figure call this when it is
+    drawn (``name_live_figure_when_drawn``), so an explorer's figure, whose
+    title changes with its sliders, is named anew at each redraw.
 
     Examples
     --------
@@ -170,11 +170,15 @@ def name_live_figure(fig):
     return fig
 
 
-def _name_open_figures(*_result):
-    from matplotlib._pylab_helpers import Gcf
+def name_live_figure_when_drawn(fig):
+    """Call :func:`name_live_figure` each time ``fig`` is drawn (a pyplot figure hook; a no-op for pictures).
 
-    for manager in Gcf.get_all_fig_managers():        # without making any of them the current figure
-        name_live_figure(manager.canvas.figure)
+    A figure gets its title after it is made, and an explorer changes it with
+    every redraw; a draw is when the title is final.
+    """
+    if hasattr(fig.canvas, "_figure_label"):
+        fig.canvas.mpl_connect("draw_event", lambda _event: name_live_figure(fig))
+    return fig
 
 
 def hide_figure_header(fig):

@@ -31,7 +31,7 @@ from scipy.spatial.transform import Rotation, Slerp
 from .lie import Exp, Log, skew
 from .captions import figure_caption
 from .plotting import (AXIS_COLORS, book_build, draw_circle, draw_frame, draw_point, finish_3d_axes, hide_figure_header,
-                       keep_toolbar_off_axes, live_front_end, name_live_figure, new_3d_axes, widgets_live)
+                       keep_toolbar_off_axes, live_front_end, new_3d_axes, widgets_live)
 
 __all__ = ["explore_exp", "explore_slerp", "explore_gimbal", "explore_step_size", "explore_gauss_newton", "draw_gimbal"]
 
@@ -92,7 +92,6 @@ def _explore(draw, controls, figsize, static, static_figsize=None, sweep=None):
             draw(fig, **{name: s.value for name, s in sliders.items()})
             if len(views) == len(fig.axes):
                 _restore(fig, views)
-            name_live_figure(fig)                  # its title (the angles) is its accessible name
             fig.canvas.draw_idle()
 
         for s in sliders.values():
