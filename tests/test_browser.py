@@ -115,21 +115,34 @@ def nb_has_hand_in(name):
     return any(c.get("id") == "ready-to-hand-in" for c in nbformat.read(SOLUTIONS / name, as_version=4).cells)
 
 
-def live_figure_names(page):
-    """``[(role, accessible name)]`` of every live figure (ipympl canvas) in Chromium's accessibility tree.
+# Every live figure has its role and name, and the name is a caption ("Figure 2. ..."), not ipympl's
+# default label ("Figure 2"): the kernel renames a figure when it draws it, a moment after its cell ran.
+NAMED = r"""() => [...document.querySelectorAll('.jupyter-matplotlib-canvas-div')].every(c =>
+  c.getAttribute('role') === 'img' && /^Figure \d+[a-z]?\. \S/.test(c.getAttribute('aria-label') || ''))"""
 
-    The name is what a screen reader says for the canvas, as Chromium computes it (Playwright's ARIA
-    snapshot of the element; ``role`` and ``aria-label`` are set by ``coursekit.plotting``); a canvas
-    without them is ``(None, "")``.
+
+def live_figure_names(page, timeout_ms=20_000):
+    """``[(role, accessible name)]`` of every live figure (ipympl canvas), as ``coursekit.plotting`` sets them.
+
+    Waits (up to ``timeout_ms``) until every canvas is named by a caption, then reads the ``role`` and
+    ``aria-label`` that Chromium's accessibility tree takes them from (``accessible_name`` reads the tree
+    itself for one figure on screen); a canvas without them is ``(None, "")``.
     """
-    page.wait_for_timeout(500)                                   # the naming script runs on the next frame
-    canvases = page.locator(".jupyter-matplotlib-canvas-div")
-    found = []
-    for k in range(canvases.count()):
-        tree = canvases.nth(k).aria_snapshot().strip().splitlines()
-        match = re.match(r'- (\w+)(?: "(.*)")?:?$', tree[0]) if tree else None
-        found.append((match.group(1), json.loads(f'"{match.group(2) or ""}"')) if match else (None, ""))
-    return found
+    try:
+        page.wait_for_function(NAMED, timeout=timeout_ms, polling=250)
+    except Exception:  # noqa: BLE001  (the names found are reported by the caller's assertion)
+        pass
+    return [(role, label or "") for role, label in page.evaluate(
+        "() => [...document.querySelectorAll('.jupyter-matplotlib-canvas-div')]"
+        ".map(c => [c.getAttribute('role'), c.getAttribute('aria-label')])")]
+
+
+def accessible_name(locator):
+    """``(role, name)`` of an element on screen as Chromium's accessibility tree holds it (Playwright's ARIA
+    snapshot), e.g. ``("img", "Figure 2b. Gimbal at ...")``; ``(None, "")`` when it has none."""
+    tree = locator.aria_snapshot().strip().splitlines()
+    match = re.match(r'- (\w+)(?: "(.*)")?:?$', tree[0]) if tree else None
+    return (match.group(1), json.loads(f'"{match.group(2) or ""}"')) if match else (None, "")
 
 
 def test_a_worked_example_ahead_of_its_exercise_says_so_in_one_line(session):
@@ -216,11 +229,13 @@ def test_gimbal_slider_changes_the_figure(session):
                            ".includes('pitch ' + text + '°'))", arg=near, timeout=20_000)
     explorer.screenshot(path=str(ARTIFACTS / "solutions_05_gimbal_near_the_lock.png"))
     named = [label for _, label in live_figure_names(page) if "Gimbal at" in label]
+    in_the_tree = accessible_name(canvas.locator("xpath=.."))           # the canvas's div, as a screen reader gets it
     page.close()
     assert readout.strip().startswith("90"), readout
     assert any("pitch 90°" in label for _, label in locked), locked
     assert near != "90" and "." in near, near                   # a value between the steps, e.g. 88.5
     assert named and all(f"pitch {near}°" in label for label in named), (near, named)
+    assert in_the_tree[0] == "img" and f"pitch {near}°" in in_the_tree[1], in_the_tree
 
 
 def _broken_copy(root, name):
