@@ -160,11 +160,12 @@ def test_a_worked_example_ahead_of_its_exercise_says_so_in_one_line(session):
                            timeout=30_000)
     example.scroll_into_view_if_needed()
     said = example.locator(".jp-OutputArea").inner_text().strip()
+    example.screenshot(path=str(ARTIFACTS / "course_05_worked_example_ahead.png"))
     check.locator(".cm-content").click()
     page.keyboard.press("Control+Enter")                          # the check cell alone, not through Run All
     page.wait_for_timeout(1500)
     again = check.locator(".jp-OutputArea").inner_text()
-    page.screenshot(path=str(ARTIFACTS / "course_05_worked_example_ahead.png"))
+    check.screenshot(path=str(ARTIFACTS / "course_05_check_cell_run_alone.png"))
     page.close()
     assert "euler_zyx_to_matrix is not written yet: write euler_zyx_to_matrix" in said, said
     assert len(said.splitlines()) == 1 and "Traceback" not in said and "File " not in said, said
