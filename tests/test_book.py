@@ -15,6 +15,7 @@ import nbformat
 import pytest
 from bs4 import BeautifulSoup
 
+from autograder.authoring.book_phrases import LAB_ONLY_PHRASES, reader_phrasing
 from autograder.lessons import cells
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from book_build import shared_book
@@ -99,6 +100,34 @@ def test_the_book_is_the_readers_edition(book):
         for phrase in _plain_runs(cell.source):
             assert phrase in everything and phrase not in course, phrase
     assert "computed with the reference rot_x" in pages["01_frames_and_rotations"]  # a caption, as alt text
+
+
+def test_the_book_says_the_reference_where_the_lab_says_your(book):
+    """No page, figure alt text or printed output of the book speaks of the reader's own answer or of the
+    lab's tools ("your numerical Jacobian", "before you run the check cell"), while the lab keeps them."""
+    pages = {p.stem: _page_text(p) for p in _pages(book)}
+    found = [f"{name}: ...{text[max(0, k - 60):k + 40]}..." for name, text in pages.items()
+             for phrase in LAB_ONLY_PHRASES for k in [text.lower().find(phrase.lower())] if k >= 0]
+    assert not found, found
+    assert "The reference numerical Jacobian against two analytic ones" in pages["06_perturbations_and_jacobians"]
+    assert "matches the reference numerical Jacobian = True" in pages["06_perturbations_and_jacobians"]
+    assert "in your head" in pages["04_quaternions"]                 # the reader as a person keeps "your"
+    course = " ".join(p.read_text(encoding="utf-8") for p in COURSE.glob("[0-9][0-9]_*.ipynb"))
+    assert "Your numerical Jacobian against two analytic ones" in course
+
+
+@pytest.mark.parametrize("lab, book", [
+    ("With your `boxminus` and `boxplus_right`: a round trip", "With the reference `boxminus` and `boxplus_right`: a round trip"),
+    ("Your $\\mathbf J_r$ against the identities", "The reference $\\mathbf J_r$ against the identities"),
+    ("Then a round trip through both of your functions", "Then a round trip through both of the reference functions"),
+    ("Here are your three rotations at work", "Here are the three reference rotations at work"),
+    ("Your function must work for any length", "The function must work for any length"),
+    ("Check your matrix, before you run the check cell.", "Check the reference matrix."),
+    ("Do not call your `to_homogeneous`", "Do not call `to_homogeneous`"),
+    ("design your own solver; point your fingers; in your head; Your turn", "design your own solver; point your fingers; in your head; Your turn"),
+])
+def test_reader_phrasing(lab, book):
+    assert reader_phrasing(lab) == book
 
 
 def test_the_book_needs_no_network(book):

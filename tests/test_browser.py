@@ -5,10 +5,13 @@ of course/ and solutions/; headless Chromium (Debian's ``chromium`` through
 Playwright) opens each lesson, runs all cells from the Run menu, and checks
 what a person sees with ``browser_support.page_problems``: no raw TeX, no
 MathJax error, no JavaScript error, every image and figure canvas drawn, and
-(in the solved lessons) nothing on stderr. A student's typed answer turns a
-check from ✗ to ✓, and a slider of an explorer changes its figure. Last, a
-copy of a lesson is broken three ways and the same check must report each.
-Screenshots go to ``test-artifacts/browser/``.
+(in the solved lessons) nothing on stderr, every live figure named by its
+caption for a screen reader (no TeX in the name), and nothing under a clean
+"Ready to hand in?". A student's typed answer turns a check from ✗ to ✓; a
+worked example run ahead of its exercise ends in one line; a slider of an
+explorer changes its figure, and the figure's title says the slider's value.
+Last, a copy of a lesson is broken three ways and the same check must report
+each. Screenshots go to ``test-artifacts/browser/``.
 """
 
 import json
@@ -111,8 +114,18 @@ def test_solved_lesson_reads_cleanly(session, name):
                        (re.search(r"plt\.show\(\)", c.source) or "explore_" in c.source))
     figures = (page.locator(".jp-OutputArea-output img").count()
                + page.locator(LAB_SELECTORS["canvases"]).count())
+    names = live_figure_names(page)
+    hand_in = _cell(page, "ready_to_hand_in(").locator(".jp-OutputArea").text_content() if nb_has_hand_in(name) else ""
+    if name.startswith("03_"):                                   # Figure 3: two series apart without colour
+        figure = page.locator(".jupyter-matplotlib-canvas-div[aria-label^='Figure 3.']").first
+        figure.scroll_into_view_if_needed()
+        figure.screenshot(path=str(ARTIFACTS / "solutions_03_figure_3.png"))
     page.close()
     assert not problems, problems
+    assert len(names) >= (1 if figure_cells else 0), names
+    assert all(re.match(r"Figure \d+[a-z]?\. \S", label) for _, label in names), names
+    assert all(role == "img" and not re.search(r"[$\\{}]", label) for role, label in names), names
+    assert "[]" not in hand_in and "ready to hand in" in hand_in.lower() or not hand_in, hand_in
     assert not failed and not errors, (failed, errors)
     assert all("✗" in out for out in demonstrations), "the demonstration of a failed check shows no ✗"
     assert figures >= figure_cells, f"{figures} figures drawn for {figure_cells} figure cells"
@@ -135,6 +148,69 @@ def test_course_lesson_opens_and_runs(session, name):
 
 def _cell(page, text):
     return page.locator(".jp-Notebook .jp-Cell", has=page.locator(".jp-InputArea", has_text=text)).first
+
+
+def nb_has_hand_in(name):
+    return any(c.get("id") == "ready-to-hand-in" for c in nbformat.read(SOLUTIONS / name, as_version=4).cells)
+
+
+# Every live figure has its role and name, and the name is a caption ("Figure 2. ..."), not ipympl's
+# default label ("Figure 2"): the kernel renames a figure when it draws it, a moment after its cell ran.
+NAMED = r"""() => [...document.querySelectorAll('.jupyter-matplotlib-canvas-div')].every(c =>
+  c.getAttribute('role') === 'img' && /^Figure \d+[a-z]?\. \S/.test(c.getAttribute('aria-label') || ''))"""
+
+
+def live_figure_names(page, timeout_ms=20_000):
+    """``[(role, accessible name)]`` of every live figure (ipympl canvas), as ``coursekit.plotting`` sets them.
+
+    Waits (up to ``timeout_ms``) until every canvas is named by a caption, then reads the ``role`` and
+    ``aria-label`` that Chromium's accessibility tree takes them from (``accessible_name`` reads the tree
+    itself for one figure on screen); a canvas without them is ``(None, "")``.
+    """
+    try:
+        page.wait_for_function(NAMED, timeout=timeout_ms, polling=250)
+    except Exception:  # noqa: BLE001  (the names found are reported by the caller's assertion)
+        pass
+    return [(role, label or "") for role, label in page.evaluate(
+        "() => [...document.querySelectorAll('.jupyter-matplotlib-canvas-div')]"
+        ".map(c => [c.getAttribute('role'), c.getAttribute('aria-label')])")]
+
+
+def accessible_name(locator):
+    """``(role, name)`` of an element on screen as Chromium's accessibility tree holds it (Playwright's ARIA
+    snapshot), e.g. ``("img", "Figure 2b. Gimbal at ...")``; ``(None, "")`` when it has none."""
+    tree = locator.aria_snapshot().strip().splitlines()
+    match = re.match(r'- (\w+)(?: "(.*)")?:?$', tree[0]) if tree else None
+    return (match.group(1), json.loads(f'"{match.group(2) or ""}"')) if match else (None, "")
+
+
+def test_a_worked_example_ahead_of_its_exercise_says_so_in_one_line(session):
+    """Lesson 05 as handed out: Run All stops at the first check cell with one line (and says nothing of
+    Run All); the student runs the next worked example anyway, which calls that unwritten exercise: one
+    line naming it, no traceback."""
+    name = next(n for n in LESSONS if n.startswith("05_"))
+    page = _run(session, f"course/{name}")
+    check = _cell(page, 'check("euler_zyx_to_matrix", euler_zyx_to_matrix)')
+    stopped = check.locator(".jp-OutputArea").text_content()
+    example = _cell(page, "R_wb = np.asarray(euler_zyx_to_matrix(")
+    example.locator(".cm-content").click()
+    page.keyboard.press("Shift+Enter")                            # run just this cell
+    page.wait_for_function("(cell) => cell.querySelector('.jp-OutputArea-output')", arg=example.element_handle(),
+                           timeout=30_000)
+    example.scroll_into_view_if_needed()
+    said = example.locator(".jp-OutputArea").inner_text().strip()
+    example.screenshot(path=str(ARTIFACTS / "course_05_worked_example_ahead.png"))
+    check.locator(".cm-content").click()
+    page.keyboard.press("Control+Enter")                          # the check cell alone, not through Run All
+    page.wait_for_timeout(1500)
+    again = check.locator(".jp-OutputArea").inner_text()
+    check.screenshot(path=str(ARTIFACTS / "course_05_check_cell_run_alone.png"))
+    page.close()
+    assert "euler_zyx_to_matrix is not written yet: write euler_zyx_to_matrix" in said, said
+    assert len(said.splitlines()) == 1 and "Traceback" not in said and "File " not in said, said
+    for text in (stopped, again):
+        assert "not written yet" in text and "Traceback" not in text, text
+        assert "Run All" not in text and "stopped here" not in text, text
 
 
 def test_typed_answer_turns_a_check_green(session):
@@ -183,8 +259,23 @@ def test_gimbal_slider_changes_the_figure(session):
                            timeout=20_000)
     explorer.screenshot(path=str(ARTIFACTS / "solutions_05_gimbal_locked.png"))
     readout = explorer.locator(".widget-slider", has_text="pitch").locator(".widget-readout").text_content()
+    locked = live_figure_names(page)
+    for _ in range(3):                                     # off the lock by three steps: 88.5, not 88 or 89
+        page.keyboard.press("ArrowLeft")
+    page.wait_for_timeout(1500)
+    near = explorer.locator(".widget-slider", has_text="pitch").locator(".widget-readout").text_content().strip()
+    page.wait_for_function("(text) => [...document.querySelectorAll('.coursekit-explorer "
+                           ".jupyter-matplotlib-canvas-div')].some(c => (c.getAttribute('aria-label') || '')"
+                           ".includes('pitch ' + text + '°'))", arg=near, timeout=20_000)
+    explorer.screenshot(path=str(ARTIFACTS / "solutions_05_gimbal_near_the_lock.png"))
+    named = [label for _, label in live_figure_names(page) if "Gimbal at" in label]
+    in_the_tree = accessible_name(canvas.locator("xpath=.."))           # the canvas's div, as a screen reader gets it
     page.close()
     assert readout.strip().startswith("90"), readout
+    assert any("pitch 90°" in label for _, label in locked), locked
+    assert near != "90" and "." in near, near                   # a value between the steps, e.g. 88.5
+    assert named and all(f"pitch {near}°" in label for label in named), (near, named)
+    assert in_the_tree[0] == "img" and f"pitch {near}°" in in_the_tree[1], in_the_tree
 
 
 def _broken_copy(root, name):

@@ -148,3 +148,13 @@ def test_the_zip_carries_the_date_it_was_packed(tmp_path):
     with zipfile.ZipFile(build_handout(tmp_path / "course.zip")) as archive:
         dates = {datetime(*info.date_time) for info in archive.infolist()}
     assert len(dates) == 1 and before <= dates.pop() <= datetime.now() + timedelta(seconds=2)
+
+
+def test_source_date_epoch_gives_the_same_bytes(tmp_path, monkeypatch):
+    """Reproducible builds' convention: with SOURCE_DATE_EPOCH every entry carries that date, and two
+    builds of the same course are the same bytes."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1785000000")  # 2026-07-25 17:20 UTC
+    first, second = build_handout(tmp_path / "a.zip"), build_handout(tmp_path / "b.zip")
+    assert first.read_bytes() == second.read_bytes()
+    with zipfile.ZipFile(first) as archive:
+        assert {info.date_time for info in archive.infolist()} == {(2026, 7, 25, 17, 20, 0)}

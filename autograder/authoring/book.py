@@ -9,7 +9,8 @@ HTML to ``--out``. The front page is ``00_start_here``; open
 the book, so it reads offline, from disk, with no server and no Python.
 
 It is the reader's edition: cells a master tags ``student-only`` (check cells,
-hand-in, grading) are left out, its kernels run with ``COURSEKIT_EDITION=reader``
+hand-in, grading) are left out, the lab's "your ``boxminus``" reads "the reference
+``boxminus``" (``book_phrases``), its kernels run with ``COURSEKIT_EDITION=reader``
 (legends say "the reference log_so3", not "your log_so3"), and every figure's
 alt text is its caption.
 
@@ -33,6 +34,7 @@ from pathlib import Path
 
 import nbformat
 
+from autograder.authoring.book_phrases import reader_phrasing
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
 from autograder.lessons.paths import SOLUTIONS
@@ -95,10 +97,13 @@ _POINTS_IN_HEADING = re.compile(r"^(#+ Exercise \d+: .*?) \(\d+(?:\.\d+)? points
 
 def _reader_copy(nb):
     """The master as a reader sees it: answers in place, without nbgrader's solution markers, and
-    without the cells tagged student-only (check cells, hand-in, how grading works), and without the points
-    in exercise headings."""
+    without the cells tagged student-only (check cells, hand-in, how grading works), without the points
+    in exercise headings, and in the reader's wording ("the reference `boxminus`", not "your `boxminus`":
+    ``book_phrases``)."""
     nb.cells = [cell for cell in nb.cells if not cells.is_student_only(cell)]
     for cell in nb.cells:
+        if cell.cell_type in ("markdown", "code"):
+            cell.source = reader_phrasing(cell.source)
         if cell.cell_type == "markdown":
             cell.source = _POINTS_IN_HEADING.sub(r"\1", cell.source)  # points are the grader's business
         if cell.cell_type == "code":

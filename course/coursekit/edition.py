@@ -13,6 +13,8 @@ Examples
 
 import os
 
+from .captions import figure_caption
+
 __all__ = ["answer_label", "is_reader_edition"]
 
 EDITION_VARIABLE = "COURSEKIT_EDITION"
@@ -37,23 +39,6 @@ def answer_label(name):
         ``"your log_so3"`` in the lab, ``"the reference log_so3"`` in the book.
     """
     return f"the reference {name}" if is_reader_edition() else f"your {name}"
-
-
-def figure_caption(fig):
-    """A figure's caption: its suptitle, else its first axes title ("" when it has neither).
-
-    Parameters
-    ----------
-    fig : matplotlib.figure.Figure
-
-    Returns
-    -------
-    str
-    """
-    suptitle = getattr(fig, "_suptitle", None)
-    texts = [suptitle.get_text()] if suptitle is not None else []
-    texts += [ax.get_title() for ax in fig.axes]
-    return next((" ".join(t.split()) for t in texts if t and t.strip()), "")
 
 
 def _with_caption(printer):

@@ -9,7 +9,10 @@ a rotation matrix *is*.
 
 In a live JupyterLab, ``interactive_figures()`` switches to ipympl's widget
 backend, so that every 3D figure can be turned with the mouse; everywhere
-else (grading, recording, the book) figures stay static pictures.
+else (grading, recording, the book) figures stay static pictures. A live
+figure is a canvas, which a screen reader cannot read: ``name_live_figure``
+gives it its caption as accessible name (in the book the caption is the
+picture's alt text, see ``coursekit.edition``).
 """
 
 import os
@@ -17,6 +20,8 @@ import os
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import MaxNLocator
+
+from .captions import figure_caption
 
 __all__ = [
     "AXIS_COLORS",
@@ -34,6 +39,8 @@ __all__ = [
     "hide_figure_header",
     "book_build",
     "keep_toolbar_off_axes",
+    "name_live_figure",
+    "name_live_figure_when_drawn",
 ]
 
 # Okabe-Ito vermillion, bluish green and blue: red, green and blue that colour-blind readers tell apart.
@@ -78,7 +85,9 @@ def interactive_figures():
     Anywhere else (no front end, or ipympl not installed) this does nothing,
     so a notebook that calls it still runs under nbval, the grader and the
     book builder. It returns nothing, so the cell that calls it shows nothing, except
-    in the book, where it says in one line that the figures there are pictures.
+    in the book, where it says in one line that the figures there are pictures. In the
+    lab it also names every live figure by its caption (``name_live_figure``), with a
+    script in the page that no one sees.
     """
     if book_build():
         from IPython.display import Markdown, display
@@ -94,13 +103,82 @@ def interactive_figures():
         from IPython import get_ipython
     except ImportError:
         return
-    get_ipython().run_line_magic("matplotlib", "widget")
+    shell = get_ipython()
+    shell.run_line_magic("matplotlib", "widget")
     # The figure's own title says which figure it is: no "Figure 1" header above it. The header is a
-    # trait of each canvas, so a pyplot hook (run on every new figure) turns it off figure by figure.
-    for name in ("hide_figure_header", "keep_toolbar_off_axes"):
+    # trait of each canvas, so a pyplot hook (run on every new figure) turns it off figure by figure;
+    # another names the figure by its caption each time it is drawn (its title is set after it is made).
+    for name in ("hide_figure_header", "keep_toolbar_off_axes", "name_live_figure_when_drawn"):
         hook = f"{__name__}:{name}"
         if hook not in plt.rcParams["figure.hooks"]:
             plt.rcParams["figure.hooks"] = [*plt.rcParams["figure.hooks"], hook]
+    from IPython.display import Javascript, display
+
+    display(Javascript(NAME_CANVASES_JS))
+
+
+# In the page: every ipympl canvas is an image named by its figure label (set by name_live_figure to the
+# figure's caption; ipympl shows it in the figure's header, which the course hides). Runs once per page,
+# and again whenever the notebook's DOM changes (a new figure, a redrawn title).
+NAME_CANVASES_JS = """
+(() => {
+  if (window.coursekitNamesFigures) return;
+  window.coursekitNamesFigures = true;
+  const name = () => document.querySelectorAll('.jupyter-matplotlib-figure').forEach(figure => {
+    const header = figure.querySelector('.jupyter-matplotlib-header');
+    const canvas = figure.querySelector('.jupyter-matplotlib-canvas-div');
+    if (!header || !canvas) return;
+    const label = header.textContent.trim();
+    if (label && canvas.getAttribute('aria-label') !== label) {
+      canvas.setAttribute('role', 'img');
+      canvas.setAttribute('aria-label', label);
+    }
+  });
+  let queued = false;
+  new MutationObserver(() => {
+    if (queued) return;
+    queued = true;
+    requestAnimationFrame(() => { queued = false; name(); });
+  }).observe(document.body, {childList: true, subtree: true, characterData: true});
+  name();
+})();
+"""
+
+
+def name_live_figure(fig):
+    """Give a live figure (an ipympl canvas) its caption as accessible name; a no-op for pictures.
+
+    The caption is the figure's suptitle, else its first axes title, as
+    readable text (``coursekit.captions``: "R_z(δ)", not TeX). ipympl keeps it
+    as the figure's label (its hidden header, and the name of a downloaded
+    PNG); the page script ``NAME_CANVASES_JS`` makes the canvas an image named
+    by it. ``interactive_figures`` makes every new figure call this when it is
+    drawn (``name_live_figure_when_drawn``), so an explorer's figure, whose
+    title changes with its sliders, is named anew at each redraw.
+
+    Examples
+    --------
+    >>> fig = plt.figure()                                        # doctest: +SKIP
+    >>> fig.suptitle("Figure 2. The gimbal at pitch $88.5°$")     # doctest: +SKIP
+    >>> name_live_figure(fig).canvas._figure_label                # doctest: +SKIP
+    'Figure 2. The gimbal at pitch 88.5°'
+    """
+    if hasattr(fig.canvas, "_figure_label"):
+        caption = figure_caption(fig)
+        if caption and fig.canvas._figure_label != caption:
+            fig.canvas._figure_label = caption
+    return fig
+
+
+def name_live_figure_when_drawn(fig):
+    """Call :func:`name_live_figure` each time ``fig`` is drawn (a pyplot figure hook; a no-op for pictures).
+
+    A figure gets its title after it is made, and an explorer changes it with
+    every redraw; a draw is when the title is final.
+    """
+    if hasattr(fig.canvas, "_figure_label"):
+        fig.canvas.mpl_connect("draw_event", lambda _event: name_live_figure(fig))
+    return fig
 
 
 def hide_figure_header(fig):

@@ -29,8 +29,9 @@ import numpy as np
 from scipy.spatial.transform import Rotation, Slerp
 
 from .lie import Exp, Log, skew
-from .plotting import (AXIS_COLORS, book_build, keep_toolbar_off_axes, draw_circle, draw_frame, draw_point, finish_3d_axes, hide_figure_header,
-                       live_front_end, new_3d_axes, widgets_live)
+from .captions import figure_caption
+from .plotting import (AXIS_COLORS, book_build, draw_circle, draw_frame, draw_point, finish_3d_axes, hide_figure_header,
+                       keep_toolbar_off_axes, live_front_end, new_3d_axes, widgets_live)
 
 __all__ = ["explore_exp", "explore_slerp", "explore_gimbal", "explore_step_size", "explore_gauss_newton", "draw_gimbal"]
 
@@ -171,12 +172,9 @@ def _show_frames(draw, controls, figsize, sweep):
 
 
 def _caption_of(fig):
-    """The figure's title as one line (its suptitle, else its first axes' title): the frames' alt text."""
-    suptitle = getattr(fig, "_suptitle", None)
-    text = suptitle.get_text() if suptitle is not None else ""
-    if not text:
-        text = next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
-    return " ".join(text.split()) or "An explorer's frames"
+    """The figure's title as one line of readable text (its suptitle, else its first axes' title): the frames'
+    alt text and the live figure's accessible name."""
+    return figure_caption(fig) or "An explorer's frames"
 
 
 def _title(figure, text):

@@ -1,0 +1,68 @@
+"""Captions as words: what a reader of the book (alt text) and a screen reader in the lab (a live figure's
+accessible name) get from a figure's titles, with no TeX source left in them."""
+
+import re
+
+import matplotlib
+
+matplotlib.use("agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import pytest  # noqa: E402
+
+from coursekit.captions import figure_caption, readable_text  # noqa: E402
+from coursekit.plotting import name_live_figure, name_live_figure_when_drawn  # noqa: E402
+
+TEX_LEFT = re.compile(r"[$\\{}]|\b(mathbf|mathrm|frac|boldsymbol|theta|delta|times)\b")
+
+
+@pytest.mark.parametrize("tex, words", [
+    (r"Figure 3. The family $R_z(\delta)\,R_y(\pi/2)\,R_x(\alpha + \delta)$, $\alpha$ = 0.3 rad",
+     "Figure 3. The family R_z(δ) R_y(π/2) R_x(α + δ), α = 0.3 rad"),
+    (r"A steady spin $R(t) = \exp(t\,[\omega]_\times)$", "A steady spin R(t) = exp(t [ω]×)"),
+    (r"$\|\mathbf{R}^\top\mathbf{R} - I\|$ at $h = 10^{-15}$", "‖RᵀR - I‖ at h = 10⁻¹⁵"),
+    (r"columns $r_1, r_2, r_3$", "columns r₁, r₂, r₃"),
+    (r"$\frac{\pi}{2} - \varepsilon$ and $\frac{a+b}{2}$", "π/2 - ε and (a+b)/2"),
+    (r"$\mathrm{Exp}(\theta\mathbf{u})$, $\hat{\mathbf{R}}$, $x_{\mathrm{body}}$", "Exp(θu), R̂, x_(body)"),
+    ("no math: 5% of \\$3, pitch 88.5°", "no math: 5% of $3, pitch 88.5°"),
+])
+def test_readable_text(tex, words):
+    assert readable_text(tex) == words
+    assert not TEX_LEFT.search(readable_text(tex).replace("$3", ""))
+
+
+def test_a_caption_is_the_suptitle_then_the_titles():
+    fig, (left, right) = plt.subplots(1, 2)
+    assert figure_caption(fig) == ""
+    left.set_title(r"near $\theta = 0$")
+    right.set_title(r"near $\theta = \pi$")
+    fig.suptitle("Figure 3. Accuracy\nof the logarithm")
+    assert figure_caption(fig) == "Figure 3. Accuracy of the logarithm — near θ = 0 — near θ = π"
+    plt.close(fig)
+
+
+class _LiveCanvas:
+    """What name_live_figure needs of an ipympl canvas: its label trait, and draw events."""
+
+    def __init__(self):
+        self._figure_label, self.handlers = "Figure 1", []
+
+    def mpl_connect(self, event, handler):
+        assert event == "draw_event"
+        self.handlers.append(handler)
+
+
+def test_a_live_figure_is_renamed_by_its_title_each_time_it_is_drawn():
+    fig = plt.figure()
+    assert name_live_figure(fig) is fig                                  # a picture: nothing to name
+    canvas = _LiveCanvas()
+    fig.canvas = canvas
+    name_live_figure_when_drawn(fig)
+    fig.suptitle(r"Figure 2b. Gimbal at pitch $88.5°$")
+    for handler in canvas.handlers:
+        handler(None)
+    assert canvas._figure_label == "Figure 2b. Gimbal at pitch 88.5°"
+    fig.suptitle("Figure 2b. Gimbal at pitch 90°")
+    for handler in canvas.handlers:
+        handler(None)
+    assert canvas._figure_label == "Figure 2b. Gimbal at pitch 90°"
+    plt.close("all")
