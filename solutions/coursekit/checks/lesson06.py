@@ -665,13 +665,13 @@ JR_DECADES = {
 }
 
 
-def _every_decade(function, name, expected_of, formula, closed_form, series):
+def _every_decade(function, name, expected_of, formula, closed_form, series, first_order):
     """Compare ``function(θ u)`` with ``expected_of(W, a, b, c)`` to 1e-13 at every angle of JR_DECADES.
 
     The first miss is reported. Below θ = 0.97 the errors at all the angles name the cause: a series too short
     for its threshold is off by more at larger angles, a closed form that cancels by more at smaller ones.
     """
-    errors = {}
+    errors, identity = {}, {}
     for theta, (a, b, c) in JR_DECADES.items():
         w = theta * DECADE_AXIS
         W = skew(w)
@@ -679,6 +679,7 @@ def _every_decade(function, name, expected_of, formula, closed_form, series):
         got = require_shape(function(given), (3, 3), f"{name} at θ = {theta:.2g}")
         expected = expected_of(W, a, b, c)
         errors[theta] = np.max(np.abs(got - expected))
+        identity[theta] = close(got, E, 1e-300)
         if theta == DECADE_ANGLES[0] and errors[theta] > 1e-13:
             raise Mismatch(f"{name} is off by {errors[theta]:.1e} at θ = {theta:.2g} (tolerance 1e-13)",
                            _series_hint(theta, single_precision_error(got, expected), formula, closed_form))
@@ -687,6 +688,9 @@ def _every_decade(function, name, expected_of, formula, closed_form, series):
         return
     theta = failing[0]
     seen = f"{name} is off by {errors[theta]:.1e} at θ = {theta:.2g} (tolerance 1e-13)"
+    if identity[theta]:
+        raise Mismatch(seen, f"returned I at θ = {theta:.2g}: the first-order term {first_order} is missing below your "
+                       f"threshold; use the series there, {series}")
     if len(failing) > 1 and errors[failing[-1]] > errors[theta]:
         raise Mismatch(seen + f", and by more at smaller angles ({errors[failing[-1]]:.1e} at θ = {failing[-1]:.2g})",
                        "the closed form cancels at small angles (1 - cos θ, or θ - sin θ, keeps fewer digits as θ "
@@ -699,7 +703,7 @@ def _(right_jacobian_so3):
     _every_decade(right_jacobian_so3, "right_jacobian_so3", lambda W, a, b, c: E - a * W + b * W @ W,
                   "keep the θ² terms, a = 1/2 - θ²/24 and b = 1/6 - θ²/120 (a one-term series is off by about "
                   "θ³/24)", "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²",
-                  "a = 1/2 - θ²/24, b = 1/6 - θ²/120")
+                  "a = 1/2 - θ²/24, b = 1/6 - θ²/120", "-[w]×/2")
 
 
 # ---------------------------------------------------------------- right_jacobian_inv_so3
@@ -765,4 +769,4 @@ def _(right_jacobian_inv_so3):
 def _(right_jacobian_inv_so3):
     _every_decade(right_jacobian_inv_so3, "right_jacobian_inv_so3", lambda W, a, b, c: E + 0.5 * W + c * W @ W,
                   "keep the θ² term, c = 1/12 + θ²/720 (the one-term c = 1/12 is off by about θ⁴/720)",
-                  "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²", "c = 1/12 + θ²/720")
+                  "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²", "c = 1/12 + θ²/720", "+[w]×/2")

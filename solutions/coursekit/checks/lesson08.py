@@ -73,10 +73,13 @@ def _(align_svd):
         raise Mismatch(f"det = {det:.3f}: a reflection", _svd_hint(got, POINTS, mirrored, best))
     _rotation_of(got, "align_svd(P, Q)", _svd_hint(got, POINTS, mirrored, best))
     if not close(got, best, 1e-9):
+        U, _, Vt = np.linalg.svd(mirrored.T @ POINTS)
+        flipped_rows = np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ U @ Vt
+        hint = ("the sign d belongs to the last column of U (the direction of the smallest singular value): "
+                "U @ diag(1, 1, d) @ Vᵀ, with the diagonal on the right of U, not on its left"
+                if _explains(got, flipped_rows, best) else _svd_hint(got, POINTS, mirrored, best))
         raise Mismatch(f"a rotation, but not the best one: its cost is {_cost(got, POINTS, mirrored):.6g}, the best "
-                       f"{_cost(best, POINTS, mirrored):.6g}",
-                       "the determinant fix flips the last column of U (the direction of the smallest singular "
-                       "value): U @ diag(1, 1, d) @ Vᵀ, with the diagonal on the right of U")
+                       f"{_cost(best, POINTS, mirrored):.6g}", hint)
 
 
 # A generic turn and five generic points, none of their numbers exact in float32 (exact data: q_i = R p_i).
