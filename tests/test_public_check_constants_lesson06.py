@@ -116,3 +116,39 @@ def test_fixed_step_is_read_off_the_moves_of_the_students_function():
         assert checks._fixed_step_taken(steps, x, 3) == h
     assert checks._fixed_step_taken(checks._steps_taken(central, checks._wavy, x), x, 3) is None
     assert checks._fixed_step_taken(checks._steps_taken(fixed(1e-6), checks._wavy, x), x, 3) is None
+
+
+def jr_series(w, terms=40):
+    """Jr(w) = Σ (-[w]×)^k / (k + 1)!, summed far past convergence: no branch, no cancellation."""
+    W = skew(w)
+    total, term, factorial = np.zeros((3, 3)), np.eye(3), 1.0
+    for k in range(terms):
+        total = total + term / factorial
+        term = -term @ W
+        factorial *= k + 2
+    return total
+
+
+@pytest.mark.parametrize("theta", sorted(checks.JR_DECADES))
+def test_every_decade_coefficients_rebuild_jr_and_its_inverse(theta):
+    """(a, b, c) at θ give Jr and Jr⁻¹ of the branch-free series to 1e-15, and a, b, c are the closed forms'
+    values where those keep their digits (θ ≥ 0.01)."""
+    a, b, c = checks.JR_DECADES[theta]
+    w = theta * checks.DECADE_AXIS
+    W = skew(w)
+    exact = jr_series(w)
+    assert np.max(np.abs(np.eye(3) - a * W + b * W @ W - exact)) <= 1e-15
+    assert np.max(np.abs(np.eye(3) + 0.5 * W + c * W @ W - np.linalg.inv(exact))) <= 1e-15
+    if theta >= 0.01:
+        same(a, (1 - np.cos(theta)) / theta**2, rel=1e-10)
+        same(b, (theta - np.sin(theta)) / theta**3, rel=1e-9)
+        same(c, (1 - 0.5 * theta / np.tan(0.5 * theta)) / theta**2, rel=1e-9)
+    assert checks.DECADE_ANGLES == tuple(sorted(checks.JR_DECADES, reverse=True))
+
+
+def test_lecture_error_at_zero_is_the_floor_steps_error():
+    x = np.zeros(3)
+    f0 = checks._wavy(x)
+    lecture = np.column_stack([(checks._wavy(x + 1e-6 * e) - f0) / 1e-6 for e in np.eye(3)])
+    stored = dict((tuple(p), e) for p, e in checks._LECTURE_ERRORS)[(0.0, 0.0, 0.0)]
+    assert abs(np.max(np.abs(lecture - checks._wavy_jacobian(x))) - stored) <= 1e-9

@@ -278,6 +278,10 @@ def _quat_hint(got, q, d, fallback=""):
     d = np.asarray(d, dtype=float)
     truth = _qmul(q, _exp_q(d))
     first_order = _qmul(q, np.concatenate([[1.0], d / 2.0]))
+    angle = np.linalg.norm(d)
+    if 0.0 < angle < 1e-2 and _is_quat(got, first_order / np.linalg.norm(first_order), truth):
+        return (f"that is q ⊗ [1, δ/2], normalised, at |δ| = {angle:.2g}: off by about |δ|³/24 there; keep that "
+                "shortcut for |δ| below about 1e-8, where it is exact to rounding, and use Exp_q(δ) above")
     candidates = [
         (first_order, "that is q ⊗ [1, δ/2] without normalising: its norm is √(1 + |δ|²/4), not 1; "
          "use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]"),
@@ -658,7 +662,9 @@ def _jr_candidates(w):
         (np.eye(3), f"returned I at θ = {theta:.2g}: the first-order term -[w]×/2 is missing; below a small angle use "
          "the series I - [w]×/2 + [w]×²/6"),
         (_jr_naive(w), "the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, so "
-         "(1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a threshold")]
+         "(1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a threshold"),
+        (_jr_series(w), f"that is the one-term series I - [w]×/2 + [w]×²/6 at θ = {theta:.2g}, off by about θ³/24 "
+         "there: below your threshold keep the θ² terms, a = 1/2 - θ²/24 and b = 1/6 - θ²/120")]
     return candidates
 
 
@@ -796,7 +802,10 @@ def _inverse_candidates(w):
             (Jr, "that is Jr(w) itself, not its inverse"),
             (np.linalg.inv(Jr.T), "that is the inverse of the left Jacobian: the [w]×/2 term has the wrong sign"),
             (np.eye(3) + 0.5 * W, "that is I + [w]×/2, only the first-order part: add the [w]×² term with the "
-             "coefficient 1/θ² - (1 + cos θ)/(2θ sin θ)")]
+             "coefficient 1/θ² - (1 + cos θ)/(2θ sin θ)"),
+            (np.eye(3) + 0.5 * W + W @ W / 12.0, f"that is the one-term series I + [w]×/2 + [w]×²/12 at "
+             f"θ = {np.linalg.norm(w):.2g}, off by about θ⁴/720 there: below your threshold keep the θ² term, "
+             "c = 1/12 + θ²/720")]
 
 
 def _inverse_hint(got, w, ref=None, fallback=JR_INV_FORMULA):

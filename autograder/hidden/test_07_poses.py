@@ -402,6 +402,22 @@ def _is_rho(got, xi):
     return gap > 0.0 and np.max(np.abs(got[:3, 3] - xi[:3])) <= 1e-3 * gap
 
 
+def _one_term_series_hint(got, xi):
+    """The hint for V's one-term series I + W/2 + W²/6 used where its θ² terms matter (|phi| up to 0.1), or ""."""
+    phi, rho = xi[3:], xi[:3]
+    theta = float(np.linalg.norm(phi))
+    if not 0.0 < theta < 0.1:
+        return ""
+    W = np.array([[0.0, -phi[2], phi[1]], [phi[2], 0.0, -phi[0]], [-phi[1], phi[0], 0.0]])
+    short = (np.eye(3) + W / 2.0 + W @ W / 6.0) @ rho
+    exact = _exp(xi)[:3, 3]
+    gap = float(np.max(np.abs(short - exact)))
+    if gap > 0.0 and float(np.max(np.abs(np.asarray(got)[:3, 3] - short))) <= 1e-2 * gap:
+        return (f"that is V's one-term series I + W/2 + W²/6 at |phi| = {theta:.2g}, off by about θ³/24 |rho| there: "
+                "below your threshold keep the θ² terms (1/2 - θ²/24, 1/6 - θ²/120)")
+    return ""
+
+
 def _exp_hint(got, xi, tiny=False):
     xi = np.asarray(xi, dtype=float)
     if not np.all(np.isfinite(got)):
@@ -410,6 +426,9 @@ def _exp_hint(got, xi, tiny=False):
         return MIRROR_HINT
     if _is_rho(got, xi) and not tiny:
         return FORGETS_V_HINT
+    short = _one_term_series_hint(got, xi)
+    if short:
+        return short
     if np.allclose(got[:3, :3], _exp(xi)[:3, :3], atol=1e-8, rtol=0.0):
         return SERIES_HINT_V if tiny else \
             "the rotation block is right; check V (its two coefficients and the sign of the W term)"

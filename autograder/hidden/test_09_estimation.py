@@ -468,10 +468,15 @@ def test_gyro_constant_rate_every_decade(student):
 
 @exercise("integrate_gyro", weight=1)
 def test_gyro_edge_cases(student):
-    """no samples returns R0; one sample is R0 Exp(ω dt); 2000 samples stay a rotation to 1e-9"""
+    """no samples returns R0 (an ndarray, also for R0 given as a list); one sample is R0 Exp(ω dt); 2000 samples
+    stay a rotation to 1e-9"""
     R0 = random_rotations(1, 9520)[0]
     got = expect_array(student.integrate_gyro(R0, np.zeros((0, 3)), 0.01), (3, 3), "integrate_gyro with no samples")
     expect_close(got, R0, 1e-15, "integrate_gyro with no samples", "with no samples the attitude stays R0")
+    from_list = student.integrate_gyro(R0.tolist(), np.zeros((0, 3)), 0.01)
+    expect(isinstance(from_list, np.ndarray), f"integrate_gyro with R0 as a list and no samples returned a "
+           f"{type(from_list).__name__}, not an ndarray", "start from a float array, R = np.array(R0, dtype=float): "
+           "the docstring promises an ndarray even when there is nothing to integrate")
     omega = np.array([[0.3, -2.0, 1.1]])
     got = expect_array(student.integrate_gyro(R0, omega, 0.05), (3, 3), "integrate_gyro with one sample")
     expect_close(got, R0 @ _exp(0.05 * omega[0]), 1e-14, "integrate_gyro with one sample",

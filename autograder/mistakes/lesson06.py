@@ -242,6 +242,37 @@ def right_jacobian_inv_so3(w):
 def right_jacobian_inv_so3(w):
     return np.eye(3) + 0.5 * skew(w)
 ''', hint='only the first-order part', public_hint='only the first-order part'),
+    Mistake("right_jacobian_one_term_below_1e_2", "right_jacobian_so3",
+            "the one-term series I - [w]×/2 + [w]×²/6 below 1e-2 (off by 4e-8 just below it)", '''
+def right_jacobian_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-2:
+        return np.eye(3) - W / 2 + W @ W / 6
+    return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+''', hint='one-term series I - [w]×/2 + [w]×²/6', public_hint='a one-term series is off by about θ³/24'),
+    Mistake("right_jacobian_inv_one_term_below_1e_2", "right_jacobian_inv_so3",
+            "the one-term series c = 1/12 below 1e-2", '''
+def right_jacobian_inv_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    c = 1 / 12 if theta < 1e-2 else 1 / theta**2 - (1 + np.cos(theta)) / (2 * theta * np.sin(theta))
+    return np.eye(3) + 0.5 * W + c * W @ W
+''', hint='one-term series I + [w]×/2 + [w]×²/12', public_hint='the one-term c = 1/12 is off'),
+    Mistake("quat_boxplus_shortcut_below_1e_3", "quat_boxplus",
+            "q ⊗ [1, δ/2], normalised, used below 1e-3 (off by 4e-11 just below it)", '''
+def quat_boxplus(q, d):
+    d = np.asarray(d, dtype=float)
+    angle = np.linalg.norm(d)
+    if angle < 1e-3:
+        dq = np.concatenate([[1.0], 0.5 * d])
+    else:
+        dq = np.concatenate([[np.cos(angle / 2)], np.sin(angle / 2) * d / angle])
+    result = quat_product(q, dq)
+    return result / np.linalg.norm(result)
+''', hint='keep that shortcut for |δ| below about 1e-8', public_hint='exact to rounding only below about 1e-8'),
     Mistake('boxplus_left_adjoint_with_R', 'boxplus_left',
             'moves Exp(δ) to the right of R with R δ instead of Rᵀ δ', '''
 def boxplus_left(R, d):

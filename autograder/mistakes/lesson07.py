@@ -3,6 +3,22 @@
 from . import Alternative, Mistake
 
 MISTAKES = [
+    Mistake("exp_se3_one_term_below_1e_2", "exp_se3",
+            "V's one-term series I + W/2 + W²/6 below 1e-2 (off by 4e-8 |rho| just below it)", '''
+def exp_se3(xi):
+    xi = np.asarray(xi, dtype=float)
+    rho, phi = xi[:3], xi[3:]
+    theta = np.linalg.norm(phi)
+    W = skew(phi)
+    if theta < 1e-2:
+        V = np.eye(3) + W / 2 + W @ W / 6
+    else:
+        V = np.eye(3) + (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+    T = np.eye(4)
+    T[:3, :3] = Exp(phi)
+    T[:3, 3] = V @ rho
+    return T
+''', hint="V's one-term series I + W/2 + W²/6", public_hint="keep its θ² and θ⁴ terms"),
     Mistake("make_pose_t_in_bottom_row", "make_pose", "puts t in the bottom row (the transposed layout)", '''
 def make_pose(R, t):
     T = np.eye(4)

@@ -191,6 +191,13 @@ def quat_power(q, t):
     return np.concatenate([[np.cos(t * alpha)], np.sin(t * alpha) * q[1:] / s])
 ''', hint="guard the division", public_hint="guard the division"),
     # ------------------------------------------------------------ integrate_gyro
+    Mistake("gyro_no_copy", "integrate_gyro", "R = R0 with no conversion: no samples hands back the caller's list", '''
+def integrate_gyro(R0, omegas_b, dt):
+    R = R0
+    for omega in np.asarray(omegas_b, dtype=float).reshape(-1, 3):
+        R = R @ Exp(omega * dt)
+    return R
+''', hint='the docstring promises an ndarray', public_hint='R0 itself is never handed back'),
     Mistake("gyro_world_side", "integrate_gyro", "R ← Exp(ω_b dt) R: body rates used as world rates", '''
 def integrate_gyro(R0, omegas_b, dt):
     R = np.array(R0, dtype=float)

@@ -284,3 +284,28 @@ def jacobian_error_allowed(lecture_error, exact):
     """
     exact = np.asarray(exact, dtype=float)
     return 2.0 * float(lecture_error) + 1e-8 * (1.0 + float(np.max(np.abs(exact))))
+
+
+# --- lessons 05-09 ---
+FLOAT32_HINT = ("an error of single precision's size (float32 keeps about 7 digits): keep every step in float64, "
+                "e.g. np.asarray(x, dtype=float), never dtype=np.float32")
+
+
+def single_precision_error(got, expected):
+    """True when ``got`` misses ``expected`` by float32's rounding: 1e-9 … 1e-5 of the largest entry.
+
+    A float64 answer is off by about 1e-16 of that size; a slip in a formula, by
+    far more than 1e-5 at a generic input.
+
+    Examples
+    --------
+    >>> x = np.array([0.3, -1.7, 2.9])
+    >>> single_precision_error(x.astype(np.float32), x), single_precision_error(x + 1e-15, x)
+    (True, False)
+    """
+    got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
+    if got.shape != expected.shape or not np.all(np.isfinite(got)):
+        return False
+    size = max(1.0, float(np.max(np.abs(expected)))) if expected.size else 1.0
+    error = float(np.max(np.abs(got - expected))) if got.size else 0.0
+    return 1e-9 * size <= error <= 1e-5 * size

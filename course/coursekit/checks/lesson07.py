@@ -10,10 +10,11 @@ once; ``tests/test_public_check_constants_lesson07.py`` recomputes them).
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close
-from ..lie import Exp
+from ..diagnose import FLOAT32_HINT, close, single_precision_error
+from ..lie import Exp, skew
 from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape  # noqa: F401
 from .lesson01 import SQUARE_BATCH_HINT
+from .lesson06 import DECADE_ANGLES, DECADE_AXIS, JR_DECADES
 
 # A quarter turn about z (x goes to y) followed by a shift of (1, 2, 3) m, written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -43,6 +44,24 @@ def _first_match(got, candidates):
         if close(got, candidate, 1e-9):
             return reason, hint
     return None
+
+
+# A generic pose and generic points: none of their numbers is exact in float32, so an answer that drops to
+# single precision anywhere shows an error of about 1e-8 instead of 1e-16.
+R_GENERIC = Exp([0.4, -0.7, 1.1])
+T_GENERIC = np.vstack([np.column_stack([R_GENERIC, [0.3, -1.7, 2.9]]), [0.0, 0.0, 0.0, 1.0]])
+T_GENERIC_2 = np.vstack([np.column_stack([Exp([-1.3, 0.2, 0.6]), [-2.1, 0.7, 1.3]]), [0.0, 0.0, 0.0, 1.0]])
+P_GENERIC = np.array([[0.3, -1.1, 2.7], [1.9, 0.6, -0.4], [-2.2, 1.3, 0.1], [0.7, 0.7, -3.1]])
+
+
+def require_exact(got, expected, what, tol=1e-12, hint=None):
+    """:class:`Mismatch` unless ``got`` matches ``expected`` to ``tol`` (times its size); float32 named as such."""
+    got = np.asarray(got, dtype=float)
+    size = max(1.0, float(np.max(np.abs(expected))))
+    if got.shape == np.shape(expected) and np.max(np.abs(got - expected)) <= tol * size:
+        return
+    raise Mismatch(f"{what} is {off_by(got, expected)} from the exact value (tolerance {tol * size:.1g})",
+                   FLOAT32_HINT if single_precision_error(got, expected) else hint)
 
 
 # ---------------------------------------------------------------- make_pose
@@ -79,6 +98,12 @@ def _(make_pose):
     require_same_with_lists(make_pose, (QUARTER_TURN_Z, SHIFT), (4, 4), "make_pose")
 
 
+@public_check("make_pose", "a generic R and t come back with every digit (float64 kept)")
+def _(make_pose):
+    got = require_shape(make_pose(R_GENERIC, T_GENERIC[:3, 3]), (4, 4), "make_pose(R, t)")
+    require_exact(got, T_GENERIC, "make_pose(R, t)", tol=0.0, hint="T = [[R, t], [0, 0, 0, 1]], copied exactly")
+
+
 # ---------------------------------------------------------------- to_homogeneous / from_homogeneous
 @public_check("to_homogeneous", "appends a 1 to one point: shape (3,) → (4,)")
 def _(to_homogeneous):
@@ -110,6 +135,13 @@ def _(to_homogeneous):
         raise Mismatch(f"got {fmt(got)}", "the 1 goes last: [x, y, z] becomes [x, y, z, 1]")
     if not close(got, [[1.0, 2.0, 3.0, 1.0], [-4.0, 0.5, 0.0, 1.0]], 1e-12):
         raise Mismatch(f"got {fmt(got)}", "each row should be the point followed by a 1")
+
+
+@public_check("to_homogeneous", "generic rows come back with every digit, a 1 appended (float64 kept)")
+def _(to_homogeneous):
+    got = require_shape(to_homogeneous(P_GENERIC), (4, 4), "to_homogeneous(P) for 4 points")
+    require_exact(got, np.column_stack([P_GENERIC, np.ones(4)]), "to_homogeneous(P)", tol=0.0,
+                  hint="each row [x, y, z] becomes [x, y, z, 1], copied exactly")
 
 
 @public_check("from_homogeneous", "divides by the last coordinate: [2, 4, 6, 2] → [1, 2, 3]")
@@ -158,6 +190,14 @@ def _(from_homogeneous):
         raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)}",
                        _dehomogeneous_mistake(got, DEHOMOGENEOUS_SLIPS_ROWS) or
                        "divide each row by its own last coordinate (P_h[..., -1:] keeps the shape)")
+
+
+@public_check("from_homogeneous", "generic rows with a last coordinate of 0.7 are divided to 1e-15 (float64 kept)")
+def _(from_homogeneous):
+    P_h = 0.7 * np.column_stack([P_GENERIC, np.ones(4)])
+    got = require_shape(from_homogeneous(P_h), (4, 3), "from_homogeneous(P_h) for 4 points")
+    require_exact(got, P_GENERIC, "from_homogeneous(P_h)", tol=1e-15,
+                  hint="divide the first three coordinates of each row by its last one")
 
 
 # ---------------------------------------------------------------- transform_points
@@ -209,6 +249,13 @@ def _(transform_points):
                        found[1] if found else "p_a = R p_b + t")
 
 
+@public_check("transform_points", "a generic pose moves 4 generic points to 1e-12 (float64 kept)")
+def _(transform_points):
+    got = require_shape(transform_points(T_GENERIC, P_GENERIC), (4, 3), "transform_points(T, P) for 4 points")
+    require_exact(got, P_GENERIC @ R_GENERIC.T + T_GENERIC[:3, 3], "transform_points(T, P)",
+                  hint="p_a = R p_b + t for every row")
+
+
 # ---------------------------------------------------------------- pose_compose
 @public_check("transform_points", "accepts plain lists")
 def _(transform_points):
@@ -241,6 +288,12 @@ def _(pose_compose):
         raise Mismatch(*found)
     raise Mismatch(f"pose_compose(T_ab, T_bc) @ p differs from T_ab @ (T_bc @ p) "
                    f"({off_by(T_ac @ p_c, T_QUARTER @ (T_QUARTER_X @ p_c))})", "T_ac = T_ab @ T_bc")
+
+
+@public_check("pose_compose", "two generic poses compose to 1e-12 (float64 kept)")
+def _(pose_compose):
+    got = require_shape(pose_compose(T_GENERIC, T_GENERIC_2), (4, 4), "pose_compose(T_ab, T_bc)")
+    require_exact(got, T_GENERIC @ T_GENERIC_2, "pose_compose(T_ab, T_bc)", hint="T_ac = T_ab @ T_bc")
 
 
 # ---------------------------------------------------------------- pose_inverse
@@ -292,6 +345,13 @@ def _(pose_inverse):
         found = _inverse_mistake(got, T_QUARTER_X, INVERSE_SLIPS_QUARTER_X)
         raise Mismatch(f"got {fmt((got @ (T_QUARTER_X @ p))[:3])} back instead of {fmt(p[:3])}",
                        found[1] if found else "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
+
+
+@public_check("pose_inverse", "a generic pose: T T⁻¹ = I to 1e-12 (float64 kept), and plain lists are accepted")
+def _(pose_inverse):
+    got = require_shape(pose_inverse(T_GENERIC), (4, 4), "pose_inverse(T)")
+    require_exact(T_GENERIC @ got, np.eye(4), "T @ pose_inverse(T)", hint="T⁻¹ = [[Rᵀ, -Rᵀ t], [0, 0, 0, 1]]")
+    require_same_with_lists(pose_inverse, (T_GENERIC,), (4, 4), "pose_inverse(T)")
 
 
 # ---------------------------------------------------------------- exp_se3
@@ -396,6 +456,52 @@ def _(exp_se3):
     raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the pose is {off_by(T, expected)} (allowed 5e-11)", hint)
 
 
+RHO_DECADES = np.array([30.0, -20.0, 35.0])             # |rho| = 50.2
+
+
+def _decade_pose(theta):
+    """The twist [rho, θ u] at an angle of JR_DECADES and its pose, built from the stored V coefficients:
+    V = I + a [phi]× + b [phi]×² (V is the left Jacobian, Jr(-phi))."""
+    a, b, _ = JR_DECADES[theta]
+    phi = theta * DECADE_AXIS
+    W = skew(phi)
+    T = np.eye(4)
+    T[:3, :3] = Exp(phi)
+    T[:3, 3] = (np.eye(3) + a * W + b * W @ W) @ RHO_DECADES
+    return np.concatenate([RHO_DECADES, phi]), T
+
+
+def _decade_hint(theta, errors, single, what):
+    """Name the cause of a miss at every decade: float32 at θ = 0.97, a cancelling closed form (errors grow as θ
+    shrinks), or a series too short for its threshold (errors grow with θ)."""
+    if theta == DECADE_ANGLES[0]:
+        return FLOAT32_HINT if single else what
+    failing = [t for t in DECADE_ANGLES if errors[t] > 0]
+    if len(failing) > 1 and errors[failing[-1]] > errors[failing[0]]:
+        return ("the closed form cancels at small angles (it keeps fewer digits as θ shrinks): below θ = 1e-2 use "
+                "the series of the coefficients")
+    return (f"below your small-angle threshold the series is too short for θ = {theta:.2g}: keep its θ² and θ⁴ "
+            "terms, or move the threshold down")
+
+
+@public_check("exp_se3", "exact to 5e-14 |rho| just below each power of ten, |phi| = 0.97 … 9.7e-9, |rho| = 50")
+def _(exp_se3):
+    tol = 5e-14 * np.linalg.norm(RHO_DECADES)
+    errors, first = {}, None
+    for theta in DECADE_ANGLES:
+        xi, expected = _decade_pose(theta)
+        T = require_shape(exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {theta:.2g}", nan_hint=lambda _: SERIES_NAN_HINT_V)
+        error = np.max(np.abs(T - expected))
+        errors[theta] = error if error > tol else 0.0
+        if error > tol and first is None:
+            first = (theta, error, single_precision_error(T, expected))
+    if first:
+        theta, error, single = first
+        raise Mismatch(f"at |phi| = {theta:.2g}, |rho| = 50 the pose is off by {error:.1e} (tolerance {tol:.1g})",
+                       _decade_hint(theta, errors, single, "T = [[Exp(phi), V(phi) rho], [0, 1]] with "
+                                    "V = I + (1 - cos θ)/θ² W + (θ - sin θ)/θ³ W²"))
+
+
 # ---------------------------------------------------------------- log_se3
 @public_check("log_se3", "log_se3(I) = 0 (no NaN at zero angle)")
 def _(log_se3):
@@ -467,3 +573,23 @@ def _log_mistake(got, T, xi, rho_c_constant=None):
         return ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use "
                 "c(θ) = (1 - (θ/2) cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
     return None
+
+
+@public_check("log_se3", "exact to 5e-14 |rho| just below each power of ten, |phi| = 0.97 … 9.7e-9, |rho| = 50; "
+              "plain lists accepted")
+def _(log_se3):
+    tol = 5e-14 * np.linalg.norm(RHO_DECADES)
+    errors, first = {}, None
+    for theta in DECADE_ANGLES:
+        xi, T = _decade_pose(theta)
+        got = require_shape(log_se3(T), (6,), f"log_se3 at |phi| = {theta:.2g}", nan_hint=lambda _: SERIES_HINT_C)
+        error = np.max(np.abs(got - xi))
+        errors[theta] = error if error > tol else 0.0
+        if error > tol and first is None:
+            first = (theta, error, single_precision_error(got, xi))
+    if first:
+        theta, error, single = first
+        raise Mismatch(f"at |phi| = {theta:.2g}, |rho| = 50 the twist is off by {error:.1e} (tolerance {tol:.1g})",
+                       _decade_hint(theta, errors, single, "xi = [V(phi)⁻¹ t, phi] with phi = Log(R) and "
+                                    "V⁻¹ = I - W/2 + (1 - (θ/2) cot(θ/2))/θ² W²"))
+    require_same_with_lists(log_se3, (_decade_pose(0.97)[1],), (6,), "log_se3(T)")

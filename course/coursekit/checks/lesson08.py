@@ -10,9 +10,9 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close, explains, rotation_problem
+from ..diagnose import FLOAT32_HINT, close, explains, rotation_problem, single_precision_error
 from ..lie import Exp, Log
-from .common import require_rotation, require_shape
+from .common import require_rotation, require_same_with_lists, require_shape
 
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 # Four points that are not coplanar, and their images under the quarter turn (rows: q_i = R p_i).
@@ -61,7 +61,7 @@ def _(align_svd):
     _rotation_of(got, "align_svd(P, Q)")
 
 
-@public_check("align_svd", "returns a rotation (det = +1), never a reflection, for mirrored data")
+@public_check("align_svd", "returns a rotation (det = +1), never a reflection, for mirrored data: the best one")
 def _(align_svd):
     # mirrored, and moved a little off any rigid image so that no matrix fits exactly
     mirrored = TURNED * np.array([1.0, 1.0, -1.0]) + 0.01 * np.array(
@@ -72,6 +72,35 @@ def _(align_svd):
     if det < 0:
         raise Mismatch(f"det = {det:.3f}: a reflection", _svd_hint(got, POINTS, mirrored, best))
     _rotation_of(got, "align_svd(P, Q)", _svd_hint(got, POINTS, mirrored, best))
+    if not close(got, best, 1e-9):
+        U, _, Vt = np.linalg.svd(mirrored.T @ POINTS)
+        flipped_rows = np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ U @ Vt
+        hint = ("the sign d belongs to the last column of U (the direction of the smallest singular value): "
+                "U @ diag(1, 1, d) @ Vᵀ, with the diagonal on the right of U, not on its left"
+                if _explains(got, flipped_rows, best) else _svd_hint(got, POINTS, mirrored, best))
+        raise Mismatch(f"a rotation, but not the best one: its cost is {_cost(got, POINTS, mirrored):.6g}, the best "
+                       f"{_cost(best, POINTS, mirrored):.6g}", hint)
+
+
+# A generic turn and five generic points, none of their numbers exact in float32 (exact data: q_i = R p_i).
+R_GENERIC = Exp([0.9, -0.4, 1.3])
+P_GENERIC = np.array([[0.3, -1.1, 2.7], [1.9, 0.6, -0.4], [-2.2, 1.3, 0.1], [0.7, 0.7, -3.1], [1.1, -2.3, 0.9]])
+Q_GENERIC = P_GENERIC @ R_GENERIC.T
+
+
+def _require_generic_turn(got, what):
+    error = np.max(np.abs(got - R_GENERIC))
+    if error > 1e-12:
+        raise Mismatch(f"{what} is off by {error:.1e} from the turn that maps P onto Q exactly (tolerance 1e-12)",
+                       FLOAT32_HINT if single_precision_error(got, R_GENERIC) else None)
+
+
+@public_check("align_svd", "exact data from a generic turn: recovers it to 1e-12 (float64 kept); plain lists "
+              "accepted")
+def _(align_svd):
+    got = require_shape(align_svd(P_GENERIC, Q_GENERIC), (3, 3), "align_svd(P, Q)")
+    _require_generic_turn(got, "align_svd(P, Q)")
+    require_same_with_lists(align_svd, (P_GENERIC, Q_GENERIC), (3, 3), "align_svd(P, Q)")
 
 
 # ---------------------------------------------------------------- align_gauss_newton
@@ -121,6 +150,30 @@ def _(align_gauss_newton):
         raise Mismatch(f"one step only took the cost from {before:.3g} to {after:.3g}", hint)
 
 
+@public_check("align_gauss_newton", "exact data from a generic turn: 10 iterations from R0 = I recover it to 1e-12 "
+              "(float64 kept); plain lists accepted")
+def _(align_gauss_newton):
+    got = require_shape(align_gauss_newton(P_GENERIC, Q_GENERIC, np.eye(3), iters=10), (3, 3),
+                        "align_gauss_newton(P, Q, I, iters=10)")
+    _require_generic_turn(got, "align_gauss_newton(P, Q, I, iters=10)")
+    require_same_with_lists(lambda P, Q, R0: align_gauss_newton(P, Q, R0, iters=10),
+                            (P_GENERIC, Q_GENERIC, np.eye(3)), (3, 3), "align_gauss_newton(P, Q, R0, iters=10)")
+
+
+@public_check("align_gauss_newton", "iters counts the steps: iters=1 twice in a row equals iters=2")
+def _(align_gauss_newton):
+    noisy = Q_GENERIC + 0.05 * np.array([[1.0, -2.0, 0.0], [0.0, 1.0, 2.0], [-1.0, 0.0, 1.0], [2.0, 1.0, -1.0],
+                                         [0.5, -0.5, 1.5]])
+    R0 = Exp([0.3, 1.2, -0.8])
+    once = require_shape(align_gauss_newton(P_GENERIC, noisy, R0, iters=1), (3, 3), "align_gauss_newton(..., iters=1)")
+    twice = require_shape(align_gauss_newton(P_GENERIC, noisy, once, iters=1), (3, 3),
+                          "align_gauss_newton(..., iters=1) from that result")
+    both = require_shape(align_gauss_newton(P_GENERIC, noisy, R0, iters=2), (3, 3), "align_gauss_newton(..., iters=2)")
+    if not close(twice, both, 1e-12):
+        raise Mismatch(f"two calls with iters=1 and one with iters=2 differ by {np.max(np.abs(twice - both)):.2g}",
+                       "do exactly iters updates R ← R Exp(δ), starting from R0: for _ in range(iters)")
+
+
 # ---------------------------------------------------------------- rotation_mean
 def _mean_hint(M, Rs, truth=None):
     """The slip behind a wrong mean M (known to be wrong): compared with each slip's value, relative to the
@@ -159,12 +212,14 @@ def _(rotation_mean):
                        _mean_hint(got, [A, B], midpoint))
 
 
-@public_check("rotation_mean", "the residuals balance at the mean: Σ Log(Mᵀ R_i) ≈ 0")
+@public_check("rotation_mean", "the residuals balance at the mean: |Σ Log(Mᵀ R_i)| / N below 1e-11; a plain list "
+              "of rotations accepted")
 def _(rotation_mean):
     rng = np.random.default_rng(0)
     centre = Exp([0.5, -0.2, 0.9])
     Rs = np.array([centre @ Exp(0.5 * rng.normal(size=3)) for _ in range(12)])
     M = _rotation_of(rotation_mean(Rs), "rotation_mean(Rs)")
     imbalance = np.linalg.norm(sum(Log(M.T @ R) for R in Rs)) / len(Rs)
-    if imbalance > 1e-7:
-        raise Mismatch(f"|Σ Log(Mᵀ R_i)| / N = {imbalance:.2g}", _mean_hint(M, Rs))
+    if imbalance > 1e-11:
+        raise Mismatch(f"|Σ Log(Mᵀ R_i)| / N = {imbalance:.2g} (tolerance 1e-11)", _mean_hint(M, Rs))
+    require_same_with_lists(rotation_mean, (Rs,), (3, 3), "rotation_mean(Rs)")

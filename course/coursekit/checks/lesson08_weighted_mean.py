@@ -80,3 +80,16 @@ def _(weighted_rotation_mean):
 def _(weighted_rotation_mean):
     Rs = _rotations()
     require_same_with_lists(weighted_rotation_mean, (Rs, WEIGHTS), (3, 3), "weighted_rotation_mean(Rs, w)")
+
+
+@public_check("weighted_rotation_mean", "generic weights 0.3, 1.7, 2.9: the weighted residuals balance to 1e-11 "
+                                        "(float64 kept)")
+def _(weighted_rotation_mean):
+    Rs = _rotations()
+    weights = np.array([0.3, 1.7, 2.9])
+    M = _mean_of(weighted_rotation_mean, Rs, weights, "weighted_rotation_mean(Rs, [0.3, 1.7, 2.9])")
+    imbalance = np.linalg.norm(sum(w * Log(M.T @ R) for w, R in zip(weights, Rs))) / weights.sum()
+    if imbalance > 1e-11:
+        raise Mismatch(f"|Σ w_i Log(Mᵀ R_i)| / Σ w_i = {imbalance:.2g} (tolerance 1e-11)",
+                       "iterate until the step |δ| is below about 1e-12, with the weights in float64: the residuals "
+                       "Log(Mᵀ R_i) are in M's body frame, so the step goes on the right, M ← M Exp(δ)")

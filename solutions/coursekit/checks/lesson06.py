@@ -10,9 +10,10 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from ..checking import Mismatch, public_check
-from ..diagnose import JACOBIAN_STEP_HINT, close, jacobian_error_allowed, rotation_problem, shape_problem
+from ..diagnose import (FLOAT32_HINT, JACOBIAN_STEP_HINT, LISTS_HINT, close, jacobian_error_allowed, rotation_problem,
+                        shape_problem, single_precision_error)
 from ..lie import Exp, Log, quat_product, skew
-from .common import fmt, off_by, require_shape
+from .common import fmt, off_by, require_same_with_lists, require_shape
 
 # A quarter turn about z (x goes to y) and about x (y goes to z), written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -213,6 +214,11 @@ def _(boxminus):
     raise Mismatch("R_b @ Exp(boxminus(R_a, R_b)) is not R_a", "boxminus(R_a, R_b) = Log(R_bᵀ R_a)")
 
 
+@public_check("boxminus", "accepts plain lists")
+def _(boxminus):
+    require_same_with_lists(boxminus, (R_SAMPLE, Exp([-0.5, 0.2, 0.9])), (3,), "boxminus(R_a, R_b)")
+
+
 # ---------------------------------------------------------------- quat_boxplus
 @public_check("quat_boxplus", "identity ⊞ (0, 0, π/2) is the quarter turn [cos 45°, 0, 0, sin 45°]")
 def _(quat_boxplus):
@@ -277,6 +283,45 @@ def _(quat_boxplus):
     if not (close(same, q, 1e-12) or close(same, -q, 1e-12)):
         raise Mismatch(f"quat_boxplus(q, 0) returned {fmt(same)}",
                        "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle")
+
+
+# Angles just below each power of ten, from 0.97 down to 9.7e-9: where small-angle thresholds sit, so a series
+# that is too short for its threshold shows its largest error there. The axis is generic.
+DECADE_ANGLES = (0.97, 0.097, 0.0097, 0.00097, 9.7e-05, 9.7e-06, 9.7e-07, 9.7e-08, 9.7e-09)
+DECADE_AXIS = np.array([2.0, -1.0, 2.0]) / 3.0
+Q_GENERIC = np.array([0.5, -0.3, 0.7, 0.4]) / np.linalg.norm([0.5, -0.3, 0.7, 0.4])
+
+
+def _exp_q(d):
+    """Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|] for |δ| > 0 (the cosine and sine keep every digit)."""
+    angle = np.linalg.norm(d)
+    return np.concatenate([[np.cos(angle / 2.0)], np.sin(angle / 2.0) * np.asarray(d) / angle])
+
+
+def _series_hint(theta, float32_at_large, formula, closed_form):
+    """Who to blame for a miss at angle ``theta``: at θ = 0.97, above every small-angle threshold, float32 when the
+    miss has rounding's size, else the formula itself (``closed_form``); below, the small-angle branch (a series
+    too short for its threshold)."""
+    if theta == DECADE_ANGLES[0]:
+        return FLOAT32_HINT if float32_at_large else closed_form
+    return (f"below your small-angle threshold the series is too short for θ = {theta:.2g}: {formula}; or move the "
+            "threshold down to where the short series is exact to rounding")
+
+
+@public_check("quat_boxplus", "exact to 4e-15 just below each power of ten, |δ| = 0.97 … 9.7e-9 (sign of q aside)")
+def _(quat_boxplus):
+    for theta in DECADE_ANGLES:
+        d = theta * DECADE_AXIS
+        got = require_shape(quat_boxplus(Q_GENERIC, d), (4,), f"quat_boxplus(q, δ) at |δ| = {theta:.2g}")
+        expected = quat_product(Q_GENERIC, _exp_q(d))
+        expected = expected if np.dot(got, expected) >= 0 else -expected
+        error = np.max(np.abs(got - expected))
+        if error > 4e-15:
+            large = theta == DECADE_ANGLES[0] and single_precision_error(got, expected)
+            raise Mismatch(f"off by {error:.1e} at |δ| = {theta:.2g} (tolerance 4e-15)", _series_hint(
+                theta, large, "[1, δ/2] (normalised or not) is off by about |δ|³/24, exact to rounding only below "
+                "about 1e-8; use Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|] above that",
+                "q ⊞ δ = q ⊗ Exp_q(δ), with Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]"))
 
 
 # ---------------------------------------------------------------- numerical_jacobian
@@ -388,7 +433,8 @@ def _wavy_jacobian(x):
 
 # How far the lecture's forward steps land from _wavy_jacobian at these points, measured once
 # (numbers, not the rule's code: the public checks never carry an answer).
-_LECTURE_ERRORS = ((np.array([1.2, -3.0, 2.5]), 1.68e-4), (np.array([0.0, 0.5, -1.0]), 7.58e-6))
+_LECTURE_ERRORS = ((np.array([1.2, -3.0, 2.5]), 1.68e-4), (np.array([0.0, 0.5, -1.0]), 7.58e-6),
+                   (np.zeros(3), 1.25e-7))                     # at 0 every step is the floor 1e-6
 
 
 @public_check("numerical_jacobian", "at least as accurate as the lecture's forward steps δ_j = max(|1e-4 x_j|, 1e-6)")
@@ -448,6 +494,34 @@ def _(numerical_jacobian):
                                   "(f(boxplus(x, h e_j)) - f(x)) / h with a small h (e.g. 1e-6)"))
 
 
+P_GENERIC = np.array([0.7, -1.3, 2.2])                  # a point with three nonzero coordinates
+
+
+@public_check("numerical_jacobian", "with a boxplus at a generic attitude: all 3 columns of the Jacobian of R ↦ R p, "
+              "to 5e-6 (1 + |p|)")
+def _(numerical_jacobian):
+    def rotate(R):
+        return np.asarray(R, dtype=float) @ P_GENERIC
+
+    def plus(R, d):                         # scipy's composition, the trusted oracle of a right boxplus
+        return (Rotation.from_matrix(np.asarray(R, dtype=float)) * Rotation.from_rotvec(d)).as_matrix()
+
+    got = require_shape(numerical_jacobian(rotate, R_SAMPLE, plus), (3, 3))
+    exact = -R_SAMPLE @ skew(P_GENERIC)                  # the analytic Jacobian (jacobian_rotate_point)
+    allowed = 5e-6 * (1.0 + np.linalg.norm(P_GENERIC))
+    if np.max(np.abs(got - exact)) <= allowed:
+        return
+    missing = [j for j in range(3) if np.all(got[:, j] == 0.0)]
+    if missing:
+        hint = (f"column {missing[0]} is all zeros: perturb along each of the 3 directions, "
+                "j = 0, 1 and 2 (range(3))")
+    else:
+        hint = _step_hint(got, exact, numerical_jacobian, rotate, R_SAMPLE, plus,
+                          fallback="column j: (f(boxplus(x, h e_j)) - f(x)) / h with h near 1e-6; keep f's values "
+                          "in float64 (their difference is only about h |J|, float32 keeps 7 digits)")
+    raise Mismatch(f"the Jacobian is {off_by(got, exact)} from the exact one (allowed {allowed:.2g})", hint)
+
+
 # ---------------------------------------------------------------- jacobian_rotate_point
 @public_check("jacobian_rotate_point", "R = I, p = x: turning about z moves x towards y, about y towards -z")
 def _(jacobian_rotate_point):
@@ -491,6 +565,17 @@ def _(jacobian_rotate_point):
             elif close(J, JRP_FACTORS_SWAPPED, 1e-9):
                 hint = "the factors are in the wrong order: -R [p]×, not -[p]× R"
             raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²", hint)
+
+
+@public_check("jacobian_rotate_point", "exact (to 1e-12) at a generic attitude and point, and accepts plain lists")
+def _(jacobian_rotate_point):
+    got = require_shape(jacobian_rotate_point(R_SAMPLE, P_GENERIC), (3, 3), "jacobian_rotate_point(R, p)")
+    exact = -R_SAMPLE @ skew(P_GENERIC)
+    if not close(got, exact, 1e-12):
+        raise Mismatch(f"jacobian_rotate_point(R, p) is {off_by(got, exact)} from the exact Jacobian",
+                       FLOAT32_HINT if single_precision_error(got, exact) else
+                       "each column is d(R Exp(δ) p)/dδ_j at δ = 0, exactly: no finite step, no rounding to float32")
+    require_same_with_lists(jacobian_rotate_point, (R_SAMPLE, P_GENERIC), (3, 3), "jacobian_rotate_point(R, p)")
 
 
 # ---------------------------------------------------------------- right_jacobian_so3
@@ -565,6 +650,62 @@ def _(right_jacobian_so3):
         raise Mismatch(f"for |dw| = 1e-4 the leftover angle is {leftover:.1e} rad, expected below 1e-8", hint)
 
 
+# Jr = I - a [w]× + b [w]×² and Jr⁻¹ = I + [w]×/2 + c [w]×² at θ = 0.97 · 10⁻ᵏ: (a, b, c) to full precision,
+# summed from their series (recomputed by tests/test_public_check_constants_lesson06.py).
+JR_DECADES = {
+    0.97: (0.46200496209974035, 0.15899921073763543, 0.0846701198402391),
+    0.097: (0.49960808127001116, 0.1665882758963716, 0.08334640431713328),
+    0.0097: (0.49999607959562903, 0.16666588258508985, 0.08333346401418164),
+    0.00097: (0.4999999607958346, 0.1666666588258335, 0.08333333464013891),
+    9.7e-05: (0.4999999996079583, 0.16666666658825832, 0.08333333334640139),
+    9.7e-06: (0.4999999999960796, 0.16666666666588256, 0.08333333333346402),
+    9.7e-07: (0.4999999999999608, 0.16666666666665883, 0.08333333333333463),
+    9.7e-08: (0.4999999999999996, 0.16666666666666657, 0.08333333333333334),
+    9.7e-09: (0.5, 0.16666666666666666, 0.08333333333333333),
+}
+
+
+def _every_decade(function, name, expected_of, formula, closed_form, series, first_order):
+    """Compare ``function(θ u)`` with ``expected_of(W, a, b, c)`` to 1e-13 at every angle of JR_DECADES.
+
+    The first miss is reported. Below θ = 0.97 the errors at all the angles name the cause: a series too short
+    for its threshold is off by more at larger angles, a closed form that cancels by more at smaller ones.
+    """
+    errors, identity = {}, {}
+    for theta, (a, b, c) in JR_DECADES.items():
+        w = theta * DECADE_AXIS
+        W = skew(w)
+        given = w.tolist() if theta == 0.097 else w                 # one of them as a plain list
+        got = require_shape(function(given), (3, 3), f"{name} at θ = {theta:.2g}")
+        expected = expected_of(W, a, b, c)
+        errors[theta] = np.max(np.abs(got - expected))
+        identity[theta] = close(got, E, 1e-300)
+        if theta == DECADE_ANGLES[0] and errors[theta] > 1e-13:
+            raise Mismatch(f"{name} is off by {errors[theta]:.1e} at θ = {theta:.2g} (tolerance 1e-13)",
+                           _series_hint(theta, single_precision_error(got, expected), formula, closed_form))
+    failing = [theta for theta in DECADE_ANGLES if errors[theta] > 1e-13]
+    if not failing:
+        return
+    theta = failing[0]
+    seen = f"{name} is off by {errors[theta]:.1e} at θ = {theta:.2g} (tolerance 1e-13)"
+    if identity[theta]:
+        raise Mismatch(seen, f"returned I at θ = {theta:.2g}: the first-order term {first_order} is missing below your "
+                       f"threshold; use the series there, {series}")
+    if len(failing) > 1 and errors[failing[-1]] > errors[theta]:
+        raise Mismatch(seen + f", and by more at smaller angles ({errors[failing[-1]]:.1e} at θ = {failing[-1]:.2g})",
+                       "the closed form cancels at small angles (1 - cos θ, or θ - sin θ, keeps fewer digits as θ "
+                       f"shrinks): below a small-angle threshold use the series, {series}")
+    raise Mismatch(seen, _series_hint(theta, False, formula, closed_form))
+
+
+@public_check("right_jacobian_so3", "exact to 1e-13 just below each power of ten, θ = 0.97 … 9.7e-9 (one as a list)")
+def _(right_jacobian_so3):
+    _every_decade(right_jacobian_so3, "right_jacobian_so3", lambda W, a, b, c: E - a * W + b * W @ W,
+                  "keep the θ² terms, a = 1/2 - θ²/24 and b = 1/6 - θ²/120 (a one-term series is off by about "
+                  "θ³/24)", "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²",
+                  "a = 1/2 - θ²/24, b = 1/6 - θ²/120", "-[w]×/2")
+
+
 # ---------------------------------------------------------------- right_jacobian_inv_so3
 @public_check("right_jacobian_inv_so3", "Jr⁻¹(0) is the identity, with no NaN")
 def _(right_jacobian_inv_so3):
@@ -621,3 +762,11 @@ def _(right_jacobian_inv_so3):
             raise Mismatch(seen, "the [w]× term has the wrong sign: -[w]×/2 belongs to Jr; its inverse has +[w]×/2")
         raise Mismatch(seen, "Jr⁻¹ ≈ I + [w]×/2 + [w]×²/12 at tiny angles: use the series of the [w]×² coefficient "
                        "(1/12 + θ²/720) below a small angle")
+
+
+@public_check("right_jacobian_inv_so3", "exact to 1e-13 just below each power of ten, θ = 0.97 … 9.7e-9 "
+              "(one as a list)")
+def _(right_jacobian_inv_so3):
+    _every_decade(right_jacobian_inv_so3, "right_jacobian_inv_so3", lambda W, a, b, c: E + 0.5 * W + c * W @ W,
+                  "keep the θ² term, c = 1/12 + θ²/720 (the one-term c = 1/12 is off by about θ⁴/720)",
+                  "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²", "c = 1/12 + θ²/720", "+[w]×/2")

@@ -10,6 +10,7 @@ import numpy as np
 from ..checking import Mismatch, public_check
 from ..diagnose import close
 from .common import fmt, off_by, require_same_with_lists, require_shape
+from .lesson07 import T_GENERIC, T_GENERIC_2, require_exact
 
 T_WA = np.array([[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
 T_WB = np.array([[0.0, 0.0, 1.0, 3.0], [1.0, 0.0, 0.0, -1.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
@@ -51,3 +52,9 @@ def _(relative_pose):
 @public_check("relative_pose", "accepts plain lists")
 def _(relative_pose):
     require_same_with_lists(relative_pose, (T_WA, T_WB), (4, 4), "relative_pose(T_wa, T_wb)")
+
+
+@public_check("relative_pose", "two generic poses: T_wa T_ab = T_wb to 1e-12 (float64 kept)")
+def _(relative_pose):
+    got = require_shape(relative_pose(T_GENERIC, T_GENERIC_2), (4, 4), "relative_pose(T_wa, T_wb)")
+    require_exact(T_GENERIC @ got, T_GENERIC_2, "T_wa @ relative_pose(T_wa, T_wb)", hint="T_ab = T_wa⁻¹ T_wb")

@@ -379,11 +379,20 @@ def _(integrate_gyro):
         raise Mismatch(f"after 1000 samples max |RᵀR − I| = {error:.2g}", DRIFT_HINT)
 
 
-@public_check("integrate_gyro", "no samples returns R0; accepts lists; leaves its inputs unchanged")
+GYRO_ARRAY_HINT = ("start from a float array, R = np.array(R0, dtype=float): then no samples still returns an "
+                   "ndarray, and R0 itself is never handed back")
+
+
+@public_check("integrate_gyro", "no samples returns R0, as an array even when R0 is a list; accepts lists; leaves "
+              "its inputs unchanged")
 def _(integrate_gyro):
     got = require_shape(integrate_gyro(QUARTER_X, np.zeros((0, 3)), 0.01), (3, 3), "integrate_gyro with no samples")
     if not close(got, QUARTER_X, 1e-15):
         raise Mismatch("with no samples the attitude must stay R0", "loop over the rows of omegas_b (there may be none)")
+    from_list = integrate_gyro(QUARTER_X.tolist(), np.zeros((0, 3)), 0.01)
+    if not isinstance(from_list, np.ndarray):
+        raise Mismatch(f"with R0 as a list and no samples it returned a {type(from_list).__name__}, not an ndarray",
+                       GYRO_ARRAY_HINT)
     rates = np.array([[0.1, -0.2, 0.3], [0.3, 0.1, -0.1], [0.0, 0.4, 0.2]])
     require_same_with_lists(lambda R0, omegas: integrate_gyro(R0, omegas, 0.1), (QUARTER_X, rates), (3, 3),
                             "integrate_gyro(R0, ω, dt)")
