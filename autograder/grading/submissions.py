@@ -268,8 +268,11 @@ def _name_matches(path, lesson):
     return path.name == lesson.filename or path.name.startswith(lesson.number + "_")
 
 
-def match_lessons(folder, catalog, notebooks=None):
+def match_lessons(folder, catalog, notebooks=None, read=None):
     """Match the notebooks of one student's ``folder`` to ``catalog``'s graded lessons, by content.
+
+    ``read(path)``: how a notebook is read (default :func:`read_submission` inside ``folder``); a caller
+    that reads the chosen notebooks again passes a memoising one, so each file is parsed once.
 
     Returns
     -------
@@ -288,10 +291,11 @@ def match_lessons(folder, catalog, notebooks=None):
         scan = scan_folder(folder)
         notebooks, skipped = scan.files, scan.skipped
     lessons = catalog.graded_lessons
+    read = read or (lambda path: read_submission(path, root=folder))
     readable, unreadable = {}, {}
     for path in notebooks:
         try:
-            readable[path] = _code_cells(read_submission(path, root=folder))
+            readable[path] = _code_cells(read(path))
         except UnreadableNotebook as error:
             unreadable[path] = str(error)
         except Exception as error:  # anything else costs this notebook only

@@ -34,8 +34,8 @@ SHOWN_VIEWS = 3  # side-by-side views per cluster
 
 
 def _side_by_side(findings, pair):
-    first = findings.fingerprints.get((pair.exercise, pair.first))
-    second = findings.fingerprints.get((pair.exercise, pair.second))
+    first = findings.fingerprint(pair.exercise, pair.first)
+    second = findings.fingerprint(pair.exercise, pair.second)
     if first is None or second is None:
         return ""
     left, right = highlighted(first, second)
