@@ -15,8 +15,12 @@ solution: that bar is absolute, since copying the reference is the same
 finding however many students did it. A pair that shares no more with each
 other than each of them shares with the reference (two students who both
 started from the published solution) is explained by it and is not a pair
-finding. Flagged pairs are
-joined into clusters (connected components over all exercises).
+finding. Nor is a pair whose shared code is shorter than :data:`MIN_SHARED`
+fingerprints (about two statements), however large a share of a short answer
+that is: two students who both write the textbook one-line SVD of
+``align_svd`` share that line and little else, and one line cannot tell a copy
+from the lecture's idiom. Flagged pairs are joined into clusters (connected
+components over all exercises).
 
 Examples
 --------
@@ -30,26 +34,29 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from autograder.similarity.fingerprints import fingerprint, longest_coverage, shared_share
+from autograder.similarity.fingerprints import fingerprint, longest_coverage, share_of_smaller, shared_counts
 
 MIN_LENGTH = 40  # normalised characters of an answer outside the stub (a name counts as one)
 PAIR_FLOOR = 0.7  # a pair below this share is never flagged, however unusual for its exercise
 SPREAD = 4.0  # robust z-score above the exercise's median pair score
 MIN_ANSWERS_FOR_SPREAD = 12  # fewer answers than this: the floor alone
 REFERENCE_FLOOR = 0.8  # share of the published solution that makes a reference match
+MIN_SHARED = 60  # fingerprints (12-character k-grams of normalised code) a flagged pair shares at least
 REFERENCE = "reference solution"
 MIN_ANSWERS_FOR_WORKERS = 400  # fewer answers in a class: forking costs more than it saves
 
 
 @dataclass(frozen=True)
 class Pair:
-    """Two answers to ``exercise`` with ``score`` (0..1) at or above the exercise's ``threshold``."""
+    """Two answers to ``exercise`` with ``score`` (0..1) at or above the exercise's ``threshold``; ``shared``:
+    the fingerprints they have in common."""
 
     exercise: str
     first: str
     second: str
     score: float
     threshold: float
+    shared: int = 0
 
 
 @dataclass(frozen=True)
@@ -145,22 +152,24 @@ def score_exercise(exercise, current, past, reference, stub):
     reference_row = index[-1] if has_reference else -1
     is_current = np.array([author in current for author in authors], dtype=bool)
     compared = int(is_current.sum())
-    distinct = shared_share(prints) if prints else np.zeros((0, 0))
+    counts, sizes = shared_counts(prints) if prints else (np.zeros((0, 0), dtype=int), np.zeros(0, dtype=int))
+    distinct = share_of_smaller(counts, sizes)
     reference_scores = distinct[rows, reference_row] if reference_row >= 0 else np.zeros(len(authors))
     matches_reference = reference_scores >= REFERENCE_FLOOR
-    reference_matches = [Pair(exercise, authors[i], REFERENCE, float(reference_scores[i]), REFERENCE_FLOOR)
+    reference_matches = [Pair(exercise, authors[i], REFERENCE, float(reference_scores[i]), REFERENCE_FLOOR,
+                              int(counts[rows[i], reference_row]))
                          for i in np.flatnonzero(matches_reference & is_current)]
     if len(authors) < 2:
         return ExerciseFindings([], reference_matches, PAIR_FLOOR, compared)
     first, second = np.triu_indices(len(authors), k=1)
-    scores = distinct[rows[first], rows[second]]
+    scores, shared = distinct[rows[first], rows[second]], counts[rows[first], rows[second]]
     both_current = is_current[first] & is_current[second]
     explained = scores <= np.minimum(reference_scores[first], reference_scores[second])
     baseline = both_current & ~explained
     threshold = pair_threshold(scores[baseline], len(set(first[baseline]) | set(second[baseline])))
-    wanted = (is_current[first] | is_current[second]) & ~explained & (scores >= threshold)
-    pairs = [Pair(exercise, authors[i], authors[j], float(score), threshold)
-             for i, j, score in zip(first[wanted], second[wanted], scores[wanted])]
+    wanted = (is_current[first] | is_current[second]) & ~explained & (scores >= threshold) & (shared >= MIN_SHARED)
+    pairs = [Pair(exercise, authors[i], authors[j], float(score), threshold, int(common))
+             for i, j, score, common in zip(first[wanted], second[wanted], scores[wanted], shared[wanted])]
     return ExerciseFindings(pairs, reference_matches, threshold, compared)
 
 

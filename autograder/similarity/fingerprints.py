@@ -112,16 +112,16 @@ def _fingerprint(source, boilerplate):
                                fp=io.StringIO(source))
 
 
-def shared_share(fingerprints):
-    """``S[i, j]``: share of the smaller of answers i and j's fingerprints that both have, shape (n, n).
+def shared_counts(fingerprints):
+    """``(C, sizes)``: ``C[i, j]`` fingerprints that answers i and j both have, shape (n, n), and each
+    answer's number of fingerprints, shape (n,).
 
-    One sparse product for all pairs: the answers × fingerprints incidence matrix times its transpose
-    counts the fingerprints every two answers share. The diagonal is 1 for an answer with fingerprints;
-    an answer without any shares nothing.
+    One sparse product for all pairs: the answers × fingerprints incidence matrix times its transpose.
 
     >>> a = fingerprint("def f(x):\\n    y = x * 2\\n    return y + 1\\n")
-    >>> shared_share([a, a]).shape
-    (2, 2)
+    >>> counts, sizes = shared_counts([a, a])
+    >>> counts.shape, bool(counts[0, 1] == sizes[0])
+    ((2, 2), True)
     """
     n = len(fingerprints)
     sizes = np.array([len(fp.hashes) for fp in fingerprints], dtype=np.int64)
@@ -130,10 +130,26 @@ def shared_share(fingerprints):
     columns = columns.ravel()
     incidence = sparse.csr_matrix((np.ones(len(columns), dtype=np.int32), (np.repeat(np.arange(n), sizes), columns)),
                                   shape=(n, max(int(columns.max(initial=0)) + 1, 1)))
-    shared = (incidence @ incidence.T).toarray().astype(float)
+    return (incidence @ incidence.T).toarray(), sizes
+
+
+def share_of_smaller(counts, sizes):
+    """``counts[i, j] / min(sizes[i], sizes[j])`` (0 where an answer has no fingerprint), shape (n, n)."""
     smaller = np.minimum.outer(sizes, sizes).astype(float)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(smaller > 0, shared / np.where(smaller > 0, smaller, 1), 0.0)
+        return np.where(smaller > 0, counts.astype(float) / np.where(smaller > 0, smaller, 1), 0.0)
+
+
+def shared_share(fingerprints):
+    """``S[i, j]``: share of the smaller of answers i and j's fingerprints that both have, shape (n, n).
+
+    The diagonal is 1 for an answer with fingerprints; an answer without any shares nothing.
+
+    >>> a = fingerprint("def f(x):\\n    y = x * 2\\n    return y + 1\\n")
+    >>> shared_share([a, a]).tolist()
+    [[1.0, 1.0], [1.0, 1.0]]
+    """
+    return share_of_smaller(*shared_counts(fingerprints))
 
 
 def highlighted(first, second, limit=6000):
