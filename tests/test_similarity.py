@@ -12,8 +12,13 @@ import pytest
 
 from autograder.lessons.paths import PROJECT_ROOT
 from autograder.lessons.catalog import load_catalog
+from autograder.lessons.reference import answer_sources
+from autograder.mistakes import all_mistakes
+from autograder.similarity import findings as findings_module
 from autograder.similarity.answers import MAX_ANSWER_CHARACTERS, read_class, released_stubs
-from autograder.similarity.findings import PAIR_FLOOR, find_similar, pair_threshold
+from autograder.similarity.findings import (MIN_LENGTH, MIN_SHARED, PAIR_FLOOR, REFERENCE_FLOOR, find_similar,
+                                            pair_threshold)
+from autograder.similarity.fingerprints import fingerprint, shared_counts
 from autograder.similarity.report import similar_answers_html
 from similarity_classes import honest_answers, planted_answers, write_class
 
@@ -110,3 +115,77 @@ def test_a_huge_answer_costs_no_more_than_a_long_one(tmp_path):
     write_class(tmp_path / "class", {"ana": {"quat_multiply": huge}, "bo": {"quat_multiply": source}})
     answers = read_class(tmp_path / "class", load_catalog())
     assert len(answers.by_exercise["quat_multiply"]["ana"]) == MAX_ANSWER_CHARACTERS
+
+
+def _by_exercise(students):
+    found = {}
+    for student, answers in students.items():
+        for exercise, source in answers.items():
+            found.setdefault(exercise, {})[student] = source
+    return found
+
+
+def _pairwise(answers, references, stubs):
+    """The findings worked out the slow, obvious way: every answer fingerprinted on its own, every pair
+    scored by a set intersection in a double loop. ``(flagged pairs, reference matches)`` as sets."""
+    flagged, reference_matches = set(), set()
+    for exercise, by_author in answers.items():
+        stub = stubs.get(exercise, "")
+        prints = {a: fingerprint(s, stub) for a, s in by_author.items() if s.strip() != stub.strip()}
+        prints = {a: fp for a, fp in prints.items() if fp.token_coverage >= MIN_LENGTH}
+        reference = fingerprint(references[exercise], stub) if exercise in references else None
+
+        def share(a, b):
+            return len(a.hashes & b.hashes) / min(len(a.hashes), len(b.hashes)), len(a.hashes & b.hashes)
+
+        to_reference = {a: share(fp, reference)[0] if reference and reference.token_coverage >= MIN_LENGTH else 0.0
+                        for a, fp in prints.items()}
+        reference_matches |= {(exercise, a, round(s, 9)) for a, s in to_reference.items() if s >= REFERENCE_FLOOR}
+        authors = list(prints)
+        scored = [(a, b, *share(prints[a], prints[b])) for i, a in enumerate(authors) for b in authors[i + 1:]]
+        unexplained = [(a, b, s, n) for a, b, s, n in scored if s > min(to_reference[a], to_reference[b])]
+        threshold = pair_threshold([s for _, _, s, _ in unexplained], len({x for p in unexplained for x in p[:2]}))
+        flagged |= {(exercise, a, b, round(s, 9)) for a, b, s, n in unexplained if s >= threshold and n >= MIN_SHARED}
+    return flagged, reference_matches
+
+
+def test_one_pass_finds_what_pairwise_scoring_finds(monkeypatch):
+    """The fast path (each distinct text tokenised once, short answers skipped before tokenising, one sparse
+    product per exercise, exercises in forked workers) finds what scoring every pair by hand finds, on the
+    planted class plus students who hand in the same text as another or the untouched stub."""
+    students, _ = planted_answers()
+    students["twin"] = dict(students["honest1"])  # the same texts as honest1: tokenised once
+    students["twin_of_ring"] = dict(students["ring3"])
+    students["untouched"] = {exercise: source for exercise, source in released_stubs().items()
+                             if exercise in students["honest2"]}
+    answers, references, stubs = _by_exercise(students), answer_sources(), released_stubs()
+    monkeypatch.setattr(findings_module, "MIN_ANSWERS_FOR_WORKERS", 0)  # fork even for this small class
+    for jobs in (1, 2):
+        found = find_similar(answers, references, stubs, jobs=jobs)
+        flagged = {(p.exercise, p.first, p.second, round(p.score, 9)) for c in found.clusters for p in c.pairs}
+        matches = {(p.exercise, p.first, round(p.score, 9)) for p in found.reference_matches}
+        assert (flagged, matches) == _pairwise(answers, references, stubs)
+        assert ("adjoint_se3", "honest1", "twin", 1.0) in flagged or \
+            ("adjoint_se3", "twin", "honest1", 1.0) in flagged
+        assert found.compared["numerical_jacobian"] == len({a for a in answers["numerical_jacobian"]
+                                                            if a != "untouched"})
+
+
+def test_two_short_standard_answers_are_not_a_finding():
+    """Two students who each write the textbook SVD solution of align_svd in two or three lines (one with the
+    reflection case forgotten, one with the correlation matrix transposed, as the sample class's dev and
+    farid do) share its one long line: most of the shorter answer, and nothing else. One shared line cannot
+    tell a copy from the lecture's idiom, so it is not a finding; the same answers with a longer shared
+    body are."""
+    mistakes = all_mistakes()
+    short = {"dev": mistakes["align_svd_transposed"].source, "farid": mistakes["align_svd_reflection"].source}
+    stubs = released_stubs()
+    prints = [fingerprint(source, stubs["align_svd"]) for source in short.values()]
+    counts, sizes = shared_counts(prints)
+    assert counts[0, 1] / sizes.min() >= PAIR_FLOOR and counts[0, 1] < MIN_SHARED  # alike, but one line
+    assert find_similar({"align_svd": short}, answer_sources(), stubs).clusters == []
+    longer = {author: source + "    " + "\n    ".join(["check = np.linalg.norm(P @ np.eye(3) - P, axis=1)",
+                                                         "spread = float(np.sum(check ** 2)) + len(Q)"]) + "\n"
+              for author, source in short.items()}
+    assert [c.members for c in find_similar({"align_svd": longer}, answer_sources(), stubs).clusters] == \
+        [("dev", "farid")]

@@ -33,6 +33,7 @@ interrupted run loses nothing already graded.
 import hashlib
 import json
 import os
+import resource
 import signal
 import sys
 import time
@@ -232,7 +233,8 @@ class RunSummary:
     seconds: float = 0.0
     similarity: object = None  # similarity Findings (None: turned off, or it failed: see similarity_note)
     similarity_note: str = ""  # why the similarity stage wrote no findings
-    similarity_seconds: float = 0.0
+    similarity_seconds: float = 0.0  # wall time of the similarity stage
+    similarity_cpu_seconds: float = 0.0  # its CPU time, this process and its finished workers
 
 
 def _prewarm():
@@ -401,7 +403,7 @@ def _similarity_section(path, outputs, summary):
     from autograder.similarity.report import similar_answers_html
     from autograder.similarity.stage import similarity_of_class, write_findings
 
-    started = time.monotonic()
+    started, cpu = time.monotonic(), cpu_seconds()
     try:
         summary.similarity = similarity_of_class(path)
         write_findings(summary.similarity, outputs.root, write_atomically)
@@ -411,7 +413,15 @@ def _similarity_section(path, outputs, summary):
         summary.similarity_note = f"the similarity stage failed ({type(error).__name__}: {error})"
         section = f"<h2>Similar answers</h2><p>Not available: {one_line(summary.similarity_note, 300)}.</p>"
     summary.similarity_seconds = time.monotonic() - started
+    summary.similarity_cpu_seconds = cpu_seconds() - cpu
     return section
+
+
+def cpu_seconds():
+    """User and system CPU seconds of this process and of its children that have finished (a stage's
+    forked workers): what a stage costs on a shared machine, where its wall time depends on the load."""
+    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
 
 
 def write_reports(outputs, student_ids, submitted=None, unsaved=None, extra_section=""):

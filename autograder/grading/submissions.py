@@ -236,18 +236,40 @@ def _stubs(filename):
     return {cells.grade_id(c): _fingerprint(cells.source_text(c)) for c in nb.cells if cells.is_answer_cell(c)}
 
 
+_DEFINED = {}  # sha256 of a cell's exact source -> the functions it defines (cells repeat across students)
+MAX_REMEMBERED = 4096
+
+
+def _defined_functions(source):
+    """Names of the functions ``source`` defines at top level (``()`` if it cannot be parsed), parsed once per
+    distinct text: the released cells every student kept, and answers handed in alike, are not parsed again.
+    Only a digest of the text is kept, so a large cell is not held in memory.
+
+    >>> _defined_functions("def f(x):\\n    return x\\n\\ndef g():\\n    pass\\n")
+    ('f', 'g')
+    """
+    if "def" not in source:
+        return ()
+    key = hashlib.sha256(source.encode("utf-8", "surrogatepass")).digest()
+    if key not in _DEFINED:
+        tree = cells.parse_source(source)
+        if len(_DEFINED) >= MAX_REMEMBERED:
+            _DEFINED.clear()
+        _DEFINED[key] = tuple(node.name for node in tree.body if isinstance(node, ast.FunctionDef)) if tree else ()
+    return _DEFINED[key]
+
+
 def _code_cells(nb):
     """``[(grade_id, fingerprint of the source, names of the functions it defines)]`` for a notebook's code
-    cells, check cells excepted; each cell is parsed once (and only if it can define a function). Only
-    fingerprints are kept, so a student's megabytes of source are not held while others are read."""
+    cells, check cells excepted; each distinct cell text is parsed once (and only if it can define a
+    function). Only fingerprints are kept, so a student's megabytes of source are not held while others
+    are read."""
     found = []
     for cell in nb.cells:
         if cell.get("cell_type") != "code" or cells.is_check_cell(cell):
             continue
         source = cells.source_text(cell)
-        tree = cells.parse_source(source) if "def" in source else None
-        defined = tuple(node.name for node in tree.body if isinstance(node, ast.FunctionDef)) if tree else ()
-        found.append((cells.grade_id(cell), _fingerprint(source), defined))
+        found.append((cells.grade_id(cell), _fingerprint(source), _defined_functions(source)))
     return found
 
 
@@ -268,8 +290,11 @@ def _name_matches(path, lesson):
     return path.name == lesson.filename or path.name.startswith(lesson.number + "_")
 
 
-def match_lessons(folder, catalog, notebooks=None):
+def match_lessons(folder, catalog, notebooks=None, read=None):
     """Match the notebooks of one student's ``folder`` to ``catalog``'s graded lessons, by content.
+
+    ``read(path)``: how a notebook is read (default :func:`read_submission` inside ``folder``); a caller
+    that reads the chosen notebooks again passes a memoising one, so each file is parsed once.
 
     Returns
     -------
@@ -288,10 +313,11 @@ def match_lessons(folder, catalog, notebooks=None):
         scan = scan_folder(folder)
         notebooks, skipped = scan.files, scan.skipped
     lessons = catalog.graded_lessons
+    read = read or (lambda path: read_submission(path, root=folder))
     readable, unreadable = {}, {}
     for path in notebooks:
         try:
-            readable[path] = _code_cells(read_submission(path, root=folder))
+            readable[path] = _code_cells(read(path))
         except UnreadableNotebook as error:
             unreadable[path] = str(error)
         except Exception as error:  # anything else costs this notebook only

@@ -44,13 +44,19 @@ class ClassAnswers:
 
 def student_answers(folder, catalog):
     """``{exercise: source}`` of one student's folder (lessons matched by content, cells by grade_id)."""
-    found = {}
-    files = match_lessons(Path(folder), catalog)
+    found, parsed = {}, {}
+
+    def read(path):  # each notebook parsed once: matching lessons reads it, and so does taking its cells
+        if path not in parsed:
+            parsed[path] = read_submission(path, root=folder)
+        return parsed[path]
+
+    files = match_lessons(Path(folder), catalog, read=read)
     for lesson in catalog.graded_lessons:
         path = files.chosen.get(lesson.number)
         if path is None or path in files.unreadable:
             continue
-        program = lesson_program(read_submission(path, root=folder), lesson)
+        program = lesson_program(read(path), lesson)
         found.update((name, source[:MAX_ANSWER_CHARACTERS]) for name, source in program.cells)
     return found
 

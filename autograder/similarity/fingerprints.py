@@ -28,7 +28,6 @@ Examples
 
 import ast
 import io
-import multiprocessing
 import warnings
 from functools import lru_cache
 
@@ -61,25 +60,34 @@ def fingerprint(source, boilerplate_source=""):
     copydetect.CodeFingerprint
         ``hashes`` (a set), ``token_coverage`` (normalised characters not in the stub) and the spans.
     """
-    if not boilerplate_source:
-        return _fingerprint(source, [])
-    boilerplate, docstring = _boilerplate(boilerplate_source)
-    if docstring and docstring in source:  # most of a stub's text; tokenising it is most of the time
-        source = source.replace(docstring, "", 1)
+    source, boilerplate = _without_stub_docstring(source, boilerplate_source)
     return _fingerprint(source, boilerplate)
 
 
-def fingerprint_many(items, jobs=1):
-    """``[fingerprint(source, stub) for source, stub in items]``, in ``jobs`` forked processes.
+def longest_coverage(source, boilerplate_source=""):
+    """An upper bound of ``fingerprint(source, boilerplate_source).token_coverage``, without tokenising.
 
-    Forked, not spawned: copydetect's hash is salted per interpreter, and a fork keeps its parent's salt,
-    so fingerprints made in different workers can be compared.
+    Tokenising drops whitespace and comments and writes a name or a string as one character, so the
+    normalised code is never longer than the answer's characters outside whitespace (the stub's docstring
+    cut as :func:`fingerprint` cuts it). An answer whose bound is below the length worth comparing is
+    left out before it costs a tokenisation.
+
+    >>> longest_coverage("def f(x):\\n    return x.T\\n")
+    17
     """
-    items = list(items)
-    if jobs <= 1 or len(items) < 200 or "fork" not in multiprocessing.get_all_start_methods():
-        return [fingerprint(source, stub) for source, stub in items]
-    with multiprocessing.get_context("fork").Pool(jobs) as pool:
-        return pool.starmap(fingerprint, items, chunksize=max(1, len(items) // (8 * jobs)))
+    source, _ = _without_stub_docstring(source, boilerplate_source)
+    return len("".join(source.split()))
+
+
+def _without_stub_docstring(source, boilerplate_source):
+    """``(source, the stub's sorted fingerprints)``, the stub's docstring cut from ``source`` when it is there
+    as released (most of a stub's text; tokenising it is most of the time)."""
+    if not boilerplate_source:
+        return source, []
+    boilerplate, docstring = _boilerplate(boilerplate_source)
+    if docstring and docstring in source:
+        source = source.replace(docstring, "", 1)
+    return source, boilerplate
 
 
 @lru_cache(maxsize=512)
@@ -104,24 +112,44 @@ def _fingerprint(source, boilerplate):
                                fp=io.StringIO(source))
 
 
+def shared_counts(fingerprints):
+    """``(C, sizes)``: ``C[i, j]`` fingerprints that answers i and j both have, shape (n, n), and each
+    answer's number of fingerprints, shape (n,).
+
+    One sparse product for all pairs: the answers × fingerprints incidence matrix times its transpose.
+
+    >>> a = fingerprint("def f(x):\\n    y = x * 2\\n    return y + 1\\n")
+    >>> counts, sizes = shared_counts([a, a])
+    >>> counts.shape, bool(counts[0, 1] == sizes[0])
+    ((2, 2), True)
+    """
+    n = len(fingerprints)
+    sizes = np.array([len(fp.hashes) for fp in fingerprints], dtype=np.int64)
+    hashes = np.fromiter((value for fp in fingerprints for value in fp.hashes), dtype=np.int64, count=int(sizes.sum()))
+    _, columns = np.unique(hashes, return_inverse=True)
+    columns = columns.ravel()
+    incidence = sparse.csr_matrix((np.ones(len(columns), dtype=np.int32), (np.repeat(np.arange(n), sizes), columns)),
+                                  shape=(n, max(int(columns.max(initial=0)) + 1, 1)))
+    return (incidence @ incidence.T).toarray(), sizes
+
+
+def share_of_smaller(counts, sizes):
+    """``counts[i, j] / min(sizes[i], sizes[j])`` (0 where an answer has no fingerprint), shape (n, n)."""
+    smaller = np.minimum.outer(sizes, sizes).astype(float)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(smaller > 0, counts.astype(float) / np.where(smaller > 0, smaller, 1), 0.0)
+
+
 def shared_share(fingerprints):
     """``S[i, j]``: share of the smaller of answers i and j's fingerprints that both have, shape (n, n).
 
     The diagonal is 1 for an answer with fingerprints; an answer without any shares nothing.
+
+    >>> a = fingerprint("def f(x):\\n    y = x * 2\\n    return y + 1\\n")
+    >>> shared_share([a, a]).tolist()
+    [[1.0, 1.0], [1.0, 1.0]]
     """
-    columns = {}
-    rows, cols = [], []
-    for row, fp in enumerate(fingerprints):
-        for value in fp.hashes:
-            rows.append(row)
-            cols.append(columns.setdefault(value, len(columns)))
-    n = len(fingerprints)
-    incidence = sparse.csr_matrix((np.ones(len(rows), dtype=np.int32), (rows, cols)), shape=(n, max(len(columns), 1)))
-    shared = (incidence @ incidence.T).toarray().astype(float)
-    sizes = np.array([len(fp.hashes) for fp in fingerprints], dtype=float)
-    smaller = np.minimum.outer(sizes, sizes)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(smaller > 0, shared / np.where(smaller > 0, smaller, 1), 0.0)
+    return share_of_smaller(*shared_counts(fingerprints))
 
 
 def highlighted(first, second, limit=6000):

@@ -19,7 +19,7 @@ import io
 from autograder.lessons.untrusted_text import csv_cell
 from autograder.lessons.untrusted_text import html_text as escape
 from autograder.similarity.findings import REFERENCE
-from autograder.similarity.fingerprints import highlighted
+from autograder.similarity.fingerprints import K, highlighted
 
 LOCAL = ("Computed on this machine: no answer was sent anywhere. A finding is worth a look, not a verdict: "
          "answers can be alike because students worked together as allowed, followed the same lecture "
@@ -34,14 +34,15 @@ SHOWN_VIEWS = 3  # side-by-side views per cluster
 
 
 def _side_by_side(findings, pair):
-    first = findings.fingerprints.get((pair.exercise, pair.first))
-    second = findings.fingerprints.get((pair.exercise, pair.second))
+    first = findings.fingerprint(pair.exercise, pair.first)
+    second = findings.fingerprint(pair.exercise, pair.second)
     if first is None or second is None:
         return ""
     left, right = highlighted(first, second)
     return (f"<p><code>{escape(pair.exercise)}</code>: <code>{escape(pair.first)}</code> and "
-            f"<code>{escape(pair.second)}</code>, {100 * pair.score:.0f}% shared "
-            f"(this exercise's bar in this class: {100 * pair.threshold:.0f}%). "
+            f"<code>{escape(pair.second)}</code>: {100 * pair.score:.0f}% of the shorter answer is shared "
+            f"({pair.shared} runs of {K} characters of code in common, a name counting as one character; "
+            f"this exercise's bar in this class: {100 * pair.threshold:.0f}%). "
             "Shared spans are <mark>marked</mark>.</p>"
             f'<div class="side"><div><p class="muted">{escape(pair.first)}</p><pre>{left}</pre></div>'
             f'<div><p class="muted">{escape(pair.second)}</p><pre>{right}</pre></div></div>')
@@ -101,16 +102,16 @@ def similar_answers_html(findings):
 
 def similar_answers_csv(findings):
     """One row per flagged pair and per reference match: the finding it belongs to, the exercise, both
-    authors, the score and the exercise's bar (spreadsheet-safe cells)."""
+    authors, the score, the exercise's bar and the k-grams the two share (spreadsheet-safe cells)."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(["finding", "kind", "exercise", "first", "second", "score", "threshold"])
+    writer.writerow(["finding", "kind", "exercise", "first", "second", "score", "threshold", "shared_kgrams"])
     for number, cluster in enumerate(findings.clusters, 1):
         for pair in cluster.pairs:
             kind = "past term" if "/" in pair.first + pair.second else "students"
             writer.writerow([number, kind, csv_cell(pair.exercise), csv_cell(pair.first), csv_cell(pair.second),
-                             f"{pair.score:.3f}", f"{pair.threshold:.3f}"])
+                             f"{pair.score:.3f}", f"{pair.threshold:.3f}", pair.shared])
     for pair in findings.reference_matches:
         writer.writerow(["", "reference", csv_cell(pair.exercise), csv_cell(pair.first), REFERENCE,
-                         f"{pair.score:.3f}", f"{pair.threshold:.3f}"])
+                         f"{pair.score:.3f}", f"{pair.threshold:.3f}", pair.shared])
     return buffer.getvalue()
