@@ -7,7 +7,7 @@ entries are 0 and ±1) and properties that any correct answer has.
 import numpy as np
 
 from ..checking import Mismatch, _where_in_student_code, public_check
-from ..diagnose import ALLCLOSE_HINT, close, rotation_problem
+from ..diagnose import ALLCLOSE_HINT, FLOAT32_HINT, SERIES_HINT, close, float32_rounding, rotation_problem
 from ..lie import Exp
 from .common import fmt, off_by, require_rotation, require_same_with_lists, require_shape
 
@@ -18,6 +18,24 @@ QUARTER_TURN_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 E = np.eye(3)
 # Generic rotations (no zero entries), for naming a mistake from its value.
 GENERIC_A, GENERIC_B = Exp([0.3, -0.8, 0.5]), Exp([-0.6, 0.2, 0.9])
+# A generic angle, then every decade where a shortcut's error could hide, both signs, from 1 down to 1e-8:
+# a float32 answer fails at the first, a small-angle series only further down.
+DECADE_ANGLES = [0.9] + [sign * 10.0 ** -k for k in range(9) for sign in (1.0, -1.0)]
+PRECISION = 1e-12  # cos and sin in float64 are accurate to about 1e-16; a float32 array or a series is not
+
+
+def _precision_mismatch(what, got, expected, angle):
+    """A Mismatch for ``got`` (the answer for ``angle``) off from ``expected`` by more than PRECISION, naming
+    float32 rounding or a small-angle series when the error looks like one."""
+    error = float(np.max(np.abs(got - expected)))
+    hint = None
+    if abs(angle) >= 0.1 and float32_rounding(got, expected):
+        hint = FLOAT32_HINT
+    elif abs(angle) < 0.1:
+        hint = SERIES_HINT
+    return Mismatch(f"{what} is off by {error:.2g} at angle {angle:.0e} (allowed: {PRECISION:.0e})", hint)
+
+
 SAME_SIGN_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
                   "carries the minus")
 
@@ -68,6 +86,15 @@ def _(rot2d):
     raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}, expected [0, 1]", hint)
 
 
+@public_check("rot2d", "agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1")
+def _(rot2d):
+    for angle in DECADE_ANGLES:
+        got = require_shape(rot2d(angle), (2, 2), f"rot2d({angle:.0e})")
+        c, s = np.cos(angle), np.sin(angle)
+        if not close(got, [[c, -s], [s, c]], PRECISION):
+            raise _precision_mismatch(f"rot2d({angle:.0e})", got, np.array([[c, -s], [s, c]]), angle)
+
+
 # ---------------------------------------------------------------- rot_x, rot_y, rot_z
 def _elementary_checks(name, axis, quarter_from, quarter_to):
     i, j = [k for k in range(3) if k != axis]
@@ -110,6 +137,17 @@ def _elementary_checks(name, axis, quarter_from, quarter_to):
             raise Mismatch(f"{name}(pi/2) barely moves {src}: {fmt(image)}",
                            "looks like degrees: angles in this course are radians")
         raise Mismatch(f"{name}(pi/2) sends {src} to {fmt(image)}, expected e_{dst}")
+
+    @public_check(name, "agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1")
+    def _(fn):
+        for angle in DECADE_ANGLES:
+            got = require_shape(fn(angle), (3, 3), f"{name}({angle:.0e})")
+            expected = np.eye(3)
+            c, s = np.cos(angle), np.sin(angle)
+            expected[i, i] = expected[j, j] = c
+            expected[j, i], expected[i, j] = (s, -s) if axis != 1 else (-s, s)
+            if not close(got, expected, PRECISION):
+                raise _precision_mismatch(f"{name}({angle:.0e})", got, expected, angle)
 
 
 _elementary_checks("rot_x", 0, 1, 2)
