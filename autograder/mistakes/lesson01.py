@@ -229,6 +229,11 @@ def rot_z(a):
     c, s = np.cos(a), np.sin(a)
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]], dtype=np.float32)
 '''),
+    Mistake("compose_float32", "compose", "converts both factors to float32 to save memory",
+            hint="float32 rounding", public_hint="float32 rounding", source='''
+def compose(R_ab, R_bc):
+    return np.asarray(R_ab, dtype=np.float32) @ np.asarray(R_bc, dtype=np.float32)
+'''),
 ]
 
 ALTERNATIVES = [

@@ -36,6 +36,13 @@ def _precision_mismatch(what, got, expected, angle):
     return Mismatch(f"{what} is off by {error:.2g} at angle {angle:.0e} (allowed: {PRECISION:.0e})", hint)
 
 
+def _require_double_precision(what, got, expected):
+    """Mismatch unless ``got`` equals ``expected`` to PRECISION (float64 matrix arithmetic stays far below it)."""
+    if not close(got, expected, PRECISION):
+        raise Mismatch(f"{what} is {off_by(got, expected)} for generic entries (allowed: {PRECISION:.0e})",
+                       FLOAT32_HINT if float32_rounding(got, expected) else None)
+
+
 SAME_SIGN_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
                   "carries the minus")
 
@@ -264,6 +271,13 @@ def _(rotate_point):
         raise Mismatch(f"the 3 rows do not match rotating each point on its own ({off_by(got, one_by_one)})", hint)
 
 
+@public_check("rotate_point", "agrees with R_wb @ p_b to 1e-12 for a generic rotation and point")
+def _(rotate_point):
+    p_b = np.array([0.3, -1.7, 2.9])
+    got = require_shape(rotate_point(GENERIC_A, p_b.copy()), (3,))
+    _require_double_precision("rotate_point(R_wb, p_b)", got, GENERIC_A @ p_b)
+
+
 @public_check("rotate_point", "accepts plain lists")
 def _(rotate_point):
     require_same_with_lists(rotate_point, (QUARTER_TURN_X, [0.5, -1.0, 2.0]), (3,), "rotate_point")
@@ -288,6 +302,12 @@ def _(compose):
                    f"({off_by(R_ac @ p_c, R_ab @ (R_bc @ p_c))})", hint)
 
 
+@public_check("compose", "agrees with R_ab @ R_bc to 1e-12 for generic rotations")
+def _(compose):
+    got = require_shape(compose(GENERIC_A.copy(), GENERIC_B.copy()), (3, 3))
+    _require_double_precision("compose(R_ab, R_bc)", got, GENERIC_A @ GENERIC_B)
+
+
 @public_check("compose", "accepts plain lists")
 def _(compose):
     require_same_with_lists(compose, (QUARTER_TURN_Z, QUARTER_TURN_X), (3, 3), "compose")
@@ -308,6 +328,12 @@ def _(invert_rotation):
                        hint)
 
 
+@public_check("invert_rotation", "agrees with the transpose to 1e-12 for a generic rotation")
+def _(invert_rotation):
+    got = require_shape(invert_rotation(GENERIC_A.copy()), (3, 3))
+    _require_double_precision("invert_rotation(R_ab)", got, GENERIC_A.T)
+
+
 @public_check("invert_rotation", "accepts plain lists")
 def _(invert_rotation):
     require_same_with_lists(invert_rotation, (QUARTER_TURN_X @ QUARTER_TURN_Z,), (3, 3), "invert_rotation")
@@ -320,6 +346,12 @@ def _(nearest_rotation):
     if not close(got, QUARTER_TURN_Z, 1e-9):
         raise Mismatch(f"changed a matrix that was already a rotation ({off_by(got, QUARTER_TURN_Z)})",
                        _first_match(got, [(QUARTER_TURN_Z.T, "returned the transpose, V Uᵀ: R = U Vᵀ")]))
+
+
+@public_check("nearest_rotation", "leaves a generic rotation unchanged to 1e-12")
+def _(nearest_rotation):
+    got = require_shape(nearest_rotation(GENERIC_B.copy()), (3, 3))
+    _require_double_precision("nearest_rotation(R)", got, GENERIC_B)
 
 
 @public_check("nearest_rotation", "turns a slightly wrong matrix into a rotation close to it")

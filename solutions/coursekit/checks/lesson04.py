@@ -11,7 +11,9 @@ import numpy as np
 
 from ..checking import Mismatch, public_check
 from ..diagnose import (
+    FLOAT32_HINT,
     close,
+    float32_rounding,
     quaternion_hint,
     rotation_problem,
     same_rotation_quat,
@@ -165,6 +167,14 @@ def _(quat_conjugate):
         raise Mismatch("got [-1, -2, -3, -4]", "returned -q: keep the scalar w, negate only x, y, z")
     if not close(got, [1.0, -2.0, -3.0, -4.0], 1e-12):
         raise Mismatch(f"got {fmt(got)}, expected [1, -2, -3, -4], {off_by(got, [1.0, -2.0, -3.0, -4.0])}")
+
+
+@public_check("quat_conjugate", "keeps every digit of a generic quaternion (float64)")
+def _(quat_conjugate):
+    got = require_shape(quat_conjugate(GENERIC.copy()), (4,))
+    if not close(got, _conjugate(GENERIC), 1e-15):
+        raise Mismatch(f"the conjugate of {fmt(GENERIC, 6)} is {off_by(got, _conjugate(GENERIC))}",
+                       FLOAT32_HINT if float32_rounding(got, _conjugate(GENERIC)) else None)
 
 
 @public_check("quat_conjugate", "accepts a plain list")
@@ -408,6 +418,15 @@ def _layout_checks(name, to_end):
         got = require_shape(fn(given[0].tolist()), (4,))
         if not close(got, wanted[0], 0.0):
             raise Mismatch(f"got {fmt(got)}, expected {fmt(wanted[0])}", _layout_hint(got, given[0], to_end))
+
+    @public_check(name, "keeps every digit of a generic quaternion (float64)")
+    def _(fn):
+        source = GENERIC if to_end else np.roll(GENERIC, -1)
+        target = np.roll(source, -1) if to_end else np.roll(source, 1)
+        got = require_shape(fn(source.copy()), (4,))
+        if not close(got, target, 0.0):
+            raise Mismatch(f"got {fmt(got, 6)}, expected {fmt(target, 6)} ({off_by(got, target)})",
+                           FLOAT32_HINT if float32_rounding(got, target) else _layout_hint(got, source, to_end))
 
     @public_check(name, "converts a stack of quaternions, shape (N, 4), row by row")
     def _(fn):
