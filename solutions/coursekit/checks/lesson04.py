@@ -19,6 +19,7 @@ from ..diagnose import (
     same_rotation_quat,
     shape_problem,
 )
+from ..lie import Exp
 from .common import fmt, off_by, require_same_with_lists, require_shape
 
 ONE = np.array([1.0, 0.0, 0.0, 0.0])
@@ -387,6 +388,37 @@ def _(matrix_to_quat):
                        "negate the whole quaternion when w < 0 (canonical sign), in every branch")
     if not close(got, expected, 1e-9):
         raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)}", quaternion_hint(got, expected))
+
+
+def _rotation_of(q):
+    """The rotation matrix of the unit quaternion q = [cos(θ/2), sin(θ/2) u], built as Exp(θ u)."""
+    half = np.arctan2(np.linalg.norm(q[1:]), q[0])
+    return Exp(2.0 * half * q[1:] / np.linalg.norm(q[1:]))
+
+
+# Generic unit quaternions (w >= 0): each of w, x, y, z the largest in turn, then each one vanishing, so every
+# branch of Shepperd's method runs, also next to the boundary where a wrong pivot would vanish (w is 1e-6, not 0,
+# so that the canonical sign w >= 0 names one of ±q).
+SHEPPERD_CASES = [q / np.linalg.norm(q) for q in np.array([
+    [0.9, 0.3, -0.4, 0.2], [0.3, -0.9, 0.4, 0.2], [0.2, 0.4, 0.9, -0.3], [0.4, -0.2, 0.3, 0.9],
+    [1e-6, 0.6, -0.5, 0.7], [0.5, 0.0, 0.6, -0.7], [0.6, -0.5, 0.0, 0.7], [0.5, 0.7, -0.6, 0.0]])]
+
+
+@public_check("matrix_to_quat", "exact to 1e-12 in every branch: w, x, y or z the largest, and one of them 0")
+def _(matrix_to_quat):
+    for q in SHEPPERD_CASES:
+        R = _rotation_of(q)
+        got = require_shape(matrix_to_quat(R.copy()), (4,), f"matrix_to_quat of the rotation of q = {fmt(q)}")
+        if not close(got, q, 1e-12):
+            hint = quaternion_hint(got, q)
+            if hint is None and same_rotation_quat(got, q, 1e-12):
+                hint = "negate the whole quaternion when w < 0 (canonical sign), in every branch"
+            if hint is None and float32_rounding(got, q):
+                hint = FLOAT32_HINT
+            raise Mismatch(f"the rotation of q = {fmt(q)} gave {fmt(got)} ({off_by(got, q)})",
+                           hint or "check the branch of the largest component: its pivot ½√(1 + 2 R_kk - tr R), "
+                                   "and each other component from the sums and differences of R's off-diagonal "
+                                   "pairs, divided by 4 × the pivot")
 
 
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz
