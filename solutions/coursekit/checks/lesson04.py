@@ -537,6 +537,31 @@ def _(quat_slerp):
         raise Mismatch(f"at t = 0.25 it has turned {turned:.6f} rad, off by {abs(turned - 0.625):.2g}", hint)
 
 
+# Half-angles Ω between q0 = 1 and q1 = [cos Ω, 0, 0, sin Ω]: every decade, and one below any sensible fallback.
+SLERP_OMEGAS = [1.0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-13]
+
+
+@public_check("quat_slerp", "exact to 2e-15 at t = 0.3 for every decade of Ω = acos(q0 · q1), 1 … 1e-8 and 1e-13, "
+                            "with q1 given with either sign")
+def _(quat_slerp):
+    t = 0.3
+    for omega in SLERP_OMEGAS:
+        expected = np.array([np.cos(t * omega), 0.0, 0.0, np.sin(t * omega)])
+        for sign in (1.0, -1.0):
+            q1 = sign * np.array([np.cos(omega), 0.0, 0.0, np.sin(omega)])
+            got = require_shape(quat_slerp(ONE.copy(), q1, t), (4,), f"quat_slerp(1, q1, 0.3) at Ω = {omega:g}")
+            if not close(got, expected, 2e-15):
+                hint = None
+                if float32_rounding(got, expected):
+                    hint = FLOAT32_HINT
+                elif omega < 0.5:
+                    hint = ("off at small Ω only: a linear fallback (nlerp) differs from slerp by about Ω³ t (1 - t), "
+                            "so use it only where that is below rounding (Ω under about 1e-5), and blend both ends "
+                            "there too")
+                raise Mismatch(f"at Ω = {omega:g} with q1 given {'as is' if sign > 0 else 'negated'}: got "
+                               f"{fmt(got, 6)}, expected {fmt(expected, 6)} ({off_by(got, expected)})", hint)
+
+
 @public_check("quat_slerp", "nearly identical and equal inputs do not divide by zero (nor take arccos of 1 + 2e-16)")
 def _(quat_slerp):
     tiny = np.array([np.cos(1e-10), np.sin(1e-10), 0.0, 0.0])
