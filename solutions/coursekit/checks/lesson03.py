@@ -235,6 +235,19 @@ def _(bracket):
                        _bracket_hint(got, BRACKET_2X2, BRACKET_SLIPS["2x2"]))
 
 
+# [w^, v^] = (w × v)^ for W_SAMPLE and V_SAMPLE: the hat of V_SAMPLE and of W_SAMPLE × V_SAMPLE = (0.79, 1.21, 2.43).
+HAT_V_SAMPLE = np.array([[0.0, 0.7, 0.1], [-0.7, 0.0, -2.0], [-0.1, 2.0, 0.0]])
+HAT_W_CROSS_V = np.array([[0.0, -2.43, 1.21], [2.43, 0.0, -0.79], [-1.21, 0.79, 0.0]])
+
+
+@public_check("bracket", "[w^, v^] = (w × v)^ to 1e-12 for generic w and v")
+def _(bracket):
+    got = require_shape(bracket(SKEW_SAMPLE.copy(), HAT_V_SAMPLE.copy()), (3, 3))
+    if not close(got, HAT_W_CROSS_V, 1e-12):
+        raise Mismatch(f"[w^, v^] for w = {fmt(W_SAMPLE)}, v = {fmt(V_SAMPLE)} is {off_by(got, HAT_W_CROSS_V)} "
+                       f"from (w × v)^", FLOAT32_HINT if float32_rounding(got, HAT_W_CROSS_V) else None)
+
+
 # ---------------------------------------------------------------- exp_series
 def _series_hint(got, truth, slips):
     """The slip behind a wrong exp_series = ``got``; ``slips`` holds what each slip returns for this W and n."""

@@ -101,6 +101,17 @@ def _(quat_multiply):
                        _product_diagnosis(quat_multiply))
 
 
+@public_check("quat_multiply", "undoes itself to 1e-12: (p ⊗ q) ⊗ q* = |q|² p for generic p and q, also as lists")
+def _(quat_multiply):
+    p, q = LONG * [0.7, 1.3, 0.9, -1.1], GENERIC * 1.5   # neither is a unit quaternion, no entry is 0 or 1
+    pq = require_shape(quat_multiply(p.copy(), q.copy()), (4,), "quat_multiply(p, q)")
+    back = require_shape(quat_multiply(pq, _conjugate(q)), (4,), "quat_multiply(p ⊗ q, q*)")
+    if not close(back, (q @ q) * p, 1e-12):
+        raise Mismatch(f"(p ⊗ q) ⊗ q* is {off_by(back, (q @ q) * p)} from |q|² p",
+                       FLOAT32_HINT if float32_rounding(back, (q @ q) * p) else _product_diagnosis(quat_multiply))
+    require_same_with_lists(quat_multiply, (p, q), (4,), "quat_multiply(p, q)")
+
+
 # ---------------------------------------------------------------- quat_left, quat_right
 def _layout_diagnosis(M, q, mine):
     """A hint when the first row and column of ``M`` show a transpose or a scalar-last reading of ``q``."""
