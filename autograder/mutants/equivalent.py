@@ -516,3 +516,8 @@ EQUIVALENT.update({
     'quat_from_two_vectors.3a4a10e4': OPPOSITE_THRESHOLD,  # 1e-14 → 1e-15 (line 27)
     'quat_from_two_vectors.8541ba18': FLOAT32_EXACT,  # np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32) (line 29)
 })
+
+# Not a correct answer: normalised linear interpolation below sin Ω = 1e-4 is off from slerp by up to 1.6e-14 (at
+# Ω just below 1e-4, t = 0.3), above the promised 2e-15; the hidden suite now tries half-angles just below each
+# decade and kills it.
+del EQUIVALENT['quat_slerp.e0f71f64']  # 1e-12 → 0.0001 (line 28)
