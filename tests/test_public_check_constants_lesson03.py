@@ -208,3 +208,9 @@ def test_the_module_computes_no_answer():
               r"\*\* k\b"]
     found = [pattern for pattern in banned if re.search(pattern, code)]
     assert not found, f"the public lesson 03 checks compute something they must only store: {found}"
+
+
+def test_bracket_of_generic_hats_is_the_hat_of_the_cross_product():
+    assert np.allclose(L.HAT_V_SAMPLE, _hat(L.V_SAMPLE), rtol=0, atol=1e-15)
+    assert np.allclose(L.HAT_W_CROSS_V, _hat(np.cross(L.W_SAMPLE, L.V_SAMPLE)), rtol=0, atol=1e-15)
+    assert np.allclose(L.SKEW_SAMPLE @ L.HAT_V_SAMPLE - L.HAT_V_SAMPLE @ L.SKEW_SAMPLE, L.HAT_W_CROSS_V, rtol=0, atol=1e-14)

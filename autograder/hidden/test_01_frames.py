@@ -10,13 +10,16 @@ absolute tolerance (diag(1, 1, 1 + 1e-6) must be rejected, which np.allclose's
 rtol would hide); the determinant fix of the SVD projection.
 Edge cases: integer angles, multiples of π and 2π, 1e-9, large angles; lists
 as inputs (compared with the same function's answer for arrays).
+Precision: rot2d and the elementary rotations agree with np.cos/np.sin to
+1e-12 at a generic angle and at every decade of angle from 1 down to 1e-8
+(both signs), where a small-angle series or float32 storage would hide.
 """
 
 import numpy as np
 from scipy.spatial.transform import Rotation
 
 from coursekit.checks.lesson01 import SQUARE_BATCH_HINT
-from coursekit.diagnose import close
+from coursekit.diagnose import FLOAT32_HINT, SERIES_HINT, close, float32_rounding
 
 from autograder.sandbox.session import StudentError
 
@@ -25,6 +28,11 @@ from .helpers import (ALLCLOSE_HINT, Wrong, exercise, expect, expect_array, expe
 
 TOL = 1e-9
 SPECIAL_ANGLES = [0.0, np.pi / 2, -np.pi / 2, np.pi, 2 * np.pi, 1e-9, 10 * np.pi + 0.3, -7.0]
+
+
+def _or_float32(hint, got, expected):
+    """FLOAT32_HINT when ``got`` is off from ``expected`` by float32 rounding only, else ``hint``."""
+    return FLOAT32_HINT if float32_rounding(got, expected) else hint
 
 
 def _first_match(got, candidates, otherwise=""):
@@ -83,6 +91,30 @@ def test_rot2d_composes_angles(student):
 def test_rot2d_accepts_integers(student):
     """accepts an integer angle (rot2d(0) is the identity)"""
     expect_close(expect_array(student.rot2d(0), (2, 2), "rot2d(0)"), np.eye(2), TOL, "rot2d(0)")
+
+
+# Every decade of angle, both signs, after a generic one (a float32 answer fails there first).
+DECADE_ANGLES = [0.9] + [sign * 10.0 ** -k for k in range(9) for sign in (1.0, -1.0)]
+PRECISION = 1e-12
+
+
+def _check_every_decade(function, name, expected_of, shape):
+    """``function(angle)`` equals ``expected_of(angle)`` to PRECISION at every angle of DECADE_ANGLES."""
+    for angle in DECADE_ANGLES:
+        got = expect_array(function(angle), shape, f"{name}({angle:.0e})")
+        expected = expected_of(angle)
+        hint = ""
+        if abs(angle) >= 0.1 and float32_rounding(got, expected):
+            hint = FLOAT32_HINT
+        elif abs(angle) < 0.1:
+            hint = SERIES_HINT
+        expect_close(got, expected, PRECISION, f"{name}({angle:.0e})", hint)
+
+
+@exercise("rot2d", weight=1)
+def test_rot2d_every_decade(student):
+    """agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1"""
+    _check_every_decade(student.rot2d, "rot2d", _rot2d, (2, 2))
 
 
 # ---------------------------------------------------------------- rot_x, rot_y, rot_z
@@ -162,6 +194,12 @@ def test_rot_x_adds_angles(student):
     _check_additive(student, "rot_x")
 
 
+@exercise("rot_x", weight=1)
+def test_rot_x_every_decade(student):
+    """agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1"""
+    _check_every_decade(student.rot_x, "rot_x", lambda angle: _elementary("x", angle), (3, 3))
+
+
 @exercise("rot_y", weight=3)
 def test_rot_y_matches_scipy(student):
     """agrees with scipy's rotation about y for random and special angles"""
@@ -180,6 +218,12 @@ def test_rot_y_adds_angles(student):
     _check_additive(student, "rot_y")
 
 
+@exercise("rot_y", weight=1)
+def test_rot_y_every_decade(student):
+    """agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1"""
+    _check_every_decade(student.rot_y, "rot_y", lambda angle: _elementary("y", angle), (3, 3))
+
+
 @exercise("rot_z", weight=3)
 def test_rot_z_matches_scipy(student):
     """agrees with scipy's rotation about z for random and special angles"""
@@ -196,6 +240,12 @@ def test_rot_z_is_a_rotation_about_z(student):
 def test_rot_z_adds_angles(student):
     """rot_z(a) @ rot_z(b) equals rot_z(a + b)"""
     _check_additive(student, "rot_z")
+
+
+@exercise("rot_z", weight=1)
+def test_rot_z_every_decade(student):
+    """agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1"""
+    _check_every_decade(student.rot_z, "rot_z", lambda angle: _elementary("z", angle), (3, 3))
 
 
 # ---------------------------------------------------------------- is_rotation_matrix
@@ -300,7 +350,7 @@ def test_rotate_point_single(student):
     for R, p in zip(random_rotations(20, seed=132), points):
         got = expect_array(student.rotate_point(R, p), (3,), "rotate_point(R, p) for one point")
         hint = _first_match(got, [(R.T @ p, "looks like you used R.T (the inverse): p_w = R_wb @ p_b")])
-        expect_close(got, R @ p, TOL, "rotate_point(R, p)", hint)
+        expect_close(got, R @ p, TOL, "rotate_point(R, p)", _or_float32(hint, got, R @ p))
 
 
 @exercise("rotate_point", weight=2)
@@ -354,7 +404,7 @@ def test_compose_random(student):
     As, Bs = random_rotations(20, seed=141), random_rotations(20, seed=142)
     for A, B in zip(As, Bs):
         got = expect_array(student.compose(A, B), (3, 3), "compose(R_ab, R_bc)")
-        expect_close(got, A @ B, TOL, "compose(R_ab, R_bc)", _compose_hint(got, A, B))
+        expect_close(got, A @ B, TOL, "compose(R_ab, R_bc)", _or_float32(_compose_hint(got, A, B), got, A @ B))
 
 
 @exercise("compose", weight=1)
@@ -363,7 +413,7 @@ def test_compose_identity(student):
     R = random_rotations(1, seed=143)[0]
     for A, B, what in ((R, np.eye(3), "compose(R, I)"), (np.eye(3), R, "compose(I, R)")):
         got = expect_array(student.compose(A, B), (3, 3), what)
-        expect_close(got, R, TOL, what, _compose_hint(got, A, B))
+        expect_close(got, R, TOL, what, _or_float32(_compose_hint(got, A, B), got, R))
 
 
 @exercise("compose", weight=1)
@@ -387,7 +437,7 @@ def test_invert_rotation_random(student):
     """R_ba = R_abᵀ for 20 random rotations"""
     for R in random_rotations(20, seed=151):
         got = expect_array(student.invert_rotation(R), (3, 3), "invert_rotation(R)")
-        expect_close(got, R.T, TOL, "invert_rotation(R)", _inverse_hint(got, R))
+        expect_close(got, R.T, TOL, "invert_rotation(R)", _or_float32(_inverse_hint(got, R), got, R.T))
 
 
 @exercise("invert_rotation", weight=1)
@@ -432,7 +482,7 @@ def test_nearest_rotation_keeps_rotations(student):
     """leaves exact rotations unchanged"""
     for R in random_rotations(10, seed=161):
         got = expect_array(student.nearest_rotation(R), (3, 3), "nearest_rotation(R)")
-        expect_close(got, R, 1e-9, "nearest_rotation of a rotation", _nearest_hint(got, R))
+        expect_close(got, R, 1e-9, "nearest_rotation of a rotation", _or_float32(_nearest_hint(got, R), got, R))
 
 
 @exercise("nearest_rotation", weight=2)

@@ -597,6 +597,34 @@ def test_matrix_to_quat_canonical_sign(student):
         expect_close(got, canonical, TOL, f"matrix_to_quat(R) for a turn by {theta:.4g} rad", hint)
 
 
+def _one_component_small(seed):
+    """Unit quaternions (w >= 0) with one component 0, 1e-8 or 1e-4 and the other three generic, for each of the
+    four components: where a branch chosen by the wrong pivot divides by a vanishing one."""
+    rng = np.random.default_rng(seed)
+    found = []
+    for k in range(4):
+        for small in (0.0, 1e-8, 1e-4):
+            for _ in range(4):
+                q = rng.uniform(0.3, 1.0, 4) * rng.choice([-1.0, 1.0], 4)
+                q[k] = small
+                q /= np.linalg.norm(q)
+                found.append(q if q[0] >= 0 else -q)
+    return found
+
+
+@exercise("matrix_to_quat", weight=1)
+def test_matrix_to_quat_one_component_small(student):
+    """accurate when one of w, x, y, z is 0, 1e-8 or 1e-4 and the others are generic (every branch next to its
+    boundary: Shepperd's pivot must be the largest of the four)"""
+    for q in _one_component_small(486):
+        R = scipy_rotation(q).as_matrix()
+        got = m2q_array(student.matrix_to_quat(R), f"matrix_to_quat(R) for q = {fmt(q)}", near_pi=False)
+        expect_same_rotation(got, q, TOL, f"matrix_to_quat(R) for q = {fmt(q)}",
+                             m2q_hint(got, q) or "the pivot must be the largest of w², x², y², z², read from the "
+                                                 "trace and the diagonal R[0, 0], R[1, 1], R[2, 2] (Shepperd's "
+                                                 "method); a small pivot divides by a vanishing number")
+
+
 @exercise("matrix_to_quat", weight=1)
 def test_matrix_to_quat_identity_and_norm(student):
     """identity → [1, 0, 0, 0]; the result has unit length"""
@@ -709,7 +737,8 @@ def slerp_hint(got, q0, q1, t):
     length = np.linalg.norm(got)
     if q0 @ q1 < 0 and abs(q0 @ q1) < 1.0 - 1e-12 and same_rotation_quat(got, long_arc(q0, q1, t), 1e-6):
         return LONG_ARC_HINT
-    if close(got, (1 - t) * q0 + t * near, 1e-9) or close(got, (1 - t) * q0 + t * q1, 1e-9):
+    if abs(length - 1.0) > 1e-12 and (close(got, (1 - t) * q0 + t * near, 1e-9)
+                                     or close(got, (1 - t) * q0 + t * q1, 1e-9)):
         return (f"plain linear interpolation (1 - t) q0 + t q1 leaves the unit sphere (|result| = {length:.4f}): "
                 "use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
     if abs(length - 1.0) > 1e-6:
@@ -801,8 +830,11 @@ def test_quat_slerp_every_decade(student):
 
     q0 = unit_quats(1, seed=508)[0]
     axis = np.array([2.0, -1.0, 2.0]) / 3.0
+    # turns just below each decade, and turns whose half-angle Ω = acos|q0 · q1| is just below one (1.94 · 10⁻ᵏ):
+    # a fallback threshold at a decade of either is tried where its error peaks
     explicit = [(q0, 0.97 * 10.0 ** -k, axis, sign, t) for k in range(1, 12)
-                for sign, t in ((1.0, 0.3), (-1.0, 0.0))] + [(q0, 2.0, axis, 1.0, 1.0)]
+                for sign, t in ((1.0, 0.3), (-1.0, 0.0))] + [(q0, 2.0, axis, 1.0, 1.0)] + \
+               [(q0, 1.94 * 10.0 ** -k, axis, 1.0, 0.3) for k in range(1, 12)]
     cases = st.tuples(quaternions(), angles(sign=False, near_pi=False, zero=False), unit_vectors(),
                       st.sampled_from([1.0, -1.0]), st.one_of(st.sampled_from([0.0, 1.0]), st.floats(0.0, 1.0)))
     for_all(cases, check, explicit=explicit)

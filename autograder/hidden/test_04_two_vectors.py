@@ -108,14 +108,17 @@ def test_two_vectors_opposite_and_parallel(student):
 
 @exercise("quat_from_two_vectors", weight=1)
 def test_two_vectors_only_directions_count(student):
-    """scaling a and b by 1e-8 … 1e8 leaves the answer unchanged, to 1e-14"""
-    a, b = _pair(1.2, 4120)
-    base = expect_array(student.quat_from_two_vectors(a, b), (4,), "quat_from_two_vectors(a, b)")
-    for scale_a, scale_b in ((1e-8, 1.0), (1.0, 1e8), (1e5, 1e-5), (3.0, 0.5)):
-        got = expect_array(student.quat_from_two_vectors(scale_a * a, scale_b * b), (4,),
-                           "quat_from_two_vectors(c1 a, c2 b)")
-        expect(np.max(np.abs(got - base)) <= 1e-14, f"scaling a by {scale_a:g} and b by {scale_b:g} changed the answer "
-               f"by {np.max(np.abs(got - base)):.2g}", "only the directions count: normalise a and b first")
+    """scaling a and b by 1e-12 … 1e8 leaves the answer unchanged, to 1e-14, at 1.2 rad and at 1e-6 rad (where an
+    unnormalised a × b falls below any small-angle threshold)"""
+    for theta, seed in ((1.2, 4120), (1e-6, 4121)):
+        a, b = _pair(theta, seed)
+        base = expect_array(student.quat_from_two_vectors(a, b), (4,), "quat_from_two_vectors(a, b)")
+        for scale_a, scale_b in ((1e-8, 1.0), (1.0, 1e8), (1e5, 1e-5), (3.0, 0.5), (1.0, 1e-12), (1e-12, 1.0)):
+            got = expect_array(student.quat_from_two_vectors(scale_a * a, scale_b * b), (4,),
+                               "quat_from_two_vectors(c1 a, c2 b)")
+            expect(np.max(np.abs(got - base)) <= 1e-14, f"at θ = {theta:g} rad, scaling a by {scale_a:g} and b by "
+                   f"{scale_b:g} changed the answer by {np.max(np.abs(got - base)):.2g}",
+                   "only the directions count: normalise a and b first")
 
 
 @exercise("quat_from_two_vectors", weight=1)

@@ -214,6 +214,26 @@ def compose(R_ab, R_bc):
 def invert_rotation(R_ab):
     return invert_rotation(R_ab).T
 ''', kind="fault"),
+    Mistake("rot_x_small_angle_series", "rot_x", "sin a ≈ a and cos a ≈ 1 - a²/2 below 1e-2, to save the trig calls",
+            hint="truncated series", public_hint="truncated series", source='''
+def rot_x(a):
+    if abs(a) < 1e-2:
+        c, s = 1.0 - a * a / 2.0, a
+    else:
+        c, s = np.cos(a), np.sin(a)
+    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+'''),
+    Mistake("rot_z_float32", "rot_z", "stores the matrix in float32 (single precision)",
+            hint="float32 rounding", public_hint="float32 rounding", source='''
+def rot_z(a):
+    c, s = np.cos(a), np.sin(a)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]], dtype=np.float32)
+'''),
+    Mistake("compose_float32", "compose", "converts both factors to float32 to save memory",
+            hint="float32 rounding", public_hint="float32 rounding", source='''
+def compose(R_ab, R_bc):
+    return np.asarray(R_ab, dtype=np.float32) @ np.asarray(R_bc, dtype=np.float32)
+'''),
 ]
 
 ALTERNATIVES = [

@@ -66,6 +66,24 @@ def quat_from_two_vectors(a, b):
     theta = np.arctan2(s, a @ b)
     return np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * axis / s])
 ''', hint="take a half turn about any axis perpendicular to a", public_hint="take a half turn about any axis"),
+    Mistake("two_vectors_threshold_on_raw_b", "quat_from_two_vectors",
+            "normalises a only: the parallel test |a × b| < 1e-14 then depends on the length of b", '''
+def quat_from_two_vectors(a, b):
+    a = np.asarray(a, dtype=float)
+    b = np.asarray(b, dtype=float)
+    a = a / np.linalg.norm(a)
+    axis = np.cross(a, b)
+    axis = axis - (axis @ a) * a
+    s = np.linalg.norm(axis)
+    if s < 1e-14:
+        if a @ b > 0.0:
+            return np.array([1.0, 0.0, 0.0, 0.0])
+        helper = np.eye(3)[int(np.argmin(np.abs(a)))]
+        axis = np.cross(a, helper)
+        return np.concatenate([[0.0], axis / np.linalg.norm(axis)])
+    theta = np.arctan2(s, a @ b)
+    return np.concatenate([[np.cos(theta / 2.0)], np.sin(theta / 2.0) * axis / s])
+''', hint="normalise a and b first", public_hint="normalise a and b first"),
 ]
 
 ALTERNATIVES = [

@@ -501,3 +501,29 @@ EQUIVALENT = {
     'align_pose_robust.28bbb93f': PRECONDITIONER,  # np.zeros((6, 6)) → np.zeros((6, 6), dtype=np.float32) (line 29)
     'align_pose_robust.4700c7d4': PRECONDITIONER,  # weight * (J.T @ J) → J.T @ J (line 35)
 }
+
+
+# --- lessons 01-04 ---
+PERPENDICULAR_ALREADY = ("a × b is perpendicular to a already: the projection that removes its a-component (with "
+                         "its sign, a term or a vector slipped) only moves the rounding of a × b, by about 1e-16, "
+                         "which the promise allows (angle and action to 1e-14; 1e-15 / (π − θ) next to opposite "
+                         "directions, where the axis is ill-conditioned anyway)")
+OPPOSITE_THRESHOLD = ("s < 1e-15 instead of 1e-14: between the two, θ = atan2(s, a · b) and the axis (a × b) / s "
+                      "are used; next to parallel directions θ ≈ s is accurate to 1e-14, and next to opposite ones "
+                      "the action is promised only to 1e-15 / (π − θ) ≈ 1e-15 / s ≥ 0.1, which the half turn meets")
+
+EQUIVALENT.update({
+    'quat_from_two_vectors.6e31d595': PERPENDICULAR_ALREADY,  # axis - axis @ a * a → axis + axis @ a * a (line 25)
+    'quat_from_two_vectors.dc9270cc': PERPENDICULAR_ALREADY,  # axis - axis @ a * a → axis (line 25)
+    'quat_from_two_vectors.5a0dcb29': PERPENDICULAR_ALREADY,  # axis @ a * a → axis @ a (line 25)
+    'quat_from_two_vectors.aedec7b3': PERPENDICULAR_ALREADY,  # axis @ a * a → axis @ a * b (line 25)
+    'quat_from_two_vectors.6c47c364': PERPENDICULAR_ALREADY,  # axis @ a * a → axis @ b * a (line 25)
+    'quat_from_two_vectors.561d8e89': BOUNDARY,  # s < 1e-14 → s <= 1e-14 (line 27)
+    'quat_from_two_vectors.3a4a10e4': OPPOSITE_THRESHOLD,  # 1e-14 → 1e-15 (line 27)
+    'quat_from_two_vectors.8541ba18': FLOAT32_EXACT,  # np.array([1.0, 0.0, 0.0, 0.0], dtype=np.float32) (line 29)
+})
+
+# Not a correct answer: normalised linear interpolation below sin Ω = 1e-4 is off from slerp by up to 1.6e-14 (at
+# Ω just below 1e-4, t = 0.3), above the promised 2e-15; the hidden suite now tries half-angles just below each
+# decade and kills it.
+del EQUIVALENT['quat_slerp.e0f71f64']  # 1e-12 → 0.0001 (line 28)

@@ -286,13 +286,39 @@ def jacobian_error_allowed(lecture_error, exact):
     return 2.0 * float(lecture_error) + 1e-8 * (1.0 + float(np.max(np.abs(exact))))
 
 
-# --- lessons 05-09 ---
-FLOAT32_HINT = ("an error of single precision's size (float32 keeps about 7 digits): keep every step in float64, "
-                "e.g. np.asarray(x, dtype=float), never dtype=np.float32")
+# --- lessons 01-04 ---
+FLOAT32_HINT = ("the error is the size of float32 rounding (single precision keeps about 7 digits): keep every array "
+                "in float64, numpy's default (no dtype=np.float32)")
+SERIES_HINT = ("exact at unit-size angles but not at small ones: a truncated series (sin θ ≈ θ, cos θ ≈ 1 - θ²/2) "
+               "is off by its first dropped term, which peaks at the largest angle it is used for; np.sin and "
+               "np.cos are accurate at every angle")
 
 
+def float32_rounding(got, expected):
+    """True when ``got`` is off from ``expected`` by what float32 rounding makes, and by more than float64's.
+
+    The error must lie between 1e-11 and 8 float32 epsilons (about 1e-6) of
+    the values' size (at least 1): float64 arithmetic stays far below that
+    window, and a wrong formula far above it.
+
+    Examples
+    --------
+    >>> R = np.array([[0.6, -0.8], [0.8, 0.6]])
+    >>> float32_rounding(R.astype(np.float32), R), float32_rounding(R, R)
+    (True, False)
+    """
+    got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
+    if got.shape != expected.shape or not np.all(np.isfinite(got)):
+        return False
+    scale = max(1.0, float(np.max(np.abs(expected), initial=0.0)))
+    error = float(np.max(np.abs(got - expected), initial=0.0))
+    return 1e-11 * scale < error <= 8 * float(np.finfo(np.float32).eps) * scale
+
+
+# --- lessons 05-09 (FLOAT32_HINT above) ---
 def single_precision_error(got, expected):
-    """True when ``got`` misses ``expected`` by float32's rounding: 1e-9 … 1e-5 of the largest entry.
+    """True when ``got`` misses ``expected`` as a computation carried out in float32 does: 1e-9 … 1e-5 of the
+    largest entry (several roundings compound, so the window reaches above :func:`float32_rounding`'s).
 
     A float64 answer is off by about 1e-16 of that size; a slip in a formula, by
     far more than 1e-5 at a generic input.

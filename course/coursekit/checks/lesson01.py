@@ -7,7 +7,7 @@ entries are 0 and ±1) and properties that any correct answer has.
 import numpy as np
 
 from ..checking import Mismatch, _where_in_student_code, public_check
-from ..diagnose import ALLCLOSE_HINT, close, rotation_problem
+from ..diagnose import ALLCLOSE_HINT, FLOAT32_HINT, SERIES_HINT, close, float32_rounding, rotation_problem
 from ..lie import Exp
 from .common import fmt, off_by, require_rotation, require_same_with_lists, require_shape
 
@@ -18,6 +18,31 @@ QUARTER_TURN_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 E = np.eye(3)
 # Generic rotations (no zero entries), for naming a mistake from its value.
 GENERIC_A, GENERIC_B = Exp([0.3, -0.8, 0.5]), Exp([-0.6, 0.2, 0.9])
+# A generic angle, then every decade where a shortcut's error could hide, both signs, from 1 down to 1e-8:
+# a float32 answer fails at the first, a small-angle series only further down.
+DECADE_ANGLES = [0.9] + [sign * 10.0 ** -k for k in range(9) for sign in (1.0, -1.0)]
+PRECISION = 1e-12  # cos and sin in float64 are accurate to about 1e-16; a float32 array or a series is not
+
+
+def _precision_mismatch(what, got, expected, angle):
+    """A Mismatch for ``got`` (the answer for ``angle``) off from ``expected`` by more than PRECISION, naming
+    float32 rounding or a small-angle series when the error looks like one."""
+    error = float(np.max(np.abs(got - expected)))
+    hint = None
+    if abs(angle) >= 0.1 and float32_rounding(got, expected):
+        hint = FLOAT32_HINT
+    elif abs(angle) < 0.1:
+        hint = SERIES_HINT
+    return Mismatch(f"{what} is off by {error:.2g} at angle {angle:.0e} (allowed: {PRECISION:.0e})", hint)
+
+
+def _require_double_precision(what, got, expected):
+    """Mismatch unless ``got`` equals ``expected`` to PRECISION (float64 matrix arithmetic stays far below it)."""
+    if not close(got, expected, PRECISION):
+        raise Mismatch(f"{what} is {off_by(got, expected)} for generic entries (allowed: {PRECISION:.0e})",
+                       FLOAT32_HINT if float32_rounding(got, expected) else None)
+
+
 SAME_SIGN_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
                   "carries the minus")
 
@@ -68,6 +93,15 @@ def _(rot2d):
     raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}, expected [0, 1]", hint)
 
 
+@public_check("rot2d", "agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1")
+def _(rot2d):
+    for angle in DECADE_ANGLES:
+        got = require_shape(rot2d(angle), (2, 2), f"rot2d({angle:.0e})")
+        c, s = np.cos(angle), np.sin(angle)
+        if not close(got, [[c, -s], [s, c]], PRECISION):
+            raise _precision_mismatch(f"rot2d({angle:.0e})", got, np.array([[c, -s], [s, c]]), angle)
+
+
 # ---------------------------------------------------------------- rot_x, rot_y, rot_z
 def _elementary_checks(name, axis, quarter_from, quarter_to):
     i, j = [k for k in range(3) if k != axis]
@@ -110,6 +144,17 @@ def _elementary_checks(name, axis, quarter_from, quarter_to):
             raise Mismatch(f"{name}(pi/2) barely moves {src}: {fmt(image)}",
                            "looks like degrees: angles in this course are radians")
         raise Mismatch(f"{name}(pi/2) sends {src} to {fmt(image)}, expected e_{dst}")
+
+    @public_check(name, "agrees with cos and sin to 1e-12 at every decade of angle, 1e-8 … 1")
+    def _(fn):
+        for angle in DECADE_ANGLES:
+            got = require_shape(fn(angle), (3, 3), f"{name}({angle:.0e})")
+            expected = np.eye(3)
+            c, s = np.cos(angle), np.sin(angle)
+            expected[i, i] = expected[j, j] = c
+            expected[j, i], expected[i, j] = (s, -s) if axis != 1 else (-s, s)
+            if not close(got, expected, PRECISION):
+                raise _precision_mismatch(f"{name}({angle:.0e})", got, expected, angle)
 
 
 _elementary_checks("rot_x", 0, 1, 2)
@@ -226,6 +271,13 @@ def _(rotate_point):
         raise Mismatch(f"the 3 rows do not match rotating each point on its own ({off_by(got, one_by_one)})", hint)
 
 
+@public_check("rotate_point", "agrees with R_wb @ p_b to 1e-12 for a generic rotation and point")
+def _(rotate_point):
+    p_b = np.array([0.3, -1.7, 2.9])
+    got = require_shape(rotate_point(GENERIC_A, p_b.copy()), (3,))
+    _require_double_precision("rotate_point(R_wb, p_b)", got, GENERIC_A @ p_b)
+
+
 @public_check("rotate_point", "accepts plain lists")
 def _(rotate_point):
     require_same_with_lists(rotate_point, (QUARTER_TURN_X, [0.5, -1.0, 2.0]), (3,), "rotate_point")
@@ -250,6 +302,12 @@ def _(compose):
                    f"({off_by(R_ac @ p_c, R_ab @ (R_bc @ p_c))})", hint)
 
 
+@public_check("compose", "agrees with R_ab @ R_bc to 1e-12 for generic rotations")
+def _(compose):
+    got = require_shape(compose(GENERIC_A.copy(), GENERIC_B.copy()), (3, 3))
+    _require_double_precision("compose(R_ab, R_bc)", got, GENERIC_A @ GENERIC_B)
+
+
 @public_check("compose", "accepts plain lists")
 def _(compose):
     require_same_with_lists(compose, (QUARTER_TURN_Z, QUARTER_TURN_X), (3, 3), "compose")
@@ -270,6 +328,12 @@ def _(invert_rotation):
                        hint)
 
 
+@public_check("invert_rotation", "agrees with the transpose to 1e-12 for a generic rotation")
+def _(invert_rotation):
+    got = require_shape(invert_rotation(GENERIC_A.copy()), (3, 3))
+    _require_double_precision("invert_rotation(R_ab)", got, GENERIC_A.T)
+
+
 @public_check("invert_rotation", "accepts plain lists")
 def _(invert_rotation):
     require_same_with_lists(invert_rotation, (QUARTER_TURN_X @ QUARTER_TURN_Z,), (3, 3), "invert_rotation")
@@ -282,6 +346,12 @@ def _(nearest_rotation):
     if not close(got, QUARTER_TURN_Z, 1e-9):
         raise Mismatch(f"changed a matrix that was already a rotation ({off_by(got, QUARTER_TURN_Z)})",
                        _first_match(got, [(QUARTER_TURN_Z.T, "returned the transpose, V Uᵀ: R = U Vᵀ")]))
+
+
+@public_check("nearest_rotation", "leaves a generic rotation unchanged to 1e-12")
+def _(nearest_rotation):
+    got = require_shape(nearest_rotation(GENERIC_B.copy()), (3, 3))
+    _require_double_precision("nearest_rotation(R)", got, GENERIC_B)
 
 
 @public_check("nearest_rotation", "turns a slightly wrong matrix into a rotation close to it")

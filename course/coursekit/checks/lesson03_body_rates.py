@@ -8,7 +8,8 @@ return for them (``tests/test_public_check_constants_lesson03_body_rates.py`` re
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close
+from ..diagnose import FLOAT32_HINT, close, float32_rounding
+from ..lie import Exp
 from .common import fmt, off_by, require_same_with_lists, require_shape
 
 ROLLED = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])        # a quarter turn about x
@@ -54,6 +55,24 @@ def _(body_angular_velocity):
     if not close(double, 2.0 * single, 1e-12):
         raise Mismatch("twice the rate of change does not give twice the angular velocity",
                        "ω_b is linear in Ṙ: no normalisation, no square roots")
+
+
+# A generic attitude and body rate (every component non-zero and different), so that each entry of Rᵀ Ṙ counts.
+GENERIC_R = Exp([0.4, -1.1, 0.7])
+GENERIC_RATE = np.array([0.3, -0.5, 0.8])
+GENERIC_R_DOT = GENERIC_R @ np.array([[0.0, -0.8, -0.5], [0.8, 0.0, -0.3], [0.5, 0.3, 0.0]])   # R [ω_b]×
+
+
+@public_check("body_angular_velocity", "recovers a generic body rate (0.3, -0.5, 0.8) rad/s at a generic attitude, "
+                                       "to 1e-12")
+def _(body_angular_velocity):
+    got = require_shape(body_angular_velocity(GENERIC_R.copy(), GENERIC_R_DOT.copy()), (3,),
+                        "body_angular_velocity(R, Ṙ)")
+    if not close(got, GENERIC_RATE, 1e-12):
+        raise Mismatch(f"got {fmt(got, 6)} rad/s, expected {fmt(GENERIC_RATE)} ({off_by(got, GENERIC_RATE)})",
+                       FLOAT32_HINT if float32_rounding(got, GENERIC_RATE) else
+                       "each component of ω_b comes from one pair of entries of the skew-symmetric Rᵀ Ṙ = [ω_b]×: "
+                       "x from (2, 1) and (1, 2), y from (0, 2) and (2, 0), z from (1, 0) and (0, 1)")
 
 
 @public_check("body_angular_velocity", "accepts plain lists")

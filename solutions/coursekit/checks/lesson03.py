@@ -14,7 +14,7 @@ contains no way to compute the exercises' answers.
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import LISTS_HINT, close, explains, rotation_problem
+from ..diagnose import FLOAT32_HINT, LISTS_HINT, close, explains, float32_rounding, rotation_problem
 from ..lie import Exp
 from .common import fmt, off_by, require_same_with_lists, require_shape
 
@@ -233,6 +233,19 @@ def _(bracket):
     if not close(got, BRACKET_2X2, 1e-12):
         raise Mismatch(f"bracket of two 2×2 matrices returned {fmt(got)} ({off_by(got, BRACKET_2X2)})",
                        _bracket_hint(got, BRACKET_2X2, BRACKET_SLIPS["2x2"]))
+
+
+# [w^, v^] = (w × v)^ for W_SAMPLE and V_SAMPLE: the hat of V_SAMPLE and of W_SAMPLE × V_SAMPLE = (0.79, 1.21, 2.43).
+HAT_V_SAMPLE = np.array([[0.0, 0.7, 0.1], [-0.7, 0.0, -2.0], [-0.1, 2.0, 0.0]])
+HAT_W_CROSS_V = np.array([[0.0, -2.43, 1.21], [2.43, 0.0, -0.79], [-1.21, 0.79, 0.0]])
+
+
+@public_check("bracket", "[w^, v^] = (w × v)^ to 1e-12 for generic w and v")
+def _(bracket):
+    got = require_shape(bracket(SKEW_SAMPLE.copy(), HAT_V_SAMPLE.copy()), (3, 3))
+    if not close(got, HAT_W_CROSS_V, 1e-12):
+        raise Mismatch(f"[w^, v^] for w = {fmt(W_SAMPLE)}, v = {fmt(V_SAMPLE)} is {off_by(got, HAT_W_CROSS_V)} "
+                       f"from (w × v)^", FLOAT32_HINT if float32_rounding(got, HAT_W_CROSS_V) else None)
 
 
 # ---------------------------------------------------------------- exp_series
@@ -521,6 +534,32 @@ def _(axis_angle):
     u_list, theta_list = _pair(listed, R)
     if not (close(u_list, u, 1e-12) and close(theta_list, theta, 1e-12)):
         raise Mismatch("axis_angle of a nested list differs from axis_angle of the same array", LISTS_HINT)
+
+
+# A generic axis (no zero component, largest component negative) and every decade of θ up to just below π.
+GENERIC_AXIS = np.array([0.36, -0.48, -0.8])   # a unit vector
+AXIS_ANGLE_THETAS = [10.0 ** -k for k in range(8, 0, -1)] + [1.0, 2.0, 3.0, np.pi - 1e-6]
+
+
+@public_check("axis_angle", "θ u rebuilds the rotation vector to 1e-9 about a generic axis at every decade of θ, "
+                            "1e-8 … 3, and at π - 1e-6")
+def _(axis_angle):
+    for angle in AXIS_ANGLE_THETAS:
+        w = angle * GENERIC_AXIS
+        R = Exp(w)
+        u, theta = _pair(axis_angle(R.copy()), R)
+        if abs(theta - angle) > 1e-9:
+            raise Mismatch(f"θ = {theta:.12g} at a true angle of {angle:.12g} ({off_by(theta, angle)})",
+                           FLOAT32_HINT if float32_rounding(theta, angle) and angle >= 0.1
+                           else _theta_hint(theta, angle, np.nan))
+        if not close(theta * u, w, 1e-9):
+            hint = None
+            if explains(u, -GENERIC_AXIS, GENERIC_AXIS):
+                hint = "u points the wrong way: vee(R - Rᵀ)/2 = sin θ u points along +u"
+            elif float32_rounding(theta * u, w):
+                hint = FLOAT32_HINT
+            raise Mismatch(f"at θ = {angle:.3g}, u = {fmt(u, 6)} and θ u is {off_by(theta * u, w)} from the "
+                           f"rotation vector {fmt(w, 6)}", hint)
 
 
 @public_check("axis_angle", "a half turn about (1, 1, 1)/√3: θ = π, u = ±(1, 1, 1)/√3")

@@ -11,12 +11,15 @@ import numpy as np
 
 from ..checking import Mismatch, public_check
 from ..diagnose import (
+    FLOAT32_HINT,
     close,
+    float32_rounding,
     quaternion_hint,
     rotation_problem,
     same_rotation_quat,
     shape_problem,
 )
+from ..lie import Exp
 from .common import fmt, off_by, require_same_with_lists, require_shape
 
 ONE = np.array([1.0, 0.0, 0.0, 0.0])
@@ -98,6 +101,17 @@ def _(quat_multiply):
                        _product_diagnosis(quat_multiply))
 
 
+@public_check("quat_multiply", "undoes itself to 1e-12: (p ⊗ q) ⊗ q* = |q|² p for generic p and q, also as lists")
+def _(quat_multiply):
+    p, q = LONG * [0.7, 1.3, 0.9, -1.1], GENERIC * 1.5   # neither is a unit quaternion, no entry is 0 or 1
+    pq = require_shape(quat_multiply(p.copy(), q.copy()), (4,), "quat_multiply(p, q)")
+    back = require_shape(quat_multiply(pq, _conjugate(q)), (4,), "quat_multiply(p ⊗ q, q*)")
+    if not close(back, (q @ q) * p, 1e-12):
+        raise Mismatch(f"(p ⊗ q) ⊗ q* is {off_by(back, (q @ q) * p)} from |q|² p",
+                       FLOAT32_HINT if float32_rounding(back, (q @ q) * p) else _product_diagnosis(quat_multiply))
+    require_same_with_lists(quat_multiply, (p, q), (4,), "quat_multiply(p, q)")
+
+
 # ---------------------------------------------------------------- quat_left, quat_right
 def _layout_diagnosis(M, q, mine):
     """A hint when the first row and column of ``M`` show a transpose or a scalar-last reading of ``q``."""
@@ -165,6 +179,14 @@ def _(quat_conjugate):
         raise Mismatch("got [-1, -2, -3, -4]", "returned -q: keep the scalar w, negate only x, y, z")
     if not close(got, [1.0, -2.0, -3.0, -4.0], 1e-12):
         raise Mismatch(f"got {fmt(got)}, expected [1, -2, -3, -4], {off_by(got, [1.0, -2.0, -3.0, -4.0])}")
+
+
+@public_check("quat_conjugate", "keeps every digit of a generic quaternion (float64)")
+def _(quat_conjugate):
+    got = require_shape(quat_conjugate(GENERIC.copy()), (4,))
+    if not close(got, _conjugate(GENERIC), 1e-15):
+        raise Mismatch(f"the conjugate of {fmt(GENERIC, 6)} is {off_by(got, _conjugate(GENERIC))}",
+                       FLOAT32_HINT if float32_rounding(got, _conjugate(GENERIC)) else None)
 
 
 @public_check("quat_conjugate", "accepts a plain list")
@@ -379,6 +401,37 @@ def _(matrix_to_quat):
         raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)}", quaternion_hint(got, expected))
 
 
+def _rotation_of(q):
+    """The rotation matrix of the unit quaternion q = [cos(θ/2), sin(θ/2) u], built as Exp(θ u)."""
+    half = np.arctan2(np.linalg.norm(q[1:]), q[0])
+    return Exp(2.0 * half * q[1:] / np.linalg.norm(q[1:]))
+
+
+# Generic unit quaternions (w >= 0): each of w, x, y, z the largest in turn, then each one vanishing, so every
+# branch of Shepperd's method runs, also next to the boundary where a wrong pivot would vanish (w is 1e-6, not 0,
+# so that the canonical sign w >= 0 names one of ±q).
+SHEPPERD_CASES = [q / np.linalg.norm(q) for q in np.array([
+    [0.9, 0.3, -0.4, 0.2], [0.3, -0.9, 0.4, 0.2], [0.2, 0.4, 0.9, -0.3], [0.4, -0.2, 0.3, 0.9],
+    [1e-6, 0.6, -0.5, 0.7], [0.5, 0.0, 0.6, -0.7], [0.6, -0.5, 0.0, 0.7], [0.5, 0.7, -0.6, 0.0]])]
+
+
+@public_check("matrix_to_quat", "exact to 1e-12 in every branch: w, x, y or z the largest, and one of them 0")
+def _(matrix_to_quat):
+    for q in SHEPPERD_CASES:
+        R = _rotation_of(q)
+        got = require_shape(matrix_to_quat(R.copy()), (4,), f"matrix_to_quat of the rotation of q = {fmt(q)}")
+        if not close(got, q, 1e-12):
+            hint = quaternion_hint(got, q)
+            if hint is None and same_rotation_quat(got, q, 1e-12):
+                hint = "negate the whole quaternion when w < 0 (canonical sign), in every branch"
+            if hint is None and float32_rounding(got, q):
+                hint = FLOAT32_HINT
+            raise Mismatch(f"the rotation of q = {fmt(q)} gave {fmt(got)} ({off_by(got, q)})",
+                           hint or "check the branch of the largest component: its pivot ½√(1 + 2 R_kk - tr R), "
+                                   "and each other component from the sums and differences of R's off-diagonal "
+                                   "pairs, divided by 4 × the pivot")
+
+
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz
 def _layout_hint(got, q, to_end):
     """The hint for the typical wrong reordering of ``q`` (one quaternion or a stack) that ``got`` equals."""
@@ -408,6 +461,15 @@ def _layout_checks(name, to_end):
         got = require_shape(fn(given[0].tolist()), (4,))
         if not close(got, wanted[0], 0.0):
             raise Mismatch(f"got {fmt(got)}, expected {fmt(wanted[0])}", _layout_hint(got, given[0], to_end))
+
+    @public_check(name, "keeps every digit of a generic quaternion (float64)")
+    def _(fn):
+        source = GENERIC if to_end else np.roll(GENERIC, -1)
+        target = np.roll(source, -1) if to_end else np.roll(source, 1)
+        got = require_shape(fn(source.copy()), (4,))
+        if not close(got, target, 0.0):
+            raise Mismatch(f"got {fmt(got, 6)}, expected {fmt(target, 6)} ({off_by(got, target)})",
+                           FLOAT32_HINT if float32_rounding(got, target) else _layout_hint(got, source, to_end))
 
     @public_check(name, "converts a stack of quaternions, shape (N, 4), row by row")
     def _(fn):
@@ -484,6 +546,31 @@ def _(quat_slerp):
             hint = ("not at constant speed: the turn from q0 must grow as t × the whole angle; use the weights "
                     "sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
         raise Mismatch(f"at t = 0.25 it has turned {turned:.6f} rad, off by {abs(turned - 0.625):.2g}", hint)
+
+
+# Half-angles Ω between q0 = 1 and q1 = [cos Ω, 0, 0, sin Ω]: every decade, and one below any sensible fallback.
+SLERP_OMEGAS = [1.0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-13]
+
+
+@public_check("quat_slerp", "exact to 2e-15 at t = 0.3 for every decade of Ω = acos(q0 · q1), 1 … 1e-8 and 1e-13, "
+                            "with q1 given with either sign")
+def _(quat_slerp):
+    t = 0.3
+    for omega in SLERP_OMEGAS:
+        expected = np.array([np.cos(t * omega), 0.0, 0.0, np.sin(t * omega)])
+        for sign in (1.0, -1.0):
+            q1 = sign * np.array([np.cos(omega), 0.0, 0.0, np.sin(omega)])
+            got = require_shape(quat_slerp(ONE.copy(), q1, t), (4,), f"quat_slerp(1, q1, 0.3) at Ω = {omega:g}")
+            if not close(got, expected, 2e-15):
+                hint = None
+                if float32_rounding(got, expected):
+                    hint = FLOAT32_HINT
+                elif omega < 0.5:
+                    hint = ("off at small Ω only: a linear fallback (nlerp) differs from slerp by about Ω³ t (1 - t), "
+                            "so use it only where that is below rounding (Ω under about 1e-5), and blend both ends "
+                            "there too")
+                raise Mismatch(f"at Ω = {omega:g} with q1 given {'as is' if sign > 0 else 'negated'}: got "
+                               f"{fmt(got, 6)}, expected {fmt(expected, 6)} ({off_by(got, expected)})", hint)
 
 
 @public_check("quat_slerp", "nearly identical and equal inputs do not divide by zero (nor take arccos of 1 + 2e-16)")

@@ -88,6 +88,19 @@ def _(quat_from_two_vectors):
         raise Mismatch(f"the vector part is off by {error:.2g} (it should be [0, 0, 5e-11])", hint)
 
 
+@public_check("quat_from_two_vectors", "only the directions count, also at 1e-6 rad: b scaled by 1e-12 or a by 1e-12 "
+                                       "gives the same answer to 1e-14")
+def _(quat_from_two_vectors):
+    a, b = np.array([0.3, -1.2, 2.0]), np.array([0.3, -1.2 + 2e-6, 2.0 + 1.2e-6])   # about 1e-6 rad apart
+    base = require_shape(quat_from_two_vectors(a, b), (4,), "quat_from_two_vectors(a, b)")
+    for scale_a, scale_b in ((1.0, 1e-12), (1e-12, 1.0), (1e4, 1.0)):
+        got = require_shape(quat_from_two_vectors(scale_a * a, scale_b * b), (4,),
+                            f"quat_from_two_vectors({scale_a:g} a, {scale_b:g} b)")
+        if not close(got, base, 1e-14):
+            raise Mismatch(f"scaling a by {scale_a:g} and b by {scale_b:g} changed the answer ({off_by(got, base)})",
+                           UNNORMALISED_HINT)
+
+
 @public_check("quat_from_two_vectors", "accepts plain lists and returns a unit quaternion")
 def _(quat_from_two_vectors):
     a, b = np.array([0.3, -1.2, 2.0]), np.array([-0.5, 0.4, 1.5])
