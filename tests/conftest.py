@@ -30,7 +30,8 @@ def pytest_cmdline_main(config):
 
 # The slowest test files, slowest first (from the durations printed at the end of a CI run).
 # Each grades whole classes or drives a browser; started first, they overlap instead of
-# forming a tail on one worker. Every other file follows in collection order.
+# forming a tail on one worker. Every other file follows in collection order; that puts
+# test_student_floor_grading.py, which waits for .ci/run's background floor run, near the end.
 SLOWEST_FILES_FIRST = (
     "test_integrations.py",          # stock nbgrader: generate_assignment and autograde
     "test_sample_class.py",          # the sample class with nbval
@@ -39,7 +40,6 @@ SLOWEST_FILES_FIRST = (
     "test_hostile_class.py",         # a class of hostile students, twice
     "test_as_ordinary_user.py",      # the walls' tests again as nobody
     "test_browser.py",               # JupyterLab in Chromium
-    "test_student_floor_grading.py", # notebooks run at the students' floor versions, graded
     "test_speed_verdicts.py",        # the benchmark class against its golden gradebook
     "test_book.py",                  # Sphinx builds the book
     "test_accessibility.py",         # axe-core in Chromium
