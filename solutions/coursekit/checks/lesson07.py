@@ -484,17 +484,29 @@ def _decade_hint(theta, errors, single, what):
             "terms, or move the threshold down")
 
 
+def _decade_misses(answer, tol):
+    """``({θ: error above tol, else 0}, (θ, error, single precision?) of the first miss or None)`` over
+    ``DECADE_ANGLES``; ``answer(θ)`` returns ``(got, expected)``."""
+    errors, first = {}, None
+    for theta in DECADE_ANGLES:
+        got, expected = answer(theta)
+        error = np.max(np.abs(got - expected))
+        errors[theta] = error if error > tol else 0.0
+        if error > tol and first is None:
+            first = (theta, error, single_precision_error(got, expected))
+    return errors, first
+
+
 @public_check("exp_se3", "exact to 5e-14 |rho| just below each power of ten, |phi| = 0.97 … 9.7e-9, |rho| = 50")
 def _(exp_se3):
     tol = 5e-14 * np.linalg.norm(RHO_DECADES)
-    errors, first = {}, None
-    for theta in DECADE_ANGLES:
+
+    def answer(theta):
         xi, expected = _decade_pose(theta)
-        T = require_shape(exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {theta:.2g}", nan_hint=lambda _: SERIES_NAN_HINT_V)
-        error = np.max(np.abs(T - expected))
-        errors[theta] = error if error > tol else 0.0
-        if error > tol and first is None:
-            first = (theta, error, single_precision_error(T, expected))
+        return require_shape(exp_se3(xi), (4, 4), f"exp_se3 at |phi| = {theta:.2g}",
+                             nan_hint=lambda _: SERIES_NAN_HINT_V), expected
+
+    errors, first = _decade_misses(answer, tol)
     if first:
         theta, error, single = first
         raise Mismatch(f"at |phi| = {theta:.2g}, |rho| = 50 the pose is off by {error:.1e} (tolerance {tol:.1g})",
@@ -579,14 +591,13 @@ def _log_mistake(got, T, xi, rho_c_constant=None):
               "plain lists accepted")
 def _(log_se3):
     tol = 5e-14 * np.linalg.norm(RHO_DECADES)
-    errors, first = {}, None
-    for theta in DECADE_ANGLES:
+
+    def answer(theta):
         xi, T = _decade_pose(theta)
-        got = require_shape(log_se3(T), (6,), f"log_se3 at |phi| = {theta:.2g}", nan_hint=lambda _: SERIES_HINT_C)
-        error = np.max(np.abs(got - xi))
-        errors[theta] = error if error > tol else 0.0
-        if error > tol and first is None:
-            first = (theta, error, single_precision_error(got, xi))
+        return require_shape(log_se3(T), (6,), f"log_se3 at |phi| = {theta:.2g}",
+                             nan_hint=lambda _: SERIES_HINT_C), xi
+
+    errors, first = _decade_misses(answer, tol)
     if first:
         theta, error, single = first
         raise Mismatch(f"at |phi| = {theta:.2g}, |rho| = 50 the twist is off by {error:.1e} (tolerance {tol:.1g})",
