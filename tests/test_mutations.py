@@ -24,6 +24,9 @@ from support import build_submission, grade, points_by_exercise
 MISTAKES = all_mistakes()
 WRONG = {name: m for name, m in MISTAKES.items() if m.kind == "mistake"}
 MIN_PER_EXERCISE = 4
+# Exercises whose slips are told apart at the last bit of a dot product (arccos at θ = 1e-12 gives the identity
+# on one OpenBLAS kernel and a 1e-8 turn on another): their hidden hints are checked again under Prescott.
+KERNEL_SENSITIVE = {"quat_from_two_vectors"}
 
 
 def _lesson(mistake):
@@ -44,7 +47,9 @@ def _ids(name):
     return f"lesson{_lesson(MISTAKES[name])}-{name}"
 
 
-@pytest.mark.parametrize("name", sorted(MISTAKES), ids=_ids)
+@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.blas_sensitive)
+                                  if MISTAKES[name].exercise in KERNEL_SENSITIVE else name
+                                  for name in sorted(MISTAKES)], ids=_ids)
 def test_mistake_costs_points_on_its_exercise_only(name, tmp_path):
     mistake = MISTAKES[name]
     lesson = _lesson(mistake)

@@ -174,3 +174,15 @@ def test_tmp_is_the_only_writable_place(make_box):
              "        except OSError:\n            pass\n    return found")
     with make_box(probe) as box:
         assert _call(box, "writable") == ["/tmp"]
+
+
+def test_a_forced_openblas_kernel_reaches_the_student_and_nothing_else_does(make_box, monkeypatch):
+    """On a real machine the grader and the student's code pick one OpenBLAS kernel (one CPU); a kernel forced
+    with OPENBLAS_CORETYPE (as .ci/run does to try another) must hold on both sides, or the grader's slip
+    candidates and the student's answer round differently. Any other variable stays out."""
+    monkeypatch.setenv("OPENBLAS_CORETYPE", "Prescott")
+    monkeypatch.setenv("GRADER_SECRET_FOR_TEST", "expected answers")
+    # limits of its own, so a warm slot started by an earlier test (before the variables were set) is not reused
+    box = make_box("import os\ndef env(name):\n    return os.environ.get(name, '')\n", cpu_seconds=119)
+    assert _call(box, "env", "OPENBLAS_CORETYPE") == "Prescott"
+    assert _call(box, "env", "GRADER_SECRET_FOR_TEST") == ""

@@ -153,6 +153,10 @@ def sandbox_environment(limits):
         "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
         "PYTHONDONTWRITEBYTECODE": "1",
     }
+    # On a real machine the grader and the student's code load OpenBLAS on one CPU, so they pick one kernel;
+    # a forced kernel (OPENBLAS_CORETYPE, as .ci/run uses to try another) must reach the student's side too.
+    if os.environ.get("OPENBLAS_CORETYPE"):
+        env["OPENBLAS_CORETYPE"] = os.environ["OPENBLAS_CORETYPE"]
     env.update(limits.extra_env)
     return env
 
