@@ -474,6 +474,10 @@ def _nearest_hint(got, M, otherwise="R = U Vᵀ from the SVD M = U Σ Vᵀ (with
     if np.linalg.det(U @ Vt) < 0:
         candidates.insert(0, (U @ Vt, "U Vᵀ is a reflection here (det -1): when det(U Vᵀ) < 0, flip the last column "
                                       "of U (use diag(1, 1, det(U Vᵀ)))"))
+        flip = np.diag([1.0, 1.0, -1.0])
+        for wrong_side in (flip @ U @ Vt, U @ Vt @ flip):   # det +1, but not the nearest rotation
+            candidates.append((wrong_side, "the sign fix goes between U and Vᵀ, R = U diag(1, 1, d) Vᵀ: it flips "
+                                           "the last column of U, the direction of the smallest singular value"))
     return _first_match(got, candidates, otherwise)
 
 

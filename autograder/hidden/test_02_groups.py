@@ -8,8 +8,8 @@ tol, dense matrices and an identity off by 1e-7, are part of the suite;
 floating-point products are never exactly associative, so == fails),
 rotations under the product (a group), under addition (closure, identity and
 inverse fail), reals with 0 under multiplication (the inverse fails), the
-cross product (no identity, not associative), "keep the second" (one-sided
-identity and inverses), reflections (no closure, no identity). A NaN never
+cross product (no identity, not associative), "keep the second" and "keep
+the first" (one-sided identities and inverses, one of each side), reflections (no closure, no identity). A NaN never
 counts as equal (max |x - y| <= tol is False for NaN). Every test calls the
 student's functions of its own exercise only.
 """
@@ -134,7 +134,8 @@ def test_check_group_axioms_cross_product(student):
 
 @exercise("check_group_axioms", weight=2)
 def test_check_group_axioms_both_sides(student):
-    """checks identity and inverses from both sides (a ∘ b = b has only left identities)"""
+    """checks identity and inverses from both sides (a ∘ b = b has only left identities, a ∘ b = a only right
+    ones)"""
     samples = [1.0, 2.0, -3.0]
     got = _verdict(student.check_group_axioms(samples, Probe("second"), 1.0, Probe("constant", 1.0),
                                               Probe("is_finite")), "check_group_axioms(a ∘ b = b)")
@@ -142,6 +143,12 @@ def test_check_group_axioms_both_sides(student):
                     "'keep the second' (a ∘ b = b)", {
                         "identity": "1 ∘ a = a, but a ∘ 1 = 1: check op(a, identity) as well as op(identity, a)",
                         "inverse": "a ∘ 1 = 1, but 1 ∘ a = a: check op(inverse(a), a) as well as op(a, inverse(a))"})
+    got = _verdict(student.check_group_axioms(samples, Probe("first"), 1.0, Probe("constant", 1.0),
+                                              Probe("is_finite")), "check_group_axioms(a ∘ b = a)")
+    _expect_verdict(got, {"closure": True, "identity": False, "inverse": False, "associativity": True},
+                    "'keep the first' (a ∘ b = a)", {
+                        "identity": "a ∘ 1 = a, but 1 ∘ a = 1: check op(identity, a) as well as op(a, identity)",
+                        "inverse": "1 ∘ a = 1, but a ∘ 1 = a: check op(a, inverse(a)) as well as op(inverse(a), a)"})
 
 
 @exercise("check_group_axioms", weight=2)

@@ -25,7 +25,7 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
-from coursekit.diagnose import explains
+from coursekit.diagnose import FLOAT32_HINT, explains, single_precision_error
 
 from .helpers import (exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, random_rotations,
                       rotation_problem)
@@ -195,7 +195,8 @@ def _compose_hint(J1, J2, R1, R2):
         (np.stack([np.eye(3), R1]), "those are the left Jacobians (Exp(d) on the left); here both sides are right"),
         (np.stack([np.eye(3), R2.T]), "J1 and J2 are swapped: the first is for a turn of R1"),
         (np.stack([R1.T, np.eye(3)]), "J1 depends on R2, the factor the perturbation must cross, not on R1"),
-    ], truth) or "R1 Exp(d) R2 = (R1 R2) (R2ᵀ Exp(d) R2) = (R1 R2) Exp(R2ᵀ d)"
+    ], truth) or (FLOAT32_HINT if single_precision_error(got, truth) else
+                  "R1 Exp(d) R2 = (R1 R2) (R2ᵀ Exp(d) R2) = (R1 R2) Exp(R2ᵀ d)")
 
 
 @exercise("jacobians_of_compose", weight=3)
@@ -242,7 +243,7 @@ def _inverse_hint(J, R):
         (R, "the sign: inverting a small turn reverses it, Exp(d)⁻¹ = Exp(-d)"),
         (R.T, "Rᵀ is neither the sign nor the side: (R Exp(d))⁻¹ = Rᵀ Exp(-R d)"),
         (np.eye(3), "the sign and the side: (R Exp(d))⁻¹ = Exp(-d) Rᵀ = Rᵀ Exp(-R d)"),
-    ], -R) or "(R Exp(d))⁻¹ = Exp(-d) Rᵀ = Rᵀ Exp(-R d)"
+    ], -R) or (FLOAT32_HINT if single_precision_error(J, -R) else "(R Exp(d))⁻¹ = Exp(-d) Rᵀ = Rᵀ Exp(-R d)")
 
 
 @exercise("jacobian_of_inverse", weight=3)

@@ -192,6 +192,13 @@ def nearest_rotation(M):
     D = np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))])
     return (U @ D @ Vt).T
 ''', hint='V Uᵀ', public_hint='V Uᵀ'),
+    Mistake("nearest_rotation_fix_on_rows", "nearest_rotation",
+            "the determinant fix on the wrong side of U: flips U's last row (a rotation, not the nearest)", '''
+def nearest_rotation(M):
+    U, _, Vt = np.linalg.svd(np.asarray(M, dtype=float))
+    d = np.sign(np.linalg.det(U @ Vt))
+    return np.diag([1.0, 1.0, d]) @ U @ Vt
+''', hint="the sign fix goes between U and Vᵀ", public_hint="the sign fix goes between U and Vᵀ"),
     Mistake("nearest_rotation_qr", "nearest_rotation", "the Q of a QR decomposition (orthogonal, not nearest)", '''
 def nearest_rotation(M):
     Q, R = np.linalg.qr(np.asarray(M, dtype=float))

@@ -105,6 +105,10 @@ def jacobians_of_compose(R1, R2):
 def jacobians_of_compose(R1, R2):
     return np.asarray(R1, dtype=float).T, np.eye(3)
 ''', hint="not on R1", public_hint="not on R1"),
+    Mistake("compose_jacobian_float32", "jacobians_of_compose", "J1 = R2ᵀ stored in float32", '''
+def jacobians_of_compose(R1, R2):
+    return np.asarray(R2, dtype=np.float32).T, np.eye(3)
+''', hint="float32 rounding", public_hint="float32 rounding"),
     # ------------------------------------------------------------ jacobian_of_inverse
     Mistake("inverse_left", "jacobian_of_inverse", "-Rᵀ: the Jacobian of the left perturbations", '''
 def jacobian_of_inverse(R):
@@ -123,6 +127,10 @@ def jacobian_of_inverse(R):
 def jacobian_of_inverse(R):
     return np.asarray(R, dtype=float).T.copy()
 ''', hint="neither the sign nor the side", public_hint="neither the sign nor the side"),
+    Mistake("inverse_jacobian_float32", "jacobian_of_inverse", "-R stored in float32", '''
+def jacobian_of_inverse(R):
+    return -np.asarray(R, dtype=np.float32)
+''', hint="float32 rounding", public_hint="float32 rounding"),
     # ------------------------------------------------------------ jacobian_transform_point
     Mistake("point_left", "jacobian_transform_point", "[I, -[T p]×]: the Jacobian of the left perturbation", '''
 def jacobian_transform_point(T, p):

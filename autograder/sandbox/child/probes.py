@@ -53,6 +53,11 @@ def second(a, b):
     return np.array(b, dtype=float)
 
 
+def first(a, b):
+    """a ∘ b = a: associative, every element a right identity, no two-sided identity."""
+    return np.array(a, dtype=float)
+
+
 # ---------------------------------------------------------------- inverses
 def transpose(a):
     return np.asarray(a, dtype=float).T.copy()

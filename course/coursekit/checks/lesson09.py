@@ -11,7 +11,7 @@ recomputes every one of them from its definition).
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import close
+from ..diagnose import FLOAT32_HINT, close
 from ..lie import Exp, ExpSE3, Log, quat_product, skew
 from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape
 
@@ -174,6 +174,21 @@ def _(jacobians_of_compose):
     _unchanged_inputs(jacobians_of_compose, (R1, R2), "jacobians_of_compose")
 
 
+def _require_turn_preserving(J, what, why):
+    """Mismatch unless Jᵀ J = I to 1e-12 at generic rotations (float64 stays near 1e-16, float32 near 1e-7)."""
+    error = float(np.max(np.abs(J.T @ J - np.eye(3))))
+    if error > 1e-12:
+        raise Mismatch(f"{what}ᵀ {what} is off from I by {error:.2g} for generic rotations (allowed 1e-12): {why}",
+                       FLOAT32_HINT if error < 1e-5 else None)
+
+
+@public_check("jacobians_of_compose", "for generic rotations, J1 and J2 keep a small turn's size to 1e-12 (Jᵀ J = I)")
+def _(jacobians_of_compose):
+    J1, J2 = _pair(jacobians_of_compose(Exp([0.3, -0.5, 0.2]), Exp([-0.4, 0.1, 0.9])), "jacobians_of_compose(R1, R2)")
+    _require_turn_preserving(J1, "J1", "a turn of R1 moved past R2 changes its axis, never its angle")
+    _require_turn_preserving(J2, "J2", "a turn of R2 is already at the end of the product")
+
+
 # ---------------------------------------------------------------- jacobian_of_inverse
 INVERSE_LEFT_HINT = ("-Rᵀ is the Jacobian for perturbations on the left of R and of R⁻¹; with R Exp(d), the turn "
                      "Exp(-d) lands on the left of Rᵀ and must be moved to the right")
@@ -204,6 +219,12 @@ def _(jacobian_of_inverse):
                        "at the identity the Jacobian of the inverse is -I: a small turn comes back reversed")
     require_same_with_lists(jacobian_of_inverse, (PERMUTATION,), (3, 3), "jacobian_of_inverse(R)")
     _unchanged_inputs(jacobian_of_inverse, (PERMUTATION,), "jacobian_of_inverse")
+
+
+@public_check("jacobian_of_inverse", "for a generic rotation, J keeps a small turn's size to 1e-12 (Jᵀ J = I)")
+def _(jacobian_of_inverse):
+    J = require_shape(jacobian_of_inverse(Exp([0.3, -0.5, 0.2])), (3, 3), "jacobian_of_inverse(R)")
+    _require_turn_preserving(J, "J", "inverting R Exp(d) reverses the small turn and moves it, by the same angle")
 
 
 # ---------------------------------------------------------------- jacobian_transform_point

@@ -391,3 +391,13 @@ def _(nearest_rotation):
                                             "project with the SVD, and flip the last column of U when det(U Vᵀ) < 0")],
             "the result must be a rotation, det = +1"))
     require_rotation(got)
+    asymmetry = np.max(np.abs(got.T @ M - M.T @ got))
+    if asymmetry > 1e-9:
+        U, _, Vt = np.linalg.svd(M)
+        flip = np.diag([1.0, 1.0, -1.0])
+        fix = ("the sign fix goes between U and Vᵀ, R = U diag(1, 1, d) Vᵀ: it flips the last column of U, the "
+               "direction of the smallest singular value")
+        raise Mismatch(f"the result is a rotation, but not the nearest one: Rᵀ M is not symmetric (off by "
+                       f"{asymmetry:.2g})", _first_match(got, [(flip @ U @ Vt, fix), (U @ Vt @ flip, fix)],
+                                                       "the nearest rotation comes from the SVD M = U Σ Vᵀ: "
+                                                       "R = U diag(1, 1, det(U Vᵀ)) Vᵀ"))

@@ -125,7 +125,7 @@ def _(check_group_axioms):
                 "closure": "closure asks is_member(op(a, b)) for every ordered pair"})
 
 
-@public_check("check_group_axioms", "catches a one-sided identity (a ∘ b = b) and a non-associative ×")
+@public_check("check_group_axioms", "catches one-sided identities (a ∘ b = b, a ∘ b = a) and a non-associative ×")
 def _(check_group_axioms):
     got = _verdict(check_group_axioms([1.0, 2.0, 3.0], lambda a, b: b, 1.0, lambda a: 1.0, _is_real))
     if got["identity"]:
@@ -133,6 +133,13 @@ def _(check_group_axioms):
                        "1 ∘ a = a, but a ∘ 1 = 1: check op(a, identity) as well as op(identity, a)")
     if got["inverse"]:
         raise Mismatch("with a ∘ b = b and inverse(a) = 1, inverse(2) ∘ 2 = 2 ≠ 1, yet inverse came out True",
+                       "check both op(a, inverse(a)) and op(inverse(a), a)")
+    got = _verdict(check_group_axioms([1.0, 2.0, 3.0], lambda a, b: a, 1.0, lambda a: 1.0, _is_real))
+    if got["identity"]:
+        raise Mismatch("with a ∘ b = a, 1 is only a right identity (1 ∘ 2 = 1), yet identity came out True",
+                       "a ∘ 1 = a, but 1 ∘ a = 1: check op(identity, a) as well as op(a, identity)")
+    if got["inverse"]:
+        raise Mismatch("with a ∘ b = a and inverse(a) = 1, 2 ∘ inverse(2) = 2 ≠ 1, yet inverse came out True",
                        "check both op(a, inverse(a)) and op(inverse(a), a)")
     vectors = [np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), np.array([0.0, 1.0, 1.0])]
     got = _verdict(check_group_axioms(vectors, np.cross, np.zeros(3), lambda a: -np.asarray(a), _is_real))
