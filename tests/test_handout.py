@@ -7,6 +7,7 @@ folder, the hidden suite, nbgrader's or the grader's packages; and old Pythons, 
 ``check_python.py``'s one line, not a resolver error.
 """
 
+import json
 import subprocess
 import sys
 import zipfile
@@ -128,6 +129,25 @@ def test_check_python_says_one_line_on_an_old_python_and_passes_a_new_one(handou
     assert old.returncode == 1 and old.stdout == "" and old.stderr.count("\n") == 1
     assert "needs Python 3.10 or newer" in old.stderr
     compile(files["rotations-course/check_python.py"], "check_python.py", "exec", dont_inherit=True)
+
+
+def test_check_python_names_this_python_in_the_lessons_and_nothing_else(handout, tmp_path):
+    """What JupyterLab's kernel will write on opening is written first (so the tab opens clean); cells and
+    all other metadata stay as they are, a second run changes nothing, a damaged notebook is left alone."""
+    (tmp_path / "check_python.py").write_bytes(handout["rotations-course/check_python.py"])
+    lesson = next(name for name in handout if name.endswith("01_frames_and_rotations.ipynb"))
+    (tmp_path / "lesson.ipynb").write_bytes(handout[lesson])
+    (tmp_path / "damaged.ipynb").write_text('{"cells": [', encoding="utf-8")
+    subprocess.run([sys.executable, str(tmp_path / "check_python.py")], check=True, timeout=60)
+    before, after = json.loads(handout[lesson]), json.loads((tmp_path / "lesson.ipynb").read_text(encoding="utf-8"))
+    info = after["metadata"].pop("language_info")
+    assert info["version"] == sys.version.split()[0] and info["name"] == "python"
+    before["metadata"].pop("language_info")
+    assert after == before
+    once = (tmp_path / "lesson.ipynb").read_bytes()
+    subprocess.run([sys.executable, str(tmp_path / "check_python.py")], check=True, timeout=60)
+    assert (tmp_path / "lesson.ipynb").read_bytes() == once
+    assert (tmp_path / "damaged.ipynb").read_text(encoding="utf-8") == '{"cells": ['
 
 
 def test_check_python_runs_on_the_oldest_pythons_here(handout, tmp_path):

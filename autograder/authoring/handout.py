@@ -64,7 +64,9 @@ py check_python.py && py -m venv .venv && .venv\\Scripts\\pip install -r require
 
 `check_python.py` prints one line before anything is installed: that your
 Python is fine, or which Python you have and that the course needs {floor}
-or newer. On Debian or Ubuntu, if `venv` says that `ensurepip` is not
+or newer. It also writes your Python's version into the lessons, where
+JupyterLab looks for it: without it, every lesson would open marked as
+modified. On Debian or Ubuntu, if `venv` says that `ensurepip` is not
 available, install it first with `sudo apt install python3-venv`.
 
 **An older Python?** Install a newer one beside it and use that one in the

@@ -55,7 +55,15 @@ def python_floor_text():
     return ".".join(str(part) for part in PYTHON_FLOOR)
 
 
-CHECK_PYTHON = '''"""Is this Python new enough for the course? Run it with the Python you will use: python3 check_python.py"""
+CHECK_PYTHON = '''"""Is this Python new enough for the course? Run it with the Python you will use: python3 check_python.py
+
+It also writes this Python's description into the lessons' metadata: JupyterLab writes the running kernel's
+into a notebook when the kernel starts, and shows the notebook as modified unless the same words are there.
+"""
+import glob
+import io
+import json
+import os
 import sys
 
 if sys.version_info < {floor!r}:
@@ -63,6 +71,23 @@ if sys.version_info < {floor!r}:
                      "Install a newer Python (see README.md), then run the install line again with it.\\n"
                      % (sys.version.split()[0], sys.executable))
     sys.exit(1)
+
+# ipykernel's language_info, word for word as it reports it for this Python
+LANGUAGE_INFO = {{"codemirror_mode": {{"name": "ipython", "version": sys.version_info[0]}}, "file_extension": ".py",
+                 "mimetype": "text/x-python", "name": "python", "nbconvert_exporter": "python",
+                 "pygments_lexer": "ipython3", "version": sys.version.split()[0]}}
+for path in sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), "*.ipynb"))):
+    try:
+        with io.open(path, encoding="utf-8") as handle:
+            notebook = json.load(handle)
+        if notebook["metadata"].get("language_info") != LANGUAGE_INFO:
+            notebook["metadata"]["language_info"] = LANGUAGE_INFO
+            text = json.dumps(notebook, indent=1, sort_keys=True, ensure_ascii=False) + "\\n"
+            with io.open(path + ".tmp", "w", encoding="utf-8", newline="\\n") as handle:
+                handle.write(text)
+            os.replace(path + ".tmp", path)  # whole or not at all
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        pass  # a notebook that cannot be read is left exactly as it is
 print("Python %s: good for this course." % sys.version.split()[0])
 '''
 
