@@ -10,6 +10,7 @@ import csv
 import os
 import subprocess
 import sys
+import zlib
 from functools import lru_cache
 from pathlib import Path
 
@@ -63,7 +64,9 @@ def benchmark_class(target, count):
     The class of ``benchmarks/grading_speed.py`` and of the golden gradebook
     ``tests/golden/benchmark_class_grades.csv``. Returns the student folders, sorted.
     """
-    wrong = [m for m in all_mistakes().values() if m.kind == "mistake"]
+    by_exercise = {}
+    for mistake in sorted((m for m in all_mistakes().values() if m.kind == "mistake"), key=lambda m: m.name):
+        by_exercise.setdefault(mistake.exercise, []).append(mistake)
     target = Path(target)
     target.mkdir(parents=True, exist_ok=True)
     for index in range(count):
@@ -73,11 +76,20 @@ def benchmark_class(target, count):
         elif index % 4 == 1:
             build_submission(folder, default=STUB)
         else:
-            chosen = {}
-            for mistake in wrong[index % len(wrong)::7]:
-                chosen.setdefault(mistake.exercise, mistake.source)
-            build_submission(folder, chosen)
+            build_submission(folder, _drawn_mistakes(folder.name, by_exercise))
     return sorted(p for p in target.iterdir() if p.is_dir())
+
+
+def _drawn_mistakes(student, by_exercise, share=3):
+    """``{exercise: source}``: a mistake in about one exercise of ``share``, drawn by a hash of the student's and the
+    exercise's names, so a mistake added to the corpus moves only its own exercise's draws (and the golden
+    gradebook only there)."""
+    chosen = {}
+    for exercise, mistakes in by_exercise.items():
+        draw = zlib.crc32(f"{student}/{exercise}".encode())
+        if draw % share == 0:
+            chosen[exercise] = mistakes[(draw // share) % len(mistakes)].source
+    return chosen
 
 
 def grade(folder, lessons=(), nbval=False):
