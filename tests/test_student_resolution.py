@@ -15,7 +15,6 @@ is asked once more on its own before it counts as a failure; every other case ke
 """
 
 import concurrent.futures
-import importlib.util
 import os
 import subprocess
 import sys
@@ -23,7 +22,8 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from student_floor import student_install
+
 TIMEOUT = 1800  # seconds for one pip resolution (about 20 s of CPU each; CI runs them beside the suite)
 
 PLATFORMS = {
@@ -33,14 +33,6 @@ PLATFORMS = {
     "macos-arm64": ["macosx_12_0_arm64"],
     "windows-amd64": ["win_amd64"],
 }
-
-
-def _student_install():
-    spec = importlib.util.spec_from_file_location("student_install",
-                                                  ROOT / "autograder" / "authoring" / "student_install.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def resolve(python, platform, requirements, timeout=TIMEOUT):
@@ -63,12 +55,12 @@ def resolve(python, platform, requirements, timeout=TIMEOUT):
 
 def _requirements_file(folder):
     path = Path(folder) / "requirements.txt"
-    path.write_text(_student_install().requirements_text(), encoding="utf-8")
+    path.write_text(student_install().requirements_text(), encoding="utf-8")
     return path
 
 
 def _cases():
-    return [(python, platform) for python in _student_install().PYTHONS for platform in PLATFORMS]
+    return [(python, platform) for python in student_install().PYTHONS for platform in PLATFORMS]
 
 
 if __name__ != "__main__":
