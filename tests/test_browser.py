@@ -85,9 +85,10 @@ def test_the_handout_notebooks_open_unmodified(session):
         page.wait_for_timeout(1500)  # widgets and the kernel's info arrive right after it starts
         if page.query_selector(".lm-TabBar-tab.jp-mod-current.jp-mod-dirty"):
             dirty.append(name)
-        page.keyboard.press("Control+s")
-        page.wait_for_function("() => !document.querySelector('.lm-TabBar-tab.jp-mod-current.jp-mod-dirty')",
-                               timeout=30_000)
+        # the save's own answer, not the tab's dot (already clean), says the file is written
+        with page.expect_response(lambda response: "/api/contents/" in response.url
+                                  and response.request.method == "PUT", timeout=30_000):
+            page.keyboard.press("Control+s")
         after = json.loads(path.read_text(encoding="utf-8"))
         assert after["metadata"]["language_info"]["name"] == "python"
         for notebook in (before, after):
