@@ -215,7 +215,7 @@ def _read_roster(path):
 
 
 def _cmd_canary(args):
-    from autograder.batch.class_run import _prewarm
+    from autograder.batch.class_run import prewarm
     from autograder.grading.canary import CanaryFailed, describe_canary, ensure_reference_passes
     from autograder.grading.fingerprint import fingerprint_parts
     from autograder.grading.pipeline import GradingOptions
@@ -224,7 +224,7 @@ def _cmd_canary(args):
     args.lessons = _lesson_numbers(args.lessons)
     print(launcher.describe_isolation())
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
-    _prewarm()
+    prewarm()
     try:
         print(describe_canary(ensure_reference_passes(options, fingerprint_parts(options))))
     except CanaryFailed as error:

@@ -107,3 +107,18 @@ def test_the_slowest_first_order_names_real_test_files():
     present = {path.name for path in (PROJECT_ROOT / "tests").glob("test_*.py")}
     assert set(conftest.SLOWEST_FILES_FIRST) <= present, set(conftest.SLOWEST_FILES_FIRST) - present
     assert len(set(conftest.SLOWEST_FILES_FIRST)) == len(conftest.SLOWEST_FILES_FIRST)
+
+
+def test_no_private_name_is_imported_from_another_stage():
+    """A stage's seam is its public names: ``from autograder.batch.class_run import _helper`` outside ``batch``
+    reaches past it. Checked for every module of ``autograder/`` (the CLI once imported ``_prewarm``)."""
+    wrong = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        here = path.relative_to(PACKAGE).parts[0]
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and not node.level and (node.module or "").startswith("autograder."):
+                stage = node.module.split(".")[1]
+                private = [a.name for a in node.names if a.name.startswith("_") and not a.name.startswith("__")]
+                if stage != here and private:
+                    wrong.append(f"{path.relative_to(PACKAGE.parent)}: {node.module} {private}")
+    assert not wrong, "private names imported across stages:\n" + "\n".join(wrong)

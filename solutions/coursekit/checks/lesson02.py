@@ -125,22 +125,25 @@ def _(check_group_axioms):
                 "closure": "closure asks is_member(op(a, b)) for every ordered pair"})
 
 
+# Structures where 1 is an identity, and inverse(a) = 1 an inverse, on one side only:
+# (op, rule, side, the product that shows it, the inverse's product, the hint)
+ONE_SIDED = (
+    (lambda a, b: b, "a ∘ b = b", "left", "2 ∘ 1 = 1", "inverse(2) ∘ 2 = 2 ≠ 1",
+     "1 ∘ a = a, but a ∘ 1 = 1: check op(a, identity) as well as op(identity, a)"),
+    (lambda a, b: a, "a ∘ b = a", "right", "1 ∘ 2 = 1", "2 ∘ inverse(2) = 2 ≠ 1",
+     "a ∘ 1 = a, but 1 ∘ a = 1: check op(identity, a) as well as op(a, identity)"),
+)
+
+
 @public_check("check_group_axioms", "catches one-sided identities (a ∘ b = b, a ∘ b = a) and a non-associative ×")
 def _(check_group_axioms):
-    got = _verdict(check_group_axioms([1.0, 2.0, 3.0], lambda a, b: b, 1.0, lambda a: 1.0, _is_real))
-    if got["identity"]:
-        raise Mismatch("with a ∘ b = b, 1 is only a left identity (2 ∘ 1 = 1), yet identity came out True",
-                       "1 ∘ a = a, but a ∘ 1 = 1: check op(a, identity) as well as op(identity, a)")
-    if got["inverse"]:
-        raise Mismatch("with a ∘ b = b and inverse(a) = 1, inverse(2) ∘ 2 = 2 ≠ 1, yet inverse came out True",
-                       "check both op(a, inverse(a)) and op(inverse(a), a)")
-    got = _verdict(check_group_axioms([1.0, 2.0, 3.0], lambda a, b: a, 1.0, lambda a: 1.0, _is_real))
-    if got["identity"]:
-        raise Mismatch("with a ∘ b = a, 1 is only a right identity (1 ∘ 2 = 1), yet identity came out True",
-                       "a ∘ 1 = a, but 1 ∘ a = 1: check op(identity, a) as well as op(a, identity)")
-    if got["inverse"]:
-        raise Mismatch("with a ∘ b = a and inverse(a) = 1, 2 ∘ inverse(2) = 2 ≠ 1, yet inverse came out True",
-                       "check both op(a, inverse(a)) and op(inverse(a), a)")
+    for op, rule, side, witness, inverse_witness, hint in ONE_SIDED:
+        got = _verdict(check_group_axioms([1.0, 2.0, 3.0], op, 1.0, lambda a: 1.0, _is_real))
+        if got["identity"]:
+            raise Mismatch(f"with {rule}, 1 is only a {side} identity ({witness}), yet identity came out True", hint)
+        if got["inverse"]:
+            raise Mismatch(f"with {rule} and inverse(a) = 1, {inverse_witness}, yet inverse came out True",
+                           "check both op(a, inverse(a)) and op(inverse(a), a)")
     vectors = [np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), np.array([0.0, 1.0, 1.0])]
     got = _verdict(check_group_axioms(vectors, np.cross, np.zeros(3), lambda a: -np.asarray(a), _is_real))
     if got["associativity"]:
