@@ -105,6 +105,12 @@ class Outputs:
     def gradescope_json(self, student_id):
         return self.root / "results" / f"{safe_name(student_id)}.json"
 
+    def student_files(self, student_id):
+        """``[(kind, path)]``: the files a graded student leaves, in the order they are written (the saved
+        result last: its presence means the others are complete)."""
+        return [("feedback", self.feedback_html(student_id)), ("gradescope", self.gradescope_json(student_id)),
+                ("student", self.student_json(student_id))]
+
     @property
     def gradebook(self):
         return self.root / "grades.csv"

@@ -244,9 +244,7 @@ def grade_on_worker(function, task, payload, driver_parts, deadline_seconds):
         fork_each(_die_with_parent(function), [local_task], 1, lambda _, problem: problems.append(problem),
                   deadline_seconds=deadline_seconds)
         files = {}
-        for kind, path in (("feedback", here.feedback_html(student_id)),
-                           ("gradescope", here.gradescope_json(student_id)),
-                           ("student", here.student_json(student_id))):
+        for kind, path in here.student_files(student_id):
             if path.is_file():
                 files[kind] = path.read_bytes()
     return "done", address, problems[0], files
@@ -426,9 +424,7 @@ class DaskRunner:
 
         student_id, out_root = task.student_id, task.out_root
         outputs = Outputs(Path(out_root))
-        for kind, path in (("feedback", outputs.feedback_html(student_id)),
-                           ("gradescope", outputs.gradescope_json(student_id)),
-                           ("student", outputs.student_json(student_id))):
+        for kind, path in outputs.student_files(student_id):
             if kind in files:
                 write_atomically(path, files[kind].decode("utf-8"))
 
