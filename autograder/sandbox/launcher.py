@@ -146,7 +146,8 @@ def _system_binds():
 
 
 def sandbox_environment(limits):
-    """The whole environment of a sandboxed process (nothing inherited)."""
+    """The whole environment of a sandboxed process: nothing is inherited but a forced OpenBLAS kernel
+    (``OPENBLAS_CORETYPE``, a kernel's name, which tells the student's code nothing about the grader)."""
     env = {
         "HOME": "/tmp", "TMPDIR": "/tmp", "PATH": "/usr/bin:/bin", "LANG": "C.UTF-8",
         "MPLBACKEND": "Agg", "MPLCONFIGDIR": "/tmp/.matplotlib", "PYTHONHASHSEED": "0",
