@@ -150,6 +150,8 @@ def _said(result):
     lines = [result.reason, *result.problems, *result.skipped]
     for lesson in result.lessons:
         lines.append(lesson.reason)
+        if lesson.run is not None and lesson.run.points < lesson.run.max_points:
+            lines += [f"notebook {lesson.number} ({lesson.run.status}): {failure}" for failure in lesson.run.failures]
         for exercise in lesson.exercises:
             lines += exercise.notes
             lines += [check.reason for check in exercise.checks if not check.passed]
