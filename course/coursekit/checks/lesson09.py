@@ -11,7 +11,7 @@ recomputes every one of them from its definition).
 import numpy as np
 
 from ..checking import Mismatch, public_check
-from ..diagnose import FLOAT32_HINT, close
+from ..diagnose import FLOAT32_HINT, close, single_precision_error
 from ..lie import Exp, ExpSE3, Log, quat_product, skew
 from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape
 
@@ -179,7 +179,7 @@ def _require_turn_preserving(J, what, why):
     error = float(np.max(np.abs(J.T @ J - np.eye(3))))
     if error > 1e-12:
         raise Mismatch(f"{what}ᵀ {what} is off from I by {error:.2g} for generic rotations (allowed 1e-12): {why}",
-                       FLOAT32_HINT if error < 1e-5 else None)
+                       FLOAT32_HINT if single_precision_error(J.T @ J, np.eye(3)) else None)
 
 
 @public_check("jacobians_of_compose", "for generic rotations, J1 and J2 keep a small turn's size to 1e-12 (Jᵀ J = I)")
