@@ -150,8 +150,8 @@ def name_live_figure(fig):
 
     The caption is the figure's suptitle, else its first axes title, as
     readable text (``coursekit.captions``: "R_z(δ)", not TeX). ipympl keeps it
-    as the figure's label (its hidden header, and the name of a downloaded
-    PNG); the page script ``NAME_CANVASES_JS`` makes the canvas an image named
+    as the figure's window title and label (its hidden header, and the name of
+    a downloaded PNG); the page script ``NAME_CANVASES_JS`` makes the canvas an image named
     by it. ``interactive_figures`` makes every new figure call this when it is
     drawn (``name_live_figure_when_drawn``), so an explorer's figure, whose
     title changes with its sliders, is named anew at each redraw.
@@ -165,7 +165,13 @@ def name_live_figure(fig):
     """
     if hasattr(fig.canvas, "_figure_label"):
         caption = figure_caption(fig)
-        if caption and fig.canvas._figure_label != caption:
+        manager = fig.canvas.manager
+        if caption and manager is not None and manager.get_window_title() != caption:
+            # The window title, not the label alone: the page asks for a refresh after every resize,
+            # and a refresh re-sends the window title ("Figure 2" unless set), which would undo a
+            # label set directly whenever no redraw followed it.
+            manager.set_window_title(caption)
+        elif caption and fig.canvas._figure_label != caption:
             fig.canvas._figure_label = caption
     return fig
 
