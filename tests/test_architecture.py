@@ -122,3 +122,39 @@ def test_no_private_name_is_imported_from_another_stage():
                 if stage != here and private:
                     wrong.append(f"{path.relative_to(PACKAGE.parent)}: {node.module} {private}")
     assert not wrong, "private names imported across stages:\n" + "\n".join(wrong)
+
+
+def _module_level_names(tree):
+    names = set()
+    for node in tree.body:
+        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(
+            node, (ast.AnnAssign, ast.AugAssign)) else []
+        names.update(t.id for t in targets if isinstance(t, ast.Name))
+    return names
+
+
+def _keyed_by_id(node):
+    """True when ``node`` is ``id(...)``: an object's address, reused once the object is gone."""
+    return isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "id"
+
+
+def test_no_hidden_state_is_handed_over_through_module_globals():
+    """What a grader works with is passed to it: no ``global`` statement rebinds a module's name (a warm
+    slot was once handed to the sandbox that way), and no module-level cache is keyed by ``id()`` (the
+    reference's transcripts once were: an id is reused by the next object at that address)."""
+    wrong = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        where = path.relative_to(PACKAGE.parent)
+        module_names = _module_level_names(tree)
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Global):
+                wrong.append(f"{where}:{node.lineno}: global {', '.join(node.names)}")
+            key = None
+            if isinstance(node, ast.Subscript):
+                owner, key = node.value, node.slice
+            elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.args:
+                owner, key = node.func.value, node.args[0]
+            if key is not None and _keyed_by_id(key) and isinstance(owner, ast.Name) and owner.id in module_names:
+                wrong.append(f"{where}:{node.lineno}: module-level {owner.id} keyed by id()")
+    assert not wrong, "hidden state in module globals:\n" + "\n".join(wrong)

@@ -131,7 +131,9 @@ def test_solved_lesson_reads_cleanly(session, name):
     page.close()
     assert not problems, problems
     assert len(names) >= (1 if figure_cells else 0), names
-    assert all(re.match(r"Figure \d+[a-z]?\. \S", label) for _, label in names), names
+    unnamed = [(number, role, label) for number, (role, label) in enumerate(names, 1)
+               if not re.match(r"Figure \d+[a-z]?\. \S", label)]
+    assert not unnamed, f"live figures (n-th on the page, role, name) without a caption: {unnamed}"
     assert all(role == "img" and not re.search(r"[$\\{}]", label) for role, label in names), names
     assert "[]" not in hand_in and "ready to hand in" in hand_in.lower() or not hand_in, hand_in
     assert not failed and not errors, (failed, errors)

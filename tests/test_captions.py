@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 
 from coursekit.captions import figure_caption, readable_text  # noqa: E402
-from coursekit.plotting import name_live_figure, name_live_figure_when_drawn  # noqa: E402
+from coursekit.plotting import name_live_figure, name_live_figure_when_drawn, name_open_figures  # noqa: E402
 
 TEX_LEFT = re.compile(r"[$\\{}]|\b(mathbf|mathrm|frac|boldsymbol|theta|delta|times)\b")
 
@@ -71,3 +71,15 @@ def test_a_refresh_from_the_page_keeps_the_caption():
     fig.canvas.handle_refresh({})
     assert fig.canvas._figure_label == "Figure 2. q and −q are one rotation"
     plt.close("all")
+
+
+def test_a_cell_that_ends_names_its_figures_before_any_draw(monkeypatch):
+    """The post_execute hook: a figure the kernel has not drawn yet (the page's draw request still
+    queued) is named when its cell ends."""
+    from matplotlib._pylab_helpers import Gcf
+
+    fig, ax = plt.subplots()
+    ax.set_title(r"Figure 5. Gauss-Newton on $SE(3)$")
+    monkeypatch.setattr(Gcf, "figs", {5: _live(fig, 5).canvas.manager})   # open, as pyplot keeps a shown figure
+    name_open_figures()
+    assert fig.canvas._figure_label == "Figure 5. Gauss-Newton on SE(3)"

@@ -7,7 +7,8 @@ import time
 from autograder.sandbox.forking import fork_each
 
 
-def _task(item):
+def _task(item, slot):
+    assert slot is None  # no slot pool given
     if item == "killed":
         os.kill(os.getpid(), signal.SIGKILL)
     if item == "raises":

@@ -17,10 +17,9 @@ from autograder.lessons.reference import load_reference
 
 @pytest.fixture
 def fresh(tmp_path, monkeypatch):
-    """An empty cache folder, and this process's in-memory transcripts forgotten (restored after)."""
+    """An empty cache folder, and the reference's memo of transcripts forgotten (restored after)."""
     monkeypatch.setenv("AUTOGRADER_CACHE", str(tmp_path / "cache"))
-    monkeypatch.setattr(suite, "_TRANSCRIPTS", {})
-    monkeypatch.setattr(suite, "_LEARNED", {})
+    monkeypatch.setattr(load_reference(), "memo", {})
     return tmp_path / "cache"
 
 
@@ -60,7 +59,7 @@ def test_a_process_that_finds_the_file_records_nothing(fresh, monkeypatch):
     reference, catalog = load_reference(), load_catalog()
     recorded = suite.transcripts_for(reference, catalog)
     assert transcript_cache.path().exists()
-    monkeypatch.setattr(suite, "_TRANSCRIPTS", {})
+    reference.memo.clear()
 
     def refuse(*args):
         raise AssertionError("recorded again although the file was there")
@@ -100,8 +99,7 @@ def test_lessons_are_learned_once_and_only_those_asked_for(fresh, monkeypatch):
     suite.learn_reference_in_sandbox(reference, catalog, lessons=("02",))
     assert sent == {"02"}  # only lesson 02's calls went to the sandbox
     assert transcript_cache.load()[1] == {"02"}
-    monkeypatch.setattr(suite, "_TRANSCRIPTS", {})
-    monkeypatch.setattr(suite, "_LEARNED", {})
+    reference.memo.clear()
 
     def no_sandbox(*args, **kwargs):
         raise AssertionError("a learned lesson was run in a sandbox again")

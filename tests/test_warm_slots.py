@@ -277,3 +277,31 @@ def test_a_worker_that_does_not_start_leaves_the_student_cold(slot, monkeypatch)
         assert box.call("01", "f") == 1
         assert not isinstance(box.process, warm.WarmWorker)
     assert slot.broken
+
+
+def test_each_forked_grader_is_handed_a_slot_no_other_running_grader_has(tmp_path):
+    """fork_each passes each child its slot (no module global holds it); the child's sandboxes fork from
+    it, and two graders running at once never share one."""
+    from autograder.sandbox.forking import fork_each
+
+    def grade(item, slot):
+        assert slot is not None and slot.usable()
+        with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+            assert box.call("01", "f") == 1
+            assert isinstance(box.process, warm.WarmWorker)
+        with open(item, "w") as out:       # which slot, and while this grader was running
+            out.write(f"{slot.index} {time.monotonic()}")
+        time.sleep(0.3)
+        with open(item, "a") as out:
+            out.write(f" {time.monotonic()}")
+
+    items = [str(tmp_path / str(n)) for n in range(4)]
+    problems = []
+    with warm.SlotPool(2, launcher.Limits()) as pool:
+        fork_each(grade, items, 2, lambda _, problem: problems.append(problem), slots=pool)
+    assert problems == [None] * 4, problems
+    runs = [tuple(map(float, open(item).read().split())) for item in items]
+    for first, (slot_a, start_a, end_a) in enumerate(runs):
+        for slot_b, start_b, end_b in runs[first + 1:]:
+            overlapping = start_a < end_b and start_b < end_a
+            assert not (overlapping and slot_a == slot_b), runs

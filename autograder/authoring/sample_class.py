@@ -129,22 +129,6 @@ def student_notebook(student, lesson, references, mistakes, chosen):
     return nb
 
 
-def build_reference_submission(folder, lessons=()):
-    """Write the reference answers into the released notebooks, in ``folder``, as a student would hand them in.
-
-    This is the canary's submission (:mod:`autograder.grading.canary`): it must get full marks.
-    """
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    reference = STUDENTS[0]
-    references = answer_sources()
-    for lesson in load_catalog().graded_lessons:
-        if not lessons or lesson.number in lessons:
-            nb = student_notebook(reference, lesson, references, {}, [])
-            (folder / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
-    return folder
-
-
 def build_sample_class(target, lessons=()):
     """Write every sample student's notebooks to ``target/<student_id>/``; return the ids.
 

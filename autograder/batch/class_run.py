@@ -189,8 +189,8 @@ def save_result(outputs, result, stamp, graded_at):
     write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
 
 
-def grade_task(task):
-    """Runs in a forked child: grade one student and save the result."""
+def grade_task(task, slot=None):
+    """Runs in a forked child: grade one student and save the result (``slot``: this child's warm slot)."""
     student_id, folder, options, out_root, stamp, config = task
     process_tree.become_subreaper()
     outputs = Outputs(Path(out_root))
@@ -201,7 +201,7 @@ def grade_task(task):
     signal.signal(signal.SIGALRM, on_alarm)
     signal.alarm(STUDENT_TIMEOUT)
     try:
-        result = apply_late_policy(grade_student(student_id, Path(folder), options), folder, config)
+        result = apply_late_policy(grade_student(student_id, Path(folder), options, slot=slot), folder, config)
     except Exception as error:  # our fault, not the student's: report, keep the batch going
         result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                                reason=f"{type(error).__name__}: {error}",

@@ -83,14 +83,14 @@ def shortfalls(result):
     return lines
 
 
-def _grade_reference(options, folder, target):
+def _grade_reference(options, folder, target, slot=None):
     """Runs in a fork, like a student's grading: grade the reference and write its result to ``target``."""
     from autograder.grading.pipeline import grade_student
     from autograder.sandbox import process_tree
 
     process_tree.become_subreaper()
     try:
-        result = grade_student("reference solutions (canary)", folder, options)
+        result = grade_student("reference solutions (canary)", folder, options, slot=slot)
     finally:
         process_tree.kill_descendants()
     Path(target).write_text(result.to_json(), encoding="utf-8")
@@ -102,14 +102,14 @@ def ensure_reference_passes(options, parts, timeout=900):
     marker = _marker(parts)
     if marker.exists():
         return CanaryResult(cached=True, seconds=0.0)
-    from autograder.authoring.sample_class import build_reference_submission
+    from autograder.lessons.reference import write_reference_submission
 
     started = time.monotonic()
     with cleanup.private_folder_for("canary") as base:
-        folder = build_reference_submission(Path(base) / "reference", lessons=options.lessons)
+        folder = write_reference_submission(Path(base) / "reference", lessons=options.lessons)
         target = Path(base) / "result.json"
         deaths = []
-        fork_each(lambda _: _grade_reference(options, folder, target), [None], jobs=1,
+        fork_each(lambda _, slot: _grade_reference(options, folder, target, slot), [None], jobs=1,
                   on_done=lambda _, problem: deaths.append(problem), deadline_seconds=timeout)
         if deaths[0] or not target.exists():
             raise CanaryFailed(f"grading the reference solutions failed: {deaths[0] or 'no result was written'}; "

@@ -62,14 +62,15 @@ def _stage_timeout(count):
     return 60.0 + 45.0 * count
 
 
-def _student_channels(runnable, options):
+def _student_channels(runnable, options, slot):
     """One loaded sandbox per lesson (forked from this grader's warm slot, if any), its pipes handed over.
 
     Returns ``(sandboxes, {lesson: (request fd, reply fd)}, {lesson: why it could not start})``.
     """
     sandboxes, channels, problems = [], {}, {}
     for shell, program in runnable:
-        box = StudentSandbox({shell.number: program}, limits=options.limits, resets_slot=False, direct=True)
+        box = StudentSandbox({shell.number: program}, limits=options.limits, slot=slot, resets_slot=False,
+                             direct=True)
         sandboxes.append(box)
         try:
             channels[shell.number] = box.hand_over()
@@ -81,15 +82,17 @@ def _student_channels(runnable, options):
     return sandboxes, channels, problems
 
 
-def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS):
+def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS, slot=None):
     """Run nbval on every readable lesson notebook of one student.
+
+    ``slot``: the grader's warm slot, whose zygote forks the lessons' sandboxes; None: cold starts.
 
     Returns ``{lesson number: NotebookRun}`` with points decided later by
     :func:`award`; here ``points`` is 0 and ``status`` is nbval's verdict.
     """
     runnable = [(shell, program) for shell, _, program in lessons if program is not None]
     runs = {}
-    sandboxes, channels, problems = _student_channels(runnable, options)
+    sandboxes, channels, problems = _student_channels(runnable, options, slot)
     try:
         with cleanup.private_folder_for("nbval") as base:
             sandbox_dir, scratch_dir = launcher.prepare_dirs(base)

@@ -101,8 +101,12 @@ def _read_lessons(folder, catalog, only=()):
     return found, notes, [item.line() for item in files.skipped]
 
 
-def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=None):
-    """Grade the submission in ``folder``; never raises for anything the student did."""
+def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=None, slot=None):
+    """Grade the submission in ``folder``; never raises for anything the student did.
+
+    ``slot``: the warm slot (:class:`~autograder.sandbox.warm.WarmSlot`) this grader process was
+    given, whose zygote forks the student's sandboxes; None starts each sandbox cold.
+    """
     started = time.monotonic()
     catalog = load_catalog() if solutions_dir is None else load_catalog(solutions_dir)
     reference = load_reference() if solutions_dir is None else load_reference(solutions_dir)
@@ -116,7 +120,7 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
                    if program is None}
 
     checks, suite_problems = [], []
-    with StudentSandbox(programs, limits=options.limits) as sandbox:
+    with StudentSandbox(programs, limits=options.limits, slot=slot) as sandbox:
         proxy = StudentProxy(sandbox, catalog, unavailable)
         try:
             checks, suite_problems = run_hidden_suite(proxy, reference,
@@ -157,7 +161,7 @@ def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=No
                          if program is not None and full_hidden_marks(shell)]
         stage_failed = ""
         try:
-            runs = run_notebooks(folder, worth_running, options, catalog) if worth_running else {}
+            runs = run_notebooks(folder, worth_running, options, catalog, slot=slot) if worth_running else {}
         except Exception as error:  # costs this student's notebook points, with the reason
             runs, stage_failed = {}, f"the notebook stage failed ({type(error).__name__}: {error})"
         for shell, _, program in lessons:

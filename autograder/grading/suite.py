@@ -250,8 +250,15 @@ def hidden_tests():
     return tests, problems
 
 
-_TRANSCRIPTS = {}  # id(reference) -> (reference, {nodeid: Transcript})
-_LEARNED = {}  # id(reference) -> the lessons whose tests this process (or the disk cache) ran in a sandbox
+def _memo(reference):
+    """What this process learned about ``reference``: ``{"transcripts": {nodeid: Transcript}, "learned":
+    {lessons run in a sandbox}}``, kept on the reference itself (``ReferenceSolutions.memo``); a
+    reference without a memo (a test's own namespace) gets an empty one each time."""
+    memo = getattr(reference, "memo", None)
+    if not isinstance(memo, dict):
+        memo = {}
+    memo.setdefault("learned", set())
+    return memo
 
 
 def _is_default_reference(reference):
@@ -264,24 +271,23 @@ def _is_default_reference(reference):
 def transcripts_for(reference, catalog):
     """``{nodeid: Transcript}``: every hidden test run once on ``reference``, its calls recorded.
 
-    For the project's own reference the transcripts are read from, and saved to,
-    :mod:`autograder.grading.transcript_cache`, so a machine records them once per grader version.
+    Kept in the reference's memo. For the project's own reference the transcripts
+    are also read from, and saved to, :mod:`autograder.grading.transcript_cache`,
+    so a machine records them once per grader version.
     """
-    kept = _TRANSCRIPTS.get(id(reference))
-    if kept is not None and kept[0] is reference:
-        return kept[1]
-    if not _TRANSCRIPTS:
-        single_threaded_blas()  # as in the sandbox, so that equal answers are equal bit for bit
+    memo = _memo(reference)
+    if memo.get("transcripts") is not None:
+        return memo["transcripts"]
+    single_threaded_blas()  # as in the sandbox, so that equal answers are equal bit for bit
     tests = hidden_tests()[0]
     saved = transcript_cache.load() if _is_default_reference(reference) else None
     if saved is not None and set(saved[0]) == {test.nodeid for test in tests}:
-        found, learned = saved
-        _LEARNED[id(reference)] = learned
+        found, memo["learned"] = saved
     else:
         found = _record_transcripts(reference, catalog, tests)
         if _is_default_reference(reference):
             transcript_cache.save(found)
-    _TRANSCRIPTS[id(reference)] = (reference, found)
+    memo["transcripts"] = found
     return found
 
 
@@ -329,7 +335,7 @@ def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None, lesso
     Speed only: any failure here just leaves the memo as it was.
     """
     transcripts = transcripts_for(reference, catalog)
-    done = _LEARNED.setdefault(id(reference), set())
+    done = _memo(reference)["learned"]
     wanted = {lesson.number for lesson in catalog.graded_lessons if not lessons or lesson.number in lessons}
     todo = wanted - done
     if not todo:

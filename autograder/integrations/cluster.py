@@ -210,12 +210,12 @@ def ready_on_worker(options, driver_parts):
 def _die_with_parent(function):
     """``function``, run in a fork that the kernel kills when the worker dies (a killed worker leaves no
     grader running on its own)."""
-    def run(item):
+    def run(item, slot):
         try:
             ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
         except (OSError, AttributeError):
             pass
-        function(item)
+        function(item, slot)
     return run
 
 

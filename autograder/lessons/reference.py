@@ -14,12 +14,13 @@ array([[1., 0., 0.],
 """
 
 from functools import lru_cache
+from pathlib import Path
 from types import SimpleNamespace
 
 from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
-from autograder.lessons.notebook_files import read_master
-from autograder.lessons.paths import SOLUTIONS
+from autograder.lessons.notebook_files import canonical_text, read_master
+from autograder.lessons.paths import COURSE, SOLUTIONS
 
 
 def lesson_namespace(master, label):
@@ -32,6 +33,22 @@ def lesson_namespace(master, label):
     return namespace
 
 
+class ReferenceSolutions(SimpleNamespace):
+    """Every exercise function of the masters as an attribute (``ref.rot_z``), and a ``memo``.
+
+    ``memo`` is a dict the grading stage keeps what it learns about these
+    functions in (the hidden tests' transcripts, :mod:`autograder.grading.suite`),
+    so it lives and dies with them and never outlives them. It is not an
+    attribute of the namespace's contents: ``vars(ref)`` holds the functions only.
+    """
+
+    __slots__ = ("memo",)
+
+    def __init__(self, functions):
+        super().__init__(**functions)
+        self.memo = {}
+
+
 @lru_cache(maxsize=2)
 def load_reference(solutions_dir=SOLUTIONS):
     """A namespace with every exercise function of every lesson, from the masters."""
@@ -41,7 +58,7 @@ def load_reference(solutions_dir=SOLUTIONS):
         namespace = lesson_namespace(read_master(solutions_dir / lesson.filename), lesson.number)
         for exercise in lesson.exercises:
             functions[exercise.name] = namespace[exercise.name]
-    return SimpleNamespace(**functions)
+    return ReferenceSolutions(functions)
 
 
 def answer_sources(solutions_dir=SOLUTIONS):
@@ -56,3 +73,29 @@ def answer_sources(solutions_dir=SOLUTIONS):
                         if line.strip() not in (cells.BEGIN_SOLUTION, cells.END_SOLUTION)]
                 sources[cells.grade_id(cell)] = "\n".join(kept)
     return sources
+
+
+def write_reference_submission(folder, lessons=()):
+    """Write the reference answers into the released notebooks, in ``folder``, as a student would hand
+    them in; return ``folder`` (a :class:`~pathlib.Path`).
+
+    ``lessons``: only these lesson numbers (default: every graded lesson). The canary grades this
+    submission (:mod:`autograder.grading.canary`) and must give it full marks.
+
+    Examples
+    --------
+    >>> sorted(p.name for p in write_reference_submission(tmp, lessons=("01",)).iterdir())   # doctest: +SKIP
+    ['01_frames_and_rotations.ipynb']
+    """
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    answers = answer_sources()
+    for lesson in load_catalog().graded_lessons:
+        if lessons and lesson.number not in lessons:
+            continue
+        nb = read_master(COURSE / lesson.filename)
+        for cell in nb.cells:
+            if cells.is_answer_cell(cell):
+                cell.source = answers[cells.grade_id(cell)]
+        (folder / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
+    return folder

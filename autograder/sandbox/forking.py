@@ -9,7 +9,8 @@ crosses back is the exit status.
 Examples
 --------
 >>> outcomes = []
->>> fork_each(print, ["a", "b"], jobs=2, on_done=lambda item, how: outcomes.append((item, how)))  # doctest: +SKIP
+>>> fork_each(lambda item, slot: print(item), ["a", "b"], jobs=2,
+...           on_done=lambda item, how: outcomes.append((item, how)))  # doctest: +SKIP
 """
 
 import os
@@ -37,9 +38,7 @@ def _run_child(function, item, slots, slot):
     code = 0
     try:
         signal.signal(signal.SIGINT, signal.SIG_DFL)
-        if slots is not None:
-            slots.enter(slot)
-        function(item)
+        function(item, slots.enter(slot) if slots is not None else None)
     except BaseException:  # report on stderr, end with a non-zero status
         traceback.print_exc()
         code = 1
@@ -54,15 +53,15 @@ def _release(slots, slot, free):
 
 
 def fork_each(function, items, jobs, on_done, deadline_seconds=None, poll=0.05, slots=None):
-    """Call ``function(item)`` in a new fork per item, at most ``jobs`` at a time.
+    """Call ``function(item, slot)`` in a new fork per item, at most ``jobs`` at a time.
 
     ``on_done(item, problem)`` runs in the parent as each child ends:
     ``problem`` is ``None`` for a normal exit, else a sentence (killed by a
     signal, non-zero status, or past ``deadline_seconds`` and killed).
     ``slots`` (a :class:`~autograder.sandbox.warm.SlotPool` of ``jobs``
-    slots, or None): each child gets a slot no running child has, through
-    ``slots.enter(index)`` before ``function``; the parent calls
-    ``slots.repair(index)`` after the child ends.
+    slots, or None): each child gets a slot no running child has
+    (``slots.enter(index)``, passed to ``function`` as ``slot``; None without
+    slots); the parent calls ``slots.repair(index)`` after the child ends.
     """
     pending = list(items)
     running = {}  # pid -> (item, started, slot)

@@ -94,10 +94,8 @@ class StudentSandbox:
     def __init__(self, program, limits=None, base_dir=None, slot=None, resets_slot=True, direct=False):
         self.program = program
         self.limits = limits or launcher.Limits()
-        # a warm slot (see warm.py) when this process was given one with the same limits, else cold starts
-        self.slot = slot if slot is not None else warm.assigned_slot()
-        if self.slot is not None and self.slot.limits != self.limits:
-            self.slot = None
+        # a warm slot (see warm.py) when the caller has a usable one with the same limits, else cold starts
+        self.slot = slot if slot is not None and slot.usable() and slot.limits == self.limits else None
         # the first sandbox of a student resets the slot before and after; more sandboxes of the same
         # student (the notebook stage's, one per lesson) share it without resetting
         self._slot_reset = not resets_slot

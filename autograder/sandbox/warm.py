@@ -45,9 +45,6 @@ ZYGOTE_CPU_SECONDS = 3600  # the zygote's own CPU limit (each worker gets the st
 START_SECONDS = 60.0
 REPLY_SECONDS = 10.0
 
-_assigned = None  # the WarmSlot this process grades with, set by SlotPool.enter
-
-
 class SlotBroken(RuntimeError):
     """A slot's zygote is gone or did not answer: the slot must be discarded."""
 
@@ -55,11 +52,6 @@ class SlotBroken(RuntimeError):
 def enabled():
     """Whether this machine grades with warm slots (namespaces isolation, not turned off)."""
     return launcher.isolation()[0] == "namespaces" and os.environ.get("AUTOGRADER_WARM", "1") != "0"
-
-
-def assigned_slot():
-    """The slot this process grades with, or None (a cold sandbox per student)."""
-    return _assigned if _assigned is not None and _assigned.usable() else None
 
 
 class WarmWorker:
@@ -255,13 +247,13 @@ class SlotPool:
             slot.close()
 
     def enter(self, index):
-        """In a forked grader: grade with slot ``index``, and let go of the others' control sockets."""
-        global _assigned
+        """In a forked grader: let go of the other slots' control sockets and return slot ``index``, the
+        one this grader grades with (passed down to each :class:`~autograder.sandbox.session.StudentSandbox`)."""
         for slot in self.slots:
             if slot.index != index and slot.control is not None:
                 slot.control.close()
                 slot.control = None
-        _assigned = self.slots[index]
+        return self.slots[index]
 
     def repair(self, index):
         """In the parent, after a grader ends: replace slot ``index`` if it is dead or was discarded."""

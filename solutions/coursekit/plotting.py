@@ -112,6 +112,8 @@ def interactive_figures():
         hook = f"{__name__}:{name}"
         if hook not in plt.rcParams["figure.hooks"]:
             plt.rcParams["figure.hooks"] = [*plt.rcParams["figure.hooks"], hook]
+    if name_open_figures not in shell.events.callbacks["post_execute"]:
+        shell.events.register("post_execute", name_open_figures)
     from IPython.display import Javascript, display
 
     display(Javascript(NAME_CANVASES_JS))
@@ -174,6 +176,19 @@ def name_live_figure(fig):
         elif caption and fig.canvas._figure_label != caption:
             fig.canvas._figure_label = caption
     return fig
+
+
+def name_open_figures():
+    """Name every open live figure by its caption (an IPython ``post_execute`` hook).
+
+    When a cell ends its figures have their final titles, so they are named
+    before the page first asks for them, whether or not a draw comes first
+    (a busy kernel may answer the page's draw request late).
+    """
+    from matplotlib._pylab_helpers import Gcf
+
+    for manager in Gcf.get_all_fig_managers():
+        name_live_figure(manager.canvas.figure)
 
 
 def name_live_figure_when_drawn(fig):
