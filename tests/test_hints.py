@@ -105,3 +105,34 @@ def test_arccos_hint_only_where_arccos_rounds_to_zero():
     assert "arccos rounds tiny angles" in rotation_vector_hint([0.0, 0.0, 0.0], 1e-9 * AXIS)
     quiet = rotation_vector_hint([0.0, 0.0, 0.0], 0.4 * AXIS)
     assert quiet and "arccos" not in quiet
+
+
+def _sentences(folder):
+    """``{text: [file:line]}`` of every whole string literal of 50 characters or more in ``folder``'s
+    modules: docstrings and the parts of f-strings (a hint around a measured number) left out."""
+    import ast
+    from collections import defaultdict
+
+    found = defaultdict(list)
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        skipped = {id(value) for node in ast.walk(tree) if isinstance(node, ast.JoinedStr) for value in node.values}
+        skipped |= {id(node.body[0].value) for node in ast.walk(tree)
+                    if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef)) and node.body
+                    and isinstance(node.body[0], ast.Expr)}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Constant) and isinstance(node.value, str) and len(node.value) >= 50 \
+                    and id(node) not in skipped:
+                found[node.value].append(f"{path.name}:{node.lineno}")
+    return found
+
+
+def test_a_hint_both_suites_give_is_written_once_in_the_catalogue():
+    """A sentence in both the public checks and the hidden suite lives in ``coursekit/hints.py``: two
+    copies drift apart (one gets fixed, the student reads the other). 140 did before the catalogue."""
+    from autograder.lessons.paths import PACKAGE, SOLUTIONS
+
+    public = _sentences(SOLUTIONS / "coursekit" / "checks")
+    hidden = _sentences(PACKAGE / "hidden")
+    twice = sorted(set(public) & set(hidden))
+    assert not twice, "\n".join(f"{text[:70]!r}: {public[text][0]} and {hidden[text][0]}" for text in twice)

@@ -18,6 +18,7 @@ Precision: rot2d and the elementary rotations agree with np.cos/np.sin to
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.checks.lesson01 import SQUARE_BATCH_HINT
 from coursekit.diagnose import FLOAT32_HINT, SERIES_HINT, close, float32_rounding
 
@@ -49,8 +50,7 @@ def _first_match(got, candidates, otherwise=""):
 
 
 DEGREES_HINT = "looks like the angle was taken in degrees: the course works in radians (np.cos takes radians)"
-SAME_SIGN_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
-                  "carries the minus")
+SAME_SIGN_HINT = (hints.BOTH_SINES_HAVE_SAME_HINT)
 
 
 # ---------------------------------------------------------------- rot2d
@@ -64,7 +64,7 @@ def _rot2d_hint(got, theta):
     return _first_match(got, [
         (_rot2d(theta).T, "looks like the transpose (a clockwise turn): the minus sign belongs on the upper sine"),
         (_rot2d(np.deg2rad(theta)), DEGREES_HINT),
-        (np.array([[s, -c], [c, s]]), "sine and cosine are swapped: cos θ goes on the diagonal, ±sin θ off it"),
+        (np.array([[s, -c], [c, s]]), hints.SINE_COSINE_SWAPPED_COS_HINT),
         (np.array([[c, s], [s, c]]), SAME_SIGN_HINT),
         (np.array([[c, -s], [-s, c]]), SAME_SIGN_HINT)],
         "compare entry by entry with [[cos θ, -sin θ], [sin θ, cos θ]]")
@@ -249,8 +249,7 @@ def test_rot_z_every_decade(student):
 
 
 # ---------------------------------------------------------------- is_rotation_matrix
-SHAPE_HINT = ("check M's shape first (2-D and square, else return False) and compare MᵀM with "
-              "np.eye(M.shape[0]), not np.eye(3)")
+SHAPE_HINT = (hints.CHECK_M_S_SHAPE_HINT)
 
 
 def _is_rotation_verdict(student, M, what="is_rotation_matrix", **kwargs):
@@ -369,10 +368,9 @@ def _rotate_rows(student, R, P):
         if error.kind != "exception":
             raise
         if "broadcast" in error.message:
-            hint = ("numpy could not broadcast R * P: an elementwise product is not a rotation of the rows; "
-                    "use the matrix product, P @ R.T")
+            hint = (hints.NUMPY_COULD_BROADCAST_R_HINT)
         elif "matmul" in error.message:
-            hint = "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T"
+            hint = hints.ONE_POINT_NOT_ROWS_HINT
         else:
             hint = "the points are the rows of P: P @ R.T rotates each of them"
         raise Wrong(f"rotate_point(R, P) for {count} points: {error}", hint) from None
@@ -393,8 +391,8 @@ def test_rotate_point_accepts_lists(student):
 def _compose_hint(got, A, B):
     return _first_match(got, [
         (B @ A, "the order is reversed: R_ac = R_ab @ R_bc"),
-        (A * B, "looks like A * B, the elementwise product: compose with the matrix product @"),
-        (A.T @ B, "looks like R_abᵀ R_bc: the first factor is transposed (inverted); multiply them as they are")],
+        (A * B, hints.ELEMENTWISE_PRODUCT_HINT),
+        (A.T @ B, hints.FIRST_FACTOR_TRANSPOSED_HINT)],
         "R_ac = R_ab @ R_bc, the matrix product in this order")
 
 
@@ -427,8 +425,8 @@ def test_compose_accepts_lists(student):
 def _inverse_hint(got, R):
     return _first_match(got, [
         (R, "returned R itself: the inverse is the transpose"),
-        (-R, "returned -R (every entry negated): the inverse of a rotation is its transpose, not its negative"),
-        (R[::-1], "reversed the order of the rows (R[::-1]): the inverse is the transpose R.T (rows become columns)")],
+        (-R, hints.NEGATED_NOT_TRANSPOSED_HINT),
+        (R[::-1], hints.REVERSED_ORDER_ROWS_R_HINT)],
         "the inverse of a rotation is its transpose: R_ba = R_ab.T")
 
 
@@ -467,17 +465,14 @@ def _nearest_hint(got, M, otherwise="R = U Vᵀ from the SVD M = U Σ Vᵀ (with
     Q, upper = np.linalg.qr(M)
     Q = Q @ np.diag(np.sign(np.diag(upper)))
     candidates = [(_nearest(M).T, "looks like V Uᵀ, the transpose of the answer: R = U Vᵀ"),
-                  (M / np.linalg.norm(M, axis=0), "dividing each column by its length does not make the columns "
-                   "orthogonal: project with the SVD M = U Σ Vᵀ, R = U Vᵀ"),
-                  (Q * np.sign(np.linalg.det(Q)), "looks like the Q of a QR decomposition: orthogonal, but it keeps "
-                   "the first column's direction, so it is not the nearest rotation; use the SVD")]
+                  (M / np.linalg.norm(M, axis=0), hints.DIVIDING_EACH_COLUMN_LENGTH_HINT),
+                  (Q * np.sign(np.linalg.det(Q)), hints.QR_NOT_NEAREST_HINT)]
     if np.linalg.det(U @ Vt) < 0:
         candidates.insert(0, (U @ Vt, "U Vᵀ is a reflection here (det -1): when det(U Vᵀ) < 0, flip the last column "
                                       "of U (use diag(1, 1, det(U Vᵀ)))"))
         flip = np.diag([1.0, 1.0, -1.0])
         for wrong_side in (flip @ U @ Vt, U @ Vt @ flip):   # det +1, but not the nearest rotation
-            candidates.append((wrong_side, "the sign fix goes between U and Vᵀ, R = U diag(1, 1, d) Vᵀ: it flips "
-                                           "the last column of U, the direction of the smallest singular value"))
+            candidates.append((wrong_side, hints.SIGN_FIX_GOES_BETWEEN_HINT))
     return _first_match(got, candidates, otherwise)
 
 

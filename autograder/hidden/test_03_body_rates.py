@@ -9,6 +9,7 @@ from 1e-12 to 1e3 rad/s, to 1e-12 of the spin's size. Every test calls body_angu
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import explains
 
 from .helpers import exercise, expect, expect_array, expect_same_with_lists, fmt, random_rotations
@@ -30,7 +31,7 @@ def _hint(got, R, R_dot, omega_b):
                                  "ω_b = Rᵀ ω_w"),
              (-omega_b, "the opposite spin: Rᵀ Ṙ and Ṙᵀ R are negatives of each other"),
              (_vee(R_dot), "Ṙ alone is not skew-symmetric: it still holds the attitude R"),
-             (R.T @ omega_b, "the rate was turned into body axes twice: one factor Rᵀ is enough")]
+             (R.T @ omega_b, hints.RATE_TURNED_INTO_BODY_HINT)]
     size = np.linalg.norm(omega_b)
     for candidate, hint in slips:
         if np.max(np.abs(candidate - omega_b)) > 1e-6 * size and explains(got / size, candidate / size, omega_b / size,

@@ -24,6 +24,7 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.checks.lesson03 import COLUMN_HINT, REAL_AXIS_HINT, column_logs, vee_hint, weak_column
 from coursekit.diagnose import explains
 
@@ -82,16 +83,16 @@ def _hat_hint(W, w):
     if explains(W, truth.T, truth):
         return "the signs are swapped (the transpose, -[w]×): the top row is [0, -w3, w2], so [w]× v = w × v"
     if explains(W, np.array([[0.0, z, y], [z, 0.0, x], [y, x, 0.0]]), truth):
-        return "the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
+        return hints.MINUS_SIGNS_MISSING_SYMMETRIC_HINT
     if explains(W, np.diag([x, y, z]), truth):
-        return "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
+        return hints.W_SITS_DIAGONAL_W_HINT
     for order in ((2, 1, 0), (1, 0, 2), (0, 2, 1), (1, 2, 0), (2, 0, 1)):
         if explains(W, _skew(np.asarray(w, dtype=float)[list(order)]), truth):
             return ("the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3 "
                     "(W = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]])")
     if np.max(np.abs(W + W.T)) > 0.0:
         return "not skew-symmetric: [w]× has zeros on the diagonal and W[j, i] = -W[i, j]"
-    return "compare entry by entry with [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
+    return hints.COMPARE_ENTRY_ENTRY_W3_HINT
 
 
 @exercise("hat", weight=3)
@@ -158,13 +159,13 @@ def test_vee_accepts_lists(student):
 def _bracket_hint(got, A, B):
     truth = A @ B - B @ A
     if explains(got, A @ B + B @ A, truth):
-        return "that is AB + BA: the bracket is the difference AB - BA"
+        return hints.AB_BA_BRACKET_DIFFERENCE_HINT
     if explains(got, B @ A - A @ B, truth):
         return "the order is reversed: [A, B] = AB - BA"
     if explains(got, A * B - B * A, truth):
-        return "got zero: * multiplies entry by entry (A * B = B * A), use @ for the matrix product"
+        return hints.GOT_ZERO_MULTIPLIES_ENTRY_HINT
     if explains(got, A @ B, truth):
-        return "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
+        return hints.ONLY_AB_BRACKET_SUBTRACTS_HINT
     if explains(got, B @ A, truth):
         return "that is only BA: the bracket is AB - BA"
     return "[A, B] = A @ B - B @ A, with matrix products"
@@ -220,17 +221,17 @@ def _series_hint(student_value, W, n):
         return total
     truth = partial(0, n - 1)
     if explains(student_value, partial(1, n), truth) or explains(student_value, partial(1, n - 1), truth):
-        return "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
+        return hints.IDENTITY_TERM_MISSING_SUM_HINT
     if explains(student_value, partial(0, n), truth):
-        return "one term too many: n_terms terms means k = 0 … n_terms - 1"
+        return hints.ONE_TERM_TOO_MANY_HINT
     if n >= 2 and explains(student_value, partial(0, n - 2), truth):
-        return "one term too few: n_terms terms means k = 0 … n_terms - 1"
+        return hints.ONE_TERM_TOO_FEW_HINT
     entrywise = sum(W ** k / np.prod(np.arange(1, k + 1)) for k in range(n))
     if explains(student_value, entrywise, truth):
-        return "W ** k is an entry-wise power: use the matrix product (term = term @ W / k)"
+        return hints.ENTRYWISE_POWER_HINT
     if explains(student_value, partial(0, n - 1, factorial=False), truth):
-        return "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
-    return "sum the terms W^k / k! for k = 0 … n_terms - 1, with matrix products"
+        return hints.FACTORIAL_MISSING_HINT
+    return hints.SUM_TERMS_W_K_HINT
 
 
 @exercise("exp_series", weight=3)
@@ -279,13 +280,13 @@ def _exp_hint(got, expected, w):
         K = _skew(w / angle)
         W = _skew(w)
         if explains(got, np.eye(3) + (1 - np.cos(angle)) * K + np.sin(angle) * K @ K, expected):
-            return "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
+            return hints.COEFFICIENTS_SWAPPED_R_I_HINT
         if explains(got, np.eye(3) + np.sin(angle) * W + (1 - np.cos(angle)) * W @ W, expected):
-            return "Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin θ and cos θ)"
+            return hints.RODRIGUES_FORMULA_NEEDS_UNIT_HINT
     problem = rotation_problem(got, 1e-9)
     if problem:
         return f"the result is not a rotation ({problem}): R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]×"
-    return "R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]× and θ = |w|"
+    return hints.RODRIGUES_FORMULA_HINT
 
 
 @exercise("exp_so3", weight=3)
@@ -373,25 +374,25 @@ def _log_hint(got, R, expected):
             return (f"NaN: (tr R - 1)/2 = 1 {'+' if c > 0 else '-'} {abs(c) - 1.0:.1e} is just outside [-1, 1] "
                     "by rounding, and arccos of it is NaN: clip it first (or use atan2)")
         if angle < 1e-3:
-            return "NaN or inf at θ = 0: θ/sin θ is 0/0 there; use its series 1 + θ²/6 (or return 0) for tiny θ"
+            return hints.NAN_AT_ZERO_ANGLE_HINT
         if angle > 3.0 and weak_column(R):
             return COLUMN_HINT
         if angle > 3.0:
-            return "NaN or inf near θ = π, where sin θ → 0: the log needs a branch there, with the axis from (R + Rᵀ)/2"
+            return hints.NAN_NEAR_PI_HINT
         return "NaN or inf: look for a division by zero or an arccos outside [-1, 1]"
     if angle == 0.0:
         return "the identity's log is the zero vector" if np.max(np.abs(got)) > 0.0 else ""
     unit = expected / angle
     if explains(got, -expected, expected):
-        return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
+        return hints.OPPOSITE_ROTATION_CHECK_SIGN_HINT
     if explains(got, 2.0 * expected, expected):
-        return "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
+        return hints.TWICE_ROTATION_VECTOR_VEE_HINT
     if angle < 0.5 and explains(got, a, expected):
         return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle ** 3 / 6:.1e}: you dropped the θ²/6 term, "
                 "keep θ/sin θ ≈ 1 + θ²/6 for small θ")
     if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
-            return "returned zero for a tiny rotation: arccos rounds tiny angles to 0; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
+            return hints.RETURNED_ZERO_TINY_ROTATION_HINT
         return (f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
                 "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
     no_branch = [t / np.sin(t) * a for t in (theta, theta_acos) if np.sin(t) != 0.0]
@@ -402,8 +403,8 @@ def _log_hint(got, R, expected):
     if angle > 3.0 and any(explains(got, candidate, expected) for candidate in column_logs(R, theta, a)):
         return COLUMN_HINT
     if angle > 3.0:
-        return "the log is off near π: take the axis from the symmetric part (R + Rᵀ)/2 there, and its sign from R - Rᵀ"
-    return "w = θ a/|a| with a = vee(R - Rᵀ)/2 and θ = atan2(|a|, (tr R - 1)/2)"
+        return hints.LOG_OFF_NEAR_TAKE_HINT
+    return hints.LOG_FORMULA_HINT
 
 
 def _log(student, R, what):
@@ -500,13 +501,13 @@ def _theta_hint(theta, R, true_angle):
     """Name the slip behind a wrong angle θ from axis_angle(R): degrees, or θ from arccos."""
     _, c, _, theta_acos = _log_parts(R)
     if explains(theta, np.degrees(true_angle), true_angle):
-        return "θ is in degrees (57.3 × the value in radians): the course works in radians"
+        return hints.DEGREES_VALUE_RADIANS_COURSE_HINT
     if explains(theta, theta_acos, true_angle):
         if theta_acos == 0.0:
             return "arccos loses tiny angles (here it rounds θ to 0): use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
         return (f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
                 "use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
-    return "θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2), in radians, in [0, π]"
+    return hints.ANGLE_FORMULA_HINT
 
 
 def _axis_hint(u, R, axis):
@@ -516,7 +517,7 @@ def _axis_hint(u, R, axis):
         return ("at θ = π, R - Rᵀ is zero up to rounding and carries no axis: take u from (R + I)/2, "
                 "the column with the largest diagonal entry (sign from R - Rᵀ just below π)")
     if explains(u, -axis, axis):
-        return "u points the wrong way: vee(R - Rᵀ)/2 = sin θ u points along +u"
+        return hints.U_POINTS_WRONG_WAY_HINT
     return "u = vee(R - Rᵀ)/(2 sin θ) away from π; near π take it from (R + Rᵀ)/2, with its sign from R - Rᵀ"
 
 
@@ -534,7 +535,7 @@ def _axis_angle(student, R, what):
     theta = float(expect_array(value[1], (), f"{what}: theta"))
     if shape_problem(value[0], (3,)) == "returned NaN or inf values":
         raise Wrong(f"{what}: u is {fmt(np.asarray(value[0], dtype=float))} at θ = {theta:.3g}",
-                    "u = vee(R - Rᵀ)/(2 sin θ) is 0/0 at θ = 0: the axis is arbitrary there, return [1, 0, 0]"
+                    hints.AXIS_AT_ZERO_ANGLE_HINT
                     if true_angle <= 1e-12 else "look for a division by a vanishing sin θ or norm")
     u = expect_array(value[0], (3,), f"{what}: u")
     expect(abs(np.linalg.norm(u) - 1.0) <= 1e-12, f"{what}: |u| = {np.linalg.norm(u):.6g}, not 1",
@@ -613,13 +614,12 @@ def _eigen_hint(u, R):
 
     axis = unit(vectors[:, k])
     candidates = [
-        (unit(vectors[k]), "that is a row of the eigenvector matrix: eigenvectors are its columns, vectors[:, k]"),
+        (unit(vectors[k]), hints.ROW_EIGENVECTOR_MATRIX_EIGENVECTORS_HINT),
         (unit(vectors[:, 0]), f"that is the first eigenvector, whose eigenvalue is {values[0]:.3g}, not 1: "
                               "take k = argmin |λ - 1|"),
-        (np.linalg.svd(R)[2][-1], "that is the SVD null space of R, but R is invertible: the axis spans the "
-                                  "null space of R - I"),
+        (np.linalg.svd(R)[2][-1], hints.SVD_NULL_SPACE_R_HINT),
         (np.linalg.eigh(R)[1][:, int(np.argmin(np.abs(np.linalg.eigh(R)[0] - 1.0)))],
-         "np.linalg.eigh assumes a symmetric matrix (it reads one triangle of R): use np.linalg.eig"),
+         hints.NP_LINALG_EIGH_ASSUMES_HINT),
     ]
     for candidate, hint in candidates:
         if same_line(candidate) and not same_line(axis):

@@ -25,6 +25,7 @@ import numpy as np
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation, Slerp
 
+from coursekit import hints
 from coursekit.diagnose import close, quaternion_hint, same_rotation_quat
 
 from .properties import angles, expect_within, for_all, quaternions, unit_vectors
@@ -85,9 +86,8 @@ PRODUCT_HINTS = {
                "or the factors are swapped",
     "no_cross": "the cross product is missing: the vector part is p_w q_v + q_w p_v + p_v × q_v",
     "dot_plus": "the scalar part is p_w q_w - p_v · q_v (minus the dot product)",
-    "elementwise": "multiplied entry by entry: every component of p ⊗ q mixes all four components of p and q",
-    "normalised": "the product is divided by its norm: p ⊗ q of quaternions that are not unit has norm |p| |q|; "
-                  "return the product itself",
+    "elementwise": hints.MULTIPLIED_ENTRY_ENTRY_EVERY_HINT,
+    "normalised": hints.PRODUCT_DIVIDED_NORM_P_HINT,
 }
 PRODUCT_GENERIC = "compare each of the 16 terms with p ⊗ q = [p_w q_w - p_v · q_v, p_w q_v + q_w p_v + p_v × q_v]"
 
@@ -163,7 +163,7 @@ def product_matrix_hint(M, q, name, ref, tol):
         (other(q), f"this is [{letter}]_{theirs}: in [{letter}]_{mine} the [v]× block has a {sign} sign"),
         (exact.T, f"looks like the transpose of [{letter}]_{mine}: row i holds the coefficients of component i "
                   "of p ⊗ q"),
-        (no_minus, "the first row is [w, -x, -y, -z]: its minus signs are missing"),
+        (no_minus, hints.FIRST_ROW_W_X_HINT),
         (own(np.roll(q, 1)), f"{letter} was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"),
     ]
     matches = [hint for value, hint in candidates if not close(value, exact, tol) and close(M, value, tol)]
@@ -254,8 +254,8 @@ def test_quat_conjugate_values(student):
         got = expect_array(student.quat_conjugate(q), (4,), "quat_conjugate(q)")
         tol = TOL * np.linalg.norm(q)
         hint = ("negated the scalar instead of the vector part" if close(got, -conj(q), tol) else
-                "returned q unchanged: negate the vector part x, y, z" if close(got, q, tol) else
-                "returned -q: keep the scalar w, negate only x, y, z" if close(got, -q, tol) else "")
+                hints.RETURNED_Q_UNCHANGED_NEGATE_HINT if close(got, q, tol) else
+                hints.RETURNED_Q_KEEP_SCALAR_HINT if close(got, -q, tol) else "")
         expect_close(got, conj(q), tol, "quat_conjugate(q)", hint)
 
 
@@ -284,9 +284,9 @@ def inverse_hint(got, q):
     exact = conj(q) / n2
     candidates = [(conj(q), "returned the conjugate: divide it by |q|²"),
                   (conj(q) / np.sqrt(n2), "divided by |q|, not by |q|²"),
-                  (-q / n2, "returned -q / |q|²: only the vector part changes sign, q⁻¹ = q* / |q|²")]
+                  (-q / n2, hints.RETURNED_Q_Q_ONLY_HINT)]
     if np.all(q != 0.0):
-        candidates.append((1.0 / q, "took 1/q entry by entry: the inverse of a quaternion is q* / |q|²"))
+        candidates.append((1.0 / q, hints.TOOK_Q_ENTRY_ENTRY_HINT))
     matches = [hint for value, hint in candidates
                if not close(value, exact, 1e-9 * np.max(np.abs(exact)))
                and close(got, value, 1e-9 * np.max(np.abs(value)))]
@@ -352,9 +352,9 @@ def axis_angle_hint(got, axis, theta, up_to_sign=False, tol=1e-9):
          "this is the rotation by 2θ: the quaternion uses the half angle, [cos(θ/2), u sin(θ/2)]"),
         (quat(np.cos(half_degrees), np.sin(half_degrees), u), "looks like degrees: the course works in radians"),
         (quat(np.sin(theta / 2), np.cos(theta / 2), u),
-         "sin and cos are swapped: the scalar is cos(θ/2), the vector part u sin(θ/2)"),
+         hints.SIN_COS_SWAPPED_SCALAR_HINT),
          (quat(np.cos(theta / 2), np.sin(theta / 2), axis),
-          "divide u by its norm first: the axis must be a unit vector"),
+          hints.DIVIDE_U_NORM_FIRST_HINT),
     ]
     same = same_rotation_quat if up_to_sign else close
     matches = [hint for value, hint in candidates if not same(value, exact, tol) and same(got, value, tol)]
@@ -411,10 +411,10 @@ def rotate_hint(got, q, v, ref, tol):
     candidates = [
         (scipy_rotation(q).inv().apply(v),
          "rotated the opposite way: the sandwich is q ⊗ [0, v] ⊗ q*, with the conjugate on the right"),
-        (Rotation.from_quat(q).apply(v), "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"),
-        (no_conjugate, "the conjugate is missing: q ⊗ [0, v] ⊗ q does not rotate v; use q ⊗ [0, v] ⊗ q*"),
+        (Rotation.from_quat(q).apply(v), hints.SCALAR_LAST_HINT),
+        (no_conjugate, hints.CONJUGATE_MISSING_Q_V_HINT),
         (v + 2.0 * q[0] * np.cross(q[1:], v),
-         "the second-order term is missing: with u = q_v, v' = v + 2w (u × v) + 2 u × (u × v)"),
+         hints.SECOND_ORDER_TERM_MISSING_HINT),
     ]
     matches = [hint for value, hint in candidates if not close(value, exact, tol) and close(got, value, tol)]
     return matches[0] if len(matches) == 1 else ""
@@ -468,7 +468,7 @@ def matrix_hint(got, q, tol=1e-6):
     K = np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
     candidates = [
         (exact.T, "looks like the transpose (the inverse rotation): check the signs of the 2w[v]× terms"),
-        (Rotation.from_quat(q).as_matrix(), "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"),
+        (Rotation.from_quat(q).as_matrix(), hints.SCALAR_LAST_HINT),
         (np.eye(3) + w * K + K @ K, "the factor 2 is missing: R = I + 2w[v]× + 2[v]×²"),
     ]
     matches = [hint for value, hint in candidates if not close(value, exact, tol) and close(got, value, tol)]
@@ -647,7 +647,7 @@ def layout_hint(got, q, to_end):
                            (1, "front", "q[..., 3:] and q[..., :3]"))
     exact = np.roll(q, shift, axis=-1)
     candidates = [
-        (q[..., ::-1], "the array was reversed: only the scalar moves, x, y, z keep their order"),
+        (q[..., ::-1], hints.ARRAY_REVERSED_ONLY_SCALAR_HINT),
         (q, f"returned q unchanged: the scalar must move to the {where}"),
         (np.roll(q, -shift, axis=-1), f"rolled the wrong way: the scalar must move to the {where}"),
         (np.roll(q.ravel(), shift).reshape(q.shape),
@@ -714,8 +714,7 @@ def long_arc(q0, q1, t):
     return (np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega)
 
 
-NLERP_HINT = ("not at constant speed: a normalised linear blend (nlerp) runs fast in the middle; use the "
-              "weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+NLERP_HINT = (hints.CONSTANT_SPEED_NORMALISED_LINEAR_HINT)
 
 
 def nlerp(q0, q1, t):
@@ -801,10 +800,9 @@ def test_quat_slerp_shorter_arc(student):
             expect(abs(np.linalg.norm(got) - 1.0) <= 1e-9,
                    f"|quat_slerp(q0, q1, {t})| = {np.linalg.norm(got):.6f}, off the unit sphere by "
                    f"{abs(np.linalg.norm(got) - 1.0):.2g}",
-                   slerp_hint(got, q0, q1, t) or "slerp stays on the unit sphere: the sine weights keep it there")
+                   slerp_hint(got, q0, q1, t) or hints.SLERP_STAYS_UNIT_SPHERE_HINT)
             turned = angle_between(q0, got)
-            hint = slerp_hint(got, q0, q1, t) or ("not at constant speed: the turn from q0 must grow as t × the whole "
-                                                  "angle; use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+            hint = slerp_hint(got, q0, q1, t) or (hints.CONSTANT_SPEED_TURN_Q0_HINT)
             expect(abs(turned - t * angle) <= 1e-8,
                    f"at t = {t} the result is {turned:.6f} rad from q0, off by {abs(turned - t * angle):.2g} from "
                    f"t × {angle:.4f} = {t * angle:.6f}", hint)

@@ -12,6 +12,7 @@ quat_from_two_vectors only.
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import explains
 
 from .helpers import exercise, expect, expect_array, expect_same_with_lists, fmt
@@ -58,7 +59,7 @@ def _slip_values(a, b):
             (raw / np.linalg.norm(raw), "only the directions count: normalise a and b first"),
             (np.concatenate([[np.cos(np.arccos(np.clip(a_hat @ b_hat, -1, 1)) / 2)],
                              np.sin(np.arccos(np.clip(a_hat @ b_hat, -1, 1)) / 2) * u]),
-             "arccos loses small angles (cos θ rounds to 1): take θ = atan2(|a × b|, a · b)")]
+             hints.ARCCOS_LOSES_SMALL_ANGLES_HINT)]
 
 
 def _hint(got, a, b, truth):
@@ -106,7 +107,7 @@ def test_two_vectors_opposite_and_parallel(student):
                f"for opposite directions got {fmt(got, 6)}: not a unit half turn sending a to -a",
                "for opposite directions a × b is zero or rounding noise: take a half turn about any axis "
                "perpendicular to a" if half_turn_wrong_axis else
-               "for opposite directions the answer is a half turn, [0, u] with u perpendicular to a")
+               hints.OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT)
         same = expect_array(student.quat_from_two_vectors(a, 0.25 * a), (4,), "quat_from_two_vectors(a, a/4)")
         expect(np.max(np.abs(same - [1.0, 0.0, 0.0, 0.0])) <= 1e-15,
                f"parallel directions gave {fmt(same, 6)}, not the identity", "when a × b = 0 and a · b > 0 no turn is needed")

@@ -20,6 +20,7 @@ import warnings
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.checks.lesson05 import HALF_OPEN_HINT
 from coursekit.diagnose import as_float_array
 
@@ -113,8 +114,7 @@ NAN_HINT = ("np.arcsin of a value a hair beyond ±1 (rounding) is nan: get pitch
             "atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), or clip the argument to [-1, 1]")
 
 
-PITCH_SIGN_HINT = ("the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], [-sin, 0, cos]] "
-                   "(about y the minus sign sits bottom-left)")
+PITCH_SIGN_HINT = (hints.PITCH_TURNS_WRONG_WAY_HINT)
 MATRIX_GENERAL_HINT = ("R should be Rz(yaw) @ Ry(pitch) @ Rx(roll); compare each elementary rotation with "
                        "a quarter turn (yaw = π/2 sends x to y, pitch = π/2 sends z to x, roll = π/2 sends y to z)")
 
@@ -125,7 +125,7 @@ def _matrix_hint(got, yaw, pitch, roll):
         (_rx(roll) @ _ry(pitch) @ _rz(yaw),
          "looks like Rx(roll) @ Ry(pitch) @ Rz(yaw): the x-y-z order (scipy's extrinsic 'zyx'); "
          "the course uses R = Rz(yaw) @ Ry(pitch) @ Rx(roll)"),
-        (product_matrix(roll, pitch, yaw), "yaw and roll are swapped: yaw turns about z, roll about x"),
+        (product_matrix(roll, pitch, yaw), hints.YAW_ROLL_SWAPPED_YAW_HINT),
         (product_matrix(yaw, -pitch, roll), PITCH_SIGN_HINT),
         (product_matrix(yaw, pitch, roll).T, "looks like the transpose (the inverse rotation)"),
         (product_matrix(*np.deg2rad([yaw, pitch, roll])), "looks like degrees: angles are in radians"),
@@ -158,15 +158,10 @@ def _angles_hint(got, R):
     return ""
 
 
-ANGLES_GENERAL_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
-                       "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
+ANGLES_GENERAL_HINT = (hints.ANGLES_MUST_SATISFY_R_HINT)
 
-NO_LOCK_BRANCH_HINT = ("no separate gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 the "
-                       "entries R[0, 0], R[1, 0], R[2, 1], R[2, 2] are rounding noise (about 1e-16, seldom exactly 0), "
-                       "so atan2 of them is arbitrary; call it locked when cos(pitch) < about 1e-12, and there set "
-                       "roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
-ASIN_HINT = ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by √(2ε)): "
-             "get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
+NO_LOCK_BRANCH_HINT = (hints.NO_SEPARATE_GIMBAL_LOCK_HINT)
+ASIN_HINT = (hints.PITCH_ARCSIN_R_LOSES_HINT)
 
 
 def _naive_angles(R):
@@ -316,8 +311,7 @@ def test_matrix_to_euler_zyx_at_lock(student):
         if np.max(np.abs(wrapped(got - _naive_angles(R)))) <= 1e-12:
             roll_hint = NO_LOCK_BRANCH_HINT
         elif rebuilt_error <= REBUILD_TOL:
-            roll_hint = ("at the lock only yaw ∓ roll is defined and these angles do give R: the course sets "
-                         "roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
+            roll_hint = (hints.LOCK_ONLY_YAW_ROLL_HINT)
         else:
             roll_hint = _extraction_hint(got, R)
         expect(abs(roll) <= 1e-12, f"{what}: roll = {roll:.4f}, expected 0 (the course's convention at the lock)",
@@ -357,8 +351,7 @@ def _quat_hint(got, yaw, pitch, roll):
         (scipy_quat(2 * yaw, 2 * pitch, 2 * roll), "full angles: a quaternion uses half angles, cos(yaw / 2)"),
         (scipy_quat(roll, pitch, yaw), "yaw and roll are swapped"),
         (_all_plus_quat(yaw, pitch, roll),
-         "the mixed products lost their minus signs: w = c c c + s s s, x = c c s - s s c, y = c s c + s c s, "
-         "z = s c c - c s s (c, s of yaw/2, pitch/2, roll/2 in that order)"),
+         hints.MIXED_PRODUCTS_LOST_THEIR_HINT),
     ]
     for candidate, hint in candidates:
         if min(np.max(np.abs(candidate - expected)), np.max(np.abs(candidate + expected))) <= 1e-6:
@@ -416,9 +409,7 @@ def test_euler_zyx_to_quat_unit_and_lock(student):
 QUAT_ASIN_HINT = ("the lecture's formulas lose digits next to the lock: asin(2(wy - xz)) near ±1, and the atan2 "
                   "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums (w ± y, x + z, z - x) "
                   "and atan2")
-QUAT_NO_LOCK_HINT = ("no gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 both arguments "
-                     "of the atan2 formulas for yaw and roll are rounding noise (about 1e-16, seldom exactly 0); "
-                     "call it locked below about 1e-12, and there set roll = 0 and give the whole turn to yaw")
+QUAT_NO_LOCK_HINT = (hints.NO_GIMBAL_LOCK_BRANCH_HINT)
 
 
 def _lecture_angles(q, normalise=True):
@@ -445,8 +436,7 @@ def _quat_angles_hint(got, q, at_lock=False):
         if np.max(np.abs(wrapped(got - lecture))) <= 1e-9:
             return QUAT_NO_LOCK_HINT if at_lock else QUAT_ASIN_HINT
     if not at_lock and got[2] == 0.0:
-        return ("treated a rotation next to the lock as locked (roll = 0): call it gimbal lock only when "
-                "cos(pitch) is below about 1e-12")
+        return (hints.TREATED_ROTATION_NEXT_LOCK_HINT)
     return ("the angles must rebuild the rotation of q: pitch from the half-angle sums, "
             "2 atan2(hypot(w + y, z - x), hypot(w - y, x + z)) - π/2, then yaw ± roll from 2 atan2 of the same sums")
 
@@ -491,7 +481,7 @@ def test_quat_to_euler_zyx_normalises_and_half_open(student):
             error = float(np.max(np.abs(scipy_matrix(*got) - scipy_matrix(*unit))))
             expect(error <= REBUILD_TOL, f"quat_to_euler_zyx({scale:g} q) gives {fmt(got)}, but q gives "
                    f"{fmt(unit)} (the rotations differ by {error:.2g}) for pitch = {pitch:.9g}",
-                   "a non-unit q stands for the same rotation: divide q by its norm first")
+                   hints.NON_UNIT_Q_STANDS_HINT)
     got = _expect_angles(student.quat_to_euler_zyx([0.0, 0.0, 0.0, -1.0]), "quat_to_euler_zyx([0, 0, 0, -1])")
     expect(got[0] == np.pi, f"quat_to_euler_zyx([0, 0, 0, -1]) gave yaw = {got[0]:.17g}, expected π",
            HALF_OPEN_HINT)
@@ -510,8 +500,7 @@ def test_quat_to_euler_zyx_at_lock(student):
             got = _expect_angles(student.quat_to_euler_zyx(q), what)
             rebuilt_error = float(np.max(np.abs(scipy_matrix(*got) - R)))
             expect(abs(got[2]) <= 1e-12, f"{what}: roll = {got[2]:.4f}, expected 0 (the course's convention)",
-                   "at the lock only yaw ∓ roll is defined and these angles do give the rotation: the course sets "
-                   "roll = 0 and gives the whole turn to yaw" if rebuilt_error <= REBUILD_TOL
+                   hints.LOCK_ONLY_YAW_ROLL_DEFINED_HINT if rebuilt_error <= REBUILD_TOL
                    else _quat_angles_hint(got, q, at_lock=True))
             expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the rotation rebuilt from {what} = {fmt(got)}",
                          _quat_angles_hint(got, q, at_lock=True))
@@ -545,9 +534,9 @@ def _rates_hint(E, pitch, roll):
     cp, sp, cr, sr = np.cos(pitch), np.sin(pitch), np.cos(roll), np.sin(roll)
     right = np.array([[-sp, 0.0, 1.0], [cp * sr, cr, 0.0], [cp * cr, -sr, 0.0]])
     candidates = [
-        (right[:, ::-1], "the columns are in the order [roll, pitch, yaw]: E multiplies [yaw_rate, pitch_rate, roll_rate]"),
+        (right[:, ::-1], hints.COLUMNS_ORDER_ROLL_PITCH_HINT),
         (np.array([[-sp, 0.0, 1.0], [-cp * sr, cr, 0.0], [cp * cr, sr, 0.0]]),
-         "the roll signs are flipped: express the axes in the body frame with Rx(roll)ᵀ, not Rx(roll)"),
+         hints.ROLL_SIGNS_FLIPPED_EXPRESS_HINT),
         (right.T, "looks like the transpose of E"),
         (np.eye(3), "E = I treats the Euler-angle rates as body rates; they are not: yaw spins about the world z, "
                     "pitch about the once-turned y, roll about the body x, each seen in the body frame"),

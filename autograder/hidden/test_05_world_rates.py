@@ -10,6 +10,7 @@ euler_rates_matrix_world only.
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import explains
 
 from .helpers import exercise, expect, expect_array, expect_close
@@ -52,7 +53,7 @@ def _hint(got, yaw, pitch):
              (np.column_stack([ez, _rz(yaw) @ ey, _rz(yaw) @ ex]),
               "the roll axis is the body x axis after the yaw and the pitch: Rz(ψ) Ry(θ) e_x"),
              (_world_rates(0.0, pitch), "the yaw turns the pitch and roll axes about the vertical"),
-             (truth[:, ::-1], "the columns go in the order of the rates: [yaw_rate, pitch_rate, roll_rate]")]
+             (truth[:, ::-1], hints.COLUMNS_GO_ORDER_RATES_HINT)]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(got, candidate, truth, floor=1e-13):
             return hint

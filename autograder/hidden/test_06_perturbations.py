@@ -25,6 +25,7 @@ from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child import probes
 
+from coursekit import hints
 from coursekit.checks.lesson06 import INTEGER_X_HINT, floor_hint
 from coursekit.diagnose import JACOBIAN_STEP_HINT, jacobian_error_allowed
 
@@ -112,7 +113,7 @@ def _array(value, shape, what, nan_hint=""):
         if problem == "returned NaN or inf values":
             hint = nan_hint(np.asarray(value, dtype=float)) if callable(nan_hint) else nan_hint
         elif len(shape) == 2 and shape[0] != shape[1] and np.shape(value) == tuple(reversed(shape)):
-            hint = "row i is output f_i, column j is input x_j: shape (len(f(x)), n)"
+            hint = hints.ROW_I_OUTPUT_F_HINT
         raise Wrong(f"{what} {problem}", hint)
     return np.asarray(value, dtype=float)
 
@@ -126,19 +127,18 @@ def _boxplus_hint(got, R, d, right, fallback=""):
         candidates = [(_exp(d) @ R, "that is the left perturbation Exp(δ) R; boxplus_right is R @ Exp(δ)"),
                       (R @ (np.eye(3) + _skew(d)), "that is R (I + [δ]×), only the first-order approximation "
                        "and not a rotation: use R @ Exp(δ)"),
-                      (R @ _exp(-d), "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)"),
+                      (R @ _exp(-d), hints.TURNED_CHECK_SIGN_R_HINT),
                       (R.T @ _exp(d), "that is Rᵀ Exp(δ): R got transposed; boxplus_right is R @ Exp(δ)")]
     else:
         truth = _exp(d) @ R
         candidates = [(R @ _exp(d), "that is the right perturbation R Exp(δ); boxplus_left is Exp(δ) @ R"),
                       ((np.eye(3) + _skew(d)) @ R, "that is (I + [δ]×) R, only the first-order approximation "
                        "and not a rotation: use Exp(δ) @ R"),
-                      (_exp(-d) @ R, "turned by -δ: check the sign (Exp(δ) @ R, not Exp(δ)ᵀ @ R)"),
+                      (_exp(-d) @ R, hints.TURNED_CHECK_SIGN_EXP_HINT),
                       (_exp(d) @ R.T, "that is Exp(δ) Rᵀ: R got transposed; boxplus_left is Exp(δ) @ R"),
                       (R @ _exp(R @ d), "that is R Exp(R δ): with R first the left perturbation is R Exp(Rᵀ δ) "
                        "(Rᵀ, not R: R Exp(v) Rᵀ = Exp(R v)); or simply Exp(δ) @ R")]
-    candidates.append((R + _skew(d), "that is R + [δ]×: rotations do not add, the sum is not a rotation; "
-                       "compose with Exp(δ) instead"))
+    candidates.append((R + _skew(d), hints.R_ROTATIONS_DO_ADD_HINT))
     return _diagnose(got, truth, candidates, fallback)
 
 
@@ -164,7 +164,7 @@ def test_boxplus_right_stays_rotation(student):
         got = expect_array(student.boxplus_right(R, d), (3, 3), "boxplus_right(R, δ)")
         problem = rotation_problem(got, tol=1e-9)
         expect(problem is None, f"boxplus_right(R, {fmt(d)}) is not a rotation: {problem}",
-               _boxplus_hint(got, R, d, True, "Exp(δ) is a rotation and so is R @ Exp(δ): build the result from it"))
+               _boxplus_hint(got, R, d, True, hints.RIGHT_UPDATE_IS_A_ROTATION_HINT))
 
 
 @exercise("boxplus_right", weight=1)
@@ -194,7 +194,7 @@ def test_boxplus_left_stays_rotation(student):
         got = expect_array(student.boxplus_left(R, d), (3, 3), "boxplus_left(R, δ)")
         problem = rotation_problem(got, tol=1e-9)
         expect(problem is None, f"boxplus_left(R, {fmt(d)}) is not a rotation: {problem}",
-               _boxplus_hint(got, R, d, False, "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"))
+               _boxplus_hint(got, R, d, False, hints.LEFT_UPDATE_IS_A_ROTATION_HINT))
 
 
 @exercise("boxplus_left", weight=1)
@@ -215,11 +215,9 @@ def _boxminus_hint(got, R_a, R_b):
     D = R_b.T @ R_a
     hint = _diagnose(got, truth, [
         (-truth, "got the step back: arguments swapped? boxminus(R_a, R_b) = Log(R_bᵀ R_a)"),
-        (_log(R_a) - _log(R_b), "that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not "
-         "commute); the difference is Log(R_bᵀ R_a)"),
+        (_log(R_a) - _log(R_b), hints.LOGS_DO_NOT_SUBTRACT_HINT),
         (0.5 * np.array([D[2, 1] - D[1, 2], D[0, 2] - D[2, 0], D[1, 0] - D[0, 1]]),
-         "that is the axis times sin θ (the vee of R_bᵀ R_a - I), right only to first order: take Log(R_bᵀ R_a), "
-         "whose length is the angle θ itself")])
+         hints.AXIS_TIMES_SIN_VEE_HINT)])
     if not hint and np.all(np.isfinite(got)) and _is(_exp(got), R_a @ R_b.T, D):
         hint = "that is the left difference Log(R_a R_bᵀ); the right one is Log(R_bᵀ R_a)"
     return hint
@@ -283,14 +281,12 @@ def _quat_hint(got, q, d, fallback=""):
         return (f"that is q ⊗ [1, δ/2], normalised, at |δ| = {angle:.2g}: off by about |δ|³/24 there; keep that "
                 "shortcut for |δ| below about 1e-8, where it is exact to rounding, and use Exp_q(δ) above")
     candidates = [
-        (first_order, "that is q ⊗ [1, δ/2] without normalising: its norm is √(1 + |δ|²/4), not 1; "
-         "use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]"),
+        (first_order, hints.Q_WITHOUT_NORMALISING_NORM_HINT),
         (first_order / np.linalg.norm(first_order), "that is q ⊗ [1, δ/2] rescaled to unit length: a unit "
          "quaternion, but it turns by 2·atan(|δ|/2) instead of |δ|; use the exact Exp_q(δ) = "
          "[cos(|δ|/2), sin(|δ|/2) δ/|δ|]"),
-        (_qmul(q, _exp_q(2.0 * d)), "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and "
-         "sin(|δ|/2)"),
-        (_qmul(_exp_q(d), q), "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the right: q ⊗ Exp_q(δ)")]
+        (_qmul(q, _exp_q(2.0 * d)), hints.TURNED_TWICE_FAR_QUATERNION_HINT),
+        (_qmul(_exp_q(d), q), hints.LEFT_QUAT_PERTURBATION_HINT)]
     for value, hint in candidates:
         if _is_quat(got, value, truth):
             return hint
@@ -339,7 +335,7 @@ def test_quat_boxplus_tiny_and_zero(student):
     """δ = 0 returns q and a tiny δ (1e-9 rad) is exact, with no NaN"""
     q = _random_quats(1, 637)[0]
     got = _array(student.quat_boxplus(q, np.zeros(3)), (4,), "quat_boxplus(q, 0)",
-                 "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle")
+                 hints.USE_BELOW_TINY_ANGLE_HINT)
     expect(_same_quat(got, q, 1e-14), f"quat_boxplus(q, 0) = {fmt(got)}, expected q = {fmt(q)}",
            "a zero step must return q itself (or -q)")
     d = 1e-9 * _unit(638, 1)[0]
@@ -396,7 +392,7 @@ def _step_hint(got, exact, f, x, boxplus=None, fallback=JACOBIAN_STEP_HINT):
         return fallback
     error = float(np.max(np.abs(got - exact)))
     if got.shape[0] == got.shape[1] and float(np.max(np.abs(got.T - exact))) <= 1e-3 * error:
-        return "row i is output f_i, column j is the direction δ_j: that is the transpose of the Jacobian"
+        return hints.ROW_I_OUTPUT_F_I_HINT
     for k in list(range(1, 5)) + list(range(10, 16)):
         h = 10.0 ** -k
         if float(np.max(np.abs(got - _forward_differences(f, x, h, boxplus)))) <= 1e-3 * error:
@@ -422,8 +418,8 @@ def test_numerical_jacobian_vector_function(student):
     """approximates the analytic Jacobian of a smooth R³ → R² function (shape 2×3)"""
     for x in SMOOTH_POINTS:
         value = student.numerical_jacobian(Probe("smooth_vector_function"), x)
-        expect(np.shape(value) != (3, 2), "returned shape 3×2 for f: R³ → R²: the Jacobian is transposed",
-               "row i is output f_i, column j is input x_j: shape (len(f(x)), n)")
+        expect(np.shape(value) != (3, 2), hints.RETURNED_SHAPE_F_R3_HINT,
+               hints.ROW_I_OUTPUT_F_HINT)
         got = _array(value, (2, 3), f"numerical_jacobian(f, {fmt(x)})", floor_hint(x))
         expected = probes.smooth_vector_function_jacobian(x)
         expect_close(got, expected, 2e-3 * (1.0 + np.max(np.abs(expected))), f"numerical_jacobian(f, {fmt(x)})",
@@ -556,11 +552,11 @@ def test_numerical_jacobian_shapes(student):
 def _rotate_point_hint(got, R, p):
     """Name the mistake when ``got`` is one of the typical wrong versions of -R [p]×."""
     return _diagnose(got, -R @ _skew(p), [
-        (-_skew(R @ p), "that is -[R p]×, the Jacobian of the left perturbation; the right one is -R [p]×"),
+        (-_skew(R @ p), hints.LEFT_JACOBIAN_OF_ROTATED_POINT_HINT),
         (R @ _skew(p), "the sign is flipped: [δ]× p = -[p]× δ, so the Jacobian is -R [p]×"),
-        (-_skew(p) @ R, "the factors are in the wrong order: -R [p]×, not -[p]× R"),
+        (-_skew(p) @ R, hints.FACTORS_WRONG_ORDER_R_HINT),
         (-_skew(p), "R is missing: the Jacobian is -R [p]×"),
-        ((-R @ _skew(p)).T, "that is the transpose of -R [p]×: row i is output i, column j is δ_j")])
+        ((-R @ _skew(p)).T, hints.TRANSPOSE_R_P_ROW_HINT)])
 
 
 @exercise("jacobian_rotate_point", weight=3)
@@ -649,7 +645,7 @@ def _jr_naive(w):
         return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
 
 
-JR_FORMULA = "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²"
+JR_FORMULA = hints.RIGHT_JACOBIAN_FORMULA_HINT
 
 
 def _jr_candidates(w):
@@ -657,12 +653,10 @@ def _jr_candidates(w):
     theta = np.linalg.norm(w)
     candidates = [
         (_jr(-w), "that is Jr(w)ᵀ = Jr(-w) = Jl(w), the left Jacobian: the [w]× term has the wrong sign"),
-        (_jr(w, swapped=True), "the coefficients are swapped: (1 - cos θ)/θ² multiplies [w]× and (θ - sin θ)/θ³ "
-         "multiplies [w]×²"),
+        (_jr(w, swapped=True), hints.COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT),
         (np.eye(3), f"returned I at θ = {theta:.2g}: the first-order term -[w]×/2 is missing; below a small angle use "
          "the series I - [w]×/2 + [w]×²/6"),
-        (_jr_naive(w), "the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, so "
-         "(1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a threshold"),
+        (_jr_naive(w), hints.CLOSED_FORM_LOSES_DIGITS_HINT),
         (_jr_series(w), f"that is the one-term series I - [w]×/2 + [w]×²/6 at θ = {theta:.2g}, off by about θ³/24 "
          "there: below your threshold keep the θ² terms, a = 1/2 - θ²/24 and b = 1/6 - θ²/120")]
     return candidates
@@ -748,7 +742,7 @@ def test_right_jacobian_matches_finite_differences(student):
 def test_right_jacobian_tiny_angles(student):
     """w = 0 gives I (no NaN); at 1e-12, 1e-9, 1e-8, 1e-7 rad the [w]× term is accurate to 6 digits"""
     _expect_identity_at_zero(student.right_jacobian_so3(np.zeros(3)), "right_jacobian_so3(0)",
-                             "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle")
+                             hints.CLOSED_FORM_USE_TAYLOR_HINT)
     ws = [angle * axis for angle, axis in zip([1e-12, 1e-9, 1e-8, 1e-7], _unit(667, 4))]
     results = [(w, expect_array(student.right_jacobian_so3(w), (3, 3), f"right_jacobian_so3 at angle "
                                 f"{np.linalg.norm(w):g}")) for w in ws]
@@ -792,17 +786,16 @@ def test_right_jacobian_identities(student):
 
 
 # ---------------------------------------------------------------- right_jacobian_inv_so3
-JR_INV_FORMULA = "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²"
+JR_INV_FORMULA = hints.RIGHT_JACOBIAN_INVERSE_FORMULA_HINT
 
 
 def _inverse_candidates(w):
     Jr = _jr(w)
     W = _skew(w)
-    return [(Jr.T, "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"),
+    return [(Jr.T, hints.JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT),
             (Jr, "that is Jr(w) itself, not its inverse"),
             (np.linalg.inv(Jr.T), "that is the inverse of the left Jacobian: the [w]×/2 term has the wrong sign"),
-            (np.eye(3) + 0.5 * W, "that is I + [w]×/2, only the first-order part: add the [w]×² term with the "
-             "coefficient 1/θ² - (1 + cos θ)/(2θ sin θ)"),
+            (np.eye(3) + 0.5 * W, hints.FIRST_ORDER_PART_ONLY_HINT),
             (np.eye(3) + 0.5 * W + W @ W / 12.0, f"that is the one-term series I + [w]×/2 + [w]×²/12 at "
              f"θ = {np.linalg.norm(w):.2g}, off by about θ⁴/720 there: below your threshold keep the θ² term, "
              "c = 1/12 + θ²/720")]

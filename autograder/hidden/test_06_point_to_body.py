@@ -9,6 +9,7 @@ on the body-frame point Rᵀ p_w, for attitudes at every angle from 1e-12 to π 
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import explains
 
 from .helpers import exercise, expect_array, expect_close, expect_same_with_lists, random_rotations
@@ -24,10 +25,9 @@ def _skew(v):
 def _hint(J, R, p):
     truth = _skew(R.T @ p)
     size = np.linalg.norm(p)
-    slips = [(R.T @ _skew(p), "Rᵀ [p_w]× belongs to the left perturbation Exp(δ) R; for R Exp(δ) the turn acts on "
-                              "the body-frame point Rᵀ p_w"),
+    slips = [(R.T @ _skew(p), hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT),
              (-truth, "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ, and -[δ]× v = +[v]× δ"),
-             (_skew(p), "the point seen from the body is Rᵀ p_w, not p_w: R belongs in the answer"),
+             (_skew(p), hints.POINT_SEEN_BODY_RT_HINT),
              (-R @ _skew(p), "-R [p]× is the Jacobian of R p (body to world); here the map is Rᵀ p_w")]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 * size and explains(J / size, candidate / size, truth / size,

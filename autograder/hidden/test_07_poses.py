@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.checks.lesson01 import SQUARE_BATCH_HINT
 from coursekit.diagnose import as_float_array, close
 
@@ -90,8 +91,7 @@ SERIES_HINT_V = ("below θ = 1e-2 use the Taylor series of the two coefficients 
                  "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2")
 SERIES_NAN_HINT_V = ("NaN or inf at a tiny angle: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
                      "below θ = 1e-2 use their Taylor series (1/2 - θ²/24, 1/6 - θ²/120)")
-SERIES_HINT_C = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: "
-                 "the closed form is 0/0 at θ = 0 and cancels catastrophically just above it")
+SERIES_HINT_C = (hints.SMALL_ANGLE_SERIES_HINT)
 
 
 def _expect_finite(value, what, hint):
@@ -155,9 +155,9 @@ def _inverse_hint(got, T):
     return _first_match(got, _inverse(T), [
         (T.T, "that is the plain transpose of T: a pose is not orthogonal; only the rotation block is transposed"),
         (_pose(R.T, -t), "the translation must be turned as well as negated: -Rᵀ t"),
-        (_pose(R.T, t), "kept t unchanged: the inverse translation is -Rᵀ t (undo the shift, then the turn)"),
-        (_pose(R, -R @ t), "the rotation block of the inverse is Rᵀ, not R (and its translation -Rᵀ t)"),
-    ], "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
+        (_pose(R.T, t), hints.KEPT_T_UNCHANGED_INVERSE_HINT),
+        (_pose(R, -R @ t), hints.ROTATION_BLOCK_INVERSE_RT_HINT),
+    ], hints.INVERSE_R_T_RT_HINT)
 
 
 @exercise("pose_inverse", weight=3)
@@ -200,7 +200,7 @@ def _compose_hint(got, T_ab, T_bc):
         (T_bc @ T_ab, "the order is reversed: T_ac = T_ab @ T_bc"),
         (T_ab * T_bc, "* multiplies entry by entry: compose poses with the matrix product @"),
         (added, "t_ab + t_bc: t_bc must be turned by R_ab first, t_ac = R_ab t_bc + t_ab"),
-        (T_ab.T @ T_bc, "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"),
+        (T_ab.T @ T_bc, hints.TRANSPOSES_T_AB_T_HINT),
     ], "T_ac = T_ab @ T_bc: R_ac = R_ab R_bc, t_ac = R_ab t_bc + t_ab")
 
 
@@ -288,8 +288,8 @@ def test_to_homogeneous_one_row(student):
 def _dehomogeneous_hint(got, P_h):
     return _first_match(got, P_h[..., :3] / P_h[..., 3:], [
         (P_h[..., :3], "divide by the last coordinate before dropping it"),
-        (P_h[..., 1:] / P_h[..., :1], "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"),
-        (P_h[..., :3] * P_h[..., 3:], "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"),
+        (P_h[..., 1:] / P_h[..., :1], hints.DIVIDED_FIRST_COORDINATE_X_HINT),
+        (P_h[..., :3] * P_h[..., 3:], hints.MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT),
     ], "[x, y, z, w] is the point [x/w, y/w, z/w]: divide each row by its own last coordinate")
 
 
@@ -341,11 +341,11 @@ def _transform_hint(got, T, P):
         divided = moved[..., :3] / moved[..., 3:]
     return _first_match(got, P @ R.T + t, [
         (P @ R + t, "for rows use P @ R.T (or P_h @ T.T): P @ R is the inverse rotation"),
-        (moved[..., :3], "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
-        (divided, "P_h @ T applies the transpose of T; rows need P_h @ T.T"),
+        (moved[..., :3], hints.HOMOGENEOUS_ROWS_TRANSPOSE_HINT),
+        (divided, hints.HOMOGENEOUS_ROWS_TRANSPOSE_HINT),
         (P @ R.T, "the translation is missing: add T[:3, 3]"),
         ((P + t) @ R.T, "rotate first, then shift: R p + t, not R (p + t)"),
-    ], "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t")
+    ], hints.TRANSFORM_ROWS_FORMULA_HINT)
 
 
 @exercise("transform_points", weight=3)
@@ -490,7 +490,8 @@ def test_exp_se3_every_decade(student):
         got = expect_array(student.exp_se3(given), (4, 4), "exp_se3(xi)")
         scale = max(1.0, float(np.linalg.norm(xi[:3])))
         expect_within(got, _exp(xi), SE3_TOL * scale, "exp_se3(xi)",
-                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}", lambda: _exp_hint(got, xi, tiny=not _is_rho(got, xi) and np.linalg.norm(xi[3:]) < 1e-2))
+                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}",
+                      lambda: _exp_hint(got, xi, tiny=not _is_rho(got, xi) and np.linalg.norm(xi[3:]) < 1e-2))
 
     for_all(_twists_every_decade(), check, explicit=_decade_twists())
 
@@ -536,8 +537,7 @@ def _log_hint(got, T, xi, tiny=False):
     W = _twist_matrix(np.concatenate([np.zeros(3), phi]))[:3, :3]
     constant_c = (np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3]
     if not _close(constant_c, xi[:3], 1e-8) and _close(got[:3], constant_c, 1e-8):
-        return ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use "
-                "c(θ) = (1 - (θ/2) cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
+        return (hints.SERIES_VALUE_AT_ZERO_ONLY_HINT)
     if np.allclose(got[3:], xi[3:], atol=1e-6, rtol=0.0):
         return SERIES_HINT_C if tiny else "phi is right; check V⁻¹ (the -W/2 term and the coefficient c(θ) of W²)"
     return "xi = [V(phi)⁻¹ t, phi] with phi = Log(R)"

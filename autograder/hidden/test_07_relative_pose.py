@@ -9,6 +9,7 @@ not the colleague's T_wb T_wa⁻¹, for poses that turn by every angle from 1e-1
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import explains
 
 from .helpers import exercise, expect_array, expect_close, expect_same_with_lists
@@ -26,10 +27,10 @@ def _pose(R, t):
 def _hint(got, T_wa, T_wb):
     truth = np.linalg.inv(T_wa) @ T_wb
     slips = [(T_wb @ np.linalg.inv(T_wa), "that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain"),
-             (T_wa.T @ T_wb, "the inverse of a pose is not its transpose: T⁻¹ = [[Rᵀ, -Rᵀ t], [0, 1]]"),
+             (T_wa.T @ T_wb, hints.INVERSE_POSE_TRANSPOSE_T1_HINT),
              (np.linalg.inv(T_wb) @ T_wa, "that is T_ba, a seen from b: T_ab = T_wa⁻¹ T_wb"),
              (_pose(T_wa[:3, :3].T @ T_wb[:3, :3], T_wb[:3, 3] - T_wa[:3, 3]),
-              "the shift t_wb - t_wa is written in world axes: turn it into a's axes with R_waᵀ")]
+              hints.SHIFT_IN_WORLD_AXES_HINT)]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(got, candidate, truth, floor=1e-12):
             return hint

@@ -18,6 +18,7 @@ for two rotations, so they earn 3 of 7).
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import explains
 
 from .helpers import (LISTS_HINT, exercise, expect, expect_array, expect_close, expect_same_with_lists, random_rotations,
@@ -83,18 +84,17 @@ def _svd_hint(got, P, Q, expected):
         return ("that is U Vᵀ without the determinant fix: a reflection (det = -1); "
                 "use U diag(1, 1, d) Vᵀ with d = det(U Vᵀ)")
     if _explains(got, expected.T, expected):
-        return "that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q gives Rᵀ)"
+        return hints.INVERSE_ROTATION_TRANSPOSE_USE_HINT
     if _explains(got, np.linalg.lstsq(P, Q, rcond=None)[0].T, expected):
-        return ("that is the unconstrained least-squares matrix, which need not be a rotation: "
-                "take R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P")
+        return (hints.UNCONSTRAINED_LEAST_SQUARES_MATRIX_HINT)
     if _explains(got, np.eye(3), expected):
-        return "returned the identity, as if Q were ignored (the SVD of Pᵀ P gives I): M = Qᵀ P = Σ q_i p_iᵀ"
+        return hints.RETURNED_IDENTITY_IF_Q_HINT
     det = np.linalg.det(got)
     if det < 0:
         return f"det = {det:.3f}: a reflection, not a rotation"
     if rotation_problem(got, 1e-8):
         return "the result must be a rotation (orthonormal, det +1): build it from the SVD of M = Qᵀ P"
-    return "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
+    return hints.ALIGNMENT_SVD_FORMULA_HINT
 
 
 @exercise("align_svd", weight=1)
@@ -164,12 +164,12 @@ def _gn_hint(got, P, Q, R0, iters, expected):
     """Name the slip behind a wrong align_gauss_newton(P, Q, R0, iters) = ``got``."""
     P, Q = np.asarray(P, dtype=float), np.asarray(Q, dtype=float)
     if np.max(np.abs(got - R0)) == 0.0:
-        return "returned R0 unchanged: do iters updates R ← R Exp(δ)"
+        return hints.RETURNED_R0_UNCHANGED_DO_HINT
     slips = [
         (dict(jacobian="left"), "the left Jacobian -[R p_i]× with the right update R Exp(δ) mixes two conventions: "
                                 "J_i = -R [p_i]× goes with R ← R Exp(δ) (-[R p_i]× would need Exp(δ) R)"),
         (dict(sign=1.0), "steps uphill: δ solves H δ = -g (mind the minus sign)"),
-        (dict(update="add"), "updated by adding R [δ]× to R, which leaves SO(3): use R ← R Exp(δ)"),
+        (dict(update="add"), hints.UPDATED_ADDING_R_R_HINT),
     ]
     for options, hint in slips:
         try:
@@ -267,9 +267,9 @@ def _mean_hint(M, Rs):
     if _explains(M, one_step, truth):
         return "that is a single step from Rs[0]: repeat until the step is tiny (|δ| < 1e-12)"
     if _explains(M, _exp(np.mean([_log(R) for R in Rs], axis=0)), truth):
-        return "averaging Log(R_i) about the identity is not the mean: average Log(Mᵀ R_i) about the current M"
+        return hints.AVERAGING_LOG_R_I_HINT
     if _explains(M, Rs[0], truth):
-        return "returned the first rotation Rs[0]: the mean must weigh all of them"
+        return hints.RETURNED_FIRST_ROTATION_RS_HINT
     return "iterate δ = mean of Log(Mᵀ R_i), M ← M Exp(δ), until |δ| < 1e-12"
 
 

@@ -10,6 +10,7 @@ decades, to 1e-9 rad. Every test calls weighted_rotation_mean only.
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import explains
 
 from .helpers import exercise, expect, expect_array, expect_close, random_rotations, rotation_problem
@@ -126,4 +127,4 @@ def test_weighted_accepts_lists(student):
     from_lists = expect_array(student.with_timeout(SLOW).weighted_rotation_mean([R.tolist() for R in Rs], w), (3, 3),
                               "weighted_rotation_mean(list, list)")
     expect_close(from_lists, from_arrays, 1e-12, "weighted_rotation_mean of lists against arrays",
-                 "convert the inputs with np.asarray(..., dtype=float)")
+                 hints.CONVERT_INPUTS_NP_ASARRAY_HINT)

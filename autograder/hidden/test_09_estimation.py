@@ -25,6 +25,7 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
+from coursekit import hints
 from coursekit.diagnose import FLOAT32_HINT, explains, single_precision_error
 
 from .helpers import (exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, random_rotations,
@@ -230,7 +231,7 @@ def test_compose_accepts_lists(student):
     lists = _pair(student.jacobians_of_compose(R1.tolist(), R2.tolist()), "jacobians_of_compose with lists")
     for a, b, name in zip(arrays, lists, ("J1", "J2")):
         expect_close(b, a, 1e-12, f"{name} with lists, compared with arrays",
-                     "convert the inputs with np.asarray(..., dtype=float)")
+                     hints.CONVERT_INPUTS_NP_ASARRAY_HINT)
 
 
 # ---------------------------------------------------------------- jacobian_of_inverse
@@ -240,7 +241,7 @@ def _inverse_hint(J, R):
                "to the right of Rᵀ with the adjoint"),
         (-np.eye(3), "(R Exp(d))⁻¹ = Exp(-d) Rᵀ: the turn sits on the left of Rᵀ; move it to the right, "
                      "Exp(-d) Rᵀ = Rᵀ Exp(-R d)"),
-        (R, "the sign: inverting a small turn reverses it, Exp(d)⁻¹ = Exp(-d)"),
+        (R, hints.SIGN_INVERTING_SMALL_TURN_HINT),
         (R.T, "Rᵀ is neither the sign nor the side: (R Exp(d))⁻¹ = Rᵀ Exp(-R d)"),
         (np.eye(3), "the sign and the side: (R Exp(d))⁻¹ = Exp(-d) Rᵀ = Rᵀ Exp(-R d)"),
     ], -R) or (FLOAT32_HINT if single_precision_error(J, -R) else "(R Exp(d))⁻¹ = Exp(-d) Rᵀ = Rᵀ Exp(-R d)")
@@ -295,7 +296,7 @@ def _point_hint(J, T, p):
         (_point_jacobian(T, p, "rotation_first"), "xi = [rho, phi]: the first three columns are for rho"),
         (_point_jacobian(T, p, "translation_I"), "rho is a shift in the body frame: its block is R, not I"),
         (_point_jacobian(T, p, "left"), "[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T"),
-        (_point_jacobian(T, p, "sign"), "the sign of the rotation block: [phi]× p = -[p]× phi"),
+        (_point_jacobian(T, p, "sign"), hints.SIGN_ROTATION_BLOCK_PHI_HINT),
         (_point_jacobian(T, p, "world_rotation"), "-[R p]× is the rotation block of a left perturbation; for "
                                                   "T Exp(xi) it is -R [p]×"),
     ], _point_jacobian(T, p)) or "T (I + ξ^) [p; 1] = T [p; 1] + [R rho - R [p]× phi; 0]"
@@ -352,8 +353,8 @@ def _power_hint(got, alpha, axis, t):
         (_quat(t * np.arccos(np.clip(np.cos(alpha), -1.0, 1.0)), axis),
          "arccos(w) loses small angles (cos α rounds to 1): take α = atan2(|v|, w)"),
         (np.concatenate([[np.cos(t * alpha)], np.sin(t * alpha) * np.sin(alpha) * axis]),
-         "v = sin α u: divide the vector part by its length to get the unit axis u"),
-    ], truth, floor=1e-17) or "q^t = [cos tα, sin tα u] with α = atan2(|v|, w) and u = v / |v|"
+         hints.UNIT_AXIS_FROM_VECTOR_PART_HINT),
+    ], truth, floor=1e-17) or hints.QUAT_POWER_FORMULA_HINT
 
 
 @exercise("quat_power", weight=3)
@@ -432,14 +433,13 @@ def _gyro_hint(got, R0, omegas, dt):
     for omega in omegas:
         first_order = first_order @ (np.eye(3) + _skew(omega * dt))
     return _first_explained(got, [
-        (_integrate(R0, omegas, dt, side="left"), "that turned about the world's axes: gyroscope rates are body "
-                                                  "rates, so each update goes on the right, R ← R Exp(ω_b dt)"),
+        (_integrate(R0, omegas, dt, side="left"), hints.TURNED_ABOUT_WORLD_S_HINT),
         (_integrate(R0, omegas, 1.0), "each sample turns by ω dt: multiply the rates by dt"),
         (np.array(R0, dtype=float) @ _exp(omegas.sum(axis=0) * dt), "one Exp of the summed rates is right only "
                                                                     "about a fixed axis: one update per sample"),
         (first_order, "R (I + [ω dt]×) is only first order and drifts off SO(3): update with Exp"),
         (_integrate(R0, omegas[::-1], dt), "the samples were applied in reverse order: the first row comes first"),
-        (np.array(R0, dtype=float), "returned R0 unchanged: apply one update per sample"),
+        (np.array(R0, dtype=float), hints.RETURNED_R0_UNCHANGED_APPLY_HINT),
     ], truth) or "R ← R Exp(ω_b dt), once per row, in order"
 
 
@@ -581,8 +581,8 @@ def _left_to_right_hint(got, R, Sigma):
     return _first_explained(got, [
         (R @ Sigma @ R.T, "that converts right to left: Exp(ε_L) R = R Exp(Rᵀ ε_L), so Σ_R = Rᵀ Σ_L R"),
         (Sigma, "the covariance must change frame: world axes (left) are not body axes (right) unless R = I"),
-        (R.T @ Sigma, "a covariance takes the linear map on both sides: Cov(A ε) = A Σ Aᵀ"),
-        (Sigma @ R, "a covariance takes the linear map on both sides: Cov(A ε) = A Σ Aᵀ"),
+        (R.T @ Sigma, hints.COVARIANCE_TAKES_LINEAR_MAP_HINT),
+        (Sigma @ R, hints.COVARIANCE_TAKES_LINEAR_MAP_HINT),
     ], R.T @ Sigma @ R) or "Exp(ε_L) R = R Exp(Rᵀ ε_L): ε_R = Rᵀ ε_L, Σ_R = Rᵀ Σ_L R"
 
 
@@ -661,7 +661,7 @@ def _gauss_newton_pose(P, Q, T0, iters, update="right", sign=-1.0, jacobian="rig
 
 def _pose_gn_hint(got, P, Q, T0, iters, expected):
     if np.max(np.abs(got - T0)) == 0.0:
-        return "returned T0 unchanged: do iters updates T ← T Exp(xi)"
+        return hints.RETURNED_T0_UNCHANGED_DO_HINT
     slips = [(dict(update="left"), "the update Exp(xi) T goes with the left Jacobian [I, -[T p]×]; with "
                                    "[R, -R [p]×] update on the right, T ← T Exp(xi)"),
              (dict(sign=1.0), "steps uphill: xi solves H xi = -g (mind the minus sign)"),
@@ -783,15 +783,13 @@ def _squared_weights_stationary(T, P, Q, k):
 
 def _robust_hint(got, P, Q, T0, k):
     if np.max(np.abs(got - np.asarray(T0, dtype=float))) == 0.0:
-        return "returned T0 unchanged: iterate from T0 until the gradient of the Huber cost vanishes"
+        return hints.RETURNED_T0_UNCHANGED_ITERATE_HINT
     if rotation_problem(got[:3, :3], 1e-8):
         return "the result is not a pose: update with T ← T ExpSE3(xi)"
     if np.max(np.abs(_huber_gradient(got, P, Q, np.inf))) < 1e-8:
-        return ("that minimises the squared cost (least squares): the Huber cost counts residuals above k linearly, "
-                "so large residuals must pull less")
+        return (hints.MINIMISES_SQUARED_COST_LEAST_HINT)
     if _squared_weights_stationary(got, P, Q, k):
-        return ("weights (k/r)² beyond k belong to another cost, whose pull fades with distance: the Huber cost "
-                "keeps a constant pull k, so its weight is k/r")
+        return (hints.WEIGHTS_K_R_BEYOND_HINT)
     if _huber_cost(got, P, Q, k) < _huber_cost(np.asarray(T0, dtype=float), P, Q, k):
         return "the cost went down but the gradient is not zero yet: iterate until your steps are tiny"
     return "weigh each residual by ρ_k'(r)/r = min(1, k/r) and solve the weighted normal equations, repeatedly"

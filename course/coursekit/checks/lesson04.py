@@ -9,6 +9,7 @@ a round trip through one function. Quaternions are stored scalar first,
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import (
     FLOAT32_HINT,
@@ -44,9 +45,8 @@ JPL_HINT = ("the sign of the cross product is flipped (that is the JPL product, 
 NO_CROSS_HINT = ("your product is commutative (p ⊗ q = q ⊗ p for every pair tried): the cross product is missing "
                  "from the vector part p_w q_v + q_w p_v + p_v × q_v")
 DOT_PLUS_HINT = "the scalar part is p_w q_w - p_v · q_v (minus the dot product): i ⊗ i = -1"
-ELEMENTWISE_HINT = "multiplied entry by entry: every component of p ⊗ q mixes all four components of p and q"
-NORMALISED_HINT = ("the product is divided by its norm: p ⊗ q of quaternions that are not unit has norm |p| |q|; "
-                   "return the product itself")
+ELEMENTWISE_HINT = hints.MULTIPLIED_ENTRY_ENTRY_EVERY_HINT
+NORMALISED_HINT = (hints.PRODUCT_DIVIDED_NORM_P_HINT)
 PRODUCT_GENERIC = "check each of the 16 terms of the product against the formula"
 
 
@@ -118,7 +118,7 @@ def _layout_diagnosis(M, q, mine):
     if close(M[:, 0], _conjugate(q), 1e-12) and close(M[0, :], q, 1e-12):
         return f"looks like the transpose of [q]_{mine}: its first column must be q and its first row [w, -x, -y, -z]"
     if close(M[:, 0], np.roll(q, 1), 1e-12):
-        return "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
+        return hints.SCALAR_LAST_HINT
     return None
 
 
@@ -155,7 +155,7 @@ def _matrix_checks(name, side):
         M = require_shape(fn(GENERIC), (4, 4))
         error = np.max(np.abs(M.T @ M - np.eye(4)))
         if error > 1e-12:
-            hint = ("the first row is [w, -x, -y, -z]: its minus signs are missing"
+            hint = (hints.FIRST_ROW_W_X_HINT
                     if close(M[0, :], GENERIC, 1e-12) and close(M[:, 0], GENERIC, 1e-12) else
                     "compare your entries with the matrix in §4, one sign at a time")
             raise Mismatch(f"max |MᵀM - I| = {error:.2g}", hint)
@@ -174,9 +174,9 @@ def _(quat_conjugate):
         raise Mismatch("negated the scalar part instead of the vector part",
                        "q* = [w, -x, -y, -z]; the result is -q*, the same rotation but not the conjugate")
     if close(got, q, 1e-12):
-        raise Mismatch("got [1, 2, 3, 4], the input itself", "returned q unchanged: negate the vector part x, y, z")
+        raise Mismatch("got [1, 2, 3, 4], the input itself", hints.RETURNED_Q_UNCHANGED_NEGATE_HINT)
     if close(got, -q, 1e-12):
-        raise Mismatch("got [-1, -2, -3, -4]", "returned -q: keep the scalar w, negate only x, y, z")
+        raise Mismatch("got [-1, -2, -3, -4]", hints.RETURNED_Q_KEEP_SCALAR_HINT)
     if not close(got, [1.0, -2.0, -3.0, -4.0], 1e-12):
         raise Mismatch(f"got {fmt(got)}, expected [1, -2, -3, -4], {off_by(got, [1.0, -2.0, -3.0, -4.0])}")
 
@@ -199,9 +199,9 @@ def _inverse_diagnosis(got, q):
     """A hint when ``got`` is -q / |q|² or 1/q entry by entry."""
     q = np.asarray(q, dtype=float)
     if close(got, -q / (q @ q), 1e-12):
-        return "returned -q / |q|²: only the vector part changes sign, q⁻¹ = q* / |q|²"
+        return hints.RETURNED_Q_Q_ONLY_HINT
     if close(got, 1.0 / q, 1e-12):
-        return "took 1/q entry by entry: the inverse of a quaternion is q* / |q|²"
+        return hints.TOOK_Q_ENTRY_ENTRY_HINT
     return None
 
 
@@ -230,7 +230,7 @@ def _(quat_inverse):
 # ---------------------------------------------------------------- quat_from_axis_angle
 HALF_ANGLE_HINT = "the quaternion uses the half angle: [cos(θ/2), u sin(θ/2)]"
 DEGREES_HINT = "looks like degrees: angles in this course are radians"
-SWAPPED_HINT = "sin and cos are swapped: the scalar is cos(θ/2), the vector part u sin(θ/2)"
+SWAPPED_HINT = hints.SIN_COS_SWAPPED_SCALAR_HINT
 
 
 def _axis_angle_diagnosis(got, axis, theta):
@@ -242,7 +242,7 @@ def _axis_angle_diagnosis(got, axis, theta):
                                   (np.cos(half_degrees), np.sin(half_degrees), u, DEGREES_HINT),
                                   (np.sin(theta / 2), np.cos(theta / 2), u, SWAPPED_HINT),
                                   (np.cos(theta / 2), np.sin(theta / 2), axis,
-                                   "divide u by its norm first: the axis must be a unit vector")):
+                                   hints.DIVIDE_U_NORM_FIRST_HINT)):
         if close(got, np.concatenate([[c], s * direction]), 1e-9):
             return hint
     return None
@@ -292,9 +292,9 @@ def _(quat_rotate):
         if close(got, [1.0, 0.0, 0.0], 1e-9) and close(axis, [0.0, -2.0, 0.0], 1e-9):
             hint = "q was read as scalar last [x, y, z, w] (a quarter turn about x): this course stores [w, x, y, z]"
         elif close(got, [1.0, 0.0, 0.0], 1e-9) and close(axis, [0.0, 0.0, 0.0], 1e-9):
-            hint = "the conjugate is missing: q ⊗ [0, v] ⊗ q does not rotate v; use q ⊗ [0, v] ⊗ q*"
+            hint = hints.CONJUGATE_MISSING_Q_V_HINT
         elif close(got, [1.0, 1.0, 0.0], 1e-9):
-            hint = "the second-order term is missing: with u = q_v, v' = v + 2w (u × v) + 2 u × (u × v)"
+            hint = hints.SECOND_ORDER_TERM_MISSING_HINT
         else:
             hint = None
         raise Mismatch(f"x went to {fmt(got)}, expected [0, 1, 0], {off_by(got, [0.0, 1.0, 0.0])}", hint)
@@ -439,7 +439,7 @@ def _layout_hint(got, q, to_end):
     shift, where, index = ((-1, "end", "q[..., 1:] and q[..., :1]") if to_end else
                            (1, "front", "q[..., 3:] and q[..., :3]"))
     for value, hint in (
-            (q[..., ::-1], "the array was reversed: only the scalar moves, x, y, z keep their order"),
+            (q[..., ::-1], hints.ARRAY_REVERSED_ONLY_SCALAR_HINT),
             (q, f"returned q unchanged: the scalar must move to the {where}"),
             (np.roll(q, -shift, axis=-1), f"rolled the wrong way: the scalar must move to the {where}"),
             (np.roll(q.ravel(), shift).reshape(q.shape),
@@ -499,7 +499,7 @@ def _lerp_hint(got, q0, q1, t):
         if close(got, (1 - t) * q0 + t * target, 1e-9):
             return ("plain linear interpolation (1 - t) q0 + t q1 leaves the unit sphere: "
                     "use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
-    return "slerp stays on the unit sphere: the sine weights keep it there"
+    return hints.SLERP_STAYS_UNIT_SPHERE_HINT
 
 
 @public_check("quat_slerp", "halfway from the identity to a quarter turn about z is an eighth turn")
@@ -540,11 +540,9 @@ def _(quat_slerp):
     if abs(turned - 0.625) > 1e-9:
         blend = 0.75 * ONE + 0.25 * q1
         if same_rotation_quat(got, blend / np.linalg.norm(blend), 1e-9):
-            hint = ("not at constant speed: a normalised linear blend (nlerp) runs fast in the middle; use the "
-                    "weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+            hint = (hints.CONSTANT_SPEED_NORMALISED_LINEAR_HINT)
         else:
-            hint = ("not at constant speed: the turn from q0 must grow as t × the whole angle; use the weights "
-                    "sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+            hint = (hints.CONSTANT_SPEED_TURN_Q0_HINT)
         raise Mismatch(f"at t = 0.25 it has turned {turned:.6f} rad, off by {abs(turned - 0.625):.2g}", hint)
 
 

@@ -11,6 +11,7 @@ mistakes behind a hint are stored as their values at the checks' fixed inputs
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import as_float_array, close, rotation_problem, shape_problem
 from ..lie import unskew
@@ -58,14 +59,9 @@ def _angles_hint(angles, R):
     return None
 
 
-ANGLES_GENERAL_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
-                       "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
-NO_LOCK_BRANCH_HINT = ("no separate gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 the "
-                       "entries R[0, 0], R[1, 0], R[2, 1], R[2, 2] are rounding noise (about 1e-16, seldom exactly 0), "
-                       "so atan2 of them is arbitrary; call it locked when cos(pitch) < about 1e-12, and there set "
-                       "roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
-LOCK_CONVENTION_HINT = ("at the lock only yaw ∓ roll is defined and these angles do give R: the course sets "
-                        "roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
+ANGLES_GENERAL_HINT = (hints.ANGLES_MUST_SATISFY_R_HINT)
+NO_LOCK_BRANCH_HINT = (hints.NO_SEPARATE_GIMBAL_LOCK_HINT)
+LOCK_CONVENTION_HINT = (hints.LOCK_ONLY_YAW_ROLL_HINT)
 
 
 def _wrapped(difference):
@@ -119,8 +115,7 @@ def _extraction_hint(angles, R, pitch, no_branch, asin=None, near=False):
     if hint:
         return hint
     if asin is not None and abs(asin - pitch) > 1e-13 and abs(angles[1] - asin) <= 1e-15 + 1e-3 * abs(asin - pitch):
-        return ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by √(2ε)): "
-                "get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
+        return (hints.PITCH_ARCSIN_R_LOSES_HINT)
     if np.max(np.abs(_wrapped(angles - no_branch))) <= 1e-12:
         if not near:
             return NO_LOCK_BRANCH_HINT
@@ -157,14 +152,13 @@ def _(euler_zyx_to_matrix):
         seen = f"{name} = π/2 sends {words.split()[0]} to {fmt(image)}, expected {words.split()[-1]}"
         if name != "pitch" and close(R, _zyx(*args[::-1]), 1e-9):
             raise Mismatch(f"a quarter turn of {name} turns about the wrong axis",
-                           "yaw and roll are swapped: yaw turns about z, roll about x")
+                           hints.YAW_ROLL_SWAPPED_YAW_HINT)
         if close(R, _zyx(*np.deg2rad(args)), 1e-9):
             raise Mismatch(f"{name} = π/2 barely moves anything (a turn of π/2 degrees)",
                            "looks like degrees: angles are in radians")
         if close(R, _zyx(*args).T, 1e-9):
             if name == "pitch":
-                raise Mismatch(seen, "the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], "
-                                     "[-sin, 0, cos]] (about y the minus sign sits bottom-left)")
+                raise Mismatch(seen, hints.PITCH_TURNS_WRONG_WAY_HINT)
             raise Mismatch(seen, f"{name} turns the wrong way: looks like the transpose, check the signs of the sines")
         raise Mismatch(f"{name} = π/2 should send {words}; it sends {words.split()[0]} to {fmt(image)}")
 
@@ -279,8 +273,7 @@ ALL_PLUS_QUAT = {
 def _norm_hint(q, angles):
     all_plus = ALL_PLUS_QUAT.get(tuple(angles))
     if all_plus is not None and _same_quat(q, all_plus):
-        return ("the mixed products lost their minus signs: w = c c c + s s s, x = c c s - s s c, "
-                "y = c s c + s c s, z = s c c - c s s (c, s of yaw/2, pitch/2, roll/2 in that order)")
+        return (hints.MIXED_PRODUCTS_LOST_THEIR_HINT)
     return "a rotation quaternion has unit length: q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) is a product of unit quaternions"
 
 
@@ -338,9 +331,7 @@ def _(euler_zyx_to_quat):
 
 
 # ---------------------------------------------------------------- quat_to_euler_zyx
-QUAT_NO_LOCK_HINT = ("no gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 both arguments "
-                     "of the atan2 formulas for yaw and roll are rounding noise (about 1e-16, seldom exactly 0); "
-                     "call it locked below about 1e-12, and there set roll = 0 and give the whole turn to yaw")
+QUAT_NO_LOCK_HINT = (hints.NO_GIMBAL_LOCK_BRANCH_HINT)
 QUAT_ASIN_HINT = ("the lecture's formulas lose digits next to the lock: asin(2(wy - xz)) near ±1, and the atan2 "
                   "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums w ± y, x + z, z - x")
 
@@ -403,8 +394,7 @@ def _quat_hint(angles, q, lecture_angles=(), at_lock=False):
         if np.max(np.abs(_wrapped(angles - lecture))) <= 1e-9:
             return QUAT_NO_LOCK_HINT if at_lock else QUAT_ASIN_HINT
     if not at_lock and angles[2] == 0.0:
-        return ("treated a rotation next to the lock as locked (roll = 0): call it gimbal lock only when "
-                "cos(pitch) is below about 1e-12")
+        return (hints.TREATED_ROTATION_NEXT_LOCK_HINT)
     return ("pitch = 2 atan2(hypot(w + y, z - x), hypot(w - y, x + z)) - π/2, then yaw ± roll from 2 atan2 "
             "of the same half-angle sums")
 
@@ -434,7 +424,7 @@ def _(quat_to_euler_zyx):
     unit, double = _require_angles(quat_to_euler_zyx(q)), _require_angles(quat_to_euler_zyx(2.0 * q))
     if np.max(np.abs(_zyx(*unit) - _zyx(*double))) > REBUILD_TOL:
         raise Mismatch(f"q = {fmt(q)} gives {fmt(unit)} but 2q gives {fmt(double)}",
-                       "a non-unit q stands for the same rotation: divide q by its norm first")
+                       hints.NON_UNIT_Q_STANDS_HINT)
 
 
 @public_check("quat_to_euler_zyx", "at gimbal lock (pitch = ±π/2): no NaN, roll = 0, the same rotation")
@@ -445,8 +435,7 @@ def _(quat_to_euler_zyx):
         got = _require_angles(quat_to_euler_zyx(q.copy()))
         error = _rebuild_error(got, R)
         if abs(got[2]) > 1e-12:
-            hint = ("at the lock only yaw ∓ roll is defined and these angles do give the rotation: the course sets "
-                    "roll = 0 and gives the whole turn to yaw") if error <= REBUILD_TOL else \
+            hint = (hints.LOCK_ONLY_YAW_ROLL_DEFINED_HINT) if error <= REBUILD_TOL else \
                 _quat_hint(got, q, LECTURE_AT_LOCK[sign], at_lock=True)
             raise Mismatch(f"at pitch = {'+' if sign > 0 else '-'}π/2 the roll is {got[2]:.4f}", hint)
         if error > REBUILD_TOL:
@@ -505,9 +494,9 @@ def _(euler_rates_matrix):
                        "the course's E gives body rates: [ω_b]× = Rᵀ dR/dt")
     candidates = [
         (RATES_COLUMNS_REVERSED,
-         "the columns are in the order [roll, pitch, yaw]: E multiplies [yaw_rate, pitch_rate, roll_rate]"),
+         hints.COLUMNS_ORDER_ROLL_PITCH_HINT),
         (RATES_RX_NOT_TRANSPOSED,
-         "the roll signs are flipped: express the axes in the body frame with Rx(roll)ᵀ, not Rx(roll)"),
+         hints.ROLL_SIGNS_FLIPPED_EXPRESS_HINT),
         (RATES_TRANSPOSED, "looks like the transpose of E"),
         (np.eye(3), "E = I treats the Euler-angle rates as body rates; they are not: each rate spins about "
                     "its own axis, seen in the body frame"),

@@ -7,9 +7,10 @@ numbers (``tests/test_public_check_constants_lesson05_world_rates.py`` recompute
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
-from .common import fmt, off_by, require_same_with_lists, require_shape
+from .common import fmt, off_by, require_shape
 
 YAW, PITCH = np.pi / 3, np.pi / 6
 TRANSPOSED_TURNS = np.array([[0.0, 0.8660254037844386, 0.4330127018922194],
@@ -26,7 +27,7 @@ TRANSPOSED_HINT = ("the axes were turned by transposes, as in the body-rate matr
                    "turned by the rotations to its left in Rz Ry Rx (the pitch axis by Rz, the roll axis by Rz Ry)")
 ROLL_UNPITCHED_HINT = "the roll axis is the body x axis after the yaw and the pitch: turn e_x by Rz(ψ) Ry(θ), not Rz(ψ) alone"
 IGNORES_YAW_HINT = "the yaw turns the pitch and roll axes about the vertical: the answer depends on the yaw"
-REVERSED_HINT = "the columns go in the order of the rates: [yaw_rate, pitch_rate, roll_rate]"
+REVERSED_HINT = hints.COLUMNS_GO_ORDER_RATES_HINT
 SLIPS = [(TRANSPOSED_TURNS, TRANSPOSED_HINT), (ROLL_UNPITCHED, ROLL_UNPITCHED_HINT), (IGNORES_YAW, IGNORES_YAW_HINT),
          (REVERSED, REVERSED_HINT)]
 

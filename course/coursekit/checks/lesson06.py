@@ -9,8 +9,9 @@ like the square of the step.
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from .. import hints
 from ..checking import Mismatch, public_check
-from ..diagnose import (FLOAT32_HINT, JACOBIAN_STEP_HINT, LISTS_HINT, close, jacobian_error_allowed, rotation_problem,
+from ..diagnose import (FLOAT32_HINT, JACOBIAN_STEP_HINT, close, jacobian_error_allowed, rotation_problem,
                         shape_problem, single_precision_error)
 from ..lie import Exp, Log, quat_product, skew
 from .common import fmt, off_by, require_same_with_lists, require_shape
@@ -43,7 +44,7 @@ EXP_D_RT_AT_SAMPLE = R_EXP_MINUS_D_AT_SAMPLE.T        # Exp(δ) Rᵀ = (R Exp(-�
 
 _LEFT_HINT = "that is the left perturbation Exp(δ) R; the right one is R @ Exp(δ)"
 _RIGHT_HINT = "that is the right perturbation R Exp(δ); the left one is Exp(δ) @ R"
-_ADDS_HINT = "that is R + [δ]×: rotations do not add, the sum is not a rotation; compose with Exp(δ) instead"
+_ADDS_HINT = hints.R_ROTATIONS_DO_ADD_HINT
 
 
 def _right_slips(R, d, exp_d_r, r_exp_minus_d, rt_exp_d):
@@ -51,7 +52,7 @@ def _right_slips(R, d, exp_d_r, r_exp_minus_d, rt_exp_d):
     return [(exp_d_r, _LEFT_HINT),
             (R @ (E + skew(d)), "looks like R (I + [δ]×), only the first-order approximation: use "
              "R @ Exp(δ), which stays a rotation"),
-            (r_exp_minus_d, "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)"),
+            (r_exp_minus_d, hints.TURNED_CHECK_SIGN_R_HINT),
             (rt_exp_d, "that is Rᵀ Exp(δ): R got transposed; the right perturbation is R @ Exp(δ)"),
             (R + skew(d), _ADDS_HINT)]
 
@@ -61,7 +62,7 @@ def _left_slips(R, d, r_exp_d, exp_minus_d_r, exp_d_rt):
     return [(r_exp_d, _RIGHT_HINT),
             ((E + skew(d)) @ R, "looks like (I + [δ]×) R, only the first-order approximation: use "
              "Exp(δ) @ R, which stays a rotation"),
-            (exp_minus_d_r, "turned by -δ: check the sign (Exp(δ) @ R, not Exp(δ)ᵀ @ R)"),
+            (exp_minus_d_r, hints.TURNED_CHECK_SIGN_EXP_HINT),
             (exp_d_rt, "that is Exp(δ) Rᵀ: R got transposed; the left perturbation is Exp(δ) @ R"),
             (R + skew(d), _ADDS_HINT)]
 
@@ -93,7 +94,7 @@ def _(boxplus_right):
     problem = rotation_problem(got)
     if problem:
         raise Mismatch(problem, _boxplus_hint(got, RIGHT_SLIPS_AT_SAMPLE,
-                                              "Exp(δ) is a rotation and so is R @ Exp(δ): build the result from it"))
+                                              hints.RIGHT_UPDATE_IS_A_ROTATION_HINT))
     same = require_shape(boxplus_right(R_SAMPLE, np.zeros(3)), (3, 3))
     if not close(same, R_SAMPLE, 1e-12):
         raise Mismatch(f"boxplus_right(R, 0) differs from R, {off_by(same, R_SAMPLE)}",
@@ -116,7 +117,7 @@ def _(boxplus_right):
                        "that is the left perturbation Exp(δ) R; the right one is R @ Exp(δ)")
     if close(got, QUARTER_TURN_X @ QUARTER_TURN_Z.T, 1e-9):
         raise Mismatch("turned a quarter turn about the body's z axis, but the wrong way (x went to -y)",
-                       "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)")
+                       hints.TURNED_CHECK_SIGN_R_HINT)
     raise Mismatch(f"R ⊞ (0, 0, π/2) is {off_by(got, expected)} from R Q_z; its body x axis went to {fmt(got[:, 0])}, "
                    f"expected {fmt(expected[:, 0])}", _boxplus_hint(got, RIGHT_SLIPS_AT_QUARTER,
                                                                       "the right perturbation is R @ Exp(δ)"))
@@ -129,7 +130,7 @@ def _(boxplus_left):
     problem = rotation_problem(got)
     if problem:
         raise Mismatch(problem, _boxplus_hint(got, LEFT_SLIPS_AT_SAMPLE,
-                                              "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"))
+                                              hints.LEFT_UPDATE_IS_A_ROTATION_HINT))
     same = require_shape(boxplus_left(R_SAMPLE, np.zeros(3)), (3, 3))
     if not close(same, R_SAMPLE, 1e-12):
         if close(same, R_SAMPLE.T, 1e-9):
@@ -192,12 +193,10 @@ def _(boxminus):
                        "arguments swapped? boxminus(R_a, R_b) = Log(R_bᵀ R_a), the step from R_b to R_a")
     if close(got, [0.0, 0.0, 1.0], 1e-9):
         raise Mismatch(f"got {fmt(got)}: the length is sin(π/2) = 1 instead of the angle π/2",
-                       "that is the axis times sin θ (the vee of R_bᵀ R_a - I), right only to first order: take "
-                       "Log(R_bᵀ R_a), whose length is the angle θ itself")
+                       hints.AXIS_TIMES_SIN_VEE_HINT)
     if close(got, Log(R_a) - Log(R_SAMPLE), 1e-9):
         raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from (0, 0, π/2)",
-                       "that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not commute); "
-                       "the difference is Log(R_bᵀ R_a)")
+                       hints.LOGS_DO_NOT_SUBTRACT_HINT)
     raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from (0, 0, π/2)",
                    "boxminus(R_a, R_b) = Log(R_bᵀ R_a): the body-frame step from R_b to R_a")
 
@@ -227,8 +226,7 @@ def _(quat_boxplus):
     if close(got, [half, 0.0, 0.0, half], 1e-9) or close(got, [-half, 0.0, 0.0, -half], 1e-9):
         return
     if close(np.abs(got), [0.0, 0.0, 0.0, 1.0], 1e-9):
-        raise Mismatch(f"got {fmt(got)}: a half turn", "turned twice as far: a quaternion holds the half angle, "
-                       "cos(|δ|/2) and sin(|δ|/2)")
+        raise Mismatch(f"got {fmt(got)}: a half turn", hints.TURNED_TWICE_FAR_QUATERNION_HINT)
     if close(got, [1.0, 0.0, 0.0, np.pi / 4], 1e-9):
         raise Mismatch(f"got {fmt(got)}, of norm {np.linalg.norm(got):.4f}",
                        "that is [1, δ/2] without normalising: not a unit quaternion; use the exact Exp_q(δ) = "
@@ -254,8 +252,7 @@ def _(quat_boxplus):
     norm = np.linalg.norm(got)
     if abs(norm - 1.0) > 1e-9:
         if close(got, QUAT_NOT_NORMALISED, 1e-9):
-            raise Mismatch(f"|q ⊞ δ| = {norm:.6f}", "that is q ⊗ [1, δ/2] without normalising: its norm is "
-                           "√(1 + |δ|²/4), not 1; use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]")
+            raise Mismatch(f"|q ⊞ δ| = {norm:.6f}", hints.Q_WITHOUT_NORMALISING_NORM_HINT)
         raise Mismatch(f"|q ⊞ δ| = {norm:.6f}", "q ⊗ Exp_q(δ) is a product of unit quaternions, so its norm is 1")
 
 
@@ -272,17 +269,16 @@ def _(quat_boxplus):
                            "use the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|] and return a unit quaternion")
         left = quat_product(exp_z, q)
         if close(got, left, 1e-9) or close(got, -left, 1e-9):
-            raise Mismatch("got Exp_q(δ) ⊗ q", "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the "
-                           "right: q ⊗ Exp_q(δ)")
+            raise Mismatch("got Exp_q(δ) ⊗ q", hints.LEFT_QUAT_PERTURBATION_HINT)
         twice = quat_product(q, [0.0, 0.0, 0.0, 1.0])
         if close(got, twice, 1e-9) or close(got, -twice, 1e-9):
             raise Mismatch(f"got {fmt(got)}: a half turn about the body z axis instead of a quarter turn",
-                           "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and sin(|δ|/2)")
+                           hints.TURNED_TWICE_FAR_QUATERNION_HINT)
         raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)} from {fmt(expected)} (sign aside)")
     same = require_shape(quat_boxplus(q, np.zeros(3)), (4,))
     if not (close(same, q, 1e-12) or close(same, -q, 1e-12)):
         raise Mismatch(f"quat_boxplus(q, 0) returned {fmt(same)}",
-                       "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle")
+                       hints.USE_BELOW_TINY_ANGLE_HINT)
 
 
 # Angles just below each power of ten, from 0.97 down to 9.7e-9: where small-angle thresholds sit, so a series
@@ -378,7 +374,7 @@ def _step_hint(got, exact, numerical_jacobian, f, x, plus=None, fallback=JACOBIA
         return fallback
     error = np.max(np.abs(got - exact))
     if got.shape[0] == got.shape[1] and np.max(np.abs(got.T - exact)) <= 1e-3 * error:
-        return "row i is output f_i, column j is the direction δ_j: that is the transpose of the Jacobian"
+        return hints.ROW_I_OUTPUT_F_I_HINT
     n = 3 if plus is not None else np.asarray(x).size
     h = _fixed_step_taken(_steps_taken(numerical_jacobian, f, x, plus), None if plus is not None else x, n)
     if h is None:
@@ -412,8 +408,8 @@ def floor_hint(x):
 def _(numerical_jacobian):
     got = numerical_jacobian(_polynomial, np.array([1.0, 2.0, 3.0]))
     if np.shape(got) == (3, 2):
-        raise Mismatch("returned shape 3×2 for f: R³ → R²: the Jacobian is transposed",
-                       "row i is output f_i, column j is input x_j: shape (len(f(x)), n)")
+        raise Mismatch(hints.RETURNED_SHAPE_F_R3_HINT,
+                       hints.ROW_I_OUTPUT_F_HINT)
     got = require_shape(got, (2, 3))
     expected = np.array([[2.0, 1.0, 0.0], [0.0, 0.0, 6.0]])
     if not close(got, expected, 1e-3):
@@ -555,15 +551,15 @@ def _(jacobian_rotate_point):
         if remainder > 2.0 * np.linalg.norm(p) * size**2:
             hint = "d(R Exp(δ) p)/dδ = -R [p]×"
             if close(J, -skew(R_SAMPLE @ p), 1e-9):
-                hint = "that is -[R p]×, the Jacobian of the left perturbation; the right one is -R [p]×"
+                hint = hints.LEFT_JACOBIAN_OF_ROTATED_POINT_HINT
             elif close(J, JRP_SIGN_FLIPPED, 1e-9):
                 hint = "the sign is flipped: R [δ]× p = -R [p]× δ"
             elif close(J, JRP_TRANSPOSED, 1e-9):
-                hint = "that is the transpose of -R [p]×: row i is output i, column j is δ_j"
+                hint = hints.TRANSPOSE_R_P_ROW_HINT
             elif close(J, -skew(p), 1e-9):
                 hint = "R is missing: the Jacobian is -R [p]×"
             elif close(J, JRP_FACTORS_SWAPPED, 1e-9):
-                hint = "the factors are in the wrong order: -R [p]×, not -[p]× R"
+                hint = hints.FACTORS_WRONG_ORDER_R_HINT
             raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²", hint)
 
 
@@ -585,7 +581,7 @@ def _(right_jacobian_so3):
     problem = shape_problem(got, (3, 3))
     if problem:
         raise Mismatch(f"right_jacobian_so3(0) {problem}",
-                       "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle"
+                       hints.CLOSED_FORM_USE_TAYLOR_HINT
                        if problem == "returned NaN or inf values" else None)
     if not close(got, E, 1e-12):
         raise Mismatch(f"right_jacobian_so3(0) returned {fmt(got)}")
@@ -624,12 +620,10 @@ def _(right_jacobian_so3):
             raise Mismatch(seen, "that is the left Jacobian (the sign of the [w]× term is flipped); "
                            "Jr = I - a [w]× + b [w]×²")
         if abs(c + 1.0 / 6.0) < 1e-6:
-            raise Mismatch(seen, "the coefficients are swapped: (1 - cos θ)/θ² multiplies [w]× and (θ - sin θ)/θ³ "
-                           "multiplies [w]×²")
+            raise Mismatch(seen, hints.COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT)
         if all(abs(_wx_coefficient(require_shape(right_jacobian_so3(t * u), (3, 3)), t * u) - naive) <= 1e-12
                for t, (_, naive) in JR_TINY.items()):
-            raise Mismatch(seen, "the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, "
-                           "so (1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a threshold")
+            raise Mismatch(seen, hints.CLOSED_FORM_LOSES_DIGITS_HINT)
         if close(got, E, 1e-300):
             raise Mismatch(seen, f"returned I at θ = {theta:g}: the first-order term -[w]×/2 is missing; below a "
                            "small angle use the series I - [w]×/2 + [w]×²/6")
@@ -644,7 +638,7 @@ def _(right_jacobian_so3):
     dw = 1e-4 * np.array([0.48, 0.6, -0.64])
     leftover = np.linalg.norm(Log((Exp(w) @ Exp(J @ dw)).T @ Exp(w + dw)))
     if leftover > 1e-8:
-        hint = "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²"
+        hint = hints.RIGHT_JACOBIAN_FORMULA_HINT
         if np.linalg.norm(Log((Exp(J @ dw) @ Exp(w)).T @ Exp(w + dw))) < 1e-8:
             hint = "this J works on the left, Exp(J dw) Exp(w): it is the left Jacobian; flip the sign of the [w]× term"
         raise Mismatch(f"for |dw| = 1e-4 the leftover angle is {leftover:.1e} rad, expected below 1e-8", hint)
@@ -702,7 +696,7 @@ def _every_decade(function, name, expected_of, formula, closed_form, series, fir
 def _(right_jacobian_so3):
     _every_decade(right_jacobian_so3, "right_jacobian_so3", lambda W, a, b, c: E - a * W + b * W @ W,
                   "keep the θ² terms, a = 1/2 - θ²/24 and b = 1/6 - θ²/120 (a one-term series is off by about "
-                  "θ³/24)", "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²",
+                  "θ³/24)", hints.RIGHT_JACOBIAN_FORMULA_HINT,
                   "a = 1/2 - θ²/24, b = 1/6 - θ²/120", "-[w]×/2")
 
 
@@ -734,16 +728,15 @@ def _(right_jacobian_inv_so3):
     v = 1e-4 * np.array([0.48, 0.6, -0.64])
     error = np.linalg.norm(Log(Exp(w) @ Exp(v)) - w - J @ v)
     if error > 1e-8:
-        hint = "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²"
+        hint = hints.RIGHT_JACOBIAN_INVERSE_FORMULA_HINT
         if np.linalg.norm(Log(Exp(v) @ Exp(w)) - w - J @ v) < 1e-8:
             hint = "this is the inverse of the left Jacobian (it works for Exp(v) Exp(w)): flip the sign of [w]×/2"
         elif close(J, JR_AT_W.T, 1e-9):
-            hint = "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
+            hint = hints.JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT
         elif close(J, JR_AT_W, 1e-9):
             hint = "that is Jr(w) itself, not its inverse"
         elif close(J, JR_INV_FIRST_ORDER_AT_W, 1e-12):
-            hint = ("that is I + [w]×/2, only the first-order part: add the [w]×² term with the coefficient "
-                    "1/θ² - (1 + cos θ)/(2θ sin θ)")
+            hint = (hints.FIRST_ORDER_PART_ONLY_HINT)
         raise Mismatch(f"for |v| = 1e-4 the error is {error:.1e}, expected below 1e-8", hint)
 
 
@@ -769,4 +762,4 @@ def _(right_jacobian_inv_so3):
 def _(right_jacobian_inv_so3):
     _every_decade(right_jacobian_inv_so3, "right_jacobian_inv_so3", lambda W, a, b, c: E + 0.5 * W + c * W @ W,
                   "keep the θ² term, c = 1/12 + θ²/720 (the one-term c = 1/12 is off by about θ⁴/720)",
-                  "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²", "c = 1/12 + θ²/720", "+[w]×/2")
+                  hints.RIGHT_JACOBIAN_INVERSE_FORMULA_HINT, "c = 1/12 + θ²/720", "+[w]×/2")

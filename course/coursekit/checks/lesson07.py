@@ -9,6 +9,7 @@ once; ``tests/test_public_check_constants_lesson07.py`` recomputes them).
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, single_precision_error
 from ..lie import Exp, skew
@@ -34,8 +35,7 @@ MIRROR_HINT = "xi = [rho, phi]: translation part first (xi[:3]), rotation part l
 FORGETS_V_HINT = "the translation of exp(xi) is V(phi) @ rho, not rho"
 SERIES_NAN_HINT_V = ("NaN or inf: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
                      "below θ = 1e-2 use their series (1/2 - θ²/24, 1/6 - θ²/120)")
-SERIES_HINT_C = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: the closed form is 0/0 at θ = 0 "
-                 "and cancels catastrophically just above it")
+SERIES_HINT_C = (hints.SMALL_ANGLE_SERIES_HINT)
 
 
 def _first_match(got, candidates):
@@ -155,8 +155,8 @@ def _(from_homogeneous):
 
 
 _NO_DIVIDE = "divide by the last coordinate before dropping it: [x, y, z, w] is [x/w, y/w, z/w]"
-_DIVIDES_FIRST = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
-_MULTIPLIES = "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"
+_DIVIDES_FIRST = hints.DIVIDED_FIRST_COORDINATE_X_HINT
+_MULTIPLIES = hints.MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT
 # The slips at the checks' points, written out: [2, 4, 6, 2] and the rows of P_h in the second check.
 DEHOMOGENEOUS_SLIPS_ONE = [([2.0, 4.0, 6.0], _NO_DIVIDE), ([2.0, 3.0, 1.0], _DIVIDES_FIRST),
                            ([4.0, 8.0, 12.0], _MULTIPLIES)]
@@ -212,11 +212,11 @@ def _(transform_points):
     if found:
         raise Mismatch(*found)
     raise Mismatch(f"got {fmt(got)}, expected {fmt(expected)} ({off_by(got, expected)})",
-                   "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t")
+                   hints.TRANSFORM_ROWS_FORMULA_HINT)
 
 
 _MULTIPLIED_BY_T = ("the points were multiplied by T instead of T.T",
-                    "P_h @ T applies the transpose of T; rows need P_h @ T.T")
+                    hints.HOMOGENEOUS_ROWS_TRANSPOSE_HINT)
 # The slips of transform_points(T_QUARTER, P) for P = [[1, 0, 0], [0, 0, 0], [0, 2, -1]], written out (each row
 # is the slip for that one point; the constants test recomputes them).
 TRANSFORM_SLIPS = [
@@ -273,7 +273,7 @@ COMPOSE_SLIPS = [
     (np.array([[0.0, 0.0, 1.0, 1.0], [1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 3.5], [0.0, 0.0, 0.0, 1.0]]),         # t_ab + t_bc
      "the translations were added", "t_bc must be turned by R_ab first: t_ac = R_ab t_bc + t_ab"),
     (np.array([[0.0, 0.0, -1.0, -1.0], [-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.5], [1.0, 3.0, -2.0, 0.5]]),
-     "T_ab was transposed", "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"),                # T_abᵀ T_bc
+     "T_ab was transposed", hints.TRANSPOSES_T_AB_T_HINT),                # T_abᵀ T_bc
 ]
 
 
@@ -307,7 +307,7 @@ def _(pose_inverse):
         raise Mismatch(*found)
     require_pose(got)
     raise Mismatch(f"T @ pose_inverse(T) is not the identity ({off_by(T_QUARTER @ got, np.eye(4))})",
-                   "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
+                   hints.INVERSE_R_T_RT_HINT)
 
 
 # The slips of the inverse of T_QUARTER and of T_QUARTER_X, written out as [[R', t']] (the constants test
@@ -331,9 +331,9 @@ def _inverse_mistake(got, T, slips):
         (negated_t, f"the translation of the inverse is -t = {fmt(-T[:3, 3])}",
          "-t must be turned as well as negated: the inverse translation is -Rᵀ t"),
         (kept_t, "the translation of the inverse is t itself",
-         "kept t unchanged: the inverse translation is -Rᵀ t (undo the shift, then the turn)"),
+         hints.KEPT_T_UNCHANGED_INVERSE_HINT),
         (kept_R, "the rotation block of the inverse is R",
-         "the rotation block of the inverse is Rᵀ, not R (and its translation -Rᵀ t)"),
+         hints.ROTATION_BLOCK_INVERSE_RT_HINT),
     ])
 
 
@@ -344,7 +344,7 @@ def _(pose_inverse):
     if not close(got @ (T_QUARTER_X @ p), p, 1e-12):
         found = _inverse_mistake(got, T_QUARTER_X, INVERSE_SLIPS_QUARTER_X)
         raise Mismatch(f"got {fmt((got @ (T_QUARTER_X @ p))[:3])} back instead of {fmt(p[:3])}",
-                       found[1] if found else "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]")
+                       found[1] if found else hints.INVERSE_R_T_RT_HINT)
 
 
 @public_check("pose_inverse", "a generic pose: T T⁻¹ = I to 1e-12 (float64 kept), and plain lists are accepted")
@@ -582,8 +582,7 @@ def _log_mistake(got, T, xi, rho_c_constant=None):
     if gap > 0.0 and close(got[:3], T[:3, 3], 1e-3 * gap):
         return FORGETS_V_INV_HINT
     if rho_c_constant is not None and close(got[3:], xi[3:], 1e-9) and close(got[:3], rho_c_constant, 1e-9):
-        return ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use "
-                "c(θ) = (1 - (θ/2) cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
+        return (hints.SERIES_VALUE_AT_ZERO_ONLY_HINT)
     return None
 
 

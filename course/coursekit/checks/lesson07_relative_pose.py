@@ -7,6 +7,7 @@ and the values the usual slips return for them, stored as numbers
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
 from .common import fmt, off_by, require_same_with_lists, require_shape
@@ -22,9 +23,9 @@ REVERSED = np.array([[1.0, 0.0, 0.0, 3.0], [0.0, 0.0, 1.0, -2.0], [0.0, -1.0, 0.
 UNROTATED = np.array([[1.0, 0.0, 0.0, 2.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
 WORLD_HINT = ("that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain (b, then w); "
               "T_ab = T_aw T_wb = T_wa⁻¹ T_wb")
-TRANSPOSED_HINT = "the inverse of a pose is not its transpose: T⁻¹ = [[Rᵀ, -Rᵀ t], [0, 1]]"
+TRANSPOSED_HINT = hints.INVERSE_POSE_TRANSPOSE_T1_HINT
 REVERSED_HINT = "that is T_ba, a seen from b: swap the roles, T_ab = T_wa⁻¹ T_wb"
-UNROTATED_HINT = "the shift t_wb - t_wa is written in world axes: turn it into a's axes with R_waᵀ"
+UNROTATED_HINT = hints.SHIFT_IN_WORLD_AXES_HINT
 SLIPS = [(WORLD_DIFFERENCE, WORLD_HINT), (TRANSPOSED, TRANSPOSED_HINT), (REVERSED, REVERSED_HINT),
          (UNROTATED, UNROTATED_HINT)]
 

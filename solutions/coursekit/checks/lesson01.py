@@ -6,6 +6,7 @@ entries are 0 and ±1) and properties that any correct answer has.
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, _where_in_student_code, public_check
 from ..diagnose import ALLCLOSE_HINT, FLOAT32_HINT, SERIES_HINT, close, float32_rounding, rotation_problem
 from ..lie import Exp
@@ -43,8 +44,7 @@ def _require_double_precision(what, got, expected):
                        FLOAT32_HINT if float32_rounding(got, expected) else None)
 
 
-SAME_SIGN_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
-                  "carries the minus")
+SAME_SIGN_HINT = (hints.BOTH_SINES_HAVE_SAME_HINT)
 
 
 def _first_match(got, candidates, otherwise=None):
@@ -89,7 +89,7 @@ def _(rot2d):
                        "looks like degrees: angles in this course are radians")
     c, s = np.cos(0.7), np.sin(0.7)
     hint = _first_match(require_shape(rot2d(0.7), (2, 2)), [
-        (np.array([[s, -c], [c, s]]), "sine and cosine are swapped: cos θ goes on the diagonal, ±sin θ off it")])
+        (np.array([[s, -c], [c, s]]), hints.SINE_COSINE_SWAPPED_COS_HINT)])
     raise Mismatch(f"rot2d(pi/2) sends x to {fmt(image)}, expected [0, 1]", hint)
 
 
@@ -203,8 +203,7 @@ def _(is_rotation_matrix):
     try:
         verdict = is_rotation_matrix(np.eye(4)[:3])
     except Exception as error:
-        raise _crash(error, "check M's shape first (2-D and square, else return False) and compare MᵀM with "
-                            "np.eye(M.shape[0]), not np.eye(3)") from None
+        raise _crash(error, hints.CHECK_M_S_SHAPE_HINT) from None
     if verdict:
         raise Mismatch("accepted a 3×4 matrix", "check the shape first: a rotation matrix is square")
 
@@ -220,7 +219,7 @@ def _(rotate_point):
         raise Mismatch(f"got {fmt(p_w)}, expected [0, 1, 0]")
 
 
-ROWS_HINT = "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T"
+ROWS_HINT = hints.ONE_POINT_NOT_ROWS_HINT
 
 
 @public_check("rotate_point", "handles N points at once (shape (N, 3))")
@@ -230,8 +229,7 @@ def _(rotate_point):
         value = rotate_point(QUARTER_TURN_Z, points)
     except Exception as error:
         if "broadcast" in str(error):
-            raise _crash(error, "numpy could not broadcast R * P: an elementwise product is not a rotation of "
-                                "the rows; use the matrix product, P @ R.T") from None
+            raise _crash(error, hints.NUMPY_COULD_BROADCAST_R_HINT) from None
         raise _crash(error, ROWS_HINT) from None
     got = require_shape(value, (4, 3))
     one_by_one = np.array([QUARTER_TURN_Z @ p for p in points])
@@ -296,8 +294,8 @@ def _(compose):
                        "subscripts must chain: R_ac = R_ab R_bc (b meets b)")
     A, B = GENERIC_A, GENERIC_B
     hint = _first_match(require_shape(compose(A, B), (3, 3)), [
-        (A * B, "looks like A * B, the elementwise product: compose with the matrix product @"),
-        (A.T @ B, "looks like R_abᵀ R_bc: the first factor is transposed (inverted); multiply them as they are")])
+        (A * B, hints.ELEMENTWISE_PRODUCT_HINT),
+        (A.T @ B, hints.FIRST_FACTOR_TRANSPOSED_HINT)])
     raise Mismatch(f"compose(R_ab, R_bc) @ p_c differs from R_ab @ (R_bc @ p_c) "
                    f"({off_by(R_ac @ p_c, R_ab @ (R_bc @ p_c))})", hint)
 
@@ -321,9 +319,8 @@ def _(invert_rotation):
         R = GENERIC_A
         hint = _first_match(require_shape(invert_rotation(R), (3, 3)), [
             (R, "returned R itself: the inverse of a rotation is its transpose"),
-            (-R, "returned -R (every entry negated): the inverse of a rotation is its transpose, not its negative"),
-            (R[::-1], "reversed the order of the rows (R[::-1]): the inverse is the transpose R.T "
-                      "(rows become columns)")], "the inverse of a rotation is its transpose")
+            (-R, hints.NEGATED_NOT_TRANSPOSED_HINT),
+            (R[::-1], hints.REVERSED_ORDER_ROWS_R_HINT)], "the inverse of a rotation is its transpose")
         raise Mismatch(f"R_ab @ invert_rotation(R_ab) is not the identity ({off_by(QUARTER_TURN_Z @ R_ba, E)})",
                        hint)
 
@@ -361,10 +358,8 @@ def _(nearest_rotation):
     Q, upper = np.linalg.qr(noisy)
     Q = Q @ np.diag(np.sign(np.diag(upper)))
     hint = _first_match(got, [
-        (noisy / np.linalg.norm(noisy, axis=0), "dividing each column by its length does not make the columns "
-                                                "orthogonal: project with the SVD M = U Σ Vᵀ, R = U Vᵀ"),
-        (Q * np.sign(np.linalg.det(Q)), "looks like the Q of a QR decomposition: orthogonal, but it keeps the first "
-                                        "column's direction, so it is not the nearest rotation; use the SVD")])
+        (noisy / np.linalg.norm(noisy, axis=0), hints.DIVIDING_EACH_COLUMN_LENGTH_HINT),
+        (Q * np.sign(np.linalg.det(Q)), hints.QR_NOT_NEAREST_HINT)])
     if hint:
         problem = rotation_problem(got)
         raise Mismatch(f"not the nearest rotation: {problem}" if problem else
@@ -395,8 +390,7 @@ def _(nearest_rotation):
     if asymmetry > 1e-9:
         U, _, Vt = np.linalg.svd(M)
         flip = np.diag([1.0, 1.0, -1.0])
-        fix = ("the sign fix goes between U and Vᵀ, R = U diag(1, 1, d) Vᵀ: it flips the last column of U, the "
-               "direction of the smallest singular value")
+        fix = (hints.SIGN_FIX_GOES_BETWEEN_HINT)
         raise Mismatch(f"the result is a rotation, but not the nearest one: Rᵀ M is not symmetric (off by "
                        f"{asymmetry:.2g})", _first_match(got, [(flip @ U @ Vt, fix), (U @ Vt @ flip, fix)],
                                                        "the nearest rotation comes from the SVD M = U Σ Vᵀ: "

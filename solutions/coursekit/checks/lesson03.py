@@ -13,6 +13,7 @@ contains no way to compute the exercises' answers.
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, LISTS_HINT, close, explains, float32_rounding, rotation_problem
 from ..lie import Exp
@@ -150,12 +151,12 @@ def _hat_hint(W):
     if explains(W, truth.T, truth):
         return "the signs are swapped (the transpose, -[w]×): the top row is [0, -w3, w2]"
     if explains(W, HAT_SYMMETRIC_AT_W, truth):
-        return "the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
+        return hints.MINUS_SIGNS_MISSING_SYMMETRIC_HINT
     if explains(W, np.diag(W_SAMPLE), truth):
-        return "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
+        return hints.W_SITS_DIAGONAL_W_HINT
     if any(explains(W, permuted, truth) for permuted in HAT_PERMUTED_AT_W):
         return "the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3"
-    return "compare entry by entry with [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
+    return hints.COMPARE_ENTRY_ENTRY_W3_HINT
 
 
 @public_check("hat", "hat(w) @ v equals the cross product w × v")
@@ -207,13 +208,13 @@ def _(vee):
 def _bracket_hint(got, truth, slips):
     """The slip behind a wrong bracket = ``got``; ``slips`` holds what each slip returns for these A, B."""
     if explains(got, slips["anticommutator"], truth):
-        return "that is AB + BA: the bracket is the difference AB - BA"
+        return hints.AB_BA_BRACKET_DIFFERENCE_HINT
     if explains(got, -truth, truth):
         return "the order is AB - BA, not BA - AB"
     if explains(got, slips["entrywise"], truth):
-        return "got zero: * multiplies entry by entry (A * B = B * A), use @ for the matrix product"
+        return hints.GOT_ZERO_MULTIPLIES_ENTRY_HINT
     if explains(got, slips["AB"], truth):
-        return "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
+        return hints.ONLY_AB_BRACKET_SUBTRACTS_HINT
     if explains(got, slips["BA"], truth):
         return "that is only BA: the bracket is AB - BA"
     return "[A, B] = A @ B - B @ A, with matrix products"
@@ -252,16 +253,16 @@ def _(bracket):
 def _series_hint(got, truth, slips):
     """The slip behind a wrong exp_series = ``got``; ``slips`` holds what each slip returns for this W and n."""
     if any(explains(got, candidate, truth) for candidate in slips.get("no_identity", ())):
-        return "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
+        return hints.IDENTITY_TERM_MISSING_SUM_HINT
     if "one_extra" in slips and explains(got, slips["one_extra"], truth):
-        return "one term too many: n_terms terms means k = 0 … n_terms - 1"
+        return hints.ONE_TERM_TOO_MANY_HINT
     if "one_short" in slips and explains(got, slips["one_short"], truth):
-        return "one term too few: n_terms terms means k = 0 … n_terms - 1"
+        return hints.ONE_TERM_TOO_FEW_HINT
     if explains(got, slips["entrywise"], truth):
-        return "W ** k is an entry-wise power: use the matrix product (term = term @ W / k)"
+        return hints.ENTRYWISE_POWER_HINT
     if explains(got, slips["no_factorial"], truth):
-        return "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
-    return "sum the terms W^k / k! for k = 0 … n_terms - 1, with matrix products"
+        return hints.FACTORIAL_MISSING_HINT
+    return hints.SUM_TERMS_W_K_HINT
 
 
 def _series_slips_at_sample(n):
@@ -308,10 +309,10 @@ def _exp_hint(got, w, slips):
     if explains(got, expected.T, expected):
         return "got the inverse rotation: check the sign of the sin θ term, R = I + sin θ K + ..."
     if explains(got, slips["swapped"], expected):
-        return "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
+        return hints.COEFFICIENTS_SWAPPED_R_I_HINT
     if explains(got, slips["unnormalised"], expected):
-        return "Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin θ and cos θ)"
-    return "R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]× and θ = |w|"
+        return hints.RODRIGUES_FORMULA_NEEDS_UNIT_HINT
+    return hints.RODRIGUES_FORMULA_HINT
 
 
 @public_check("exp_so3", "a quarter turn about z sends x to y")
@@ -398,24 +399,24 @@ def _log_hint(got, R, expected, slips):
         if _trace_outside(R):
             return "NaN: (tr R - 1)/2 is just outside [-1, 1] by rounding, and arccos of it is NaN: clip it first"
         if angle < 1e-3:
-            return "NaN or inf at θ = 0: θ/sin θ is 0/0 there; use its series 1 + θ²/6 (or return 0) for tiny θ"
+            return hints.NAN_AT_ZERO_ANGLE_HINT
         if angle > 3.0 and weak_column(R):
             return COLUMN_HINT
-        return "NaN or inf near θ = π, where sin θ → 0: the log needs a branch there, with the axis from (R + Rᵀ)/2"
+        return hints.NAN_NEAR_PI_HINT
     if angle == 0.0:
         return "the identity's log is the zero vector"
     unit = expected / angle
     if explains(got, -expected, expected):
-        return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
+        return hints.OPPOSITE_ROTATION_CHECK_SIGN_HINT
     if explains(got, 2.0 * expected, expected):
-        return "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
+        return hints.TWICE_ROTATION_VECTOR_VEE_HINT
     if angle < 0.5 and explains(got, slips["sin_angle_axis"], expected):
         return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle ** 3 / 6:.1e}: you dropped the θ²/6 term, "
                 "keep θ/sin θ ≈ 1 + θ²/6 for small θ")
     theta_acos = slips["arccos_angle"]
     if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
-            return "returned zero for a tiny rotation: arccos rounds tiny angles to 0; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
+            return hints.RETURNED_ZERO_TINY_ROTATION_HINT
         return (f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
                 "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
     if any(explains(got, candidate, expected) for candidate in slips.get("no_branch", ())) or (
@@ -426,8 +427,8 @@ def _log_hint(got, R, expected, slips):
                            for candidate in column_logs(R, angle, expected * np.sin(angle) / angle)):
         return COLUMN_HINT
     if angle > 3.0:
-        return "the log is off near π: take the axis from the symmetric part (R + Rᵀ)/2 there, and its sign from R - Rᵀ"
-    return "w = θ a/|a| with a = vee(R - Rᵀ)/2 and θ = atan2(|a|, (tr R - 1)/2)"
+        return hints.LOG_OFF_NEAR_TAKE_HINT
+    return hints.LOG_FORMULA_HINT
 
 
 @public_check("log_so3", "undoes a quarter turn about z: [0, 0, π/2]")
@@ -484,11 +485,11 @@ def _(log_so3):
 def _theta_hint(theta, true_angle, theta_acos):
     """The slip behind a wrong angle ``theta``; ``theta_acos`` is what arccos of the trace gives for this R."""
     if explains(theta, np.degrees(true_angle), true_angle):
-        return "θ is in degrees (57.3 × the value in radians): the course works in radians"
+        return hints.DEGREES_VALUE_RADIANS_COURSE_HINT
     if explains(theta, theta_acos, true_angle):
         return (f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
                 "use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
-    return "θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2), in radians, in [0, π]"
+    return hints.ANGLE_FORMULA_HINT
 
 
 def _pair(value, R):
@@ -498,7 +499,7 @@ def _pair(value, R):
         "(tr R - 1)/2 is just above 1 by rounding, so arccos gives NaN: clip (tr R - 1)/2 to [-1, 1] before "
         "arccos (or use atan2)" if _trace_outside(R) else "θ must be a number"))
     u = require_shape(value[0], (3,), "u", lambda _: (
-        "u = vee(R - Rᵀ)/(2 sin θ) is 0/0 at θ = 0: the axis is arbitrary there, return [1, 0, 0]"
+        hints.AXIS_AT_ZERO_ANGLE_HINT
         if theta == 0.0 else "look for a division by a vanishing sin θ or norm"))
     return u, float(theta)
 
@@ -555,7 +556,7 @@ def _(axis_angle):
         if not close(theta * u, w, 1e-9):
             hint = None
             if explains(u, -GENERIC_AXIS, GENERIC_AXIS):
-                hint = "u points the wrong way: vee(R - Rᵀ)/2 = sin θ u points along +u"
+                hint = hints.U_POINTS_WRONG_WAY_HINT
             elif float32_rounding(theta * u, w):
                 hint = FLOAT32_HINT
             raise Mismatch(f"at θ = {angle:.3g}, u = {fmt(u, 6)} and θ u is {off_by(theta * u, w)} from the "
@@ -599,11 +600,11 @@ def _eigen_hint(u, axis, slips):
         return bool(np.min(apart) <= 1e-6)
 
     messages = {
-        "row": "that is a row of the eigenvector matrix: eigenvectors are its columns, vectors[:, k]",
+        "row": hints.ROW_EIGENVECTOR_MATRIX_EIGENVECTORS_HINT,
         "first": f"that is the first eigenvector, whose eigenvalue is {slips.get('first_eigenvalue', 0.0):.3g}, not 1: "
                  "take k = argmin |λ - 1|",
-        "svd_of_R": "that is the SVD null space of R, but R is invertible: the axis spans the null space of R - I",
-        "eigh": "np.linalg.eigh assumes a symmetric matrix (it reads one triangle of R): use np.linalg.eig",
+        "svd_of_R": hints.SVD_NULL_SPACE_R_HINT,
+        "eigh": hints.NP_LINALG_EIGH_ASSUMES_HINT,
     }
     for key, hint in messages.items():
         if key in slips and same_line(slips[key]) and not same_line(axis):

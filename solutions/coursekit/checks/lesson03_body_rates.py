@@ -7,6 +7,7 @@ return for them (``tests/test_public_check_constants_lesson03_body_rates.py`` re
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, float32_rounding
 from ..lie import Exp
@@ -23,7 +24,7 @@ WORLD_HINT = ("that is the world rate ω_w (Ṙ Rᵀ = [ω_w]×); the gyroscope'
               "use ω_w = R ω_b to get back to the body frame")
 SIGN_HINT = "the opposite spin: check the order of the product (Rᵀ Ṙ and Ṙᵀ R are negatives of each other)"
 IGNORES_R_HINT = "Ṙ alone is not skew-symmetric: it still holds the attitude R; remove it first"
-TWICE_HINT = "the rate was turned into body axes twice: one factor Rᵀ is enough"
+TWICE_HINT = hints.RATE_TURNED_INTO_BODY_HINT
 SLIPS = [(WORLD_RATE, WORLD_HINT), (-BODY_RATE, SIGN_HINT), (VEE_OF_R_DOT, IGNORES_R_HINT),
          (TURNED_TWICE, TWICE_HINT), (-WORLD_RATE, WORLD_HINT)]
 

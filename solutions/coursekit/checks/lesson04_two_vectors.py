@@ -8,6 +8,7 @@ recomputes them). Rotations are applied with scipy, never with an answer of this
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
 from .common import fmt, off_by, require_same_with_lists, require_shape
@@ -22,7 +23,7 @@ EIGHTH_UNNORMALISED = np.array([0.7592566023652966, 0.0, 0.0, 0.6507913734559685
 FULL_ANGLE_HINT = "the quaternion holds half the angle: [cos(θ/2), sin(θ/2) u], with θ the angle between a and b"
 REVERSED_HINT = "the axis points the wrong way: a positive turn about a × b (not b × a) takes a towards b"
 UNNORMALISED_HINT = "only the directions count: normalise a and b first (a · b is |a| |b| cos θ)"
-ARCCOS_HINT = "arccos loses small angles (cos θ rounds to 1): take θ = atan2(|a × b|, a · b)"
+ARCCOS_HINT = hints.ARCCOS_LOSES_SMALL_ANGLES_HINT
 OPPOSITE_HINT = ("for opposite directions a × b is zero, or only rounding noise pointing anywhere: take a half turn "
                  "about any axis perpendicular to a (for instance a × e, with e the coordinate axis least parallel to a)")
 
@@ -70,8 +71,7 @@ def _(quat_from_two_vectors):
             noisy_axis = abs(np.linalg.norm(got) - 1.0) <= 1e-12 and abs(got[0]) <= 1e-12  # a half turn, wrong axis
             raise Mismatch(f"for {fmt(a)} and {factor:g} times it got {fmt(got, 4)}: it must be a unit half turn "
                            "([0, u] with u perpendicular to a) sending a to -a",
-                           OPPOSITE_HINT if noisy_axis else "for opposite directions the answer is a half turn, "
-                           "[0, u] with u perpendicular to a")
+                           OPPOSITE_HINT if noisy_axis else hints.OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT)
     same = require_shape(quat_from_two_vectors(a, 0.5 * a), (4,), "quat_from_two_vectors(a, a/2)")
     if not close(same, [1.0, 0.0, 0.0, 0.0], 1e-12):
         raise Mismatch(f"parallel directions gave {fmt(same, 4)}, not the identity [1, 0, 0, 0]",

@@ -7,6 +7,7 @@ the usual slips return at a quarter turn about z and p_w = (1, 2, -0.5) are stor
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
 from ..lie import Exp
@@ -18,10 +19,9 @@ LEFT = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [-2.0, 1.0, 0.0]])
 SIGN = np.array([[0.0, -0.5, 1.0], [0.5, 0.0, 2.0], [-1.0, -2.0, 0.0]])
 NO_R = np.array([[0.0, 0.5, 2.0], [-0.5, 0.0, -1.0], [-2.0, 1.0, 0.0]])
 FORWARD = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [2.0, -1.0, 0.0]])
-LEFT_HINT = ("Rᵀ [p_w]× belongs to the left perturbation Exp(δ) R; for R Exp(δ) the turn acts on the body-frame "
-             "point Rᵀ p_w")
+LEFT_HINT = (hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT)
 SIGN_HINT = "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ ≈ (I - [δ]×) Rᵀ, and -[δ]× v = +[v]× δ"
-NO_R_HINT = "the point seen from the body is Rᵀ p_w, not p_w: R belongs in the answer"
+NO_R_HINT = hints.POINT_SEEN_BODY_RT_HINT
 FORWARD_HINT = ("-R [p]× is the Jacobian of R p (body to world); here the map is Rᵀ p_w (world to body), "
                 "and the perturbation sits inside a transpose")
 SLIPS = [(LEFT, LEFT_HINT), (SIGN, SIGN_HINT), (NO_R, NO_R_HINT), (FORWARD, FORWARD_HINT)]

@@ -9,6 +9,7 @@ zero, computed with scipy through ``coursekit.lie.Log``).
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, explains, rotation_problem, single_precision_error
 from ..lie import Exp, Log
@@ -42,13 +43,12 @@ def _svd_hint(got, P, Q, expected):
         return ("a reflection (det = -1): that is U Vᵀ without the determinant fix; "
                 "use U diag(1, 1, d) Vᵀ with d = det(U Vᵀ)")
     if _explains(got, expected.T, expected):
-        return "that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q gives Rᵀ)"
+        return hints.INVERSE_ROTATION_TRANSPOSE_USE_HINT
     if _explains(got, np.linalg.lstsq(P, Q, rcond=None)[0].T, expected):
-        return ("that is the unconstrained least-squares matrix, which need not be a rotation: "
-                "take R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P")
+        return (hints.UNCONSTRAINED_LEAST_SQUARES_MATRIX_HINT)
     if _explains(got, np.eye(3), expected):
-        return "returned the identity, as if Q were ignored (the SVD of Pᵀ P gives I): M = Qᵀ P = Σ q_i p_iᵀ"
-    return "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
+        return hints.RETURNED_IDENTITY_IF_Q_HINT
+    return hints.ALIGNMENT_SVD_FORMULA_HINT
 
 
 @public_check("align_svd", "recovers a quarter turn about z from four exact point pairs")
@@ -107,9 +107,9 @@ def _(align_svd):
 def _gn_hint(align_gauss_newton, got, R0, iters):
     """The slip behind a wrong Gauss-Newton answer, told from how the student's own function behaves."""
     if np.max(np.abs(got - R0)) == 0.0:
-        return "returned R0 unchanged: do iters updates R ← R Exp(δ)"
+        return hints.RETURNED_R0_UNCHANGED_DO_HINT
     if not close(got.T @ got, np.eye(3), 1e-6):
-        return "updated by adding R [δ]× to R, which leaves SO(3): use R ← R Exp(δ)"
+        return hints.UPDATED_ADDING_R_R_HINT
     if _cost(got, POINTS, TURNED) > _cost(R0, POINTS, TURNED):
         return "steps uphill (the cost went up): δ solves H δ = -g (mind the minus sign)"
     if iters > 1:
@@ -186,9 +186,9 @@ def _mean_hint(M, Rs, truth=None):
     if matches(Rotation.from_matrix(Rs).mean().as_matrix()):   # scipy's mean is the chordal one
         return "that is the chordal mean (the projected arithmetic mean); the geodesic mean needs the iteration"
     if matches(Exp(np.mean([Log(R) for R in Rs], axis=0))):
-        return "averaging Log(R_i) about the identity is not the mean: average Log(Mᵀ R_i) about the current M"
+        return hints.AVERAGING_LOG_R_I_HINT
     if matches(Rs[0]):
-        return "returned the first rotation Rs[0]: the mean must weigh all of them"
+        return hints.RETURNED_FIRST_ROTATION_RS_HINT
     return ("the residuals Log(Mᵀ R_i) do not balance yet; if you stop after a single step from Rs[0], "
             "iterate M ← M Exp(mean of Log(Mᵀ R_i)) until |δ| < 1e-12 (at most 100 iterations)")
 

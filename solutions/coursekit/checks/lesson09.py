@@ -10,6 +10,7 @@ recomputes every one of them from its definition).
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, single_precision_error
 from ..lie import Exp, ExpSE3, Log, quat_product, skew
@@ -167,10 +168,10 @@ def _(jacobians_of_compose):
         raise
     except Exception as error:
         raise Mismatch(f"jacobians_of_compose with lists raised {type(error).__name__}: {error}",
-                       "convert the inputs with np.asarray(..., dtype=float)") from None
+                       hints.CONVERT_INPUTS_NP_ASARRAY_HINT) from None
     if not (close(arrays[0], lists[0], 1e-12) and close(arrays[1], lists[1], 1e-12)):
         raise Mismatch("jacobians_of_compose with lists differs from arrays",
-                       "convert the inputs with np.asarray(..., dtype=float)")
+                       hints.CONVERT_INPUTS_NP_ASARRAY_HINT)
     _unchanged_inputs(jacobians_of_compose, (R1, R2), "jacobians_of_compose")
 
 
@@ -194,7 +195,7 @@ INVERSE_LEFT_HINT = ("-Rᵀ is the Jacobian for perturbations on the left of R a
                      "Exp(-d) lands on the left of Rᵀ and must be moved to the right")
 INVERSE_NOT_MOVED_HINT = ("(R Exp(d))⁻¹ = Exp(-d) Rᵀ: that -d sits on the left of Rᵀ; move it to the right with the "
                           "adjoint, Exp(-d) Rᵀ = Rᵀ Exp(-R d)")
-INVERSE_SIGN_HINT = "the sign: inverting a small turn reverses it, Exp(d)⁻¹ = Exp(-d)"
+INVERSE_SIGN_HINT = hints.SIGN_INVERTING_SMALL_TURN_HINT
 INVERSE_TRANSPOSE_HINT = "Rᵀ is neither the sign nor the side: (R Exp(d))⁻¹ = Exp(-d) Rᵀ = Rᵀ Exp(-R d)"
 
 
@@ -243,7 +244,7 @@ POINT_ROTATION_FIRST_HINT = "xi = [rho, phi]: the first three columns are for th
 POINT_TRANSLATION_HINT = ("rho is a shift in the body frame: T turns it into the world, so its block is R, not I "
                           "(I belongs to a left perturbation)")
 POINT_LEFT_HINT = ("[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T; for T Exp(xi) both blocks carry R")
-POINT_SIGN_HINT = "the sign of the rotation block: [phi]× p = -[p]× phi"
+POINT_SIGN_HINT = hints.SIGN_ROTATION_BLOCK_PHI_HINT
 POINT_WORLD_ROTATION_HINT = ("-[R p]× is the rotation block of a left perturbation; for T Exp(xi) the turn is about "
                              "body axes: -R [p]×")
 POINT_SLIPS = [(JTP_ROTATION_FIRST, POINT_ROTATION_FIRST_HINT), (JTP_TRANSLATION_I, POINT_TRANSLATION_HINT),
@@ -276,7 +277,7 @@ FULL_ANGLE_HINT = ("q = [cos α, sin α u] already holds the half angle: use α 
 ELEMENTWISE_HINT = "q ** t raises each entry to the power t; q^t is [cos tα, sin tα u] with α = atan2(|v|, w)"
 SIGN_FLIP_HINT = ("q and -q are one rotation but not one quaternion: -q has α' = π - α about -u, so its powers turn "
                   "the other way; do not flip the sign of q (α is in [0, π])")
-NOT_UNIT_AXIS_HINT = "v = sin α u: divide the vector part by its length to get the unit axis u"
+NOT_UNIT_AXIS_HINT = hints.UNIT_AXIS_FROM_VECTOR_PART_HINT
 ARCCOS_HINT = "arccos(w) rounds small angles to 0 (cos α is 1.0 below 1e-8): take α = atan2(|v|, w)"
 IDENTITY_HINT = "at the identity |v| = 0: guard the division (sin(t·0) = 0, so any axis will do)"
 
@@ -314,7 +315,7 @@ def _(quat_power):
                        else ELEMENTWISE_HINT)
     if not close(quat_product(half, half), Q_TWO_RAD, 1e-9):
         raise Mismatch(f"q^½ ⊗ q^½ misses q ({off_by(quat_product(half, half), Q_TWO_RAD)})",
-                       "q^t = [cos tα, sin tα u] with α = atan2(|v|, w) and u = v / |v|")
+                       hints.QUAT_POWER_FORMULA_HINT)
     other = _power(quat_power, -Q_TWO_RAD, 0.5, "quat_power(-q, 0.5)")
     squared = quat_product(other, other)
     if close(squared, Q_TWO_RAD, 1e-9):
@@ -361,8 +362,7 @@ GYRO_Y_THEN_X = np.array([[0.0, 1.0, 0.0], [0.0, 0.0, -1.0], [-1.0, 0.0, 0.0]]) 
 GYRO_SUMMED = np.array([[0.197150066460593, 0.802849933539407, 0.5626400585724],    # Exp([π/2, π/2, 0])
                         [0.802849933539407, 0.197150066460593, -0.5626400585724],
                         [-0.5626400585724, 0.5626400585724, -0.605699867078814]])
-WORLD_SIDE_HINT = ("that turned about the world's axes: gyroscope rates are body rates, so each update goes on the "
-                   "right, R ← R Exp(ω_b dt)")
+WORLD_SIDE_HINT = (hints.TURNED_ABOUT_WORLD_S_HINT)
 NO_DT_HINT = "each sample turns by ω dt (rad/s times s): multiply the rates by dt"
 SUMMED_HINT = ("one Exp of the summed rates is right only when every sample turns about the same axis: apply one "
                "update per sample, in order")
@@ -376,7 +376,7 @@ def _(integrate_gyro):
     got = require_shape(integrate_gyro(QUARTER_X, rates, 0.02), (3, 3), "integrate_gyro(R0, ω, dt)")
     if not close(got, QUARTER_BODY_Z, 1e-9):
         hint = _first_match(got, [(QUARTER_WORLD_Z, WORLD_SIDE_HINT), (GYRO_NO_DT, NO_DT_HINT),
-                                  (QUARTER_X, "returned R0 unchanged: apply one update per sample")])
+                                  (QUARTER_X, hints.RETURNED_R0_UNCHANGED_APPLY_HINT)])
         raise Mismatch(f"got {fmt(got)}, expected R0 times a quarter turn about z ({off_by(got, QUARTER_BODY_Z)})",
                        hint)
 
@@ -483,7 +483,7 @@ WRONG_WAY_HINT = ("that converts right to left: Exp(ε_L) R = R Exp(Rᵀ ε_L), 
                   "has Rᵀ on the left")
 UNCHANGED_HINT = ("the covariance must change frame: a world-axis uncertainty (left) is a different body-axis "
                   "uncertainty (right) unless R = I")
-ONE_SIDED_LEFT_HINT = "a covariance takes the linear map on both sides: Cov(A ε) = A Σ Aᵀ"
+ONE_SIDED_LEFT_HINT = hints.COVARIANCE_TAKES_LINEAR_MAP_HINT
 COV_RIGHT_SLIPS = [(COV_RIGHT_WRONG_WAY, WRONG_WAY_HINT), (SIGMA_LEFT, UNCHANGED_HINT),
                    (COV_RIGHT_ONE_SIDED, ONE_SIDED_LEFT_HINT), (COV_RIGHT_OTHER_SIDE, ONE_SIDED_LEFT_HINT)]
 
@@ -522,7 +522,7 @@ def _pose_cost(T, P, Q):
 def _gn_pose_hint(align_pose_gauss_newton, got, T0, iters):
     """The slip behind a wrong answer, told from how the student's own function behaves."""
     if np.max(np.abs(got - T0)) == 0.0:
-        return "returned T0 unchanged: do iters updates T ← T Exp(xi)"
+        return hints.RETURNED_T0_UNCHANGED_DO_HINT
     if not close(got[:3, :3].T @ got[:3, :3], np.eye(3), 1e-6) or not close(got[3], [0.0, 0.0, 0.0, 1.0], 1e-12):
         return "the result is not a pose: update with T ← T @ ExpSE3(xi), which stays in SE(3)"
     if _pose_cost(got, BOARD, BOARD_SEEN) > _pose_cost(np.asarray(T0, dtype=float), BOARD, BOARD_SEEN):
@@ -612,15 +612,13 @@ def _outlier_data():
 
 def _robust_hint(got, P, Q, T0, k):
     if np.max(np.abs(got - np.asarray(T0, dtype=float))) == 0.0:
-        return "returned T0 unchanged: iterate from T0 until the gradient of the Huber cost vanishes"
+        return hints.RETURNED_T0_UNCHANGED_ITERATE_HINT
     squared = _numeric_gradient(lambda T: _pose_cost(T, P, Q), got)
     if np.max(np.abs(squared)) < 1e-6:
-        return ("that minimises the squared cost (least squares): the Huber cost counts residuals above k "
-                "linearly, so large residuals must pull less")
+        return (hints.MINIMISES_SQUARED_COST_LEAST_HINT)
     log_tail = _numeric_gradient(lambda T: _log_tail_cost(T, P, Q, k), got)
     if np.max(np.abs(log_tail)) < 1e-6:
-        return ("weights (k/r)² beyond k belong to another cost, whose pull fades with distance: the Huber cost "
-                "keeps a constant pull k, so its weight is k/r")
+        return (hints.WEIGHTS_K_R_BEYOND_HINT)
     if _huber_cost(got, P, Q, k) < _huber_cost(np.asarray(T0, dtype=float), P, Q, k):
         return ("the cost went down but the gradient is not zero yet: iterate until your steps are tiny "
                 "(|xi| below about 1e-12)")

@@ -1,0 +1,241 @@
+"""The hints that a public check and the hidden suite both give, written once.
+
+A student whose answer makes a known mistake reads the same sentence in the
+notebook (a public check, :mod:`coursekit.checks`) and in the feedback of the
+hidden suite. Only the words are shared: each side decides for itself when
+the mistake is there (the public checks never compute answers). Grouped by
+the lesson whose public checks use them.
+
+Examples
+--------
+>>> from coursekit import hints
+>>> hints.SIGN_FIX_GOES_BETWEEN_HINT.startswith("the sign fix goes between U and Vᵀ")
+True
+"""
+
+
+# ---------------------------------------------------------------- checks/lesson01.py
+BOTH_SINES_HAVE_SAME_HINT = ("both sines have the same sign, so the columns are not orthogonal: exactly one of them "
+                             "carries the minus")
+CHECK_M_S_SHAPE_HINT = ("check M's shape first (2-D and square, else return False) and compare MᵀM with "
+                        "np.eye(M.shape[0]), not np.eye(3)")
+DIVIDING_EACH_COLUMN_LENGTH_HINT = ("dividing each column by its length does not make the columns orthogonal: project "
+                                    "with the SVD M = U Σ Vᵀ, R = U Vᵀ")
+ELEMENTWISE_PRODUCT_HINT = "looks like A * B, the elementwise product: compose with the matrix product @"
+FIRST_FACTOR_TRANSPOSED_HINT = "looks like R_abᵀ R_bc: the first factor is transposed (inverted); multiply them as they are"
+NEGATED_NOT_TRANSPOSED_HINT = ("returned -R (every entry negated): the inverse of a rotation is its transpose, not "
+                               "its negative")
+NUMPY_COULD_BROADCAST_R_HINT = ("numpy could not broadcast R * P: an elementwise product is not a rotation of the "
+                                "rows; use the matrix product, P @ R.T")
+ONE_POINT_NOT_ROWS_HINT = "R @ p works for one point, not for rows: for P of shape (N, 3) use P @ R.T"
+QR_NOT_NEAREST_HINT = ("looks like the Q of a QR decomposition: orthogonal, but it keeps the first column's "
+                        "direction, so it is not the nearest rotation; use the SVD")
+REVERSED_ORDER_ROWS_R_HINT = ("reversed the order of the rows (R[::-1]): the inverse is the transpose R.T (rows "
+                              "become columns)")
+SIGN_FIX_GOES_BETWEEN_HINT = ("the sign fix goes between U and Vᵀ, R = U diag(1, 1, d) Vᵀ: it flips the last column "
+                              "of U, the direction of the smallest singular value")
+SINE_COSINE_SWAPPED_COS_HINT = "sine and cosine are swapped: cos θ goes on the diagonal, ±sin θ off it"
+
+# ---------------------------------------------------------------- checks/lesson02.py
+CLOSURE_ASKS_MEMBER_OP_B_HINT = ("closure asks is_member(op(a, b)) for every ordered pair: here R₁ + R₂ is not a "
+                                 "rotation")
+CLOSURE_ASKS_MEMBER_OP_HINT = "closure asks is_member(op(a, b)) for every ordered pair"
+CLOSURE_TESTED_INSTEAD_OP_HINT = ("closure was tested with @ instead of the op you are given (R₁ @ R₂ is a rotation, "
+                                  "R₁ + R₂ is not): use is_member(op(a, b))")
+COMMUTES_NAN_CAME_OUT_HINT = "commutes(NaN, 2, ×) came out True although NaN · 2 is NaN both ways"
+LEFT_IDENTITY_UNCHECKED_HINT = "a ∘ 1 = a, but 1 ∘ a = 1: check op(identity, a) as well as op(a, identity)"
+RETURN_CLOSURE_IDENTITY_INVERSE_HINT = ("return {\"closure\": ..., \"identity\": ..., \"inverse\": ..., \"associativity\": "
+                                        "...}")
+RIGHT_IDENTITY_UNCHECKED_HINT = "1 ∘ a = a, but a ∘ 1 = 1: check op(a, identity) as well as op(identity, a)"
+USE_EXACTLY_KEYS_CLOSURE_HINT = "use exactly the keys closure, identity, inverse, associativity"
+
+# ---------------------------------------------------------------- checks/lesson03.py
+AB_BA_BRACKET_DIFFERENCE_HINT = "that is AB + BA: the bracket is the difference AB - BA"
+ANGLE_FORMULA_HINT = "θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2), in radians, in [0, π]"
+AXIS_AT_ZERO_ANGLE_HINT = "u = vee(R - Rᵀ)/(2 sin θ) is 0/0 at θ = 0: the axis is arbitrary there, return [1, 0, 0]"
+COEFFICIENTS_SWAPPED_R_I_HINT = "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
+COMPARE_ENTRY_ENTRY_W3_HINT = "compare entry by entry with [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
+DEGREES_VALUE_RADIANS_COURSE_HINT = "θ is in degrees (57.3 × the value in radians): the course works in radians"
+ENTRYWISE_POWER_HINT = "W ** k is an entry-wise power: use the matrix product (term = term @ W / k)"
+FACTORIAL_MISSING_HINT = "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
+GOT_ZERO_MULTIPLIES_ENTRY_HINT = "got zero: * multiplies entry by entry (A * B = B * A), use @ for the matrix product"
+IDENTITY_TERM_MISSING_SUM_HINT = "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
+LOG_FORMULA_HINT = "w = θ a/|a| with a = vee(R - Rᵀ)/2 and θ = atan2(|a|, (tr R - 1)/2)"
+LOG_OFF_NEAR_TAKE_HINT = ("the log is off near π: take the axis from the symmetric part (R + Rᵀ)/2 there, and its "
+                          "sign from R - Rᵀ")
+MINUS_SIGNS_MISSING_SYMMETRIC_HINT = ("the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, "
+                                      "0, -w1], [-w2, w1, 0]]")
+NAN_AT_ZERO_ANGLE_HINT = "NaN or inf at θ = 0: θ/sin θ is 0/0 there; use its series 1 + θ²/6 (or return 0) for tiny θ"
+NAN_NEAR_PI_HINT = ("NaN or inf near θ = π, where sin θ → 0: the log needs a branch there, with the axis from "
+                           "(R + Rᵀ)/2")
+NP_LINALG_EIGH_ASSUMES_HINT = ("np.linalg.eigh assumes a symmetric matrix (it reads one triangle of R): use "
+                               "np.linalg.eig")
+ONE_TERM_TOO_FEW_HINT = "one term too few: n_terms terms means k = 0 … n_terms - 1"
+ONE_TERM_TOO_MANY_HINT = "one term too many: n_terms terms means k = 0 … n_terms - 1"
+ONLY_AB_BRACKET_SUBTRACTS_HINT = "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
+OPPOSITE_ROTATION_CHECK_SIGN_HINT = ("the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u "
+                                     "points along u)")
+RETURNED_ZERO_TINY_ROTATION_HINT = ("returned zero for a tiny rotation: arccos rounds tiny angles to 0; use θ = "
+                                    "atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
+RODRIGUES_FORMULA_HINT = "R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]× and θ = |w|"
+RODRIGUES_FORMULA_NEEDS_UNIT_HINT = ("Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin "
+                                     "θ and cos θ)")
+ROW_EIGENVECTOR_MATRIX_EIGENVECTORS_HINT = ("that is a row of the eigenvector matrix: eigenvectors are its columns, "
+                                            "vectors[:, k]")
+SUM_TERMS_W_K_HINT = "sum the terms W^k / k! for k = 0 … n_terms - 1, with matrix products"
+SVD_NULL_SPACE_R_HINT = "that is the SVD null space of R, but R is invertible: the axis spans the null space of R - I"
+TWICE_ROTATION_VECTOR_VEE_HINT = "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
+U_POINTS_WRONG_WAY_HINT = "u points the wrong way: vee(R - Rᵀ)/2 = sin θ u points along +u"
+W_SITS_DIAGONAL_W_HINT = "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
+
+# ---------------------------------------------------------------- checks/lesson03_body_rates.py
+RATE_TURNED_INTO_BODY_HINT = "the rate was turned into body axes twice: one factor Rᵀ is enough"
+
+# ---------------------------------------------------------------- checks/lesson04.py
+ARRAY_REVERSED_ONLY_SCALAR_HINT = "the array was reversed: only the scalar moves, x, y, z keep their order"
+CONJUGATE_MISSING_Q_V_HINT = "the conjugate is missing: q ⊗ [0, v] ⊗ q does not rotate v; use q ⊗ [0, v] ⊗ q*"
+CONSTANT_SPEED_NORMALISED_LINEAR_HINT = ("not at constant speed: a normalised linear blend (nlerp) runs fast in the "
+                                         "middle; use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+CONSTANT_SPEED_TURN_Q0_HINT = ("not at constant speed: the turn from q0 must grow as t × the whole angle; use the "
+                               "weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+DIVIDE_U_NORM_FIRST_HINT = "divide u by its norm first: the axis must be a unit vector"
+FIRST_ROW_W_X_HINT = "the first row is [w, -x, -y, -z]: its minus signs are missing"
+MULTIPLIED_ENTRY_ENTRY_EVERY_HINT = ("multiplied entry by entry: every component of p ⊗ q mixes all four components "
+                                     "of p and q")
+PRODUCT_DIVIDED_NORM_P_HINT = ("the product is divided by its norm: p ⊗ q of quaternions that are not unit has norm "
+                               "|p| |q|; return the product itself")
+RETURNED_Q_KEEP_SCALAR_HINT = "returned -q: keep the scalar w, negate only x, y, z"
+RETURNED_Q_Q_ONLY_HINT = "returned -q / |q|²: only the vector part changes sign, q⁻¹ = q* / |q|²"
+RETURNED_Q_UNCHANGED_NEGATE_HINT = "returned q unchanged: negate the vector part x, y, z"
+SCALAR_LAST_HINT = "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
+SECOND_ORDER_TERM_MISSING_HINT = "the second-order term is missing: with u = q_v, v' = v + 2w (u × v) + 2 u × (u × v)"
+SIN_COS_SWAPPED_SCALAR_HINT = "sin and cos are swapped: the scalar is cos(θ/2), the vector part u sin(θ/2)"
+SLERP_STAYS_UNIT_SPHERE_HINT = "slerp stays on the unit sphere: the sine weights keep it there"
+TOOK_Q_ENTRY_ENTRY_HINT = "took 1/q entry by entry: the inverse of a quaternion is q* / |q|²"
+
+# ---------------------------------------------------------------- checks/lesson04_two_vectors.py
+ARCCOS_LOSES_SMALL_ANGLES_HINT = "arccos loses small angles (cos θ rounds to 1): take θ = atan2(|a × b|, a · b)"
+OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT = ("for opposite directions the answer is a half turn, [0, u] with u "
+                                        "perpendicular to a")
+
+# ---------------------------------------------------------------- checks/lesson05.py
+ANGLES_MUST_SATISFY_R_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
+                              "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
+COLUMNS_ORDER_ROLL_PITCH_HINT = ("the columns are in the order [roll, pitch, yaw]: E multiplies [yaw_rate, "
+                                 "pitch_rate, roll_rate]")
+LOCK_ONLY_YAW_ROLL_DEFINED_HINT = ("at the lock only yaw ∓ roll is defined and these angles do give the rotation: the "
+                                   "course sets roll = 0 and gives the whole turn to yaw")
+LOCK_ONLY_YAW_ROLL_HINT = ("at the lock only yaw ∓ roll is defined and these angles do give R: the course sets roll = "
+                           "0 and yaw = atan2(-R[0, 1], R[1, 1])")
+MIXED_PRODUCTS_LOST_THEIR_HINT = ("the mixed products lost their minus signs: w = c c c + s s s, x = c c s - s s c, y "
+                                  "= c s c + s c s, z = s c c - c s s (c, s of yaw/2, pitch/2, roll/2 in that order)")
+NON_UNIT_Q_STANDS_HINT = "a non-unit q stands for the same rotation: divide q by its norm first"
+NO_GIMBAL_LOCK_BRANCH_HINT = ("no gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 both "
+                              "arguments of the atan2 formulas for yaw and roll are rounding noise (about 1e-16, "
+                              "seldom exactly 0); call it locked below about 1e-12, and there set roll = 0 and give "
+                              "the whole turn to yaw")
+NO_SEPARATE_GIMBAL_LOCK_HINT = ("no separate gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 "
+                                "the entries R[0, 0], R[1, 0], R[2, 1], R[2, 2] are rounding noise (about 1e-16, "
+                                "seldom exactly 0), so atan2 of them is arbitrary; call it locked when cos(pitch) < "
+                                "about 1e-12, and there set roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
+PITCH_ARCSIN_R_LOSES_HINT = ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by "
+                             "√(2ε)): get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
+PITCH_TURNS_WRONG_WAY_HINT = ("the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], [-sin, 0, cos]] "
+                              "(about y the minus sign sits bottom-left)")
+ROLL_SIGNS_FLIPPED_EXPRESS_HINT = ("the roll signs are flipped: express the axes in the body frame with Rx(roll)ᵀ, "
+                                   "not Rx(roll)")
+TREATED_ROTATION_NEXT_LOCK_HINT = ("treated a rotation next to the lock as locked (roll = 0): call it gimbal lock "
+                                   "only when cos(pitch) is below about 1e-12")
+YAW_ROLL_SWAPPED_YAW_HINT = "yaw and roll are swapped: yaw turns about z, roll about x"
+
+# ---------------------------------------------------------------- checks/lesson05_world_rates.py
+COLUMNS_GO_ORDER_RATES_HINT = "the columns go in the order of the rates: [yaw_rate, pitch_rate, roll_rate]"
+
+# ---------------------------------------------------------------- checks/lesson06.py
+AXIS_TIMES_SIN_VEE_HINT = ("that is the axis times sin θ (the vee of R_bᵀ R_a - I), right only to first order: take "
+                           "Log(R_bᵀ R_a), whose length is the angle θ itself")
+CLOSED_FORM_LOSES_DIGITS_HINT = ("the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, "
+                                 "so (1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a "
+                                 "threshold")
+CLOSED_FORM_USE_TAYLOR_HINT = "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle"
+COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT = ("the coefficients are swapped: (1 - cos θ)/θ² multiplies [w]× and (θ - "
+                                            "sin θ)/θ³ multiplies [w]×²")
+FACTORS_WRONG_ORDER_R_HINT = "the factors are in the wrong order: -R [p]×, not -[p]× R"
+FIRST_ORDER_PART_ONLY_HINT = ("that is I + [w]×/2, only the first-order part: add the [w]×² term with the coefficient 1/θ² - "
+                       "(1 + cos θ)/(2θ sin θ)")
+JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT = "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
+LEFT_JACOBIAN_OF_ROTATED_POINT_HINT = "that is -[R p]×, the Jacobian of the left perturbation; the right one is -R [p]×"
+LEFT_QUAT_PERTURBATION_HINT = "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the right: q ⊗ Exp_q(δ)"
+LEFT_UPDATE_IS_A_ROTATION_HINT = "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"
+LOGS_DO_NOT_SUBTRACT_HINT = ("that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not commute); the "
+                    "difference is Log(R_bᵀ R_a)")
+Q_WITHOUT_NORMALISING_NORM_HINT = ("that is q ⊗ [1, δ/2] without normalising: its norm is √(1 + |δ|²/4), not 1; use "
+                                   "the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]")
+RETURNED_SHAPE_F_R3_HINT = "returned shape 3×2 for f: R³ → R²: the Jacobian is transposed"
+RIGHT_JACOBIAN_FORMULA_HINT = "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²"
+RIGHT_JACOBIAN_INVERSE_FORMULA_HINT = "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²"
+RIGHT_UPDATE_IS_A_ROTATION_HINT = "Exp(δ) is a rotation and so is R @ Exp(δ): build the result from it"
+ROW_I_OUTPUT_F_HINT = "row i is output f_i, column j is input x_j: shape (len(f(x)), n)"
+ROW_I_OUTPUT_F_I_HINT = "row i is output f_i, column j is the direction δ_j: that is the transpose of the Jacobian"
+R_ROTATIONS_DO_ADD_HINT = ("that is R + [δ]×: rotations do not add, the sum is not a rotation; compose with Exp(δ) "
+                           "instead")
+TRANSPOSE_R_P_ROW_HINT = "that is the transpose of -R [p]×: row i is output i, column j is δ_j"
+TURNED_CHECK_SIGN_EXP_HINT = "turned by -δ: check the sign (Exp(δ) @ R, not Exp(δ)ᵀ @ R)"
+TURNED_CHECK_SIGN_R_HINT = "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)"
+TURNED_TWICE_FAR_QUATERNION_HINT = "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and sin(|δ|/2)"
+USE_BELOW_TINY_ANGLE_HINT = "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle"
+
+# ---------------------------------------------------------------- checks/lesson06_point_to_body.py
+LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("Rᵀ [p_w]× belongs to the left perturbation Exp(δ) R; for R Exp(δ) the turn acts on the "
+                       "body-frame point Rᵀ p_w")
+POINT_SEEN_BODY_RT_HINT = "the point seen from the body is Rᵀ p_w, not p_w: R belongs in the answer"
+
+# ---------------------------------------------------------------- checks/lesson07.py
+DIVIDED_FIRST_COORDINATE_X_HINT = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
+HOMOGENEOUS_ROWS_TRANSPOSE_HINT = "P_h @ T applies the transpose of T; rows need P_h @ T.T"
+INVERSE_R_T_RT_HINT = "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]"
+KEPT_T_UNCHANGED_INVERSE_HINT = "kept t unchanged: the inverse translation is -Rᵀ t (undo the shift, then the turn)"
+MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT = "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"
+ROTATION_BLOCK_INVERSE_RT_HINT = "the rotation block of the inverse is Rᵀ, not R (and its translation -Rᵀ t)"
+SERIES_VALUE_AT_ZERO_ONLY_HINT = ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use c(θ) = (1 - (θ/2) "
+                           "cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
+SMALL_ANGLE_SERIES_HINT = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: the closed form is 0/0 at θ = "
+                           "0 and cancels catastrophically just above it")
+TRANSFORM_ROWS_FORMULA_HINT = "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t"
+TRANSPOSES_T_AB_T_HINT = "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"
+
+# ---------------------------------------------------------------- checks/lesson07_relative_pose.py
+INVERSE_POSE_TRANSPOSE_T1_HINT = "the inverse of a pose is not its transpose: T⁻¹ = [[Rᵀ, -Rᵀ t], [0, 1]]"
+SHIFT_IN_WORLD_AXES_HINT = "the shift t_wb - t_wa is written in world axes: turn it into a's axes with R_waᵀ"
+
+# ---------------------------------------------------------------- checks/lesson08.py
+ALIGNMENT_SVD_FORMULA_HINT = "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
+AVERAGING_LOG_R_I_HINT = ("averaging Log(R_i) about the identity is not the mean: average Log(Mᵀ R_i) about the "
+                          "current M")
+INVERSE_ROTATION_TRANSPOSE_USE_HINT = ("that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q "
+                                       "gives Rᵀ)")
+RETURNED_FIRST_ROTATION_RS_HINT = "returned the first rotation Rs[0]: the mean must weigh all of them"
+RETURNED_IDENTITY_IF_Q_HINT = ("returned the identity, as if Q were ignored (the SVD of Pᵀ P gives I): M = Qᵀ P = Σ "
+                               "q_i p_iᵀ")
+RETURNED_R0_UNCHANGED_DO_HINT = "returned R0 unchanged: do iters updates R ← R Exp(δ)"
+UNCONSTRAINED_LEAST_SQUARES_MATRIX_HINT = ("that is the unconstrained least-squares matrix, which need not be a "
+                                           "rotation: take R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P")
+UPDATED_ADDING_R_R_HINT = "updated by adding R [δ]× to R, which leaves SO(3): use R ← R Exp(δ)"
+
+# ---------------------------------------------------------------- checks/lesson09.py
+CONVERT_INPUTS_NP_ASARRAY_HINT = "convert the inputs with np.asarray(..., dtype=float)"
+COVARIANCE_TAKES_LINEAR_MAP_HINT = "a covariance takes the linear map on both sides: Cov(A ε) = A Σ Aᵀ"
+MINIMISES_SQUARED_COST_LEAST_HINT = ("that minimises the squared cost (least squares): the Huber cost counts "
+                                     "residuals above k linearly, so large residuals must pull less")
+QUAT_POWER_FORMULA_HINT = "q^t = [cos tα, sin tα u] with α = atan2(|v|, w) and u = v / |v|"
+RETURNED_R0_UNCHANGED_APPLY_HINT = "returned R0 unchanged: apply one update per sample"
+RETURNED_T0_UNCHANGED_DO_HINT = "returned T0 unchanged: do iters updates T ← T Exp(xi)"
+RETURNED_T0_UNCHANGED_ITERATE_HINT = ("returned T0 unchanged: iterate from T0 until the gradient of the Huber cost "
+                                      "vanishes")
+SIGN_INVERTING_SMALL_TURN_HINT = "the sign: inverting a small turn reverses it, Exp(d)⁻¹ = Exp(-d)"
+SIGN_ROTATION_BLOCK_PHI_HINT = "the sign of the rotation block: [phi]× p = -[p]× phi"
+TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rates are body rates, so each update goes "
+                             "on the right, R ← R Exp(ω_b dt)")
+UNIT_AXIS_FROM_VECTOR_PART_HINT = "v = sin α u: divide the vector part by its length to get the unit axis u"
+WEIGHTS_K_R_BEYOND_HINT = ("weights (k/r)² beyond k belong to another cost, whose pull fades with distance: the Huber "
+                           "cost keeps a constant pull k, so its weight is k/r")
