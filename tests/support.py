@@ -15,11 +15,8 @@ from functools import lru_cache
 from pathlib import Path
 
 from autograder.grading.pipeline import GradingOptions, grade_student
-from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
-from autograder.lessons.notebook_files import canonical_text, read_master
-from autograder.lessons.paths import COURSE, PROJECT_ROOT
-from autograder.lessons.reference import answer_sources
+from autograder.lessons.paths import PROJECT_ROOT
+from autograder.lessons.reference import answer_sources, write_submission
 from autograder.mistakes import all_mistakes
 
 STUB = "stub"
@@ -42,19 +39,12 @@ def build_submission(folder, overrides=None, default="reference", lessons=None):
     other exercises get ``default``: ``"reference"`` or ``STUB``.
     """
     overrides = overrides or {}
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    for lesson in load_catalog().graded_lessons:
-        if lessons and lesson.number not in lessons:
-            continue
-        nb = read_master(COURSE / lesson.filename)
-        for cell in nb.cells:
-            if cells.is_answer_cell(cell):
-                choice = overrides.get(cells.grade_id(cell), default)
-                if choice != STUB:
-                    cell.source = references()[cells.grade_id(cell)] if choice == "reference" else choice
-        (folder / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
-    return folder
+    answers = {}
+    for name, source in references().items():
+        choice = overrides.get(name, default)
+        if choice != STUB:
+            answers[name] = source if choice == "reference" else choice
+    return write_submission(folder, answers, lessons or ())
 
 
 def benchmark_class(target, count):

@@ -75,27 +75,33 @@ def answer_sources(solutions_dir=SOLUTIONS):
     return sources
 
 
-def write_reference_submission(folder, lessons=()):
-    """Write the reference answers into the released notebooks, in ``folder``, as a student would hand
-    them in; return ``folder`` (a :class:`~pathlib.Path`).
+def write_submission(folder, answers, lessons=()):
+    """Write the released notebooks into ``folder`` with ``answers`` in their answer cells, as a student
+    would hand them in; return ``folder`` (a :class:`~pathlib.Path`).
 
-    ``lessons``: only these lesson numbers (default: every graded lesson). The canary grades this
-    submission (:mod:`autograder.grading.canary`) and must give it full marks.
+    ``answers``: ``{exercise name: answer-cell source}``; an exercise not in it keeps its stub.
+    ``lessons``: only these lesson numbers (default: every graded lesson).
 
     Examples
     --------
-    >>> sorted(p.name for p in write_reference_submission(tmp, lessons=("01",)).iterdir())   # doctest: +SKIP
+    >>> folder = write_submission(tmp, {"rot_z": "def rot_z(angle):\\n    return None"}, lessons=("01",))  # doctest: +SKIP
+    >>> sorted(p.name for p in folder.iterdir())                                                    # doctest: +SKIP
     ['01_frames_and_rotations.ipynb']
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    answers = answer_sources()
     for lesson in load_catalog().graded_lessons:
         if lessons and lesson.number not in lessons:
             continue
         nb = read_master(COURSE / lesson.filename)
         for cell in nb.cells:
-            if cells.is_answer_cell(cell):
+            if cells.is_answer_cell(cell) and cells.grade_id(cell) in answers:
                 cell.source = answers[cells.grade_id(cell)]
         (folder / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
     return folder
+
+
+def write_reference_submission(folder, lessons=()):
+    """:func:`write_submission` with every reference answer: the canary's submission
+    (:mod:`autograder.grading.canary`), which must get full marks."""
+    return write_submission(folder, answer_sources(), lessons)
