@@ -316,7 +316,8 @@ def _cmd_grade(args):
     if summary.similarity is not None:
         print(f"similar answers: {len(summary.similarity.clusters)} finding(s) worth a look, "
               f"{len(summary.similarity.reference_matches)} answer(s) close to the reference "
-              f"({summary.similarity_seconds:.1f} s, {summary.similarity_cpu_seconds:.1f} s of CPU, on this machine): see the report and {out / 'similar_answers.csv'}")
+              f"({summary.similarity_seconds:.1f} s, {summary.similarity_cpu_seconds:.1f} s of CPU, on this machine): "
+              f"see the report and {out / 'similar_answers.csv'}")
     elif summary.similarity_note:
         print(f"similar answers: {summary.similarity_note}")
     if args.nbgrader_db:

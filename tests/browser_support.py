@@ -223,7 +223,8 @@ PAGE_PROBLEMS_JS = r"""
   for (const el of document.querySelectorAll('mjx-merror, .MathJax_Error, [data-mjx-error], .mjx-merror')) {
     problems.push('MathJax error: ' + (el.getAttribute('data-mjx-error') || el.textContent).slice(0, 80));
   }
-  for (const el of document.querySelectorAll('mjx-container [data-mml-node="mtext"][fill="red"], mjx-container mjx-mtext[style*="color: red"]')) {
+  for (const el of document.querySelectorAll(
+      'mjx-container [data-mml-node="mtext"][fill="red"], mjx-container mjx-mtext[style*="color: red"]')) {
     problems.push('MathJax error: undefined macro ' + (el.closest('mjx-container').textContent || '').slice(0, 60));
   }
   if (opts.minMath && document.querySelectorAll('mjx-container').length < opts.minMath)

@@ -48,7 +48,7 @@ def verdict_columns():
     from autograder.lessons.catalog import load_catalog
 
     catalog = load_catalog()
-    return [e.name for e in catalog.exercises] + [f"notebook_{l.number}" for l in catalog.graded_lessons]
+    return [e.name for e in catalog.exercises] + [f"notebook_{lesson.number}" for lesson in catalog.graded_lessons]
 
 
 def verdicts(grades_csv):

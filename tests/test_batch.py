@@ -76,7 +76,10 @@ def test_killed_run_loses_nothing_already_graded(small_class, tmp_path):
         json.loads(path.read_text(encoding="utf-8"))
     resumed = grade_class(small_class, out_killed, jobs=2, options=FAST)
     assert len(resumed.skipped) == len(saved) and len(resumed.graded) == 6 - len(saved)
-    strip = lambda rows: {k: {c: v for c, v in r.items() if c != "graded_at"} for k, r in rows.items()}
+
+    def strip(rows):
+        return {k: {c: v for c, v in r.items() if c != "graded_at"} for k, r in rows.items()}
+
     assert strip(_rows(out_killed / "grades.csv")) == strip(_rows(out_full / "grades.csv"))
 
 

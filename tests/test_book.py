@@ -124,7 +124,8 @@ def test_the_book_says_the_reference_where_the_lab_says_your(book):
     ("Your function must work for any length", "The function must work for any length"),
     ("Check your matrix, before you run the check cell.", "Check the reference matrix."),
     ("Do not call your `to_homogeneous`", "Do not call `to_homogeneous`"),
-    ("design your own solver; point your fingers; in your head; Your turn", "design your own solver; point your fingers; in your head; Your turn"),
+    ("design your own solver; point your fingers; in your head; Your turn",
+     "design your own solver; point your fingers; in your head; Your turn"),
 ])
 def test_reader_phrasing(lab, book):
     assert reader_phrasing(lab) == book

@@ -12,6 +12,9 @@ import pytest  # noqa: E402
 from coursekit.captions import figure_caption, readable_text  # noqa: E402
 from coursekit.plotting import name_live_figure, name_live_figure_when_drawn, name_open_figures  # noqa: E402
 
+# ipympl 0.10's toolbar passes traitlets an argument it deprecates (not ours to mend)
+pytestmark = pytest.mark.filterwarnings("ignore:Passing unrecognized arguments:DeprecationWarning")
+
 TEX_LEFT = re.compile(r"[$\\{}]|\b(mathbf|mathrm|frac|boldsymbol|theta|delta|times)\b")
 
 

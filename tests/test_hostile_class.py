@@ -26,7 +26,6 @@ import csv
 import json
 import shutil
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path

@@ -56,7 +56,7 @@ def nbgrader_course(tmp_path_factory):
     return root
 
 
-@pytest.mark.parametrize("lesson", LESSONS, ids=lambda l: f"lesson{l.number}")
+@pytest.mark.parametrize("lesson", LESSONS, ids=lambda lesson: f"lesson{lesson.number}")
 def test_stock_nbgrader_release_matches_ours(nbgrader_course, lesson):
     theirs = read_master(nbgrader_course / "release" / assignment_name(lesson) / lesson.filename)
     ours = read_master(COURSE / lesson.filename)
@@ -64,7 +64,7 @@ def test_stock_nbgrader_release_matches_ours(nbgrader_course, lesson):
     assert [c.metadata.get("nbgrader") for c in theirs.cells] == [c.metadata.get("nbgrader") for c in ours.cells]
 
 
-@pytest.mark.parametrize("lesson", LESSONS, ids=lambda l: f"lesson{l.number}")
+@pytest.mark.parametrize("lesson", LESSONS, ids=lambda lesson: f"lesson{lesson.number}")
 def test_stock_nbgrader_grades_reference_full_and_release_zero(nbgrader_course, lesson):
     with _gradebook(nbgrader_course) as gradebook:
         reference = gradebook.find_submission(assignment_name(lesson), "reference")

@@ -92,7 +92,6 @@ def _eigen_row_lines(R):
 def _eigen_slips(R, keys):
     """What each axis_from_eigen slip returns for R (the module keeps those that differ from the axis)."""
     values, vectors = np.linalg.eig(R)
-    k = int(np.argmin(np.abs(values - 1.0)))
     sym_values, sym_vectors = np.linalg.eigh(R)
     slips = {"row": _eigen_row_lines(R), "first": _unit(vectors[:, 0]), "first_eigenvalue": complex(values[0]),
              "svd_of_R": np.linalg.svd(R)[2][-1],

@@ -148,7 +148,7 @@ def build_sample_class(target, lessons=()):
         folder = target / student.student_id
         folder.mkdir(parents=True)
         chosen = assignments.get(student.student_id, [])
-        chosen_lessons = [l for l in catalog.graded_lessons if not lessons or l.number in lessons]
+        chosen_lessons = [lesson for lesson in catalog.graded_lessons if not lessons or lesson.number in lessons]
         for number, lesson in enumerate(chosen_lessons):
             text = canonical_text(student_notebook(student, lesson, references, mistakes, chosen))
             if student.damage == "corrupt_first" and number == 0:

@@ -204,7 +204,8 @@ def matrix_to_euler_zyx(R):
     roll = np.arctan2(s * R[0, 2] - c * R[1, 2], c * R[1, 1] - s * R[0, 1])
     return half_open(yaw), float(pitch), half_open(roll)
 ''',
-            hint='no separate gimbal-lock branch, or a lock test too strict', public_hint='no separate gimbal-lock branch, or a lock test too strict'),
+            hint='no separate gimbal-lock branch, or a lock test too strict',
+            public_hint='no separate gimbal-lock branch, or a lock test too strict'),
 ]
 
 ALTERNATIVES = [

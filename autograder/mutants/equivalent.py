@@ -291,7 +291,7 @@ EQUIVALENT = {
     'quat_slerp.f4290637': NLERP_BELOW_PRECISION,  # 1e-12 → 1e-07 (line 28)
     'quat_slerp.fca15ec1': NLERP_BELOW_PRECISION,  # np.sin(omega) → np.sin(np.deg2rad(omega)) (line 28)
     # POSITIVE_SCALE
-    'quat_slerp.5ac45412': POSITIVE_SCALE,  # (np.sin((1.0 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega) → 
+    'quat_slerp.5ac45412': POSITIVE_SCALE,  # (np.sin((1.0 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega) →
     'quat_slerp.e20b188c': POSITIVE_SCALE,  # np.sin(omega) → omega (line 31)
     'quat_slerp.e5470d82': POSITIVE_SCALE,  # np.sin(omega) → np.sin(np.deg2rad(omega)) (line 31)
     # POWERS_COMMUTE
@@ -304,22 +304,22 @@ EQUIVALENT = {
     'quat_rotate.85174c49': SCALAR_DISCARDED,  # a[0] → a[1] (line 23)
     'quat_rotate.859ee7f7': SCALAR_DISCARDED,  # a[0] * b[0] → b[0] (line 23)
     # SERIES_WITHIN_PROMISE
-    'exp_se3.8f6ffd90': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - theta ** 2 / 120.0 + theta ** 4 / 5040.0 → 1.0 / 6.0 - theta ** 
+    'exp_se3.8f6ffd90': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - theta ** 2 / 120.0 + theta ** 4 / 5040.0 → 1.0 / 6.0 - theta **
     'exp_se3.8fd6e828': SERIES_WITHIN_PROMISE,  # 0.5 - theta ** 2 / 24.0 + theta ** 4 / 720.0 → 0.5 - theta ** 2 / 24.0 - the
     'exp_se3.f4cb841b': SERIES_WITHIN_PROMISE,  # 0.5 - theta ** 2 / 24.0 + theta ** 4 / 720.0 → 0.5 - theta ** 2 / 24.0 (line
-    'exp_se3.fc7bcb3b': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - theta ** 2 / 120.0 + theta ** 4 / 5040.0 → 1.0 / 6.0 - theta ** 
+    'exp_se3.fc7bcb3b': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - theta ** 2 / 120.0 + theta ** 4 / 5040.0 → 1.0 / 6.0 - theta **
     'exp_so3.38908c64': SERIES_WITHIN_PROMISE,  # 0.5 - t2 / 24.0 → 0.5 + t2 / 24.0 (line 25)
     'exp_so3.4d791364': SERIES_WITHIN_PROMISE,  # 0.0001 → 0.001 (line 22)
     'exp_so3.4fa920ef': SERIES_WITHIN_PROMISE,  # t2 / 24.0 → t2 (line 25)
     'exp_so3.a0445829': SERIES_WITHIN_PROMISE,  # 0.5 - t2 / 24.0 → 0.5 (line 25)
-    'log_se3.56ab413f': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + theta ** 2 / 720.0 + theta ** 4 / 30240.0 → 1.0 / 12.0 + theta 
+    'log_se3.56ab413f': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + theta ** 2 / 720.0 + theta ** 4 / 30240.0 → 1.0 / 12.0 + theta
     'log_se3.5f9cac8f': SERIES_WITHIN_PROMISE,  # 0.01 → 0.1 (line 24)
-    'log_se3.d56d9145': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + theta ** 2 / 720.0 + theta ** 4 / 30240.0 → 1.0 / 12.0 + theta 
+    'log_se3.d56d9145': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + theta ** 2 / 720.0 + theta ** 4 / 30240.0 → 1.0 / 12.0 + theta
     'quat_boxplus.4bb17ac4': SERIES_WITHIN_PROMISE,  # 1e-08 → 1e-05 (line 23)
     'quat_boxplus.9a2097e9': SERIES_WITHIN_PROMISE,  # np.concatenate([[1.0], 0.5 * d]) → np.concatenate([[1.0], 0.5 * d], dtype=np
     'quat_boxplus.a78d16f5': SERIES_WITHIN_PROMISE,  # 1e-08 → 1e-06 (line 23)
     'quat_boxplus.c9b94b0e': SERIES_WITHIN_PROMISE,  # 1e-08 → 1e-07 (line 23)
-    'right_jacobian_inv_so3.19744e68': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30240.0 → 1.0 / 12.0 + t2 / 720.0 (line 
+    'right_jacobian_inv_so3.19744e68': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30240.0 → 1.0 / 12.0 + t2 / 720.0 (line
     'right_jacobian_inv_so3.2fa475c5': SERIES_WITHIN_PROMISE,  # 0.001 → 0.01 (line 25)
     'right_jacobian_inv_so3.607a6f4f': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + t2 / 720.0 → 1.0 / 12.0 - t2 / 720.0 (line 27)
     'right_jacobian_inv_so3.72cc74b8': SERIES_WITHIN_PROMISE,  # 1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30240.0 → 1.0 / 12.0 + t2 / 720.0 - t2 *
@@ -330,7 +330,7 @@ EQUIVALENT = {
     'right_jacobian_so3.0382f670': SERIES_WITHIN_PROMISE,  # t2 * t2 / 720.0 → t2 * t2 (line 27)
     'right_jacobian_so3.18d3088c': SERIES_WITHIN_PROMISE,
     'right_jacobian_so3.ccdfa404': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - t2 / 120.0 → 1.0 / 6.0 + t2 / 120.0 (line 28)  # t2 * t2 → t2 (line 28)
-    'right_jacobian_so3.37efe688': SERIES_WITHIN_PROMISE,  # 0.5 - t2 / 24.0 + t2 * t2 / 720.0 → 0.5 - t2 / 24.0 - t2 * t2 / 720.0 (line 
+    'right_jacobian_so3.37efe688': SERIES_WITHIN_PROMISE,  # 0.5 - t2 / 24.0 + t2 * t2 / 720.0 → 0.5 - t2 / 24.0 - t2 * t2 / 720.0 (line
     'right_jacobian_so3.3942e8e2': SERIES_WITHIN_PROMISE,  # 1.0 / 6.0 - t2 / 120.0 → 1.0 / 6.0 (line 28)
     'right_jacobian_so3.508093b2': SERIES_WITHIN_PROMISE,  # t2 * t2 / 5040.0 → t2 * t2 (line 28)
     'right_jacobian_so3.751c8e2a': SERIES_WITHIN_PROMISE,  # 0.001 → 0.01 (line 25)
@@ -357,7 +357,7 @@ EQUIVALENT = {
     'numerical_jacobian.78fbadce': STEP_AS_ACCURATE,  # np.zeros((f0.size, 3)) → np.zeros((f0.size, 3), dtype=np.float32) (line 41)
     'numerical_jacobian.881cf898': STEP_AS_ACCURATE,  # 0.0001 → 1e-07 (line 35)
     'numerical_jacobian.9cc67d6d': STEP_AS_ACCURATE,  # 0.0001 → 1e-05 (line 35)
-    'numerical_jacobian.ba3cb591': STEP_AS_ACCURATE,  # np.zeros((f0.size, x.size)) → np.zeros((f0.size, x.size), dtype=np.float32) 
+    'numerical_jacobian.ba3cb591': STEP_AS_ACCURATE,  # np.zeros((f0.size, x.size)) → np.zeros((f0.size, x.size), dtype=np.float32)
     'numerical_jacobian.c8b52cf4': STEP_AS_ACCURATE,  # 1e-06 → 1e-05 (line 40)
     'numerical_jacobian.dc7ce6b5': STEP_AS_ACCURATE,  # 0.0001 → 1e-15 (line 35)
     # SYMMETRIC_EQUAL

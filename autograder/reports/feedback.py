@@ -132,9 +132,9 @@ def _lesson_html(lesson):
 def feedback_html(result):
     """The feedback page for one :class:`~autograder.grading.results.StudentResult`."""
     rows = "".join(
-        f'<tr><td><a href="#lesson-{_e(l.number)}">{_e(l.number)}</a></td><td>{_e(l.title)}</td>'
-        f'<td class="{_css_class(l.points, l.max_points)}">{_points(l.points, l.max_points)}</td></tr>'
-        for l in result.lessons)
+        f'<tr><td><a href="#lesson-{_e(lesson.number)}">{_e(lesson.number)}</a></td><td>{_e(lesson.title)}</td>'
+        f'<td class="{_css_class(lesson.points, lesson.max_points)}">{_points(lesson.points, lesson.max_points)}</td></tr>'
+        for lesson in result.lessons)
     problems = ""
     if result.reason or result.problems:
         items = "".join(f"<li>{_e(p)}</li>" for p in ([result.reason] if result.reason else []) + result.problems)

@@ -41,11 +41,11 @@ def row(result, catalog, with_notebooks, graded_at=""):
     lessons = {lesson.number: lesson for lesson in result.lessons}
     values = [csv_cell(result.student_id, MAX_ID_CHARACTERS), _number(result.score), _number(result.max_score),
               csv_cell(result.status)]
-    values += [_number(lessons[l.number].points) if l.number in lessons else "" for l in catalog.graded_lessons]
+    values += [_number(lessons[lesson.number].points) if lesson.number in lessons else "" for lesson in catalog.graded_lessons]
     values += [_number(earned[e.name]) if e.name in earned else "" for e in catalog.exercises]
     if with_notebooks:
-        values += [_number(lessons[l.number].run.points) if l.number in lessons and lessons[l.number].run else ""
-                   for l in catalog.graded_lessons]
+        values += [_number(lessons[lesson.number].run.points) if lesson.number in lessons and lessons[lesson.number].run else ""
+                   for lesson in catalog.graded_lessons]
     late = "; ".join(f"{lesson.number}: −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
                      if lesson.late_penalty)
     problems = "; ".join(([result.reason] if result.reason else []) + list(result.problems))

@@ -27,7 +27,8 @@ GREEK = {name: chr(code) for name, code in [
     ("Xi", 0x39E), ("Pi", 0x3A0), ("Sigma", 0x3A3), ("Phi", 0x3A6), ("Psi", 0x3A8), ("Omega", 0x3A9)]}
 SYMBOLS = {"times": "×", "cdot": "·", "top": "ᵀ", "|": "‖", "to": "→", "rightarrow": "→", "approx": "≈",
            "leq": "≤", "le": "≤", "geq": "≥", "ge": "≥", "neq": "≠", "infty": "∞", "sqrt": "√", "circ": "°",
-           "partial": "∂", "sum": "∑", "prod": "∏", "int": "∫", "boxplus": "⊞", "boxminus": "⊟", "otimes": "⊗", "pm": "±", "ldots": "…", "dots": "…",
+           "partial": "∂", "sum": "∑", "prod": "∏", "int": "∫", "boxplus": "⊞", "boxminus": "⊟", "otimes": "⊗",
+           "pm": "±", "ldots": "…", "dots": "…",
            "cdots": "…", "in": "∈", "sim": "∼", "propto": "∝", "nabla": "∇", "degree": "°", "prime": "′",
            "langle": "⟨", "rangle": "⟩", "lvert": "|", "rvert": "|", "lVert": "‖", "rVert": "‖", "%": "%",
            "{": "{", "}": "}", "$": "$", "_": "_", "#": "#", "&": "&"}
