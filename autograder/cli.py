@@ -494,7 +494,7 @@ def _cmd_export(args):
 
     write_atomically(target, EXPORTERS[args.to](results, load_catalog(), roster, missing=args.missing))
     print(f"wrote {target}: {len(results)} students, {args.to} gradebook import format")
-    from autograder.reports.exports import not_handed_in
+    from autograder.reports.exports.missing import not_handed_in
 
     absent = sum(len(not_handed_in(r, load_catalog().graded_lessons)) for r in results)
     if absent:

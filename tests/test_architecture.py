@@ -158,3 +158,66 @@ def test_no_hidden_state_is_handed_over_through_module_globals():
             if key is not None and _keyed_by_id(key) and isinstance(owner, ast.Name) and owner.id in module_names:
                 wrong.append(f"{where}:{node.lineno}: module-level {owner.id} keyed by id()")
     assert not wrong, "hidden state in module globals:\n" + "\n".join(wrong)
+
+
+def _submodules_imported(path, module):
+    """``package.name`` for every ``from package import name`` (relative or not): ``name`` may be a module."""
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                base = ".".join(module.split(".")[: -node.level] + ([base] if base else []))
+            found.update(f"{base}.{alias.name}" for alias in node.names if base.startswith("autograder"))
+    return found
+
+
+def _module_graph():
+    """``{module: {modules it imports}}`` over ``autograder/``, lazy imports included."""
+    modules = {".".join(p.relative_to(PACKAGE.parent).with_suffix("").parts).removesuffix(".__init__"): p
+               for p in PACKAGE.rglob("*.py")}
+    graph = {}
+    for module, path in modules.items():
+        targets = set()
+        for name in _imported_names(path) | _submodules_imported(path, module):
+            parts = name.split(".")
+            while parts and ".".join(parts) not in modules:
+                parts.pop()
+            if parts and ".".join(parts) != module:
+                targets.add(".".join(parts))
+        graph[module] = targets
+    return graph
+
+
+def test_no_two_modules_import_each_other_through_a_loop():
+    """A loop of imports (a canary -> pipeline -> suite -> transcript cache -> canary one was) hides which
+    module is the base; lazy imports inside functions count, as they do for the reader."""
+    graph, loops = _module_graph(), []
+    index, low, stack, on_stack, counter = {}, {}, [], set(), [0]
+
+    def visit(node):  # Tarjan's strongly connected components
+        index[node] = low[node] = counter[0]
+        counter[0] += 1
+        stack.append(node)
+        on_stack.add(node)
+        for target in graph.get(node, ()):
+            if target not in index:
+                visit(target)
+                low[node] = min(low[node], low[target])
+            elif target in on_stack:
+                low[node] = min(low[node], index[target])
+        if low[node] == index[node]:
+            component = []
+            while True:
+                member = stack.pop()
+                on_stack.discard(member)
+                component.append(member)
+                if member == node:
+                    break
+            if len(component) > 1:
+                loops.append(sorted(component))
+
+    for node in sorted(graph):
+        if node not in index:
+            visit(node)
+    assert not loops, "modules that import each other in a loop:\n" + "\n".join(" ↔ ".join(c) for c in loops)

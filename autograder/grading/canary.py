@@ -17,12 +17,11 @@ CanaryResult(cached=True, seconds=0.0, ...)
 """
 
 import json
-import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from autograder.grading.fingerprint import fingerprint
+from autograder.grading.fingerprint import cache_dir, fingerprint
 from autograder.grading.results import StudentResult
 from autograder.sandbox import cleanup
 from autograder.sandbox.forking import fork_each
@@ -46,15 +45,6 @@ def describe_canary(canary):
         return "canary: the reference solutions got full marks with this grader before (cached)"
     return (f"canary: the reference solutions got full marks ({canary.score:g}/{canary.max_score:g}) "
             f"in {canary.seconds:.1f} s")
-
-
-def cache_dir():
-    """Where passing canaries are remembered: ``$AUTOGRADER_CACHE``, else the user's cache folder."""
-    explicit = os.environ.get("AUTOGRADER_CACHE")
-    if explicit:
-        return Path(explicit)
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return Path(base) / "rotations-autograder"
 
 
 def _marker(parts):

@@ -17,6 +17,7 @@ Examples
 
 import hashlib
 import json
+import os
 import platform
 from importlib import metadata
 from pathlib import Path
@@ -80,6 +81,16 @@ def fingerprint_parts(options, solutions_dir=SOLUTIONS):
         "isolation mode": launcher.isolation()[0],
         "libraries": libraries,
     }
+
+
+def cache_dir():
+    """Where this machine remembers what is keyed by a fingerprint (passing canaries, the reference's
+    transcripts): ``$AUTOGRADER_CACHE``, else the user's cache folder."""
+    explicit = os.environ.get("AUTOGRADER_CACHE")
+    if explicit:
+        return Path(explicit)
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "rotations-autograder"
 
 
 def fingerprint(parts):

@@ -5,7 +5,7 @@ test twice on the reference, and learning
 (:func:`~autograder.grading.suite.learn_reference_in_sandbox`) runs them again
 in a sandbox: about 25 CPU seconds that every ``grade`` command paid again,
 although nothing they depend on had changed. They are saved here as JSON, in
-:func:`~autograder.grading.canary.cache_dir` beside the canary's markers, and
+:func:`~autograder.grading.fingerprint.cache_dir` beside the canary's markers, and
 loaded by the next process.
 
 The file's name is a digest of everything a transcript depends on: the grader's
@@ -32,8 +32,7 @@ import os
 import platform
 from pathlib import Path
 
-from autograder.grading.canary import cache_dir
-from autograder.grading.fingerprint import content_parts
+from autograder.grading.fingerprint import cache_dir, content_parts
 from autograder.grading.transcripts import Transcript
 
 FORMAT = 1  # bump when Transcript's fields or their meaning change

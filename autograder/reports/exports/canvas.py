@@ -22,6 +22,7 @@ import csv
 import io
 
 from autograder.lessons.untrusted_text import csv_cell
+from autograder.reports.exports.missing import MISSING_CHOICES, not_handed_in
 
 FIXED = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
 
@@ -33,8 +34,6 @@ def assignment_name(lesson):
 def write(results, catalog, roster=(), missing="zero"):
     """The import file's text for ``results`` (StudentResult), with names and sections from ``roster``; a lesson
     not handed in is 0, or an empty cell with ``missing="blank"``."""
-    from autograder.reports.exports import MISSING_CHOICES, not_handed_in
-
     if missing not in MISSING_CHOICES:
         raise ValueError(f"missing must be one of {MISSING_CHOICES}, not {missing!r}")
     people = {entry.student_id: entry for entry in roster}
