@@ -41,7 +41,7 @@ import traceback
 from contextlib import nullcontext
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import NamedTuple
+from typing import Callable, NamedTuple, Optional, Protocol
 
 from autograder.grading import submissions
 from autograder.grading.canary import describe_canary, ensure_reference_passes
@@ -75,6 +75,20 @@ class GradingTask(NamedTuple):
     out_root: str  # the run's output folder (:class:`Outputs`)
     stamp: "Stamp"
     config: object  # the course's settings (a CourseConfig) or None
+
+
+class Runner(Protocol):
+    """How the students' tasks run: forks of this process (:func:`~autograder.sandbox.forking.fork_each`,
+    the default) or a Dask cluster (:func:`autograder.integrations.cluster.runner_for`).
+
+    A runner calls ``grade(task, slot)`` for every task, in a process of its own (``slot``: that
+    process's :class:`~autograder.sandbox.warm.WarmSlot`, or None), and ``on_done(task, problem)`` in the
+    caller's process as each ends (``problem``: None, or a sentence on how the grading process died).
+    """
+
+    def __call__(self, grade: Callable[[GradingTask, Optional["warm.WarmSlot"]], None], tasks: list[GradingTask],
+                 jobs: int, on_done: Callable[[GradingTask, Optional[str]], None],
+                 deadline_seconds: Optional[float] = None) -> None: ...
 
 
 def write_atomically(path, text):
@@ -283,16 +297,15 @@ def saved_student_ids(outputs):
 
 
 def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=(),
-                only=(), announce=None, config=None, runner=None, similarity=True):
+                only=(), announce=None, config=None, runner: Optional[Runner] = None, similarity=True):
     """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
     ``only``: grade just these students (always re-graded); everyone else keeps their saved result.
     ``announce``: called with a line of text when a step worth telling starts or ends (the canary).
     ``config``: a :class:`~autograder.reports.lateness.CourseConfig` with due dates and the late policy.
-    ``runner``: how the students' tasks run, with the signature of
-    :func:`~autograder.sandbox.forking.fork_each` (default: forks of this process, ``jobs`` at a time); a
-    runner calls ``grade_task(task)`` somewhere and ``on_done(task, problem)`` here, as each ends.
+    ``runner``: how the students' tasks run (a :class:`Runner`; default: forks of this process, ``jobs``
+    at a time, each with a warm slot when this machine has them).
     ``similarity``: compare the class's answers (:mod:`autograder.similarity`) and add the "Similar answers"
     section and ``similar_answers.csv``; a failure there costs that section only.
     The gradebook never shrinks: students graded earlier into ``out_dir`` stay in it, with their

@@ -6,9 +6,9 @@ The driver (the machine that runs ``python -m autograder grade``) does
 everything it does without a cluster: it finds the students, decides who must
 be (re-)graded (resume), runs its own canary, shows the progress bar, writes
 every student's files atomically and then the gradebook and the class report.
-Only the middle step moves: :class:`DaskRunner` is a *runner* for
+Only the middle step moves: :class:`DaskRunner` is a :class:`~autograder.batch.class_run.Runner` for
 :func:`autograder.batch.class_run.grade_class` (the seam that :func:`~autograder.sandbox.forking.fork_each`
-fills locally, same signature), and each student becomes one Dask task.
+fills locally), and each student becomes one Dask task.
 
 **Submissions and results travel as bytes through Dask, not as files on a
 shared path.** A task carries one student's notebooks (and nbgrader
@@ -270,8 +270,8 @@ def _describe_failure(error):
 
 
 class DaskRunner:
-    """A runner for :func:`autograder.batch.class_run.grade_class` (the signature of
-    :func:`~autograder.sandbox.forking.fork_each`) that grades each student as a Dask task; see the module docstring.
+    """A :class:`~autograder.batch.class_run.Runner` for :func:`autograder.batch.class_run.grade_class` that
+    grades each student as a Dask task (with cold sandboxes: ``slot`` is None); see the module docstring.
 
     Make one with :func:`connect`; ``close()`` it (or use it as a context manager) when done.
     """
