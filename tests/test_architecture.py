@@ -221,3 +221,20 @@ def test_no_two_modules_import_each_other_through_a_loop():
         if node not in index:
             visit(node)
     assert not loops, "modules that import each other in a loop:\n" + "\n".join(" ↔ ".join(c) for c in loops)
+
+
+TYPED = ("lessons",)  # the stages whose public functions are annotated so far (issue #30 asks for all)
+
+
+@pytest.mark.parametrize("stage", TYPED)
+def test_public_functions_say_their_types(stage):
+    """Every public function and method of a typed stage annotates its parameters and its return."""
+    bare = []
+    for path in sorted((PACKAGE / stage).rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and not node.name.startswith("_"):
+                arguments = [a for a in node.args.posonlyargs + node.args.args + node.args.kwonlyargs
+                             if a.arg not in ("self", "cls")]
+                if node.returns is None or any(a.annotation is None for a in arguments):
+                    bare.append(f"{path.relative_to(PACKAGE.parent)}:{node.lineno} {node.name}")
+    assert not bare, "public functions without type hints:\n" + "\n".join(bare)

@@ -10,10 +10,14 @@ Examples
 '01'
 """
 
+from __future__ import annotations
+
 import re
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 from pathlib import Path
+
+import nbformat
 
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
@@ -34,28 +38,28 @@ class Lesson:
     number: str
     filename: str
     title: str
-    exercises: tuple
+    exercises: tuple[Exercise, ...]
     setup_source: str
     hand_in_points: float = 0.0  # the notebook point, as the hand-in grade cell records it for nbgrader
 
     @property
-    def points(self):
+    def points(self) -> float:
         return sum(exercise.points for exercise in self.exercises)
 
 
 @dataclass(frozen=True)
 class Catalog:
-    lessons: tuple
+    lessons: tuple[Lesson, ...]
 
     @property
-    def exercises(self):
+    def exercises(self) -> tuple[Exercise, ...]:
         return tuple(e for lesson in self.lessons for e in lesson.exercises)
 
     @property
-    def graded_lessons(self):
+    def graded_lessons(self) -> tuple[Lesson, ...]:
         return tuple(lesson for lesson in self.lessons if lesson.exercises)
 
-    def lesson(self, number):
+    def lesson(self, number: str) -> Lesson:
         for lesson in self.lessons:
             if lesson.number == number:
                 return lesson
@@ -65,7 +69,7 @@ class Catalog:
     def _exercises_by_name(self):  # the hidden suite looks one up per student call
         return {exercise.name: exercise for exercise in self.exercises}
 
-    def exercise(self, name):
+    def exercise(self, name: str) -> Exercise:
         try:
             return self._exercises_by_name[name]
         except KeyError:
@@ -76,7 +80,7 @@ class CatalogError(ValueError):
     """A master notebook breaks the conventions of :mod:`autograder.lessons.cells`."""
 
 
-def lesson_from_notebook(path, nb):
+def lesson_from_notebook(path: Path, nb: nbformat.NotebookNode) -> Lesson:
     """Read one master's lesson number, title, exercises and setup cell."""
     match = LESSON_FILE.match(Path(path).name)
     if not match:
@@ -112,7 +116,7 @@ def lesson_from_notebook(path, nb):
 
 
 @lru_cache(maxsize=4)
-def load_catalog(solutions_dir=SOLUTIONS):
+def load_catalog(solutions_dir: Path = SOLUTIONS) -> Catalog:
     """Build the catalog from every ``NN_*.ipynb`` master, in lesson order."""
     lessons = []
     for path in sorted(Path(solutions_dir).glob("[0-9][0-9]_*.ipynb")):

@@ -22,6 +22,8 @@ A lesson master (``solutions/NN_*.ipynb``) is an nbgrader source notebook:
 The constructors below build such cells for authors; the predicates read them.
 """
 
+from __future__ import annotations
+
 import ast
 
 import nbformat
@@ -44,57 +46,57 @@ def _nbgrader(cell):
     return meta if isinstance(meta, dict) else {}
 
 
-def tags(cell):
+def tags(cell: dict) -> list[str]:
     value = cell.get("metadata", {}).get("tags", [])
     return [t for t in value if isinstance(t, str)] if isinstance(value, list) else []
 
 
-def grade_id(cell):
+def grade_id(cell: dict) -> str | None:
     value = _nbgrader(cell).get("grade_id")
     return value if isinstance(value, str) else None
 
 
-def is_answer_cell(cell):
+def is_answer_cell(cell: dict) -> bool:
     meta = _nbgrader(cell)
     return cell.get("cell_type") == "code" and bool(meta.get("solution")) and not meta.get("grade")
 
 
-def is_grade_cell(cell):
+def is_grade_cell(cell: dict) -> bool:
     """Any cell nbgrader scores: a check cell or the hand-in cell."""
     meta = _nbgrader(cell)
     return cell.get("cell_type") == "code" and bool(meta.get("grade")) and not meta.get("solution")
 
 
-def is_check_cell(cell):
+def is_check_cell(cell: dict) -> bool:
     return is_grade_cell(cell) and not is_hand_in_cell(cell)
 
 
-def is_hand_in_cell(cell):
+def is_hand_in_cell(cell: dict) -> bool:
     return is_grade_cell(cell) and grade_id(cell) == HAND_IN_GRADE_ID
 
 
-def is_setup_cell(cell):
+def is_setup_cell(cell: dict) -> bool:
     return cell.get("cell_type") == "code" and SETUP_TAG in tags(cell)
 
 
-def is_student_only(cell):
+def is_student_only(cell: dict) -> bool:
     return STUDENT_ONLY_TAG in tags(cell)
 
 
-def is_reader_only(cell):
+def is_reader_only(cell: dict) -> bool:
     return READER_ONLY_TAG in tags(cell)
 
 
-def checks_output(cell):
+def checks_output(cell: dict) -> bool:
     return cell.get("cell_type") == "code" and CHECK_OUTPUT_TAG in tags(cell)
 
 
-def points(cell):
+def points(cell: dict) -> float:
     value = _nbgrader(cell).get("points", 0)
     return float(value) if isinstance(value, (int, float)) else 0.0
 
 
-def source_text(cell):
+def source_text(cell: dict) -> str:
     source = cell.get("source", "")
     return "".join(source) if isinstance(source, list) else str(source)
 
@@ -102,7 +104,7 @@ def source_text(cell):
 MAX_PARSED_SOURCE = 200_000  # characters; an answer cell has a few hundred
 
 
-def parse_source(source):
+def parse_source(source: str) -> ast.Module | None:
     """The ``ast.Module`` of a cell's source, or ``None`` when it is not Python the grader can read.
 
     A student's cell may be anything: a syntax error, an expression nested 100,000 levels deep (the
@@ -134,12 +136,12 @@ def _meta(grade, solution, locked, cell_id, points_value=None):
     return {"nbgrader": meta}
 
 
-def markdown(text):
+def markdown(text: str) -> nbformat.NotebookNode:
     """A narrative cell."""
     return nbformat.v4.new_markdown_cell(text.strip("\n"))
 
 
-def code(source, check_output=False):
+def code(source: str, check_output: bool = False) -> nbformat.NotebookNode:
     """A demonstration cell; ``check_output`` makes nbval compare its printed output."""
     cell = nbformat.v4.new_code_cell(source.strip("\n"))
     if check_output:
@@ -147,7 +149,7 @@ def code(source, check_output=False):
     return cell
 
 
-def setup(source):
+def setup(source: str) -> nbformat.NotebookNode:
     """The lesson's imports, run by the grader before the student's answers."""
     cell = nbformat.v4.new_code_cell(source.strip("\n"))
     cell.metadata["tags"] = [SETUP_TAG]
@@ -158,7 +160,7 @@ def setup(source):
     return cell
 
 
-def answer(name, source):
+def answer(name: str, source: str) -> nbformat.NotebookNode:
     """The answer cell of exercise ``name``; ``source`` contains the solution markers."""
     if BEGIN_SOLUTION not in source or END_SOLUTION not in source:
         raise ValueError(f"answer cell {name!r} has no solution markers")
@@ -168,7 +170,7 @@ def answer(name, source):
     return cell
 
 
-def hand_in(lesson_number, points_value=1):
+def hand_in(lesson_number: str, points_value: float = 1) -> nbformat.NotebookNode:
     """The locked last cell of a lesson, worth the notebook point (see the module docstring)."""
     cell = nbformat.v4.new_code_cell(f'from coursekit import ready_to_hand_in\n\nready_to_hand_in("{lesson_number}")')
     cell.metadata.update(_meta(True, False, True, HAND_IN_GRADE_ID, points_value))
@@ -179,7 +181,7 @@ def hand_in(lesson_number, points_value=1):
     return cell
 
 
-def check(name, points_value):
+def check(name: str, points_value: float) -> nbformat.NotebookNode:
     """The locked check cell that follows exercise ``name``."""
     cell = nbformat.v4.new_code_cell(f'check("{name}", {name})')
     cell.metadata.update(_meta(True, False, True, CHECK_PREFIX + name, points_value))

@@ -11,6 +11,8 @@ may build (:data:`MAX_CONTAINERS`, :data:`MAX_ITEMS`, :data:`MAX_NESTING`, :data
 one notebook costs the grader a bounded time and memory.
 """
 
+from __future__ import annotations
+
 import errno
 import json
 import os
@@ -30,7 +32,7 @@ class NotARegularFile(OSError):
     """A path that is a link, a FIFO, a socket, a device or a folder where a file was expected."""
 
 
-def file_kind(mode):
+def file_kind(mode: int) -> str:
     """What a file of ``mode`` (``st_mode``) is, in words: ``"a FIFO"``, ``"a symbolic link"``, ...
 
     Examples
@@ -44,7 +46,7 @@ def file_kind(mode):
     return next((words for test, words in kinds if test(mode)), "not a regular file")
 
 
-def read_regular_file(path, max_bytes):
+def read_regular_file(path: str | os.PathLike, max_bytes: int) -> tuple[bytes, int]:
     """The first ``max_bytes`` bytes of a regular file, and its size; nothing else is ever opened.
 
     The file is opened with ``O_NOFOLLOW | O_NONBLOCK`` and checked with ``fstat`` on the open
@@ -93,7 +95,8 @@ class UnreadableNotebook(Exception):
     """A submitted notebook that cannot be graded; ``str(error)`` says why."""
 
 
-def read_submission(path, root=None, max_bytes=MAX_NOTEBOOK_BYTES):
+def read_submission(path: str | os.PathLike, root: str | os.PathLike | None = None,
+                    max_bytes: int = MAX_NOTEBOOK_BYTES) -> nbformat.NotebookNode:
     """Read a student's notebook, or raise :class:`UnreadableNotebook`.
 
     Parameters
@@ -155,7 +158,7 @@ def _damaged(name, what):
                               "(clear outputs, save it from Jupyter and resubmit)")
 
 
-def parse_notebook(raw, name="notebook"):
+def parse_notebook(raw: bytes, name: str = "notebook") -> nbformat.NotebookNode:
     """Parse notebook bytes (see :func:`read_submission` for the errors)."""
     try:
         text = raw.decode("utf-8")
@@ -204,18 +207,18 @@ def parse_notebook(raw, name="notebook"):
     return nbformat.from_dict(data)
 
 
-def read_master(path):
+def read_master(path: str | os.PathLike) -> nbformat.NotebookNode:
     """Read a notebook we wrote ourselves (masters, released notebooks)."""
     return nbformat.read(str(path), as_version=4)
 
 
-def canonical_text(nb):
+def canonical_text(nb: nbformat.NotebookNode) -> str:
     """The exact text we commit for a notebook: sorted keys, one-space indent, final newline."""
     text = nbformat.writes(nb)
     return text if text.endswith("\n") else text + "\n"
 
 
-def write_if_changed(path, text):
+def write_if_changed(path: str | os.PathLike, text: str) -> bool:
     """Write ``text`` to ``path`` unless it already holds it; return True if written."""
     path = Path(path)
     if path.exists() and path.read_text(encoding="utf-8") == text:

@@ -13,9 +13,13 @@ array([[1., 0., 0.],
        [0., 0., 1.]])
 """
 
+from __future__ import annotations
+
 from functools import lru_cache
 from pathlib import Path
 from types import SimpleNamespace
+
+import nbformat
 
 from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
@@ -23,7 +27,7 @@ from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import COURSE, SOLUTIONS
 
 
-def lesson_namespace(master, label):
+def lesson_namespace(master: nbformat.NotebookNode, label: str) -> dict:
     """Execute a master's setup cell and answer cells; return the namespace dict."""
     namespace = {"__name__": f"reference_{label}"}
     for cell in master.cells:
@@ -44,13 +48,13 @@ class ReferenceSolutions(SimpleNamespace):
 
     __slots__ = ("memo",)
 
-    def __init__(self, functions):
+    def __init__(self, functions: dict):
         super().__init__(**functions)
         self.memo = {}
 
 
 @lru_cache(maxsize=2)
-def load_reference(solutions_dir=SOLUTIONS):
+def load_reference(solutions_dir: Path = SOLUTIONS) -> ReferenceSolutions:
     """A namespace with every exercise function of every lesson, from the masters."""
     catalog = load_catalog(solutions_dir)
     functions = {}
@@ -61,7 +65,7 @@ def load_reference(solutions_dir=SOLUTIONS):
     return ReferenceSolutions(functions)
 
 
-def answer_sources(solutions_dir=SOLUTIONS):
+def answer_sources(solutions_dir: Path = SOLUTIONS) -> dict[str, str]:
     """``{exercise name: answer-cell source}`` of the masters, solution markers removed."""
     catalog = load_catalog(solutions_dir)
     sources = {}
@@ -75,7 +79,7 @@ def answer_sources(solutions_dir=SOLUTIONS):
     return sources
 
 
-def write_submission(folder, answers, lessons=()):
+def write_submission(folder: str | Path, answers: dict[str, str], lessons: tuple[str, ...] = ()) -> Path:
     """Write the released notebooks into ``folder`` with ``answers`` in their answer cells, as a student
     would hand them in; return ``folder`` (a :class:`~pathlib.Path`).
 
@@ -101,7 +105,7 @@ def write_submission(folder, answers, lessons=()):
     return folder
 
 
-def write_reference_submission(folder, lessons=()):
+def write_reference_submission(folder: str | Path, lessons: tuple[str, ...] = ()) -> Path:
     """:func:`write_submission` with every reference answer: the canary's submission
     (:mod:`autograder.grading.canary`), which must get full marks."""
     return write_submission(folder, answer_sources(), lessons)

@@ -24,6 +24,8 @@ Examples
 '..%2Fetc%2Fpasswd'
 """
 
+from __future__ import annotations
+
 import hashlib
 import html
 import unicodedata
@@ -55,7 +57,7 @@ def _bounded(text, limit):
     return f"{text[:limit]}… ({len(text) - limit:,} more characters not shown)"
 
 
-def encodable(text):
+def encodable(text: str) -> str:
     """``text`` as a ``str`` that any UTF-8 writer accepts: lone surrogates become ``\\udcff`` escapes.
 
     Examples
@@ -69,7 +71,7 @@ def encodable(text):
     return "".join(_escape_char(c) if unicodedata.category(c) == "Cs" else c for c in text)
 
 
-def one_line(text, limit=LINE_LIMIT):
+def one_line(text: object, limit: int = LINE_LIMIT) -> str:
     """``text`` on one line, every control, format or separator character escaped, at most ``limit``
     characters (then a note says how many more there were); ``limit=None`` keeps it all.
 
@@ -88,7 +90,7 @@ def one_line(text, limit=LINE_LIMIT):
     return shown
 
 
-def html_text(text, limit=HTML_LIMIT):
+def html_text(text: object, limit: int = HTML_LIMIT) -> str:
     """``text`` escaped for an HTML page: entities for ``<>&"'``, line breaks and tabs kept, other
     control and format characters shown as escapes, lone surrogates made encodable, at most ``limit``
     characters.
@@ -103,7 +105,7 @@ def html_text(text, limit=HTML_LIMIT):
     return html.escape(shown, quote=True)
 
 
-def spreadsheet_safe(text):
+def spreadsheet_safe(text: str) -> str:
     """``text`` with a leading apostrophe if a spreadsheet would evaluate it as a formula.
 
     Examples
@@ -115,12 +117,12 @@ def spreadsheet_safe(text):
     return "'" + text if text.startswith(FORMULA_STARTS) else text
 
 
-def csv_cell(text, limit=LINE_LIMIT):
+def csv_cell(text: object, limit: int = LINE_LIMIT) -> str:
     """A gradebook cell: :func:`one_line` (at most ``limit`` characters), then :func:`spreadsheet_safe`."""
     return spreadsheet_safe(one_line(text, limit))
 
 
-def safe_name(student_id, limit=NAME_LIMIT):
+def safe_name(student_id: str, limit: int = NAME_LIMIT) -> str:
     """A file name for a student id: bounded, portable, and different for different ids.
 
     Letters, digits and ``._-`` are kept, every other character becomes the ``%XX`` escapes of its
