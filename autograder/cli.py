@@ -43,13 +43,13 @@ import sys
 # notebook schema uses; without it jsonschema does not register that check (as sandbox/child/nbval_runner.py).
 sys.modules.setdefault("rfc3987_syntax", None)
 
-import argparse  # noqa: E402
-import os  # noqa: E402
-from collections import Counter  # noqa: E402
-from pathlib import Path  # noqa: E402
+import argparse
+import os
+from collections import Counter
+from pathlib import Path
 
-from autograder.lessons.untrusted_text import one_line  # noqa: E402
-from autograder.reports.exports import EXPORTERS  # noqa: E402
+from autograder.lessons.untrusted_text import one_line
+from autograder.reports.exports import EXPORTERS
 
 USAGE_ERROR = 2  # a mistake on the command line or in a file it names: nothing was done
 INTERRUPTED = 130  # Ctrl-C, as a shell reports a process ended by SIGINT

@@ -24,7 +24,7 @@ from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child.wire import Probe  # noqa: F401  (callable arguments, by name)
 from autograder.sandbox.session import StudentError
-from coursekit.diagnose import (ALLCLOSE_HINT, LISTS_HINT, rotation_hint, rotation_problem,  # noqa: F401
+from coursekit.diagnose import (ALLCLOSE_HINT, LISTS_HINT, rotation_hint, rotation_problem,  # noqa: F401  (for the tests)
                                 shape_problem)
 
 

@@ -14,4 +14,4 @@ from autograder.lessons.paths import SOLUTIONS
 if str(SOLUTIONS) not in sys.path:
     sys.path.insert(0, str(SOLUTIONS))  # coursekit, as the hidden suite finds it
 
-from coursekit.contracts import CHANGED_HINT, DELEGATED_HINT, FORBIDDEN, forbidden_for  # noqa: E402,F401
+from coursekit.contracts import CHANGED_HINT, DELEGATED_HINT, FORBIDDEN, forbidden_for  # noqa: F401  (for the tests)

@@ -76,7 +76,7 @@ def _preload():
     hidden_tests()
     transcripts_for(load_reference(), load_catalog())
     _worker_module()
-    import coursekit.checks  # noqa: F401
+    import coursekit.checks  # noqa: F401  (importing registers every lesson's checks)
 
 
 def grade_all(mutants, jobs=None, progress=None):

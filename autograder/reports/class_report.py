@@ -16,17 +16,17 @@ from collections import Counter
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
-from autograder.grading.results import COULD_NOT_GRADE, MISSING  # noqa: E402
-from autograder.lessons.untrusted_text import html_text as escape  # noqa: E402
-from autograder.reports.attention import stage_warnings, worth_a_look  # noqa: E402
-from autograder.reports.class_students import STYLE as TABLE_STYLE  # noqa: E402
-from autograder.reports.class_students import students_table_html  # noqa: E402
-from autograder.reports.copied_times import copied_times_warning  # noqa: E402
-from autograder.reports.lateness import due_dates, late_summary  # noqa: E402
-from autograder.reports.not_written import unwritten_functions  # noqa: E402
-from autograder.sandbox.launcher import LIMITS_ONLY_WARNING  # noqa: E402
+from autograder.grading.results import COULD_NOT_GRADE, MISSING
+from autograder.lessons.untrusted_text import html_text as escape
+from autograder.reports.attention import stage_warnings, worth_a_look
+from autograder.reports.class_students import STYLE as TABLE_STYLE
+from autograder.reports.class_students import students_table_html
+from autograder.reports.copied_times import copied_times_warning
+from autograder.reports.lateness import due_dates, late_summary
+from autograder.reports.not_written import unwritten_functions
+from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
 
 STYLE = """
 body { font-family: system-ui, -apple-system, Segoe UI, Roboto, sans-serif; max-width: 70rem;

@@ -99,7 +99,7 @@ def interactive_figures():
     if not live_front_end():
         return
     try:
-        import ipympl  # noqa: F401
+        import ipympl  # noqa: F401  (only: is it installed?)
         from IPython import get_ipython
     except ImportError:
         return

@@ -28,13 +28,13 @@ import sys
 # notebook schema uses; without it jsonschema simply does not register that check.
 sys.modules.setdefault("rfc3987_syntax", None)
 
-import pytest  # noqa: E402
+import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-import fork_kernel  # noqa: E402
-import jail  # noqa: E402
+import fork_kernel
+import jail
 
 if "--keep-user" in sys.argv:
     sys.argv.remove("--keep-user")
@@ -42,7 +42,7 @@ else:
     jail.drop_privileges(jail.sandbox_uid(sys.argv))
 # the kernels reopen the student's pipes through /proc/<this process>/fd (student_client.py): a change of
 # uid made this process undumpable, and so its /proc entries root's; no student code runs here
-import ctypes  # noqa: E402
+import ctypes
 
 ctypes.CDLL(None).prctl(4, 1, 0, 0, 0)  # PR_SET_DUMPABLE
 

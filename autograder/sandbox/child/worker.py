@@ -43,11 +43,11 @@ import traceback
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-import jail  # noqa: E402
-import numpy  # noqa: E402,F401  (imported before student code, as a notebook would)
+import jail
+import numpy  # noqa: F401  (imported before student code, as a notebook would)
 
-import wire  # noqa: E402
-from coursekit import watching  # noqa: E402  (the course's own definition of a call's contracts)
+import wire
+from coursekit import watching  # the course's own definition of a call's contracts
 
 STDOUT_KEEP = 4000
 MESSAGE_KEEP = 300

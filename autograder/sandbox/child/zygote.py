@@ -57,8 +57,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-import jail  # noqa: E402
-import worker  # noqa: E402  (imports numpy; imported, it leaves privileges alone)
+import jail
+import worker  # imports numpy; imported, it leaves privileges alone
 
 KEEP_USER = "--keep-user" in sys.argv
 SANDBOX_UID = jail.sandbox_uid(sys.argv)

@@ -13,7 +13,7 @@ from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, single_precision_error
 from ..lie import Exp, skew
-from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape  # noqa: F401
+from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape
 from .lesson01 import SQUARE_BATCH_HINT
 from .lesson06 import DECADE_ANGLES, DECADE_AXIS, JR_DECADES
 
