@@ -30,6 +30,8 @@ change (``force`` re-grades) and records why it re-graded the others, so an
 interrupted run loses nothing already graded.
 """
 
+from __future__ import annotations
+
 import hashlib
 import json
 import os
@@ -41,7 +43,7 @@ import traceback
 from contextlib import nullcontext
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Callable, NamedTuple, Optional, Protocol
+from typing import Callable, NamedTuple, Protocol
 
 from autograder.grading import submissions
 from autograder.grading.canary import describe_canary, ensure_reference_passes
@@ -51,7 +53,9 @@ from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.reference import load_reference
+from autograder.batch.progress import Progress
 from autograder.lessons.untrusted_text import one_line, safe_name
+from autograder.reports.lateness import CourseConfig
 from autograder.reports import feedback
 from autograder.reports.gradebook import gradebook_csv
 from autograder.reports.gradescope_results import results_json
@@ -86,12 +90,12 @@ class Runner(Protocol):
     caller's process as each ends (``problem``: None, or a sentence on how the grading process died).
     """
 
-    def __call__(self, grade: Callable[[GradingTask, Optional["warm.WarmSlot"]], None], tasks: list[GradingTask],
-                 jobs: int, on_done: Callable[[GradingTask, Optional[str]], None],
-                 deadline_seconds: Optional[float] = None) -> None: ...
+    def __call__(self, grade: Callable[[GradingTask, warm.WarmSlot | None], None], tasks: list[GradingTask],
+                 jobs: int, on_done: Callable[[GradingTask, str | None], None],
+                 deadline_seconds: float | None = None) -> None: ...
 
 
-def write_atomically(path, text):
+def write_atomically(path: str | Path, text: str) -> None:
     """Write ``text`` to ``path`` through a temporary file and a rename; text that UTF-8 cannot encode
     (lone surrogates) is written as backslash escapes rather than failing."""
     path = Path(path)
@@ -110,32 +114,32 @@ class Outputs:
 
     root: Path
 
-    def student_json(self, student_id):
+    def student_json(self, student_id: str) -> Path:
         return self.root / "students" / f"{safe_name(student_id)}.json"
 
-    def feedback_html(self, student_id):
+    def feedback_html(self, student_id: str) -> Path:
         return self.root / "feedback" / f"{safe_name(student_id)}.html"
 
-    def gradescope_json(self, student_id):
+    def gradescope_json(self, student_id: str) -> Path:
         return self.root / "results" / f"{safe_name(student_id)}.json"
 
-    def student_files(self, student_id):
+    def student_files(self, student_id: str) -> list[tuple[str, Path]]:
         """``[(kind, path)]``: the files a graded student leaves, in the order they are written (the saved
         result last: its presence means the others are complete)."""
         return [("feedback", self.feedback_html(student_id)), ("gradescope", self.gradescope_json(student_id)),
                 ("student", self.student_json(student_id))]
 
     @property
-    def gradebook(self):
+    def gradebook(self) -> Path:
         return self.root / "grades.csv"
 
     @property
-    def skipped(self):
+    def skipped(self) -> Path:
         """Entries of the submissions folder that are not students, with why (JSON)."""
         return self.root / "skipped.json"
 
     @property
-    def report(self):
+    def report(self) -> Path:
         return self.root / "report.html"
 
 
@@ -154,7 +158,7 @@ class Saved:
     result: StudentResult
 
 
-def load_saved(outputs, student_id):
+def load_saved(outputs: Outputs, student_id: str) -> Saved | None:
     """The :class:`Saved` result of a student, or None."""
     path = outputs.student_json(student_id)
     try:
@@ -165,7 +169,7 @@ def load_saved(outputs, student_id):
         return None
 
 
-def regrade_reason(saved, stamp, submission_hash, force=False):
+def regrade_reason(saved: Saved | None, stamp: Stamp, submission_hash: str, force: bool = False) -> str | None:
     """Why a student must be graded now, or ``None`` when the saved result can be reused."""
     if force:
         return "re-graded on request (--force or --student)"
@@ -181,7 +185,7 @@ def regrade_reason(saved, stamp, submission_hash, force=False):
     return None
 
 
-def save_result(outputs, result, stamp, graded_at):
+def save_result(outputs: Outputs, result: StudentResult, stamp: Stamp, graded_at: str) -> None:
     """Write a student's feedback page, Gradescope JSON and saved result (last: it marks the student done).
 
     A page that cannot be made from the result is replaced by a plain one that says why; the grade is kept.
@@ -203,7 +207,7 @@ def save_result(outputs, result, stamp, graded_at):
     write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
 
 
-def grade_task(task, slot=None):
+def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     """Runs in a forked child: grade one student and save the result (``slot``: this child's warm slot)."""
     student_id, folder, options, out_root, stamp, config = task
     process_tree.become_subreaper()
@@ -238,7 +242,7 @@ def _hash_or_blank(folder):
         return ""
 
 
-def record_death(task, problem):
+def record_death(task: GradingTask, problem: str) -> StudentResult:
     """The child grading a student died: save a 'could not grade' result that says why, and return it.
 
     Never raises: when even this result cannot be saved, it is returned with a note, and the run keeps
@@ -272,7 +276,7 @@ class RunSummary:
     similarity_cpu_seconds: float = 0.0  # its CPU time, this process and its finished workers
 
 
-def prewarm():
+def prewarm() -> None:
     """Import and compute, once, everything the forked graders share read-only."""
     load_catalog()
     load_reference()
@@ -285,7 +289,7 @@ class UnknownStudents(ValueError):
     """``only`` named students who have no folder under the submissions path."""
 
 
-def saved_student_ids(outputs):
+def saved_student_ids(outputs: Outputs) -> list[str]:
     """Ids of every student with a saved result in ``outputs``."""
     ids = []
     for path in sorted((outputs.root / "students").glob("*.json")):
@@ -296,8 +300,10 @@ def saved_student_ids(outputs):
     return ids
 
 
-def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False, progress=None, roster=(),
-                only=(), announce=None, config=None, runner: Optional[Runner] = None, similarity=True):
+def grade_class(path: str | Path, out_dir: str | Path, jobs: int | None = None, options: GradingOptions = GradingOptions(),
+                force: bool = False, progress: Progress | None = None, roster: tuple | list = (),
+                only: tuple | list = (), announce: Callable[[str], None] | None = None,
+                config: CourseConfig | None = None, runner: Runner | None = None, similarity: bool = True) -> RunSummary:
     """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
@@ -398,7 +404,8 @@ def grade_class(path, out_dir, jobs=None, options=GradingOptions(), force=False,
     return summary
 
 
-def collect_results(outputs, student_ids, submitted=None, unsaved=None):
+def collect_results(outputs: Outputs, student_ids: list[str], submitted: set[str] | None = None,
+                    unsaved: dict[str, StudentResult] | None = None) -> tuple[list[StudentResult], dict[str, str]]:
     """Saved results for ``student_ids``; a student without one is missing or not finished.
 
     ``unsaved``: ``{student_id: StudentResult}`` of this run that could not be saved, used when no saved
@@ -424,7 +431,7 @@ def collect_results(outputs, student_ids, submitted=None, unsaved=None):
     return results, graded_at
 
 
-def load_skipped(outputs):
+def load_skipped(outputs: Outputs) -> list[submissions.Skipped]:
     """The entries of the submissions folder that the last run did not grade, as ``Skipped``."""
     try:
         return [submissions.Skipped(**item) for item in json.loads(outputs.skipped.read_text(encoding="utf-8"))]
@@ -452,14 +459,15 @@ def _similarity_section(path, outputs, summary):
     return section
 
 
-def cpu_seconds():
+def cpu_seconds() -> float:
     """User and system CPU seconds of this process and of its children that have finished (a stage's
     forked workers): what a stage costs on a shared machine, where its wall time depends on the load."""
     own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
     return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
 
 
-def write_reports(outputs, student_ids, submitted=None, unsaved=None, extra_section=""):
+def write_reports(outputs: Outputs, student_ids: list[str], submitted: set[str] | None = None,
+                  unsaved: dict[str, StudentResult] | None = None, extra_section: str = "") -> list[StudentResult]:
     """Write grades.csv and report.html for ``student_ids``; return their results.
 
     ``extra_section``: HTML added to the report (the similarity stage's "Similar answers").

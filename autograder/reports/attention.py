@@ -18,10 +18,12 @@ Examples
 Concern(student_id='ivy', kind='timeout', count=1, example='rot_z did not return within 5 s ...')
 """
 
+from __future__ import annotations
+
 from collections import Counter
 from dataclasses import dataclass
 
-from autograder.grading.results import COULD_NOT_GRADE, MISSING
+from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 
 KINDS = {
     "tampering": ("does not match the request", "forged", "return numbers, numpy arrays",
@@ -67,7 +69,7 @@ def _kind(message):
     return None
 
 
-def worth_a_look(results):
+def worth_a_look(results: list[StudentResult]) -> list[Concern]:
     """Students whose results show tampering, timeouts or crashes: one :class:`Concern` per kind."""
     concerns = []
     for result in sorted(results, key=lambda r: r.student_id):
@@ -85,7 +87,7 @@ def worth_a_look(results):
     return concerns
 
 
-def stage_warnings(results):
+def stage_warnings(results: list[StudentResult]) -> list[StageWarning]:
     """Stages that failed for most of the students who reached them: likely the grader, not the class."""
     graded = [r for r in results if r.status != MISSING]
     warnings = []

@@ -9,6 +9,8 @@ ids and messages are HTML-escaped and bounded. Students who could not be graded 
 handed in nothing are listed, not averaged in, and so is what the run skipped.
 """
 
+from __future__ import annotations
+
 import base64
 import io
 from collections import Counter
@@ -18,7 +20,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-from autograder.grading.results import COULD_NOT_GRADE, MISSING
+from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
+from autograder.lessons.catalog import Catalog, Exercise
 from autograder.lessons.untrusted_text import html_text as escape
 from autograder.reports.attention import stage_warnings, worth_a_look
 from autograder.reports.class_students import STYLE as TABLE_STYLE
@@ -47,7 +50,7 @@ def _png(fig):
     return base64.b64encode(buffer.getvalue()).decode("ascii")
 
 
-def score_histogram(percentages):
+def score_histogram(percentages: list[float]) -> str:
     """PNG (base64) of the distribution of scores in percent of the maximum."""
     fig, ax = plt.subplots(figsize=(7.5, 3.2))
     ax.hist(percentages, bins=[i * 10 for i in range(11)], color="tab:blue", edgecolor="white")
@@ -59,7 +62,7 @@ def score_histogram(percentages):
     return _png(fig)
 
 
-def pass_rate_chart(names, shares):
+def pass_rate_chart(names: list[str], shares: list[float]) -> str:
     """PNG (base64) of the share of students with full marks, one bar per exercise."""
     fig, ax = plt.subplots(figsize=(7.5, 0.28 * len(names) + 1.2))
     positions = list(range(len(names)))[::-1]
@@ -74,7 +77,7 @@ def pass_rate_chart(names, shares):
     return _png(fig)
 
 
-def exercise_summary(graded, catalog):
+def exercise_summary(graded: list[StudentResult], catalog: Catalog) -> list[tuple[Exercise, float, float, list, dict]]:
     """Per exercise: (exercise, share with full marks, mean points, [(count, description, hint)],
     {"stub": students who left it unwritten, "no notebook": students whose notebook was absent or unreadable}).
 
@@ -151,7 +154,8 @@ def _not_attempted(apart):
     return ", ".join(parts) or '<span class="muted">none</span>'
 
 
-def class_report_html(results, catalog, title="Class report", skipped=(), linked=frozenset(), extra_sections=()):
+def class_report_html(results: list[StudentResult], catalog: Catalog, title: str = "Class report", skipped: tuple = (),
+                      linked: frozenset = frozenset(), extra_sections: tuple = ()) -> str:
     """The report page for a list of StudentResult; ``skipped``: entries of the submissions folder that
     are not students (:class:`~autograder.grading.submissions.Skipped`); ``linked``: the students whose
     feedback page exists (``feedback/<id>.html`` beside the report), linked from the students' table;

@@ -10,9 +10,11 @@ Examples
 >>> html = students_table_html(results, {"ana": "feedback/ana.html"})        # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 from urllib.parse import quote
 
-from autograder.grading.results import MISSING
+from autograder.grading.results import MISSING, StudentResult
 from autograder.lessons.untrusted_text import html_text as escape
 from autograder.lessons.untrusted_text import safe_name
 from autograder.reports.lateness import late_summary
@@ -50,7 +52,7 @@ COLUMNS = (("student", "text"), ("score", "number"), ("%", "number"), ("status",
            ("late (penalty)", "text"), ("not handed in or unreadable", "text"))
 
 
-def feedback_link(student_id):
+def feedback_link(student_id: str) -> str:
     """The feedback page of ``student_id`` relative to the report (``feedback/<safe name>.html``, URL-quoted)."""
     return f"feedback/{quote(safe_name(student_id))}.html"
 
@@ -67,7 +69,7 @@ def _cell(text, sort, number=False):
     return f'<td{klass} data-sort="{escape(str(sort), 300)}">{text}</td>'
 
 
-def students_table_html(results, linked=frozenset()):
+def students_table_html(results: list[StudentResult], linked: frozenset = frozenset()) -> str:
     """The sortable table of students; ``linked``: the ids that have a feedback page to link."""
     heads = "".join(f'<th scope="col"><button type="button" data-type="{kind}">{escape(name)}<span '
                     'aria-hidden="true"></span></button></th>' for name, kind in COLUMNS)

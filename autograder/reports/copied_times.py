@@ -18,7 +18,11 @@ Examples
 'late penalties may be wrong. Without timestamp.txt, ... (lesson 01: 4 of 4 students' notebooks modified ...'
 """
 
+from __future__ import annotations
+
 from datetime import datetime
+
+from autograder.grading.results import StudentResult
 
 WINDOW_SECONDS = 60
 LEAST = 3  # students modified within the window before it looks like a copy
@@ -49,7 +53,7 @@ def _largest_bunch(moments):
     return best
 
 
-def copy_signs(results):
+def copy_signs(results: list[StudentResult]) -> list[str]:
     """One sentence per lesson whose file times look like a copy; ``[]`` when none does."""
     signs = []
     for number, entries in sorted(_file_timed(results).items()):
@@ -66,7 +70,7 @@ def copy_signs(results):
     return signs
 
 
-def copied_times_warning(results):
+def copied_times_warning(results: list[StudentResult]) -> str:
     """The warning to show (terminal, ``status``, class report), or ``""`` when the file times look genuine."""
     signs = copy_signs(results)
     if not signs:

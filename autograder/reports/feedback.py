@@ -10,6 +10,9 @@ sentence that describes each check. Everything that came from a student
 (:func:`~autograder.lessons.untrusted_text.html_text`).
 """
 
+from __future__ import annotations
+
+from autograder.grading.results import StudentResult
 from autograder.lessons.untrusted_text import html_text
 from autograder.reports.not_written import unwritten_functions
 from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
@@ -129,7 +132,7 @@ def _lesson_html(lesson):
     return "\n".join(parts)
 
 
-def feedback_html(result):
+def feedback_html(result: StudentResult) -> str:
     """The feedback page for one :class:`~autograder.grading.results.StudentResult`."""
     rows = "".join(
         f'<tr><td><a href="#lesson-{_e(lesson.number)}">{_e(lesson.number)}</a></td><td>{_e(lesson.title)}</td>'

@@ -15,9 +15,13 @@ cell that a spreadsheet could read as a formula (starting with ``=``, ``+``,
 ``=HYPERLINK(...)`` stays a name (:func:`~autograder.lessons.untrusted_text.csv_cell`).
 """
 
+from __future__ import annotations
+
 import csv
 import io
 
+from autograder.grading.results import StudentResult
+from autograder.lessons.catalog import Catalog
 from autograder.lessons.untrusted_text import csv_cell, spreadsheet_safe  # noqa: F401 (spreadsheet_safe: API)
 
 MAX_ID_CHARACTERS = 1100  # an id from a folder name (255 bytes) with every byte escaped fits
@@ -27,7 +31,7 @@ def _number(value):
     return f"{value:g}"
 
 
-def columns(catalog, with_notebooks):
+def columns(catalog: Catalog, with_notebooks: bool) -> list[str]:
     names = ["student_id", "score", "max_score", "status"]
     names += [f"lesson_{lesson.number}" for lesson in catalog.graded_lessons]
     names += [exercise.name for exercise in catalog.exercises]
@@ -36,7 +40,7 @@ def columns(catalog, with_notebooks):
     return names + ["late", "raw_score", "timestamp", "graded_at", "problems"]
 
 
-def row(result, catalog, with_notebooks, graded_at=""):
+def row(result: StudentResult, catalog: Catalog, with_notebooks: bool, graded_at: str = "") -> list[str]:
     earned = {e.name: e.points for e in result.exercises}
     lessons = {lesson.number: lesson for lesson in result.lessons}
     values = [csv_cell(result.student_id, MAX_ID_CHARACTERS), _number(result.score), _number(result.max_score),
@@ -54,7 +58,7 @@ def row(result, catalog, with_notebooks, graded_at=""):
     return values
 
 
-def gradebook_csv(results, catalog, graded_at=None):
+def gradebook_csv(results: list[StudentResult], catalog: Catalog, graded_at: dict[str, str] | None = None) -> str:
     """The gradebook text for a list of :class:`~autograder.grading.results.StudentResult`.
 
     ``graded_at``: ``{student_id: when the result was computed}``.

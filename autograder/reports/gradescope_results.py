@@ -14,6 +14,9 @@ Examples
 (12.0, ['Lesson 01 · rot2d'])
 """
 
+from __future__ import annotations
+
+from autograder.grading.results import StudentResult
 from autograder.sandbox.launcher import LIMITS_ONLY_WARNING
 
 DEFAULT_VISIBILITY = "after_due_date"
@@ -29,7 +32,7 @@ def _check_output(check):
     return line
 
 
-def results_json(result, visibility=DEFAULT_VISIBILITY, seconds=None):
+def results_json(result: StudentResult, visibility: str = DEFAULT_VISIBILITY, seconds: float | None = None) -> dict:
     """Gradescope's results for one :class:`~autograder.grading.results.StudentResult` (a dict)."""
     tests = []
     for lesson in result.lessons:
@@ -75,7 +78,7 @@ def results_json(result, visibility=DEFAULT_VISIBILITY, seconds=None):
     return data
 
 
-def failure_json(message):
+def failure_json(message: str) -> dict:
     """What Gradescope shows when grading itself failed: a message, no score claimed."""
     return {"score": 0.0, "visibility": "visible", "stdout_visibility": "hidden", "tests": [],
             "output": "The autograder could not grade this submission: " + message

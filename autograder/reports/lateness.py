@@ -33,6 +33,8 @@ Examples
 (0.2, 'handed in 2026-12-02 13:00 UTC, 1 day 1 h after the due date (2026-12-01 12:00 UTC): 2 days late, −20%')
 """
 
+from __future__ import annotations
+
 import difflib
 import math
 import tomllib
@@ -41,6 +43,7 @@ from datetime import date, datetime, time, timezone
 from pathlib import Path
 from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 
+from autograder.grading.results import StudentResult
 from autograder.grading.submissions import collected_time, handed_in_at, nbgrader_timestamp
 
 POLICY_KEYS = ("grace_minutes", "penalty_per_day", "max_penalty")
@@ -69,7 +72,7 @@ class CourseConfig:
     zone: ZoneInfo = ZoneInfo("UTC")  # the course's timezone: due dates and hand-in times are shown in it
     ignore_file_times: bool = False  # grade --ignore-mtimes: no lateness from the notebooks' file times
 
-    def policy(self, lesson):
+    def policy(self, lesson: str) -> LatePolicy:
         return self.policies.get(lesson, self.default_policy)
 
 
@@ -119,7 +122,7 @@ def _check_lesson(number, lessons, name):
                       f"(the lessons are {' '.join(lessons)})")
 
 
-def parse_config(text, name="course config", lessons=None):
+def parse_config(text: str, name: str = "course config", lessons: list[str] | None = None) -> CourseConfig:
     """A :class:`CourseConfig` from TOML text; raise :class:`ConfigError` with the place of a mistake.
 
     Every key is checked against the schema (``TOP_KEYS``, ``POLICY_KEYS``, ``LESSON_KEYS``) and every lesson
@@ -161,7 +164,7 @@ def parse_config(text, name="course config", lessons=None):
     return CourseConfig(due=due, policies=policies, default_policy=default, source=text, zone=zone)
 
 
-def load_config(path):
+def load_config(path: str | Path) -> CourseConfig:
     """Read ``path`` (see the module docstring)."""
     try:
         text = Path(path).read_text(encoding="utf-8")
@@ -170,18 +173,18 @@ def load_config(path):
     return parse_config(text, Path(path).name)
 
 
-def submission_time(notebook, folder):
+def submission_time(notebook: Path, folder: Path) -> datetime | None:
     """When ``notebook`` was handed in: one trusted source per layout (see
     :func:`autograder.grading.submissions.handed_in_at`)."""
     return handed_in_at(notebook, folder)
 
 
-def recorded_time(notebook, folder):
+def recorded_time(notebook: Path, folder: Path) -> datetime | None:
     """The time nbgrader recorded for ``notebook`` (``<student>/<assignment>/timestamp.txt``), or None."""
     return nbgrader_timestamp(notebook, folder)
 
 
-def file_time(notebook):
+def file_time(notebook: Path) -> datetime | None:
     """The modification time of ``notebook`` as collected (aware, UTC), or None when it cannot be read."""
     return collected_time(notebook)
 
@@ -193,12 +196,12 @@ def _span(seconds):
     return " ".join(parts) or f"{max(1, rest // 60)} min"
 
 
-def local_time(moment, zone):
+def local_time(moment: datetime, zone: ZoneInfo) -> str:
     """``moment`` as people read it in the course's timezone ``zone``: ``2026-12-01 23:59 CET``."""
     return moment.astimezone(zone).strftime("%Y-%m-%d %H:%M %Z")
 
 
-def penalty(config, lesson, handed_in):
+def penalty(config: CourseConfig, lesson: str, handed_in: datetime | None) -> tuple[float, str]:
     """``(fraction of the lesson's points lost, sentence)``; ``(0.0, "")`` when on time or without a due date."""
     due = config.due.get(lesson)
     if due is None or handed_in is None:
@@ -214,7 +217,7 @@ def penalty(config, lesson, handed_in):
                       f"{days} day{'s' if days != 1 else ''} late, −{100 * fraction:g}%")
 
 
-def apply_late_policy(result, folder, config):
+def apply_late_policy(result: StudentResult, folder: Path, config: CourseConfig | None) -> StudentResult:
     """Record when each lesson was handed in, where that time came from, its due date and, past it, the
     penalty (in place)."""
     for lesson in result.lessons:
@@ -235,13 +238,13 @@ def apply_late_policy(result, folder, config):
     return result
 
 
-def late_summary(result):
+def late_summary(result: StudentResult) -> str:
     """``01 −20%, 03 −10%``: the lessons ``result`` (a StudentResult) handed in late and what each cost."""
     return ", ".join(f"{lesson.number} −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
                      if lesson.late_penalty)
 
 
-def due_dates(results):
+def due_dates(results: list[StudentResult]) -> str:
     """``lesson 01 2026-12-01 23:59 CET, lesson 03 ...``: the due dates recorded in ``results`` (StudentResults),
     in the course's timezone; ``""`` when no lesson had one."""
     due = {lesson.number: lesson.due for result in results for lesson in result.lessons if lesson.due}

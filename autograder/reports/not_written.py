@@ -11,12 +11,16 @@ Examples
 ['rot_z']
 """
 
+from __future__ import annotations
+
 import re
+
+from autograder.grading.results import ExerciseResult
 
 NOT_WRITTEN = re.compile(r"(\S+) is not written yet \(it raises NotImplementedError\)")
 
 
-def unwritten_functions(exercise):
+def unwritten_functions(exercise: ExerciseResult) -> list[str]:
     """The functions (by name) whose stubs made every failed check of ``exercise`` fail; ``[]`` when any
     failure is a real one or nothing failed."""
     failed = [check for check in exercise.checks if not check.passed]

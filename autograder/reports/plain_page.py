@@ -9,12 +9,15 @@ Examples
 >>> page = plain_page("Class report", results, "the full report could not be made (ValueError: ...)")  # doctest: +SKIP
 """
 
+from __future__ import annotations
+
+from autograder.grading.results import StudentResult
 from autograder.lessons.untrusted_text import html_text
 
 MAX_PROBLEMS = 20  # listed per student
 
 
-def plain_page(title, results, why):
+def plain_page(title: str, results: list[StudentResult], why: str) -> str:
     """An HTML page: ``title``, ``why`` the full page is missing, then one entry per result."""
     items = []
     for result in results:

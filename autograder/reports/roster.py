@@ -15,6 +15,8 @@ Examples
 RosterEntry(student_id='ada', name='Ada L.', email='', section='A', sis_id='', canvas_id='')
 """
 
+from __future__ import annotations
+
 import csv
 import io
 from dataclasses import dataclass
@@ -43,7 +45,7 @@ def _key(header):
     return ALIASES.get("_".join(header.strip().lower().split()))
 
 
-def parse_roster(text):
+def parse_roster(text: str) -> list[RosterEntry]:
     """Roster entries from the text of a roster file (see the module docstring)."""
     lines = [line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
@@ -62,7 +64,7 @@ def parse_roster(text):
     return [RosterEntry(line.strip()) for line in lines]
 
 
-def read_roster(path):
+def read_roster(path: str | Path | None) -> list[RosterEntry]:
     """Read a roster file; ``None`` or ``""`` gives an empty roster."""
     if not path:
         return []

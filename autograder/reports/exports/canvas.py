@@ -18,20 +18,24 @@ Examples
 'Student,ID,SIS User ID,SIS Login ID,Section,Lesson 01: Frames and rotations,...'
 """
 
+from __future__ import annotations
+
 import csv
 import io
 
+from autograder.grading.results import StudentResult
+from autograder.lessons.catalog import Catalog, Lesson
 from autograder.lessons.untrusted_text import csv_cell
 from autograder.reports.exports.missing import MISSING_CHOICES, not_handed_in
 
 FIXED = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
 
 
-def assignment_name(lesson):
+def assignment_name(lesson: Lesson) -> str:
     return f"Lesson {lesson.number}: {lesson.title}" if lesson.title else f"Lesson {lesson.number}"
 
 
-def write(results, catalog, roster=(), missing="zero"):
+def write(results: list[StudentResult], catalog: Catalog, roster: tuple | list = (), missing: str = "zero") -> str:
     """The import file's text for ``results`` (StudentResult), with names and sections from ``roster``; a lesson
     not handed in is 0, or an empty cell with ``missing="blank"``."""
     if missing not in MISSING_CHOICES:

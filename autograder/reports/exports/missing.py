@@ -7,12 +7,15 @@ Examples
 ('zero', 'blank')
 """
 
-from autograder.grading.results import COULD_NOT_GRADE
+from __future__ import annotations
+
+from autograder.grading.results import COULD_NOT_GRADE, StudentResult
+from autograder.lessons.catalog import Lesson
 
 MISSING_CHOICES = ("zero", "blank")
 
 
-def not_handed_in(result, lessons):
+def not_handed_in(result: StudentResult, lessons: tuple[Lesson, ...]) -> list[str]:
     """The numbers of ``lessons`` that ``result``'s student did not hand in (every one for a student without a
     submission); none for a student who could not be graded (their grade is unknown, never a 0).
 
