@@ -16,12 +16,15 @@ Examples
 CanaryResult(cached=True, seconds=0.0, ...)
 """
 
+from __future__ import annotations
+
 import json
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 from autograder.grading.fingerprint import cache_dir, fingerprint
+from autograder.grading.options import GradingOptions
 from autograder.grading.results import StudentResult
 from autograder.sandbox import cleanup
 from autograder.sandbox.forking import fork_each
@@ -39,7 +42,7 @@ class CanaryResult:
     max_score: float = 0.0
 
 
-def describe_canary(canary):
+def describe_canary(canary: CanaryResult) -> str:
     """One line for the run's output."""
     if canary.cached:
         return "canary: the reference solutions got full marks with this grader before (cached)"
@@ -51,7 +54,7 @@ def _marker(parts):
     return cache_dir() / f"canary-{fingerprint(parts)}.json"
 
 
-def shortfalls(result):
+def shortfalls(result: StudentResult) -> list[str]:
     """One line per lesson stage where ``result`` is below full marks (empty when it has full marks)."""
     lines = []
     if result.reason:
@@ -86,7 +89,7 @@ def _grade_reference(options, folder, target, slot=None):
     Path(target).write_text(result.to_json(), encoding="utf-8")
 
 
-def ensure_reference_passes(options, parts, timeout=900):
+def ensure_reference_passes(options: GradingOptions, parts: dict[str, str], timeout: float = 900) -> CanaryResult:
     """Grade the reference through the full pipeline unless a passing canary is cached; raise
     :class:`CanaryFailed` naming each failing lesson and stage."""
     marker = _marker(parts)

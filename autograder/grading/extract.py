@@ -16,9 +16,14 @@ Examples
 ['rot2d', 'rot_x', ...]
 """
 
+from __future__ import annotations
+
 import ast
 
+import nbformat
+
 from autograder.lessons import cells
+from autograder.lessons.catalog import Lesson
 from autograder.sandbox.session import LessonProgram
 
 
@@ -67,7 +72,7 @@ def _edited_check_cells(nb, lesson):
             "so this changes no points)" for what, names in (("edited", edited), ("removed", removed)) if names]
 
 
-def lesson_program(nb, lesson):
+def lesson_program(nb: nbformat.NotebookNode, lesson: Lesson) -> LessonProgram:
     """Build the :class:`LessonProgram` the sandbox runs for one lesson notebook.
 
     Parameters

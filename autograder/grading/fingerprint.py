@@ -15,6 +15,8 @@ Examples
 ['isolation mode (limits → namespaces)']
 """
 
+from __future__ import annotations
+
 import hashlib
 import json
 import os
@@ -22,6 +24,7 @@ import platform
 from importlib import metadata
 from pathlib import Path
 
+from autograder.grading.options import GradingOptions
 from autograder.lessons.paths import HIDDEN_SUITE, PACKAGE, SOLUTIONS, SUPPORT_PACKAGE
 from autograder.sandbox import launcher
 
@@ -56,7 +59,7 @@ def _versions():
     return ", ".join(found)
 
 
-def content_parts(solutions_dir=SOLUTIONS):
+def content_parts(solutions_dir: Path = SOLUTIONS) -> dict[str, str]:
     """``{ingredient: digest or readable value}`` of what the grader runs: its code, the reference
     solutions, coursekit, the hidden suite and the library versions (no options, no isolation mode)."""
     solutions_dir = Path(solutions_dir)
@@ -71,7 +74,7 @@ def content_parts(solutions_dir=SOLUTIONS):
     }
 
 
-def fingerprint_parts(options, solutions_dir=SOLUTIONS):
+def fingerprint_parts(options: GradingOptions, solutions_dir: Path = SOLUTIONS) -> dict[str, str]:
     """``{ingredient: digest or readable value}`` for everything besides the submission that decides a grade."""
     content = content_parts(solutions_dir)
     libraries = content.pop("libraries")
@@ -83,7 +86,7 @@ def fingerprint_parts(options, solutions_dir=SOLUTIONS):
     }
 
 
-def cache_dir():
+def cache_dir() -> Path:
     """Where this machine remembers what is keyed by a fingerprint (passing canaries, the reference's
     transcripts): ``$AUTOGRADER_CACHE``, else the user's cache folder."""
     explicit = os.environ.get("AUTOGRADER_CACHE")
@@ -93,12 +96,12 @@ def cache_dir():
     return Path(base) / "rotations-autograder"
 
 
-def fingerprint(parts):
+def fingerprint(parts: dict[str, str]) -> str:
     """One digest for all the parts."""
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]
 
 
-def what_changed(old_parts, new_parts):
+def what_changed(old_parts: dict[str, str] | None, new_parts: dict[str, str]) -> list[str]:
     """The ingredients that differ, as phrases (``"isolation mode (limits → namespaces)"``)."""
     changed = []
     for name, value in new_parts.items():

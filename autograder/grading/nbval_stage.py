@@ -21,6 +21,8 @@ hidden marks; for the others the point is 0 whatever nbval would say, and
 their run is ``skipped`` with that reason (:func:`not_run_for_lost_points`).
 """
 
+from __future__ import annotations
+
 import json
 import os
 import select
@@ -29,12 +31,17 @@ import sys
 import time
 from pathlib import Path
 
-from autograder.grading.results import NotebookRun
+import nbformat
+
+from autograder.grading.options import GradingOptions
+from autograder.grading.results import LessonResult, NotebookRun
 from autograder.lessons import cells
+from autograder.lessons.catalog import Catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import SOLUTIONS
 from autograder.sandbox import cleanup, launcher
-from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
+from autograder.sandbox.session import LessonProgram, SandboxUnavailable, StudentError, StudentSandbox
+from autograder.sandbox.warm import WarmSlot
 
 SANITIZE = """[hex addresses]
 regex: 0x[0-9a-fA-F]+
@@ -50,7 +57,7 @@ SUMMARY_LIMIT = 1 << 20
 BIND = "from student_client import student_function\n{name} = student_function({lesson!r}, {name!r})\n"
 
 
-def merged_notebook(master, lesson):
+def merged_notebook(master: nbformat.NotebookNode, lesson: str) -> nbformat.NotebookNode:
     """The master with each answer cell replaced by a binding of its exercise to the student's function."""
     for cell in master.cells:
         if cells.is_answer_cell(cell):
@@ -82,7 +89,8 @@ def _student_channels(runnable, options, slot):
     return sandboxes, channels, problems
 
 
-def run_notebooks(folder, lessons, options, catalog, solutions_dir=SOLUTIONS, slot=None):
+def run_notebooks(folder: Path, lessons: list[tuple[LessonResult, Path, LessonProgram | None]], options: GradingOptions,
+                  catalog: Catalog, solutions_dir: Path = SOLUTIONS, slot: WarmSlot | None = None) -> dict[str, NotebookRun]:
     """Run nbval on every readable lesson notebook of one student.
 
     ``slot``: the grader's warm slot, whose zygote forks the lessons' sandboxes; None: cold starts.
@@ -169,18 +177,18 @@ def _run(names, channels, sandbox_dir, scratch_dir, limits, timeout):
 NEEDS_FULL_MARKS = "the point needs every exercise of the lesson to pass its hidden checks"
 
 
-def full_hidden_marks(lesson_result):
+def full_hidden_marks(lesson_result: LessonResult) -> bool:
     """Did every exercise of the lesson earn full marks in the hidden suite?"""
     return all(e.points >= e.max_points for e in lesson_result.exercises)
 
 
-def not_run_for_lost_points(max_points):
+def not_run_for_lost_points(max_points: float) -> NotebookRun:
     """The run of a lesson that lost hidden points: nbval is not started, the point is 0 whatever it says."""
     return NotebookRun(status="skipped", max_points=max_points,
                        failures=[f"not run: {NEEDS_FULL_MARKS}"])
 
 
-def award(lesson_result):
+def award(lesson_result: LessonResult) -> None:
     """Give the notebook point only if nbval passed and every exercise earned full marks."""
     run = lesson_result.run
     if run is None:

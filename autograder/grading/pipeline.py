@@ -11,11 +11,14 @@ lesson's points (with the reason), a function that crashes or hangs costs
 that exercise's points, and everything else is still graded.
 """
 
+from __future__ import annotations
+
 import ast
 import time
-from dataclasses import dataclass
+from pathlib import Path
 
 from autograder.grading import extract, submissions
+from autograder.grading.options import GradingOptions
 from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
 from autograder.grading.results import (COULD_NOT_GRADE, GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult,
                                         LessonResult, NotebookRun, StudentResult)
@@ -26,16 +29,9 @@ from autograder.lessons.notebook_files import UnreadableNotebook, read_submissio
 from autograder.lessons.reference import load_reference
 from autograder.sandbox import launcher
 from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
+from autograder.sandbox.warm import WarmSlot
 
 
-@dataclass(frozen=True)
-class GradingOptions:
-    """Knobs of a grading run."""
-
-    nbval: bool = True
-    limits: launcher.Limits = launcher.Limits()
-    lessons: tuple = ()  # lesson numbers to grade, e.g. ("01", "03"); empty means all
-    notebook_points: float = 1.0  # per lesson, for "runs top to bottom and reproduces the reference"
 
 
 def _score(max_points, checks):
@@ -101,7 +97,8 @@ def _read_lessons(folder, catalog, only=()):
     return found, notes, [item.line() for item in files.skipped]
 
 
-def grade_student(student_id, folder, options=GradingOptions(), solutions_dir=None, slot=None):
+def grade_student(student_id: str, folder: Path, options: GradingOptions = GradingOptions(),
+                  solutions_dir: Path | None = None, slot: WarmSlot | None = None) -> StudentResult:
     """Grade the submission in ``folder``; never raises for anything the student did.
 
     ``slot``: the warm slot (:class:`~autograder.sandbox.warm.WarmSlot`) this grader process was

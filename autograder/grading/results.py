@@ -12,6 +12,8 @@ class report:
 - ``missing``: no submission at all.
 """
 
+from __future__ import annotations
+
 import json
 from dataclasses import asdict, dataclass, field
 
@@ -70,17 +72,17 @@ class LessonResult:
     due: str = ""  # the due date as people read it, in the course's timezone ("2026-12-01 23:59 CET")
 
     @property
-    def raw_points(self):
+    def raw_points(self) -> float:
         """Points earned, before any late penalty."""
         return sum(e.points for e in self.exercises) + (self.run.points if self.run else 0.0)
 
     @property
-    def points(self):
+    def points(self) -> float:
         """Points that count: the raw points less the late penalty."""
         return round(self.raw_points * (1.0 - self.late_penalty), 2)
 
     @property
-    def max_points(self):
+    def max_points(self) -> float:
         return sum(e.max_points for e in self.exercises) + (self.run.max_points if self.run else 0.0)
 
 
@@ -97,35 +99,35 @@ class StudentResult:
     skipped: list = field(default_factory=list)  # "path: why" for what the grader saw in the folder and did not use
 
     @property
-    def score(self):
+    def score(self) -> float:
         """The score that counts (late penalties applied)."""
         return round(sum(lesson.points for lesson in self.lessons), 2)
 
     @property
-    def raw_score(self):
+    def raw_score(self) -> float:
         """The score before late penalties."""
         return round(sum(lesson.raw_points for lesson in self.lessons), 2)
 
     @property
-    def submitted_at(self):
+    def submitted_at(self) -> str:
         """When the newest of the student's notebooks was handed in (ISO 8601, UTC), or ""."""
         return max((lesson.submitted_at for lesson in self.lessons), default="")
 
     @property
-    def max_score(self):
+    def max_score(self) -> float:
         return round(sum(lesson.max_points for lesson in self.lessons), 2)
 
     @property
-    def exercises(self):
+    def exercises(self) -> list[ExerciseResult]:
         return [e for lesson in self.lessons for e in lesson.exercises]
 
-    def to_json(self):
+    def to_json(self) -> str:
         data = asdict(self)
         data["score"], data["max_score"], data["raw_score"] = self.score, self.max_score, self.raw_score
         return json.dumps(data, indent=1, sort_keys=True, ensure_ascii=False)
 
     @classmethod
-    def from_json(cls, text):
+    def from_json(cls, text: str) -> StudentResult:
         data = json.loads(text)
         for derived in ("score", "max_score", "raw_score"):
             data.pop(derived, None)

@@ -23,6 +23,8 @@ why (:class:`Skipped`): hidden entries, links, stray files at the top of the
 submissions folder, folders deeper than the search depth.
 """
 
+from __future__ import annotations
+
 import ast
 import hashlib
 import os
@@ -32,10 +34,13 @@ from datetime import datetime, timezone
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
+from typing import Callable
 
+import nbformat
 from dateutil import parser as date_parser
 
 from autograder.lessons import cells
+from autograder.lessons.catalog import Catalog
 from autograder.lessons.notebook_files import (MAX_NOTEBOOK_BYTES, UnreadableNotebook, file_kind, read_master,
                                                read_regular_file, read_submission)
 from autograder.lessons.paths import COURSE
@@ -53,7 +58,7 @@ class Skipped:
     path: str
     why: str
 
-    def line(self):
+    def line(self) -> str:
         return f"{self.path}: {self.why}"
 
 
@@ -80,7 +85,7 @@ def _top_level_why(entry):
     return f"{file_kind(mode)}, not a student folder (each student's notebooks go in a folder of their own)"
 
 
-def scan_submissions(path):
+def scan_submissions(path: str | Path) -> Found:
     """The students under ``path`` and what was skipped there (see the module docstring).
 
     Returns
@@ -102,12 +107,12 @@ def scan_submissions(path):
     return found
 
 
-def student_folders(path):
+def student_folders(path: str | Path) -> list[Path]:
     """Sorted ``[(student_id, folder)]`` under ``path`` (see the module docstring)."""
     return scan_submissions(path).files
 
 
-def is_notebook_name(name):
+def is_notebook_name(name: str) -> bool:
     return name.endswith(".ipynb") and not name.startswith(".")
 
 
@@ -135,7 +140,7 @@ def _is_folder(entry):
         return False
 
 
-def scan_folder(folder, wanted=is_notebook_name, max_files=MAX_NOTEBOOKS):
+def scan_folder(folder: Path, wanted: Callable[[str], bool] = is_notebook_name, max_files: int = MAX_NOTEBOOKS) -> Found:
     """The files of a student's ``folder`` that ``wanted(name)`` accepts, and everything skipped, with why.
 
     The walk is iterative and bounded: :data:`MAX_DEPTH` folders down, :data:`MAX_ENTRIES` entries and
@@ -199,12 +204,12 @@ def scan_folder(folder, wanted=is_notebook_name, max_files=MAX_NOTEBOOKS):
     return found
 
 
-def files_in(folder, wanted):
+def files_in(folder: Path, wanted: Callable[[str], bool]) -> list[Path]:
     """Paths of the files (and links) whose name ``wanted(name)`` accepts (see :func:`scan_folder`)."""
     return scan_folder(folder, wanted).files
 
 
-def notebooks_in(folder):
+def notebooks_in(folder: Path) -> list[Path]:
     """Regular ``.ipynb`` files and links to them up to two levels down, as paths."""
     return scan_folder(folder).files
 
@@ -290,7 +295,8 @@ def _name_matches(path, lesson):
     return path.name == lesson.filename or path.name.startswith(lesson.number + "_")
 
 
-def match_lessons(folder, catalog, notebooks=None, read=None):
+def match_lessons(folder: Path, catalog: Catalog, notebooks: list[Path] | None = None,
+                  read: Callable[[Path], nbformat.NotebookNode] | None = None) -> LessonFiles:
     """Match the notebooks of one student's ``folder`` to ``catalog``'s graded lessons, by content.
 
     ``read(path)``: how a notebook is read (default :func:`read_submission` inside ``folder``); a caller
@@ -359,7 +365,7 @@ def _work(count):
 NBGRADER_TIMESTAMP = "timestamp.txt"
 
 
-def handed_in_at(notebook, folder):
+def handed_in_at(notebook: Path, folder: Path) -> datetime | None:
     """When ``notebook`` (under the student's ``folder``) was handed in, from one trusted source, or ``None``.
 
     - nbgrader's ``timestamp.txt`` at the top level of the submission, ``folder/<assignment>/timestamp.txt``
@@ -378,7 +384,7 @@ def handed_in_at(notebook, folder):
     return nbgrader_timestamp(notebook, folder) or collected_time(notebook)
 
 
-def nbgrader_timestamp(notebook, folder):
+def nbgrader_timestamp(notebook: Path, folder: Path) -> datetime | None:
     """The time in ``folder/<assignment>/timestamp.txt`` for a notebook under ``<assignment>/`` (see
     :func:`handed_in_at`), or ``None`` when there is none, it is not a regular file, or it cannot be read."""
     notebook, folder = Path(notebook), Path(folder)
@@ -399,7 +405,7 @@ def nbgrader_timestamp(notebook, folder):
     return None
 
 
-def collected_time(notebook):
+def collected_time(notebook: Path) -> datetime | None:
     """The modification time of ``notebook`` as collected (aware, UTC), or ``None`` when it cannot be read."""
     try:
         return datetime.fromtimestamp(os.lstat(notebook).st_mtime, tz=timezone.utc)
@@ -407,7 +413,7 @@ def collected_time(notebook):
         return None
 
 
-def submission_hash(folder):
+def submission_hash(folder: str | Path) -> str:
     """SHA-256 over the names, bytes and hand-in times (:func:`handed_in_at`) of every notebook of a student
     (links by their target text), so a corrected hand-in time re-grades the student like changed bytes.
 

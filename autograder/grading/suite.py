@@ -26,6 +26,8 @@ How it runs (speed; the ``--no-nbval`` path is this module plus the sandbox):
   runs one thread (its pool made a 4×4 ``expm`` 50× slower).
 """
 
+from __future__ import annotations
+
 import contextlib
 import functools
 import os
@@ -37,7 +39,10 @@ import pytest
 
 from autograder.grading import transcript_cache
 from autograder.grading.results import CheckResult
-from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, independent_prefix
+from autograder.lessons.catalog import Catalog
+from autograder.sandbox import launcher
+from autograder.sandbox.warm import WarmSlot
+from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, Transcript, independent_prefix
 from autograder.hidden.own_work import CHANGED_HINT, DELEGATED_HINT, forbidden_for
 from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
 from autograder.lessons.reference import answer_sources
@@ -66,7 +71,7 @@ HINTS = {
 CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its arguments in place
 
 
-def contract_results(proxy, tests):
+def contract_results(proxy: StudentProxy, tests: list[HiddenTest]) -> list[CheckResult]:
     """A failed check per exercise whose calls changed an argument in place (none when they did not).
 
     It weighs a third of the exercise's other checks, so it costs :data:`CONTRACT_SHARE` of the
@@ -100,13 +105,13 @@ class StudentProxy:
         self.changed = {}  # exercise -> the argument names its first in-place change touched
         self.check = ""  # the description of the hidden check running now (for the contract's reason)
 
-    def with_timeout(self, seconds):
+    def with_timeout(self, seconds: float) -> StudentProxy:
         """The same proxy with a longer per-call time limit, for slow exercises."""
         clone = StudentProxy(self._sandbox, self._catalog, self._unavailable, seconds, self._replay)
         clone.printed, clone.changed = self.printed, self.changed
         return clone
 
-    def changed_arguments(self):
+    def changed_arguments(self) -> list[str]:
         """The arguments the last call changed in place (names; empty when it left them alone)."""
         return list(getattr(self._sandbox, "last_changed", ()) or ())
 
@@ -217,7 +222,7 @@ def _describe(item):
 
 
 @functools.lru_cache(maxsize=1)
-def hidden_tests():
+def hidden_tests() -> tuple[list[HiddenTest], list[str]]:
     """(tests, problems): the hidden suite as pytest collects it, in pytest's order; once per process.
 
     Raises :class:`SuiteError` if pytest cannot collect it, or if a test asks
@@ -268,7 +273,7 @@ def _is_default_reference(reference):
     return reference is load_reference()
 
 
-def transcripts_for(reference, catalog):
+def transcripts_for(reference: object, catalog: Catalog) -> dict[str, Transcript]:
     """``{nodeid: Transcript}``: every hidden test run once on ``reference``, its calls recorded.
 
     Kept in the reference's memo. For the project's own reference the transcripts
@@ -311,7 +316,7 @@ def _record_transcripts(reference, catalog, tests):
     return found
 
 
-def reference_programs(catalog):
+def reference_programs(catalog: Catalog) -> dict[str, LessonProgram]:
     """``{lesson: LessonProgram}`` of the reference solutions: each master's setup and answer cells."""
     sources = answer_sources()
     return {lesson.number: LessonProgram(setup=lesson.setup_source,
@@ -319,7 +324,8 @@ def reference_programs(catalog):
             for lesson in catalog.graded_lessons}
 
 
-def learn_reference_in_sandbox(reference, catalog, limits=None, slot=None, lessons=()):
+def learn_reference_in_sandbox(reference: object, catalog: Catalog, limits: launcher.Limits | None = None,
+                               slot: WarmSlot | None = None, lessons: tuple[str, ...] = ()) -> int:
     """Run the hidden tests of ``lessons`` (all when empty) once on the reference solutions in a sandbox,
     as a student; return how many tests taught a new passing list of values.
 
@@ -387,7 +393,8 @@ def _printed_text(parts):
     return printed
 
 
-def run_hidden_suite(proxy, reference, lessons=None):
+def run_hidden_suite(proxy: StudentProxy, reference: object,
+                     lessons: list[str] | None = None) -> tuple[list[CheckResult], list[str]]:
     """Run the hidden suite for one student; return (list of CheckResult, problems).
 
     ``lessons``: only run the tests of these lesson numbers (default all).
@@ -471,7 +478,7 @@ _BLAS_THREAD_SETTERS = ("scipy_openblas_set_num_threads64_", "scipy_openblas_set
                         "openblas_set_num_threads64_", "openblas_set_num_threads")
 
 
-def single_threaded_blas():
+def single_threaded_blas() -> int:
     """Make every OpenBLAS loaded in this process (numpy's and scipy's) use one thread.
 
     The hidden suite works on 3×3 and 4×4 matrices, where OpenBLAS's thread pool costs far
@@ -501,7 +508,7 @@ def single_threaded_blas():
     return done
 
 
-def preload_hidden_suite():
+def preload_hidden_suite() -> None:
     """Collect the hidden suite and record the reference's calls once, so forked graders reuse them (speed)."""
     import gc
 
@@ -517,7 +524,8 @@ def preload_hidden_suite():
     gc.freeze()
 
 
-def run_hidden_suite_with_pytest(proxy, reference, lessons=None):
+def run_hidden_suite_with_pytest(proxy: StudentProxy, reference: object,
+                                 lessons: list[str] | None = None) -> tuple[list[CheckResult], list[str]]:
     """:func:`run_hidden_suite` as a plain ``pytest.main`` run, call by call: the yardstick of the fast runner.
 
     Same arguments and results; about twice the CPU time.

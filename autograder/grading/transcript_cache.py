@@ -26,6 +26,8 @@ Examples
 >>> save(transcripts, learned={"01"})      # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import hashlib
 import json
 import os
@@ -48,19 +50,19 @@ def _cpu_model():
     return platform.processor()
 
 
-def key():
+def key() -> str:
     """A digest of everything the reference's transcripts depend on (see the module's docstring)."""
     parts = dict(content_parts(), format=FORMAT, machine=platform.machine(), cpu=_cpu_model(),
                  kernel=os.environ.get("OPENBLAS_CORETYPE", ""), l2=os.environ.get("OPENBLAS_L2_SIZE", ""))
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:20]
 
 
-def path():
+def path() -> Path:
     """This machine's and this grader's transcript file."""
     return cache_dir() / f"transcripts-{key()}.json"
 
 
-def save(transcripts, learned=()):
+def save(transcripts: dict[str, Transcript], learned: set[str] | tuple = ()) -> None:
     """Write ``{nodeid: Transcript}`` and the lessons already learned in a sandbox, atomically; never raises."""
     target = path()
     document = {"format": FORMAT, "learned": sorted(learned),
@@ -74,7 +76,7 @@ def save(transcripts, learned=()):
         tmp.unlink(missing_ok=True)
 
 
-def load():
+def load() -> tuple[dict[str, Transcript], set[str]] | None:
     """``({nodeid: Transcript}, learned lessons)`` from this machine's file, or ``None`` if there is none
     (or it cannot be read: recording again is always safe)."""
     try:

@@ -44,6 +44,8 @@ this runner to plain pytest, check by check, on the sample class and on every
 typical mistake.
 """
 
+from __future__ import annotations
+
 from dataclasses import dataclass, field
 
 from autograder.sandbox.child import probes, wire
@@ -68,14 +70,15 @@ class Transcript:
     also_passing: list = field(default_factory=list)
     complete: bool = True  # False: later calls were cut, their inputs came from answers; never passed unrun
 
-    def cut(self, count):
+    def cut(self, count: int) -> None:
         """Keep the first ``count`` calls; a test cut short always runs (its later calls must be made)."""
         if count < len(self.calls):
             del self.calls[count:], self.keys[count:], self.timeouts[count:], self.results[count:]
             self.complete = False
 
 
-def call_text(lesson, name, args, kwargs, timeout, forbid=()):
+def call_text(lesson: str, name: str, args: tuple | list, kwargs: dict, timeout: float | None,
+              forbid: tuple = ()) -> str:
     """The wire text that identifies one call (raises :class:`wire.WireError` for non-data arguments)."""
     request = call_request(lesson, name, args, kwargs, timeout, forbid)
     del request["op"]
@@ -86,7 +89,7 @@ def _materialize(value):
     return probes.resolve(value.name, value.args) if isinstance(value, wire.Probe) else value
 
 
-def nudged(value):
+def nudged(value: object) -> object:
     """``value`` with every float moved by :data:`NUDGE` (relative, and a thousandth of it absolute); the
     rest as is. It is far inside every hidden test's tolerance, so the test goes on as it did, and far
     above rounding (about 50 units in the last place), so an input computed from the value moves too.
@@ -133,7 +136,7 @@ class NudgedReference:
         return call
 
 
-def independent_prefix(calls, nudged_calls):
+def independent_prefix(calls: list[str], nudged_calls: list[str]) -> int:
     """How many of a test's calls, from the first, have inputs that no answer of the reference fed:
     the calls that a second recording with nudged answers (``nudged_calls``) made exactly alike."""
     count = 0
@@ -158,11 +161,12 @@ class ReferenceRecorder:
         self.transcript = None
         self.nudge = nudge
 
-    def start(self):
+    def start(self) -> Transcript:
         self.transcript = Transcript(calls=[], keys=[], timeouts=[], results=[])
         return self.transcript
 
-    def call(self, lesson, name, args=(), kwargs=None, timeout=None, forbid=()):
+    def call(self, lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, timeout: float | None = None,
+             forbid: tuple = ()) -> object:
         text = call_text(lesson, name, args, kwargs, timeout, forbid)
         request = wire.loads(text)  # the arguments exactly as the sandbox would receive them
         try:
@@ -194,7 +198,7 @@ class Replay:
         self._replies = []
         self._next = 0
 
-    def prefetch(self, transcript, unavailable=()):
+    def prefetch(self, transcript: Transcript | None, unavailable: dict | tuple = ()) -> None:
         """Make ``transcript``'s calls in the student's sandbox, in one round trip when possible."""
         self.stop()
         if transcript is None or not transcript.calls:
@@ -219,14 +223,14 @@ class Replay:
             return None
         return [reply["text"] for reply in self._replies]
 
-    def passes_as_recorded(self):
+    def passes_as_recorded(self) -> bool:
         """True when every recorded call returned, bit for bit, values with which the test passed before:
         the reference's (:attr:`Transcript.results`) or a list in :attr:`Transcript.also_passing`."""
         answers = self._answers()
         return (answers is not None and self._transcript.passed and self._transcript.complete
                 and (answers == self._transcript.results or answers in self._transcript.also_passing))
 
-    def note_if_passed(self, passed):
+    def note_if_passed(self, passed: bool) -> bool:
         """After the test ran on the batch: if it passed, and every call it made was answered from the
         batch, in order, with nothing left over, the batch's values are known to pass (for
         :meth:`passes_as_recorded`). Return whether they were noted."""
@@ -237,11 +241,11 @@ class Replay:
             transcript.also_passing.append(answers)
         return True
 
-    def printed(self):
+    def printed(self) -> list[str]:
         """What the batch's calls printed, in order (as the proxy would have collected it)."""
         return [str(reply.get("stdout", "")) for reply in self._replies if reply.get("stdout")]
 
-    def call(self, lesson, name, args, kwargs, timeout, forbid=()):
+    def call(self, lesson: str, name: str, args: tuple, kwargs: dict, timeout: float | None, forbid: tuple = ()) -> object:
         """The call's value: from the batch while calls follow the recording, else from the sandbox."""
         if self._transcript is not None and self._next < len(self._replies):
             try:
@@ -256,5 +260,5 @@ class Replay:
         self.stop()  # the test left the recorded path: one call at a time from here on
         return self.sandbox.call(lesson, name, args, kwargs, timeout=timeout, forbid=forbid)
 
-    def stop(self):
+    def stop(self) -> None:
         self._transcript, self._replies, self._next = None, [], 0
