@@ -59,6 +59,8 @@ Keeping one task per worker in flight also means a dying worker takes only
 the student it was grading with it, never students queued behind it.
 """
 
+from __future__ import annotations
+
 import ctypes
 import os
 import signal
@@ -69,7 +71,9 @@ import time
 import uuid
 from collections import deque
 from pathlib import Path
+from typing import Callable
 
+from autograder.grading.options import GradingOptions
 from autograder.grading.submissions import files_in, is_notebook_name
 from autograder.lessons.notebook_files import MAX_NOTEBOOK_BYTES, read_regular_file
 
@@ -87,7 +91,7 @@ class ClusterError(Exception):
 # A student's folder as bytes, and back
 
 
-def pack_submission(folder):
+def pack_submission(folder: Path) -> dict:
     """What the grader reads of one student's folder, as plain data for a task.
 
     The notebooks that :func:`~autograder.grading.submissions.notebooks_in` finds (symbolic links stay links)
@@ -111,7 +115,7 @@ def pack_submission(folder):
     return {"name": folder.name, "entries": entries}
 
 
-def unpack_submission(payload, base):
+def unpack_submission(payload: dict, base: Path) -> Path:
     """Recreate a packed folder under ``base``; return its path (named as on the driver)."""
     name = payload["name"]
     if name in ("", ".", "..") or "/" in name or "\0" in name:
@@ -176,7 +180,7 @@ def _check_this_worker(options, driver_parts):
     return None
 
 
-def worker_verdict(options, driver_parts):
+def worker_verdict(options: GradingOptions, driver_parts: dict[str, str]) -> str | None:
     """Check this worker process once (isolation, grader, canary); None when it may grade, else why not."""
     from autograder.grading.fingerprint import fingerprint
 
@@ -199,7 +203,7 @@ def _here():
         return "(not on a worker)"
 
 
-def ready_on_worker(options, driver_parts):
+def ready_on_worker(options: GradingOptions, driver_parts: dict[str, str]) -> tuple[str, str | None, str]:
     """The task the driver sends to each worker before students: ``(address, verdict, isolation)``."""
     from autograder.sandbox import launcher
 
@@ -219,7 +223,8 @@ def _die_with_parent(function):
     return run
 
 
-def grade_on_worker(function, task, payload, driver_parts, deadline_seconds):
+def grade_on_worker(function: Callable, task: tuple, payload: dict, driver_parts: dict[str, str],
+                    deadline_seconds: float | None) -> tuple:
     """The task of one student, on a worker: ``("refused", address, why)`` or ``("done", address, problem,
     files)`` where ``files`` maps ``"feedback"``, ``"gradescope"``, ``"student"`` to the bytes written."""
     from autograder.batch.class_run import GradingTask, Outputs
@@ -289,7 +294,7 @@ class DaskRunner:
     def __exit__(self, *exc):
         self.close()
 
-    def close(self):
+    def close(self) -> None:
         try:
             if self.previous_allowed_failures is not None and self.cluster is None:
                 self.client.run_on_scheduler(_set_allowed_failures, value=self.previous_allowed_failures)
@@ -299,7 +304,7 @@ class DaskRunner:
         if self.cluster is not None:
             self.cluster.close()
 
-    def workers(self):
+    def workers(self) -> list[str]:
         """Addresses of the workers that may take students (present and not refused)."""
         return sorted(set(self.client.nthreads()) - set(self.refused))
 
@@ -322,7 +327,7 @@ class DaskRunner:
                                    f"no Dask worker joined the scheduler within {WORKER_WAIT} s")
             time.sleep(0.5)
 
-    def check_workers(self):
+    def check_workers(self) -> None:
         """Run :func:`worker_verdict` on every present worker (in parallel); refuse the failing ones."""
         from distributed import wait
 
@@ -429,7 +434,7 @@ class DaskRunner:
                 write_atomically(path, files[kind].decode("utf-8"))
 
 
-def parse_address(spec):
+def parse_address(spec: str | None) -> tuple[str, int | str]:
     """``("local", N)`` for ``local:N``, else ``("remote", address)``; :class:`ClusterError` when neither."""
     spec = (spec or "").strip()
     if spec.startswith("local:"):
@@ -442,7 +447,7 @@ def parse_address(spec):
     raise ClusterError(f"--cluster {spec!r}: give a scheduler address such as tcp://HOST:8786, or local:N")
 
 
-def connect(spec, options, announce=None):
+def connect(spec: str, options: GradingOptions, announce: Callable[[str], None] | None = None) -> DaskRunner:
     """Start (``local:N``) or reach (``tcp://HOST:PORT``) a Dask cluster, check its workers, and return a
     :class:`DaskRunner`; :class:`ClusterError` with a clear message when that fails (nothing written)."""
     import logging
@@ -478,7 +483,8 @@ def connect(spec, options, announce=None):
     return runner_for(client, options, announce=announce, cluster=cluster, driver_parts=driver_parts)
 
 
-def runner_for(client, options, announce=None, cluster=None, driver_parts=None):
+def runner_for(client: object, options: GradingOptions, announce: Callable[[str], None] | None = None,
+               cluster: object = None, driver_parts: dict[str, str] | None = None) -> DaskRunner:
     """A checked :class:`DaskRunner` on an existing ``distributed.Client`` (a Dask Gateway cluster's
     ``get_client()``, say); ``cluster``, when given, is closed with the runner."""
     from autograder.grading.fingerprint import fingerprint_parts

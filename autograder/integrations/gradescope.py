@@ -10,6 +10,8 @@ otherwise) and writes ``$AUTOGRADER_ROOT/results/results.json`` in the schema of
 writes for every student to ``DIR/results/``).
 """
 
+from __future__ import annotations
+
 import json
 import os
 import shutil
@@ -57,7 +59,8 @@ cd "$ROOT/source" && exec "$PYTHON" -m autograder gradescope-run --root "$ROOT"
 BUNDLED = ("autograder", "solutions", "environment.txt", "pyproject.toml", "README.md", "SECURITY.md")
 
 
-def build_bundle(out, lessons=(), visibility=DEFAULT_VISIBILITY, nbval=True):
+def build_bundle(out: str | Path, lessons: tuple[str, ...] = (), visibility: str = DEFAULT_VISIBILITY,
+                 nbval: bool = True) -> Path:
     """Write the Gradescope zip to ``out``; return its path."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
@@ -81,7 +84,7 @@ def build_bundle(out, lessons=(), visibility=DEFAULT_VISIBILITY, nbval=True):
     return out
 
 
-def run_in_container(root):
+def run_in_container(root: str | Path) -> dict:
     """Grade ``root/submission`` and write ``root/results/results.json`` (never raises)."""
     from autograder.grading.pipeline import GradingOptions, grade_student
     from autograder.sandbox import process_tree
@@ -108,7 +111,7 @@ def run_in_container(root):
     return data
 
 
-def unpack_bundle(bundle, root):
+def unpack_bundle(bundle: str | Path, root: str | Path) -> Path:
     """Unzip a bundle the way Gradescope does (into ``root/source``), keeping the executable bits."""
     source = Path(root) / "source"
     if source.exists():

@@ -17,6 +17,8 @@ Examples
 >>> run_nbgrader(root, "generate_assignment", "lesson01")     # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import os
 import shutil
 import subprocess
@@ -26,7 +28,7 @@ from pathlib import Path
 import nbformat
 
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
+from autograder.lessons.catalog import Lesson, load_catalog
 from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE
 
 CONFIG = '''c = get_config()
@@ -37,12 +39,12 @@ c.ExecutePreprocessor.timeout = 120
 '''
 
 
-def assignment_name(lesson):
+def assignment_name(lesson: Lesson) -> str:
     """nbgrader's assignment name for a lesson: ``lesson01``."""
     return f"lesson{lesson.number}"
 
 
-def build_course(root, lessons=None, solutions_dir=SOLUTIONS):
+def build_course(root: str | Path, lessons: list[str] | None = None, solutions_dir: Path = SOLUTIONS) -> Path:
     """Write an nbgrader course with one assignment per lesson; return its root."""
     from autograder.authoring.release import CODE_STUB
 
@@ -69,7 +71,7 @@ def _write_student_master(master, target):
     shutil.copystat(master, target)
 
 
-def submit(root, student_id, lesson, notebook):
+def submit(root: str | Path, student_id: str, lesson: Lesson, notebook: str | Path) -> Path:
     """Place a student's notebook where ``nbgrader autograde`` looks for it."""
     folder = Path(root) / "submitted" / student_id / assignment_name(lesson)
     folder.mkdir(parents=True, exist_ok=True)
@@ -77,7 +79,7 @@ def submit(root, student_id, lesson, notebook):
     return folder
 
 
-def with_environment_tools(env=None):
+def with_environment_tools(env: dict[str, str] | None = None) -> dict[str, str]:
     """``env`` (default: ours) with this Python's ``bin/`` first on PATH.
 
     nbgrader runs the ``alembic`` command of its own environment to create a
@@ -88,7 +90,8 @@ def with_environment_tools(env=None):
     return env
 
 
-def run_nbgrader(root, *args, check=True, env=None):
+def run_nbgrader(root: str | Path, *args: str, check: bool = True,
+                 env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
     """Run ``nbgrader ARGS`` in the course root with this Python; return the CompletedProcess."""
     command = [sys.executable, "-m", "nbgrader", *args]
     env = with_environment_tools(env)

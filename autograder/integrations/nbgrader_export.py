@@ -29,12 +29,14 @@ Examples
 >>> export_to_gradebook(results, "nbgrader-course/gradebook.db")  # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import os
 import warnings
 
 from nbgrader.api import Gradebook, MissingEntry
 
-from autograder.grading.results import COULD_NOT_GRADE, MISSING
+from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.integrations.nbgrader_course import assignment_name, with_environment_tools
 from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
@@ -66,7 +68,7 @@ def _ensure_structure(url, lesson):
     return assignment, notebook
 
 
-def export_to_gradebook(results, database):
+def export_to_gradebook(results: list[StudentResult], database: str | os.PathLike) -> int:
     """Create assignments (as nbgrader would), students, and automatic scores for the lessons handed in;
     return the number of grade cells written."""
     catalog = load_catalog()

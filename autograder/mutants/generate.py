@@ -12,6 +12,8 @@ Examples
 ('rot_z.1f0c9a2e', 'sign')
 """
 
+from __future__ import annotations
+
 import ast
 import hashlib
 from dataclasses import dataclass
@@ -31,11 +33,11 @@ class Mutant:
     source: str
 
     @property
-    def key(self):
+    def key(self) -> str:
         return key_of(self.exercise, self.source)
 
 
-def key_of(exercise, source):
+def key_of(exercise: str, source: str) -> str:
     """``"exercise.hash"``: names a mutant by what it is (its normalised source), not by how it was made."""
     normalised = ast.unparse(ast.parse(source))
     return f"{exercise}.{hashlib.sha1(normalised.encode('utf-8')).hexdigest()[:8]}"
@@ -51,7 +53,7 @@ def _globals_of(setup_source):
 
 
 @lru_cache(maxsize=None)
-def mutants_of(exercise):
+def mutants_of(exercise: str) -> tuple[Mutant, ...]:
     """Every distinct mutant of ``exercise``'s reference answer, in operator order (a tuple)."""
     catalog = load_catalog()
     lesson = catalog.exercise(exercise).lesson
@@ -75,7 +77,7 @@ def mutants_of(exercise):
     return tuple(found)
 
 
-def all_mutants(exercises=None, lessons=None):
+def all_mutants(exercises: list[str] | None = None, lessons: list[str] | None = None) -> list[Mutant]:
     """The mutants of every graded exercise of the catalog (or of the ones named), lesson by lesson."""
     found = []
     for lesson in load_catalog().graded_lessons:

@@ -19,6 +19,8 @@ Examples
 True
 """
 
+from __future__ import annotations
+
 import contextlib
 import io
 import signal
@@ -67,7 +69,7 @@ class InProcessSandbox:
         ok, result, printed = self.worker.run_guarded(lambda: exec(code, namespace), self.limits.load_timeout)
         self.outcomes.append(CellOutcome(lesson, label, ok, "" if ok else str(result.get("message", "")), printed))
 
-    def namespace(self, lesson):
+    def namespace(self, lesson: str) -> dict:
         return self.worker.namespace(lesson)
 
     def _reply(self, text, timeout):
@@ -75,13 +77,14 @@ class InProcessSandbox:
         with _kept_streams():
             return self.worker.call_reply(call, timeout)
 
-    def check_callable(self, lesson, name):
+    def check_callable(self, lesson: str, name: str) -> None:
         return StudentSandbox.check_callable(self, lesson, name)
 
-    def take_reply(self, lesson, name, reply, timeout):
+    def take_reply(self, lesson: str, name: str, reply: dict, timeout: float) -> object:
         return StudentSandbox.take_reply(self, lesson, name, reply, timeout)
 
-    def call(self, lesson, name, args=(), kwargs=None, timeout=None, forbid=()):
+    def call(self, lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, timeout: float | None = None,
+             forbid: tuple = ()) -> object:
         from autograder.grading.transcripts import call_text
 
         timeout = self.limits.call_timeout if timeout is None else timeout
@@ -90,7 +93,7 @@ class InProcessSandbox:
         reply = self._reply(call_text(lesson, name, args, kwargs, timeout, forbid), timeout)
         return self.take_reply(lesson, name, reply, timeout)
 
-    def call_batch(self, calls, timeouts, budget=2.0):
+    def call_batch(self, calls: list[str], timeouts: list[float | None], budget: float = 2.0) -> list[dict]:
         replies, spent = [], 0.0
         for text, timeout in zip(calls, timeouts):
             reply = self._reply(text, self.limits.call_timeout if timeout is None else timeout)
@@ -111,7 +114,7 @@ def _kept_streams():
         sys.stdout, sys.stderr = saved
 
 
-def lesson_programs(lesson, overrides):
+def lesson_programs(lesson: str, overrides: dict[str, str]) -> dict[str, LessonProgram]:
     """``{lesson: LessonProgram}``: the master's setup and answers, with ``overrides`` ({exercise: source})."""
     catalog = load_catalog()
     sources = answer_sources()
@@ -131,7 +134,7 @@ class HiddenGrade:
     elsewhere: list = field(default_factory=list)  # other exercises that lost points
 
     @property
-    def killed(self):
+    def killed(self) -> bool:
         return self.points < self.max_points
 
 
@@ -140,7 +143,7 @@ def _score(max_points, checks):
     return round(max_points * sum(c.weight for c in checks if c.passed) / total, 2) if total else 0.0
 
 
-def grade_hidden(exercise, source, sandbox=None):
+def grade_hidden(exercise: str, source: str, sandbox: InProcessSandbox | None = None) -> HiddenGrade:
     """The hidden suite's verdict on ``source`` as the answer to ``exercise`` (other answers: the reference's)."""
     catalog = load_catalog()
     lesson = catalog.exercise(exercise).lesson
@@ -167,7 +170,7 @@ def _on_alarm(signum, frame):
     raise _Alarm()
 
 
-def run_public_checks(exercise, source, sandbox=None):
+def run_public_checks(exercise: str, source: str, sandbox: InProcessSandbox | None = None) -> tuple[bool, str]:
     """``(passed, printed)``: did every public check of ``exercise`` pass for the answer ``source``?
 
     The answer runs as the check cell would see it: after the lesson's setup cell

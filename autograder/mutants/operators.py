@@ -18,6 +18,8 @@ Examples
 ['degrees', 'drop_term', 'sign']
 """
 
+from __future__ import annotations
+
 import ast
 import copy
 from dataclasses import dataclass
@@ -472,7 +474,7 @@ def _docstring(node):
             and isinstance(node.value.value, str))
 
 
-def edits(tree, exercise, known_globals=("np",)):
+def edits(tree: ast.Module, exercise: str, known_globals: tuple[str, ...] = ("np",)) -> list[Edit]:
     """Every :class:`Edit` of the function ``exercise`` in ``tree`` (docstrings are left alone)."""
     functions = [n for n in ast.walk(tree) if isinstance(n, ast.FunctionDef)]
     main = next((f for f in functions if f.name == exercise), None)
@@ -498,14 +500,14 @@ def edits(tree, exercise, known_globals=("np",)):
     return found
 
 
-def apply(tree, edit):
+def apply(tree: ast.Module, edit: Edit) -> str:
     """The source of ``tree`` with ``edit`` made (``ast.unparse``: comments and layout are not kept)."""
     new_tree = _replace(tree, edit.node, edit.replacement)
     ast.fix_missing_locations(new_tree)
     return ast.unparse(new_tree)
 
 
-def describe(edit, limit=110):
+def describe(edit: Edit, limit: int = 110) -> str:
     """One line: what the edit does, ``old → new`` or its own words, with the line number."""
     if edit.what:
         text = edit.what

@@ -12,14 +12,17 @@ Targets (docs in the README): the hidden suite kills at least
 public checks at least :data:`PUBLIC_TARGET` of what the hidden suite kills.
 """
 
+from __future__ import annotations
+
 import multiprocessing
 import os
 import time
 import warnings
 from dataclasses import dataclass, field
+from typing import Callable
 
 from autograder.mutants.equivalent import EQUIVALENT
-from autograder.mutants.generate import all_mutants
+from autograder.mutants.generate import Mutant, all_mutants
 
 HIDDEN_TARGET = 0.98
 PUBLIC_TARGET = 0.90
@@ -43,11 +46,11 @@ class Outcome:
     error: str = ""  # the grading itself failed (counted as a survivor, and said)
 
     @property
-    def equivalent(self):
+    def equivalent(self) -> bool:
         return self.key in EQUIVALENT
 
 
-def grade_mutant(mutant):
+def grade_mutant(mutant: Mutant) -> Outcome:
     """The :class:`Outcome` of one mutant (both suites share one in-process sandbox)."""
     from autograder.mutants.inprocess import InProcessSandbox, grade_hidden, lesson_programs, run_public_checks
 
@@ -79,7 +82,8 @@ def _preload():
     import coursekit.checks  # noqa: F401  (importing registers every lesson's checks)
 
 
-def grade_all(mutants, jobs=None, progress=None):
+def grade_all(mutants: list[Mutant], jobs: int | None = None,
+              progress: Callable[[int, int], None] | None = None) -> list[Outcome]:
     """Outcomes of ``mutants``, in their order; ``jobs`` forked processes (default: the cores, at most 2)."""
     _preload()
     jobs = jobs or min(2, os.cpu_count() or 1)
@@ -110,20 +114,20 @@ class Row:
     survivors: list = field(default_factory=list)
 
     @property
-    def hidden_rate(self):
+    def hidden_rate(self) -> float:
         candidates = self.mutants - self.equivalent
         return self.hidden / candidates if candidates else 1.0
 
     @property
-    def public_rate(self):
+    def public_rate(self) -> float:
         return self.public / self.hidden if self.hidden else 1.0
 
     @property
-    def meets(self):
+    def meets(self) -> bool:
         return self.hidden_rate >= HIDDEN_TARGET and self.public_rate >= PUBLIC_TARGET
 
 
-def table(outcomes, exercises):
+def table(outcomes: list[Outcome], exercises: list[str]) -> tuple[list[Row], Row]:
     """One :class:`Row` per exercise (in ``exercises``' order) and a total row."""
     rows = {name: Row(name) for name in exercises}
     for outcome in outcomes:
@@ -146,7 +150,7 @@ def table(outcomes, exercises):
     return list(rows.values()), total
 
 
-def format_table(rows, total, markdown=False):
+def format_table(rows: list[Row], total: Row, markdown: bool = False) -> str:
     """The table as text (or as a Markdown table for the README)."""
     header = ["exercise", "mutants", "equivalent", "killed by hidden", "killed by public", "survivors",
               "hidden kill rate", "public / hidden", "targets"]
@@ -166,13 +170,15 @@ def format_table(rows, total, markdown=False):
     return "\n".join(out)
 
 
-def stale_equivalents(mutants):
+def stale_equivalents(mutants: list[Mutant]) -> list[str]:
     """Keys in :data:`EQUIVALENT` that no generated mutant has (the reference changed: review them)."""
     keys = {m.key for m in mutants}
     return sorted(key for key in EQUIVALENT if key not in keys)
 
 
-def main(exercises=None, lessons=None, jobs=None, markdown=False, show_survivors=True, out=print, save=None):
+def main(exercises: list[str] | None = None, lessons: list[str] | None = None, jobs: int | None = None,
+         markdown: bool = False, show_survivors: bool = True, out: Callable[[str], None] = print,
+         save: str | None = None) -> int:
     """Generate, grade and report; return 0 when every exercise meets both targets, else 1.
 
     ``save``: a path to write every outcome to, as JSON (for reading survivors and hints at leisure).

@@ -16,6 +16,8 @@ Examples
 'def rot_z(angle'
 """
 
+from __future__ import annotations
+
 import multiprocessing
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -24,6 +26,7 @@ from pathlib import Path
 from autograder.grading.extract import lesson_program
 from autograder.grading.submissions import match_lessons, scan_submissions
 from autograder.lessons import cells
+from autograder.lessons.catalog import Catalog
 from autograder.lessons.notebook_files import read_master, read_submission
 from autograder.lessons.paths import COURSE
 
@@ -38,11 +41,11 @@ class ClassAnswers:
     unread: dict = field(default_factory=dict)
 
     @property
-    def authors(self):
+    def authors(self) -> list[str]:
         return sorted({author for answers in self.by_exercise.values() for author in answers} | set(self.unread))
 
 
-def student_answers(folder, catalog):
+def student_answers(folder: Path, catalog: Catalog) -> dict[str, str]:
     """``{exercise: source}`` of one student's folder (lessons matched by content, cells by grade_id)."""
     found, parsed = {}, {}
 
@@ -69,7 +72,7 @@ def _one_student(folder, catalog):
         return None, f"{type(error).__name__}: {error}"
 
 
-def read_class(path, catalog, prefix="", jobs=1):
+def read_class(path: str | Path, catalog: Catalog, prefix: str = "", jobs: int = 1) -> ClassAnswers:
     """Every student's answers under ``path`` (any layout :mod:`~autograder.grading.submissions` reads).
 
     ``prefix`` is put before each student id (``"past term/"`` for a past class), so authors from
@@ -93,7 +96,7 @@ def read_class(path, catalog, prefix="", jobs=1):
 
 
 @lru_cache(maxsize=None)
-def released_stubs(course_dir=COURSE):
+def released_stubs(course_dir: Path = COURSE) -> dict[str, str]:
     """``{exercise: the answer cell as released in course/}``: what every student started from."""
     stubs = {}
     for path in sorted(Path(course_dir).glob("[0-9][0-9]_*.ipynb")):

@@ -29,10 +29,13 @@ Examples
 [(('ana', 'bo'), ('rot_z', 'quat_multiply'))]
 """
 
+from __future__ import annotations
+
 import multiprocessing
 from dataclasses import dataclass, field
 
 import numpy as np
+from copydetect import CodeFingerprint
 
 from autograder.similarity.fingerprints import fingerprint, longest_coverage, share_of_smaller, shared_counts
 
@@ -68,7 +71,7 @@ class Cluster:
     pairs: tuple
 
     @property
-    def score(self):
+    def score(self) -> float:
         return max(pair.score for pair in self.pairs)
 
 
@@ -81,14 +84,14 @@ class Findings:
     sources: dict = field(default_factory=dict)  # (exercise, author) -> (answer, stub), for the views
     unread: dict = field(default_factory=dict)  # author -> why their folder could not be read
 
-    def fingerprint(self, exercise, author):
+    def fingerprint(self, exercise: str, author: str) -> CodeFingerprint | None:
         """The fingerprint of ``author``'s answer to ``exercise`` (made here, for a side-by-side view), or None."""
         if (exercise, author) not in self.sources:
             return None
         return fingerprint(*self.sources[exercise, author])
 
 
-def pair_threshold(scores, answers):
+def pair_threshold(scores: list[float] | np.ndarray, answers: int) -> float:
     """``max(PAIR_FLOOR, median + SPREAD · 1.4826 · MAD)`` of an exercise's pair ``scores`` among ``answers``
     answers (the floor alone below :data:`MIN_ANSWERS_FOR_SPREAD`)."""
     scores = np.asarray(scores, dtype=float)
@@ -110,7 +113,7 @@ class ExerciseFindings:
     compared: int
 
 
-def distinct_fingerprints(sources, stub):
+def distinct_fingerprints(sources: list[str], stub: str) -> tuple[list[CodeFingerprint], list[int]]:
     """``(prints, index)``: one fingerprint per distinct text of ``sources`` long enough to compare, and for
     each source the position of its fingerprint in ``prints`` (-1: the untouched stub or too short).
 
@@ -135,7 +138,8 @@ def distinct_fingerprints(sources, stub):
     return prints, index
 
 
-def score_exercise(exercise, current, past, reference, stub):
+def score_exercise(exercise: str, current: dict[str, str], past: dict[str, str], reference: str | None,
+                   stub: str) -> ExerciseFindings:
     """The :class:`ExerciseFindings` of one exercise, in one pass.
 
     ``current`` and ``past``: ``{author: source}`` of this class and of past terms; ``reference``: the
@@ -193,7 +197,7 @@ def _scored(tasks, jobs):
     return results
 
 
-def clusters_of(pairs):
+def clusters_of(pairs: list[Pair]) -> list[Cluster]:
     """Connected components of the flagged ``pairs``, strongest first."""
     parent = {}
 
@@ -218,7 +222,9 @@ def clusters_of(pairs):
     return sorted(found, key=lambda c: (-len(c.exercises), -c.score, c.members))
 
 
-def find_similar(current, references, stubs, past=None, unread=None, jobs=1):
+def find_similar(current: dict[str, dict[str, str]], references: dict[str, str], stubs: dict[str, str],
+                 past: dict[str, dict[str, str]] | None = None, unread: dict[str, str] | None = None,
+                 jobs: int = 1) -> Findings:
     """The findings of a class.
 
     Parameters

@@ -26,6 +26,8 @@ Examples
 1.0
 """
 
+from __future__ import annotations
+
 import ast
 import io
 import warnings
@@ -45,7 +47,7 @@ WINDOW = 1
 MARK_OPEN, MARK_CLOSE = "<mark>", "</mark>"
 
 
-def fingerprint(source, boilerplate_source=""):
+def fingerprint(source: str, boilerplate_source: str = "") -> CodeFingerprint | None:
     """copydetect's :class:`CodeFingerprint` of ``source`` without the fingerprints of ``boilerplate_source``.
 
     Parameters
@@ -64,7 +66,7 @@ def fingerprint(source, boilerplate_source=""):
     return _fingerprint(source, boilerplate)
 
 
-def longest_coverage(source, boilerplate_source=""):
+def longest_coverage(source: str, boilerplate_source: str = "") -> int:
     """An upper bound of ``fingerprint(source, boilerplate_source).token_coverage``, without tokenising.
 
     Tokenising drops whitespace and comments and writes a name or a string as one character, so the
@@ -112,7 +114,7 @@ def _fingerprint(source, boilerplate):
                                fp=io.StringIO(source))
 
 
-def shared_counts(fingerprints):
+def shared_counts(fingerprints: list[CodeFingerprint]) -> tuple[np.ndarray, np.ndarray]:
     """``(C, sizes)``: ``C[i, j]`` fingerprints that answers i and j both have, shape (n, n), and each
     answer's number of fingerprints, shape (n,).
 
@@ -133,14 +135,14 @@ def shared_counts(fingerprints):
     return (incidence @ incidence.T).toarray(), sizes
 
 
-def share_of_smaller(counts, sizes):
+def share_of_smaller(counts: np.ndarray, sizes: np.ndarray) -> np.ndarray:
     """``counts[i, j] / min(sizes[i], sizes[j])`` (0 where an answer has no fingerprint), shape (n, n)."""
     smaller = np.minimum.outer(sizes, sizes).astype(float)
     with np.errstate(invalid="ignore", divide="ignore"):
         return np.where(smaller > 0, counts.astype(float) / np.where(smaller > 0, smaller, 1), 0.0)
 
 
-def shared_share(fingerprints):
+def shared_share(fingerprints: list[CodeFingerprint]) -> np.ndarray:
     """``S[i, j]``: share of the smaller of answers i and j's fingerprints that both have, shape (n, n).
 
     The diagonal is 1 for an answer with fingerprints; an answer without any shares nothing.
@@ -152,7 +154,7 @@ def shared_share(fingerprints):
     return share_of_smaller(*shared_counts(fingerprints))
 
 
-def highlighted(first, second, limit=6000):
+def highlighted(first: CodeFingerprint, second: CodeFingerprint, limit: int = 6000) -> tuple[str, str]:
     """Both answers as escaped HTML with the spans they share in ``<mark>``; ``limit`` characters each."""
     _, _, (slices_first, slices_second) = compare_files(first, second)
     return _marked(first.raw_code, slices_first, limit), _marked(second.raw_code, slices_second, limit)

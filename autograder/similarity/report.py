@@ -13,12 +13,14 @@ Examples
 True
 """
 
+from __future__ import annotations
+
 import csv
 import io
 
 from autograder.lessons.untrusted_text import csv_cell
 from autograder.lessons.untrusted_text import html_text as escape
-from autograder.similarity.findings import REFERENCE
+from autograder.similarity.findings import REFERENCE, Findings, Pair
 from autograder.similarity.fingerprints import K, highlighted
 
 LOCAL = ("Computed on this machine: no answer was sent anywhere. A finding is worth a look, not a verdict: "
@@ -61,7 +63,7 @@ def _cluster_html(findings, number, cluster):
             f"<p>Students: {members}. Exercises: {exercises}.</p>" + "".join(views))
 
 
-def reference_matches_by_student(findings):
+def reference_matches_by_student(findings: Findings) -> dict[str, list[Pair]]:
     """``{student: [reference-match Pair, ...]}``, students in order."""
     grouped = {}
     for pair in findings.reference_matches:
@@ -69,7 +71,7 @@ def reference_matches_by_student(findings):
     return grouped
 
 
-def similar_answers_html(findings):
+def similar_answers_html(findings: Findings) -> str:
     """The "Similar answers" section (an HTML fragment with its own small style sheet)."""
     parts = [f"<style>{STYLE}</style><h2>Similar answers</h2><p>{escape(LOCAL)}</p>"]
     compared = sum(findings.compared.values())
@@ -100,7 +102,7 @@ def similar_answers_html(findings):
     return "\n".join(parts)
 
 
-def similar_answers_csv(findings):
+def similar_answers_csv(findings: Findings) -> str:
     """One row per flagged pair and per reference match: the finding it belongs to, the exercise, both
     authors, the score, the exercise's bar and the k-grams the two share (spreadsheet-safe cells)."""
     buffer = io.StringIO()

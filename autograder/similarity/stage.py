@@ -11,20 +11,23 @@ Examples
 >>> paths = write_findings(findings, Path("out"))                          # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import os
 from pathlib import Path
+from typing import Callable
 
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.reference import answer_sources
 from autograder.similarity.answers import read_class, released_stubs
-from autograder.similarity.findings import find_similar
+from autograder.similarity.findings import Findings, find_similar
 from autograder.similarity.report import similar_answers_csv, similar_answers_html
 
 CSV_NAME = "similar_answers.csv"
 HTML_NAME = "similar_answers.html"
 
 
-def similarity_of_class(path, past=(), jobs=None):
+def similarity_of_class(path: str | Path, past: tuple | list = (), jobs: int | None = None) -> Findings:
     """The :class:`~autograder.similarity.findings.Findings` of the class under ``path``.
 
     ``past``: folders of past terms' submissions (same layouts); their authors are named
@@ -44,7 +47,8 @@ def similarity_of_class(path, past=(), jobs=None):
                         jobs=jobs)
 
 
-def write_findings(findings, out_dir, write=None):
+def write_findings(findings: Findings, out_dir: str | Path,
+                   write: Callable[[Path, str], None] | None = None) -> tuple[Path, Path]:
     """Write ``similar_answers.csv`` and a stand-alone ``similar_answers.html`` into ``out_dir``.
 
     ``write(path, text)``: how to write a file (the batch's atomic writer); a plain write by default.
