@@ -23,6 +23,8 @@ Examples
 >>> out, pages, warnings = build_book("_build/book")          # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import os
 import re
 import shutil
@@ -138,7 +140,7 @@ def _alt_text_from_captions(page, root):
         page.write_text(changed, encoding="utf-8")
 
 
-def stage(solutions_dir, staging):
+def stage(solutions_dir: str | Path, staging: str | Path) -> list[str]:
     """Write the book's sources into ``staging``: the solved lessons, coursekit, conf.py and MathJax."""
     solutions_dir, staging = Path(solutions_dir), Path(staging)
     masters = sorted(solutions_dir.glob("[0-9][0-9]_*.ipynb"))
@@ -163,7 +165,8 @@ def stage(solutions_dir, staging):
     return names
 
 
-def build_book(out, solutions_dir=SOLUTIONS, timeout=180, jobs=2, keep_staging=None):
+def build_book(out: str | Path, solutions_dir: str | Path = SOLUTIONS, timeout: float = 180, jobs: int = 2,
+               keep_staging: str | Path | None = None) -> tuple[Path, list[str], str]:
     """Build the book into ``out`` (replaced); return (out, the lesson names, Sphinx's warnings as text).
 
     Raises BookFailed with Sphinx's own report when a lesson raises or the

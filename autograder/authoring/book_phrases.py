@@ -20,6 +20,8 @@ Examples
 'Test it on pairs you can see in your head.'
 """
 
+from __future__ import annotations
+
 import re
 
 __all__ = ["reader_phrasing", "LAB_ONLY_PHRASES"]
@@ -64,7 +66,7 @@ def _capital(match, replacement):
     return re.sub(r"^[Yy]he", lambda m: "The" if m.group(0)[0] == "Y" else "the", text)
 
 
-def reader_phrasing(text):
+def reader_phrasing(text: str) -> str:
     """``text`` (markdown, or a code cell's source) as the reader's edition says it.
 
     Parameters

@@ -6,14 +6,18 @@ Examples
 ...                       cwd="solutions")                      # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import base64
 import os
 from pathlib import Path
 
+import nbformat
 from nbclient import NotebookClient
 
 
-def execute_notebook(nb, cwd, timeout=120, allow_errors=False, inline_figures=True):
+def execute_notebook(nb: nbformat.NotebookNode, cwd: str | Path, timeout: float = 120, allow_errors: bool = False,
+                     inline_figures: bool = True) -> nbformat.NotebookNode:
     """Execute ``nb`` (modified in place and returned) with ``cwd`` as working directory.
 
     ``inline_figures`` keeps matplotlib's inline backend so figures come back
@@ -33,7 +37,7 @@ def execute_notebook(nb, cwd, timeout=120, allow_errors=False, inline_figures=Tr
     return nb
 
 
-def errors(nb):
+def errors(nb: nbformat.NotebookNode) -> list[tuple[int, str, str]]:
     """(cell index, ename, evalue) for every error output of an executed notebook."""
     found = []
     for index, cell in enumerate(nb.cells):
@@ -43,7 +47,7 @@ def errors(nb):
     return found
 
 
-def save_figures(nb, directory, prefix):
+def save_figures(nb: nbformat.NotebookNode, directory: str | Path, prefix: str) -> list[Path]:
     """Write every PNG output of an executed notebook to ``directory``; return the paths."""
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)

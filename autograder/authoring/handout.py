@@ -19,6 +19,8 @@ Examples
 PosixPath('course.zip')
 """
 
+from __future__ import annotations
+
 import os
 import stat
 import time
@@ -92,18 +94,18 @@ the check cells and figures use it.
 """
 
 
-def student_requirements():
+def student_requirements() -> str:
     """The students' ``requirements.txt`` text: the direct requirements, each with its tested range."""
     return requirements_text()
 
 
-def readme():
+def readme() -> str:
     """The hand-out's ``README.md``: which Pythons and versions work, how to install, how to hand in."""
     pythons = ", ".join(PYTHONS[:-1]) + " and " + PYTHONS[-1]
     return README.format(pythons=pythons, floor=python_floor_text(), table=floor_table())
 
 
-def handout_files():
+def handout_files() -> dict[str, bytes]:
     """``{path inside the zip: bytes}`` for the hand-out."""
     files = {}
     for path in sorted(COURSE.glob("*.ipynb")):
@@ -117,7 +119,7 @@ def handout_files():
     return files
 
 
-def packed_at():
+def packed_at() -> tuple[int, int, int, int, int, int]:
     """The date every file of the zip carries: now, or ``SOURCE_DATE_EPOCH`` for reproducible bytes.
 
     A real date, because unzipping gives each file this time: a fixed date in the past would make an
@@ -129,7 +131,7 @@ def packed_at():
     return tuple(max(moment[:6], (1980, 1, 1, 0, 0, 0)))  # the zip format starts in 1980
 
 
-def build_handout(out):
+def build_handout(out: str | Path) -> Path:
     """Write the hand-out zip to ``out``; return its path."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)

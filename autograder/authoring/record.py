@@ -6,6 +6,8 @@ Agg backend, as in grading) and stores the text printed by cells tagged
 these outputs, and ``pytest --nbval-lax solutions/`` checks they are current.
 """
 
+from __future__ import annotations
+
 from pathlib import Path
 
 from autograder.authoring.execute import errors, execute_notebook
@@ -18,7 +20,7 @@ class RecordingFailed(RuntimeError):
     """A master raised an error while its outputs were being recorded."""
 
 
-def record_outputs(solutions_dir=SOLUTIONS, only=None):
+def record_outputs(solutions_dir: str | Path = SOLUTIONS, only: list[str] | None = None) -> list[str]:
     """Execute each master (or those whose name starts with one of ``only``); return changed files."""
     changed = []
     for path in sorted(Path(solutions_dir).glob("[0-9][0-9]_*.ipynb")):

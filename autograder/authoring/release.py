@@ -15,6 +15,8 @@
 differs from what release would write.
 """
 
+from __future__ import annotations
+
 import shutil
 from pathlib import Path
 
@@ -45,7 +47,7 @@ def _clean_output(output):
     return None
 
 
-def normalize_master(nb):
+def normalize_master(nb: NotebookNode) -> NotebookNode:
     """Strip execution noise from a master, keeping recorded demonstration outputs.
 
     Only cells tagged ``nbval-check-output`` keep outputs (printed text and
@@ -79,7 +81,7 @@ def normalize_master(nb):
     return nb
 
 
-def student_version(master):
+def student_version(master: NotebookNode) -> NotebookNode:
     """The notebook students get for one master (see the module docstring)."""
     from nbgrader.preprocessors import (ClearHiddenTests, ClearMarkScheme, ClearOutput,
                                         ClearSolutions, ComputeChecksums, LockCells)
@@ -109,7 +111,7 @@ def _support_files(solutions_dir):
             yield path.relative_to(solutions_dir)
 
 
-def planned_files(solutions_dir=SOLUTIONS):
+def planned_files(solutions_dir: str | Path = SOLUTIONS) -> dict[tuple[str, str], str]:
     """Map each generated file (relative path under course/ or solutions/) to its text."""
     solutions_dir = Path(solutions_dir)
     plan = {}
@@ -126,7 +128,7 @@ def _target_dirs(solutions_dir, course_dir):
     return {"solutions": Path(solutions_dir), "course": Path(course_dir)}
 
 
-def stale_files(solutions_dir=SOLUTIONS, course_dir=COURSE):
+def stale_files(solutions_dir: str | Path = SOLUTIONS, course_dir: str | Path = COURSE) -> list[tuple[str, str]]:
     """What release would change: a sorted list of (path, reason)."""
     dirs = _target_dirs(solutions_dir, course_dir)
     plan = planned_files(solutions_dir)
@@ -145,7 +147,7 @@ def stale_files(solutions_dir=SOLUTIONS, course_dir=COURSE):
     return sorted(problems)
 
 
-def release(solutions_dir=SOLUTIONS, course_dir=COURSE):
+def release(solutions_dir: str | Path = SOLUTIONS, course_dir: str | Path = COURSE) -> list[str]:
     """Write course/ (and normalise the masters); return the list of files written."""
     dirs = _target_dirs(solutions_dir, course_dir)
     written = []

@@ -13,6 +13,8 @@ answers (the same correct alternative, one with its variables renamed), so
 the class report's "Similar answers" shows what a finding looks like.
 """
 
+from __future__ import annotations
+
 import ast
 import io
 import json
@@ -21,8 +23,10 @@ import tokenize
 from dataclasses import dataclass
 from pathlib import Path
 
+import nbformat
+
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
+from autograder.lessons.catalog import Lesson, load_catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import COURSE
 from autograder.lessons.reference import answer_sources
@@ -77,7 +81,7 @@ def _wrong(source):
     return "\n".join(kept).rstrip() + "\n" + WRONG_ANSWER
 
 
-def rename_locals(source, prefix="my_"):
+def rename_locals(source: str, prefix: str = "my_") -> str:
     """``source`` (one function) with each local variable renamed ``prefix + name``: the simplest disguise
     of a copy. The signature stays as released (callers may pass arguments by name); attributes,
     keywords and the function's own name are left alone."""
@@ -110,7 +114,8 @@ def _answer_for(student, exercise_name, index, count, stub, references, mistakes
     return references[exercise_name]
 
 
-def student_notebook(student, lesson, references, mistakes, chosen):
+def student_notebook(student: SampleStudent, lesson: Lesson, references: dict[str, str], mistakes: dict,
+                     chosen: list[str]) -> nbformat.NotebookNode:
     """The notebook ``student`` hands in for ``lesson`` (a NotebookNode)."""
     nb = read_master(COURSE / lesson.filename)
     names = [e.name for e in lesson.exercises]
@@ -129,7 +134,7 @@ def student_notebook(student, lesson, references, mistakes, chosen):
     return nb
 
 
-def build_sample_class(target, lessons=()):
+def build_sample_class(target: str | Path, lessons: tuple[str, ...] = ()) -> list[str]:
     """Write every sample student's notebooks to ``target/<student_id>/``; return the ids.
 
     ``lessons``: only these lesson numbers (default: every graded lesson).

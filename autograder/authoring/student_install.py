@@ -19,6 +19,8 @@ Examples
 numpy==1.23.5
 """
 
+from __future__ import annotations
+
 # The oldest Python the lessons are run with, and the newest the install list is resolved for.
 PYTHON_FLOOR = (3, 10)
 PYTHONS = ("3.10", "3.11", "3.12", "3.13", "3.14")
@@ -40,18 +42,18 @@ HEADER = ("# What the course's notebooks need: the direct requirements, each wit
           "# that suit your Python.\n")
 
 
-def requirements_text():
+def requirements_text() -> str:
     """The hand-out's ``requirements.txt``: one ``name>=floor,<ceiling`` line per package."""
     return HEADER + "".join(f"{name}>={floor},<{ceiling}\n" for name, floor, ceiling, _ in PACKAGES)
 
 
-def floors_text():
+def floors_text() -> str:
     """A pip constraints file that holds every package at its floor (``pip install -r ... -c floors``)."""
     return ("# Every direct requirement at its floor: the oldest versions the lessons are run with.\n"
             + "".join(f"{name}=={floor}\n" for name, floor, _, _ in PACKAGES))
 
 
-def python_floor_text():
+def python_floor_text() -> str:
     return ".".join(str(part) for part in PYTHON_FLOOR)
 
 
@@ -92,7 +94,7 @@ print("Python %s: good for this course." % sys.version.split()[0])
 '''
 
 
-def check_python_text():
+def check_python_text() -> str:
     """``check_python.py``: one line, and exit status 1, on a Python older than the floor.
 
     Written so that any Python, 2.7 included, can run it (no f-strings), so the message and not a
@@ -101,7 +103,7 @@ def check_python_text():
     return CHECK_PYTHON.format(floor=PYTHON_FLOOR, floor_text=python_floor_text())
 
 
-def floor_table():
+def floor_table() -> str:
     """The README's table of packages, their tested range and why each floor is what it is (markdown)."""
     rows = ["| package | tested from | up to (not incl.) | why this floor |", "| --- | --- | --- | --- |"]
     for name, floor, ceiling, why in PACKAGES:
