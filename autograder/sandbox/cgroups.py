@@ -14,6 +14,8 @@ Examples
 >>> group.kill_all(); group.remove()                                     # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import functools
 import itertools
 import os
@@ -31,7 +33,7 @@ def _write(path, text):
 
 
 @functools.lru_cache(maxsize=1)
-def flavour():
+def flavour() -> str | None:
     """``"v2"``, ``"v1"`` or ``None``: which cgroup interface this grader can use."""
     if os.geteuid() != 0:
         return None
@@ -63,7 +65,7 @@ class SandboxCgroup:
         self.directories = directories
 
     @classmethod
-    def create(cls, label, memory_bytes, pids):
+    def create(cls, label: str, memory_bytes: int, pids: int) -> SandboxCgroup | None:
         """A new cgroup with the limits, or None when cgroups are not usable here."""
         kind = flavour()
         name = f"autograder-{os.getpid()}-{next(_counter)}-{label}"
@@ -87,12 +89,12 @@ class SandboxCgroup:
             return None
         return None
 
-    def join(self):
+    def join(self) -> None:
         """Move the calling process into the cgroup (call in the child before exec)."""
         for directory in self.directories:
             _write(directory / "cgroup.procs", str(os.getpid()))
 
-    def pids(self):
+    def pids(self) -> list[int]:
         found = set()
         for directory in self.directories:
             try:
@@ -101,7 +103,7 @@ class SandboxCgroup:
                 pass
         return found
 
-    def kill_all(self):
+    def kill_all(self) -> None:
         """SIGKILL every process in the cgroup, until none is left (new ones may be forking)."""
         for _ in range(50):
             pids = self.pids()
@@ -114,7 +116,7 @@ class SandboxCgroup:
                     pass
             time.sleep(0.01)
 
-    def remove(self):
+    def remove(self) -> None:
         for directory in self.directories:
             for _ in range(50):
                 try:

@@ -15,7 +15,10 @@ Examples
 True
 """
 
+from __future__ import annotations
+
 import contextlib
+from collections.abc import Iterator
 import os
 import re
 import stat
@@ -52,7 +55,7 @@ def _first_entry(fd):
     return None
 
 
-def remove_tree(path):
+def remove_tree(path: str | os.PathLike) -> bool:
     """Remove ``path`` and everything under it; return True when it is gone.
 
     Never raises for what is inside (a file that cannot be removed is left, and the result is False).
@@ -146,14 +149,14 @@ def _remove_child_folder(fd, child_stat, depth, stuck):
                 return
 
 
-def private_folder(kind):
+def private_folder(kind: str) -> str:
     """A new folder under the temporary directory, named for this process (``autograder-KIND-pPID-…``),
     so that :func:`sweep_stale` can tell one a killed grader left behind."""
     return tempfile.mkdtemp(prefix=f"autograder-{kind}-p{os.getpid()}-")
 
 
 @contextlib.contextmanager
-def private_folder_for(kind):
+def private_folder_for(kind: str) -> Iterator[str]:
     """:func:`private_folder` for a ``with`` block, removed (whatever is in it) at its end."""
     path = private_folder(kind)
     try:
@@ -165,7 +168,7 @@ def private_folder_for(kind):
 _OURS = re.compile(r"^autograder-[a-z0-9]+-p(\d+)-")
 
 
-def sweep_stale():
+def sweep_stale() -> int:
     """Remove the folders of :func:`private_folder` whose process is gone (a grader killed mid-batch).
     Returns how many were removed."""
     removed = 0

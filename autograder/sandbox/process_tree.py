@@ -6,6 +6,8 @@ The grading process makes itself a *child subreaper* (Linux
 init, so walking our descendants in ``/proc`` finds it.
 """
 
+from __future__ import annotations
+
 import ctypes
 import os
 import signal
@@ -13,7 +15,7 @@ import signal
 PR_SET_CHILD_SUBREAPER = 36
 
 
-def become_subreaper():
+def become_subreaper() -> bool:
     """Ask Linux to re-parent orphaned descendants to this process; True if it worked."""
     try:
         libc = ctypes.CDLL(None, use_errno=True)
@@ -39,7 +41,7 @@ def _parent_map():
     return parents
 
 
-def descendants(pid=None):
+def descendants(pid: int | None = None) -> list[int]:
     """PIDs of every live descendant of ``pid`` (default: this process)."""
     root = os.getpid() if pid is None else pid
     children = {}
@@ -53,7 +55,7 @@ def descendants(pid=None):
     return found
 
 
-def kill_descendants(pid=None, keep=()):
+def kill_descendants(pid: int | None = None, keep: tuple[int, ...] = ()) -> int:
     """SIGKILL every descendant of ``pid`` except those in ``keep``; return how many."""
     victims = [p for p in descendants(pid) if p not in keep]
     for victim in victims:

@@ -16,6 +16,8 @@ Examples
 array([[1., 0., 0.], ...
 """
 
+from __future__ import annotations
+
 import os
 import selectors
 import signal
@@ -181,7 +183,7 @@ class StudentSandbox:
         self.process = None
         self.loaded = False
 
-    def close(self):
+    def close(self) -> None:
         if self.process is not None:
             try:
                 self._send({"op": "bye"})
@@ -197,7 +199,7 @@ class StudentSandbox:
             cleanup.remove_tree(self._tmp)  # in limits mode, whatever the student left there (any depth)
             self._tmp = None
 
-    def hand_over(self):
+    def hand_over(self) -> tuple[int, int]:
         """Load the student's cells and hand over the worker's two pipe ends: ``(request fd, reply fd)``.
 
         The notebook stage's kernel calls the student's functions through them (``child/student_client.py``).
@@ -316,7 +318,7 @@ class StudentSandbox:
                     raise StudentError("crash", "the student's code crashed the sandbox too many times") from None
 
     # ------------------------------------------------------------ calls
-    def check_callable(self, lesson, name):
+    def check_callable(self, lesson: str, name: str) -> None:
         """Raise the :class:`StudentError` a call of ``name`` would get without running (budget, hang)."""
         if self.time_used > self.limits.student_seconds:
             raise StudentError("timeout", f"not run: this student's code already used its "
@@ -325,7 +327,8 @@ class StudentSandbox:
             raise StudentError("timeout", f"{name} did not return within {self.hung[(lesson, name)]:g} s "
                                           "in an earlier check, so it was not called again")
 
-    def call(self, lesson, name, args=(), kwargs=None, timeout=None, forbid=()):
+    def call(self, lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, timeout: float | None = None,
+             forbid: tuple = ()) -> object:
         """Call the student's ``name`` from ``lesson``; return the decoded value.
 
         ``forbid``: library functions the call must not use (see :mod:`coursekit.watching`).
@@ -354,7 +357,7 @@ class StudentSandbox:
             raise StudentError("crash", f"calling {name}, the student's process {reason}") from None
         return self.take_reply(lesson, name, reply, timeout)
 
-    def take_reply(self, lesson, name, reply, timeout):
+    def take_reply(self, lesson: str, name: str, reply: dict, timeout: float) -> object:
         """The value of a call's reply, or the :class:`StudentError` it stands for (as :meth:`call`).
 
         A call that changed its arguments in place still returns its value; their names are kept in
@@ -392,7 +395,7 @@ class StudentSandbox:
             raise StudentError(kind, f"{name} {error.get('message', '')}", stdout)
         raise StudentError(kind, f"{name} raised {_format_error(error)}", stdout)
 
-    def call_batch(self, calls, timeouts, budget=2.0):
+    def call_batch(self, calls: list[str], timeouts: list[float | None], budget: float = 2.0) -> list[dict] | None:
         """Make several calls in one round trip; return their raw replies, in order, or None.
 
         ``calls`` are the calls as wire text (``{"lesson", "name", "args",
@@ -449,7 +452,8 @@ def _status_reason(status):
     return _code_reason(os.WEXITSTATUS(status))
 
 
-def call_request(lesson, name, args, kwargs, timeout, forbid=()):
+def call_request(lesson: str, name: str, args: tuple | list, kwargs: dict | None, timeout: float | None,
+                 forbid: tuple = ()) -> dict:
     """The worker's request for one call (see ``child/worker.py``); ``forbid`` only when not empty."""
     request = {"op": "call", "lesson": lesson, "name": name, "args": list(args), "kwargs": dict(kwargs or {}),
                "timeout": timeout}

@@ -27,6 +27,8 @@ Examples
 ...     pool.enter(0)                      # in a forked grader: StudentSandbox now forks from slot 0
 """
 
+from __future__ import annotations
+
 import json
 import os
 import secrets
@@ -49,7 +51,7 @@ class SlotBroken(RuntimeError):
     """A slot's zygote is gone or did not answer: the slot must be discarded."""
 
 
-def enabled():
+def enabled() -> bool:
     """Whether this machine grades with warm slots (namespaces isolation, not turned off)."""
     return launcher.isolation()[0] == "namespaces" and os.environ.get("AUTOGRADER_WARM", "1") != "0"
 
@@ -68,7 +70,7 @@ class WarmWorker:
             self.returncode = -os.WTERMSIG(status) if os.WIFSIGNALED(status) else os.WEXITSTATUS(status)
         return self.returncode
 
-    def poll(self):
+    def poll(self) -> int | None:
         if self.returncode is None:
             try:
                 self._take(self.slot.status(self.pid, 0))
@@ -76,7 +78,7 @@ class WarmWorker:
                 self.returncode = -signal.SIGKILL  # the whole sandbox went down with the zygote
         return self.returncode
 
-    def wait(self, timeout=None):
+    def wait(self, timeout: float | None = None) -> int | None:
         if self.returncode is None:
             try:
                 if self._take(self.slot.status(self.pid, REPLY_SECONDS if timeout is None else timeout)) is None:
@@ -85,7 +87,7 @@ class WarmWorker:
                 self.returncode = -signal.SIGKILL
         return self.returncode
 
-    def stop(self):
+    def stop(self) -> None:
         """Kill this worker and everything it started (all of it lives in the namespaces its feeder heads);
         close the pipes."""
         try:
@@ -111,7 +113,7 @@ class WarmSlot:
         self.broken = False
 
     # ------------------------------------------------------------ lifecycle (the batch's parent)
-    def spawn(self):
+    def spawn(self) -> None:
         """Start the sandbox; :meth:`wait_ready` then waits for its zygote. A slot that cannot start is
         left broken: its graders use cold sandboxes."""
         try:
@@ -135,7 +137,7 @@ class WarmSlot:
         self.control = ours
         self.broken = False
 
-    def wait_ready(self):
+    def wait_ready(self) -> None:
         if not self.usable():
             return
         try:
@@ -143,7 +145,7 @@ class WarmSlot:
         except SlotBroken:
             self.discard()
 
-    def close(self):
+    def close(self) -> None:
         """Stop the sandbox and remove its folders (the parent that started it)."""
         if self.process is not None:
             launcher.terminate(self.process)
@@ -155,13 +157,13 @@ class WarmSlot:
             cleanup.remove_tree(self._base)
             self._base = None
 
-    def alive(self):
+    def alive(self) -> bool:
         return self.process is not None and not self.broken and self.process.poll() is None
 
-    def usable(self):
+    def usable(self) -> bool:
         return self.process is not None and self.control is not None and not self.broken
 
-    def discard(self):
+    def discard(self) -> None:
         """Kill the whole sandbox, from whichever process uses the slot; the parent starts a new one."""
         self.broken = True
         if self.process is not None:
@@ -202,7 +204,7 @@ class WarmSlot:
             raise SlotBroken(f"the sandbox's zygote is gone ({error})") from None
         return self._read(nonce, time.monotonic() + seconds)
 
-    def fork_worker(self, direct=False):
+    def fork_worker(self, direct: bool = False) -> WarmWorker:
         """A fresh worker for the student, as a :class:`WarmWorker` (``direct``: see ``worker.start``)."""
         reply, fds = self._exchange({"op": "fork", "cpu_seconds": self.limits.cpu_seconds, "direct": direct})
         if not reply.get("ok") or len(fds) != 2:
@@ -211,18 +213,18 @@ class WarmSlot:
             raise SlotBroken("the zygote could not fork a worker")
         return WarmWorker(self, int(reply["pid"]), fds[0], fds[1])
 
-    def status(self, pid, wait):
+    def status(self, pid: int, wait: float) -> int | None:
         """The raw wait status of worker ``pid`` once it has exited (waiting up to ``wait`` s), else None."""
         reply, _ = self._exchange({"op": "status", "pid": pid, "wait": float(wait)}, float(wait) + REPLY_SECONDS)
         return reply.get("status")
 
-    def kill(self, pid):
+    def kill(self, pid: int) -> None:
         """Kill worker ``pid`` and everything in its namespaces; the slot's other workers go on."""
         reply, _ = self._exchange({"op": "kill", "pid": int(pid)})
         if not reply.get("ok"):
             raise SlotBroken(f"worker {pid} could not be killed")
 
-    def reset(self):
+    def reset(self) -> None:
         """Kill every process in the sandbox but the zygote, and with them the students' namespaces."""
         reply, _ = self._exchange({"op": "reset"})
         if not reply.get("ok"):
@@ -246,7 +248,7 @@ class SlotPool:
         for slot in self.slots:
             slot.close()
 
-    def enter(self, index):
+    def enter(self, index: int) -> WarmSlot:
         """In a forked grader: let go of the other slots' control sockets and return slot ``index``, the
         one this grader grades with (passed down to each :class:`~autograder.sandbox.session.StudentSandbox`)."""
         for slot in self.slots:
@@ -255,7 +257,7 @@ class SlotPool:
                 slot.control = None
         return self.slots[index]
 
-    def repair(self, index):
+    def repair(self, index: int) -> None:
         """In the parent, after a grader ends: replace slot ``index`` if it is dead or was discarded."""
         slot = self.slots[index]
         if slot.alive():
