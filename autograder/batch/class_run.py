@@ -45,6 +45,7 @@ from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import Callable, NamedTuple, Protocol
 
+from autograder.batch.progress import Progress
 from autograder.grading import submissions
 from autograder.grading.canary import describe_canary, ensure_reference_passes
 from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_changed
@@ -53,12 +54,11 @@ from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
 from autograder.lessons.catalog import load_catalog
 from autograder.lessons.reference import load_reference
-from autograder.batch.progress import Progress
 from autograder.lessons.untrusted_text import one_line, safe_name
-from autograder.reports.lateness import CourseConfig
 from autograder.reports import feedback
 from autograder.reports.gradebook import gradebook_csv
 from autograder.reports.gradescope_results import results_json
+from autograder.reports.lateness import CourseConfig
 from autograder.reports.lateness import apply_late_policy
 from autograder.reports.plain_page import plain_page
 from autograder.sandbox import cleanup, launcher, process_tree, warm

@@ -18,8 +18,8 @@ import time
 from pathlib import Path
 
 from autograder.grading import extract, submissions
-from autograder.grading.options import GradingOptions
 from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
+from autograder.grading.options import GradingOptions
 from autograder.grading.results import (COULD_NOT_GRADE, GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult,
                                         LessonResult, NotebookRun, StudentResult)
 from autograder.grading.suite import StudentProxy, run_hidden_suite

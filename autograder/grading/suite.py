@@ -39,14 +39,14 @@ import pytest
 
 from autograder.grading import transcript_cache
 from autograder.grading.results import CheckResult
-from autograder.lessons.catalog import Catalog
-from autograder.sandbox import launcher
-from autograder.sandbox.warm import WarmSlot
 from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, Transcript, independent_prefix
 from autograder.hidden.own_work import CHANGED_HINT, DELEGATED_HINT, forbidden_for
+from autograder.lessons.catalog import Catalog
 from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
 from autograder.lessons.reference import answer_sources
+from autograder.sandbox import launcher
 from autograder.sandbox.session import LessonProgram, SandboxUnavailable, StudentError, StudentSandbox
+from autograder.sandbox.warm import WarmSlot
 
 if str(SOLUTIONS) not in sys.path:
     sys.path.insert(0, str(SOLUTIONS))  # the hidden suite uses coursekit.diagnose for hints
