@@ -60,7 +60,7 @@ def test_nbval_gets_only_the_lessons_with_full_hidden_marks(tmp_path, monkeypatc
                      lessons=[first.number, second.number])
     asked = []
 
-    def fake_run_notebooks(folder, lessons, options, catalog):
+    def fake_run_notebooks(folder, lessons, options, catalog, slot=None):
         asked.extend(shell.number for shell, _, _ in lessons)
         return {shell.number: NotebookRun(status="passed", max_points=options.notebook_points)
                 for shell, _, _ in lessons}
