@@ -245,3 +245,29 @@ def test_public_functions_say_their_types(stage):
                 if node.returns is None or any(a.annotation is None for a in arguments):
                     bare.append(f"{path.relative_to(PACKAGE.parent)}:{node.lineno} {node.name}")
     assert not bare, "public functions without type hints:\n" + "\n".join(bare)
+
+
+# The modules below the CLI that still find the course through lessons/paths.py's constants instead of being
+# given it (#30: a Course value passed down). The list may only shrink: a new reader fails the test below,
+# and so does a listed module that no longer reads them (then strike it from the list).
+STILL_READ_PATH_CONSTANTS = {
+    "authoring/book.py", "authoring/handout.py", "authoring/record.py", "authoring/release.py",
+    "authoring/sample_class.py", "grading/fingerprint.py", "grading/nbval_stage.py", "grading/submissions.py",
+    "grading/suite.py", "hidden/own_work.py", "integrations/gradescope.py", "integrations/nbgrader_course.py",
+    "integrations/nbgrader_export.py", "lessons/catalog.py", "lessons/reference.py", "mutants/inprocess.py",
+    "sandbox/launcher.py", "similarity/answers.py",
+}
+
+
+def test_no_new_module_below_the_cli_reads_the_course_paths():
+    readers = set()
+    for path in sorted(PACKAGE.rglob("*.py")):
+        where = path.relative_to(PACKAGE).as_posix()
+        if where in ("cli.py", "lessons/paths.py"):
+            continue
+        if any(name.startswith("autograder.lessons.paths") for name in _imported_names(path) |
+               _submodules_imported(path, ".".join(path.relative_to(PACKAGE.parent).with_suffix("").parts))):
+            readers.add(where)
+    assert not readers - STILL_READ_PATH_CONSTANTS, f"new readers of lessons/paths.py: {sorted(readers - STILL_READ_PATH_CONSTANTS)}"
+    assert not STILL_READ_PATH_CONSTANTS - readers, f"no longer read them, strike from the list: " \
+                                                    f"{sorted(STILL_READ_PATH_CONSTANTS - readers)}"
