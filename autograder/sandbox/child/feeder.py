@@ -34,9 +34,12 @@ functions) up to whoever sent the call, who answers
 ``{"op": "callback_result", "seq", "ok", "text"|"error"}``.
 """
 
+from __future__ import annotations
+
 import os
 import signal
 import time
+import types
 
 import wire
 
@@ -48,7 +51,7 @@ class RunnerGone(Exception):
     """The runner died, or broke the protocol (a reply too large or not plain data)."""
 
 
-def callables_in(value, found=None):
+def callables_in(value: object, found: list | None = None) -> list:
     """The callable arguments (:class:`wire.Probe`, :class:`wire.Callback`) of a call's ``args`` and
     ``kwargs``, in a fixed order (depth first, dict items in order): a handle is an index into it."""
     found = [] if found is None else found
@@ -69,7 +72,7 @@ class LineChannel:
     def __init__(self, fd, limit):
         self.fd, self.limit, self.buffer = fd, limit, b""
 
-    def read_line(self):
+    def read_line(self) -> bytes | None:
         """The next line (without its newline), or None at the end of the stream."""
         while b"\n" not in self.buffer:
             if len(self.buffer) > self.limit:
@@ -99,7 +102,7 @@ def _write(fd, data):
         view = view[os.write(fd, view):]
 
 
-def wait_and_report(pid, replies_fd):
+def wait_and_report(pid: int, replies_fd: int) -> None:
     """Direct mode (``worker.start``): wait for the runner; if it did not end by the caller's ``bye``,
     say how it ended (its raw wait status), as :meth:`Feeder.report_death` does. Never returns."""
     _, status = os.waitpid(pid, 0)  # retried by Python itself when a signal interrupts it (PEP 475)
@@ -124,7 +127,7 @@ class Feeder:
         self._callables = []  # the callable arguments of the call the runner is running
 
     # ------------------------------------------------------------ probes
-    def probes(self):
+    def probes(self) -> types.ModuleType:
         """The probes module, compiled from the descriptor opened before the file was covered."""
         if self._probes is None:
             import types
@@ -142,13 +145,13 @@ class Feeder:
         return self._probes
 
     # ------------------------------------------------------------ the runner
-    def send_runner(self, message):
+    def send_runner(self, message: dict) -> None:
         try:
             _write(self.runner_fd, wire.dumps(message).encode() + b"\n")
         except OSError:
             raise RunnerGone("stopped reading its requests") from None
 
-    def runner_reply(self):
+    def runner_reply(self) -> tuple[dict, bytes]:
         """The runner's reply to the request it is running, answering its callbacks meanwhile."""
         while True:
             line = self.runner.read_line()
@@ -165,7 +168,7 @@ class Feeder:
                 continue
             return message, line
 
-    def answer_callback(self, message):
+    def answer_callback(self, message: dict) -> None:
         handle, seq = message.get("callback"), message.get("seq")
         target = self._callables[handle] if type(handle) is int and 0 <= handle < len(self._callables) else None
         if isinstance(target, wire.Probe):
@@ -176,7 +179,7 @@ class Feeder:
             result = {"ok": False, "error": "not a callable argument of this call"}
         self.send_runner(dict(result, op="callback_result", seq=seq))
 
-    def evaluate_probe(self, probe, message):
+    def evaluate_probe(self, probe: wire.Probe, message: dict) -> dict:
         args, kwargs = message.get("args"), message.get("kwargs")
         if not isinstance(args, list) or not isinstance(kwargs, dict):
             return {"ok": False, "error": "bad callback arguments"}
@@ -186,7 +189,7 @@ class Feeder:
         except Exception as error:  # the student's arguments made the probe fail: say so in their code
             return {"ok": False, "error": f"{type(error).__name__}: {error}"[:300]}
 
-    def ask_upstream(self, message):
+    def ask_upstream(self, message: dict) -> dict:
         """A callable of the sender's own (the notebook stage): ask the sender, wait for its answer."""
         self.send_upstream({"callback": message["callback"], "args": message.get("args", []),
                             "kwargs": message.get("kwargs", {}), "id": self.request_id})
@@ -210,13 +213,13 @@ class Feeder:
             self._callables, self.request_id = outer
 
     # ------------------------------------------------------------ the grader
-    def send_upstream(self, message):
+    def send_upstream(self, message: dict) -> None:
         try:
             _write(self.upstream_out, wire.dumps(message).encode() + b"\n")
         except OSError:
             os._exit(0)  # the grader has gone: everything here goes with us
 
-    def forward(self, request, line):
+    def forward(self, request: dict | None, line: bytes) -> None:
         """Relay one request to the runner and its reply back, as they are."""
         if b'"__probe__"' in line or b'"__callback__"' in line:  # decode the arguments only when needed
             request = wire.loads(line.decode("utf-8"))
@@ -233,7 +236,7 @@ class Feeder:
         except OSError:
             os._exit(0)
 
-    def batch(self, request):
+    def batch(self, request: dict) -> None:
         replies, spent, size = [], 0.0, 0
         timeout = request.get("timeout") or 5.0
         for number, call in enumerate(request.get("calls") or []):
@@ -250,7 +253,7 @@ class Feeder:
                 break
         self.send_upstream({"ok": True, "replies": replies, "id": self.request_id})
 
-    def report_death(self, why=None):
+    def report_death(self, why: str | None = None) -> None:
         """Tell the grader how the runner ended (its raw wait status, or ``why`` it was stopped), then
         end the namespace."""
         try:
@@ -271,7 +274,7 @@ class Feeder:
         self.send_upstream(message)
         os._exit(0)
 
-    def serve(self):
+    def serve(self) -> None:
         try:
             hello, line = self.runner_reply()
             _write(self.upstream_out, line + b"\n")

@@ -28,6 +28,8 @@ Examples
 ['/usr/bin/python3', '/sandbox/fork_kernel.py', 'connect', '/tmp/.kernels', '{connection_file}']
 """
 
+from __future__ import annotations
+
 import json
 import os
 import select
@@ -39,7 +41,7 @@ WARM_MODULES = ("numpy", "scipy.linalg", "scipy.spatial.transform", "matplotlib"
                 "ipykernel.kernelapp", "ipykernel.ipkernel", "IPython.core.interactiveshell")
 
 
-def kernel_argv(socket_path):
+def kernel_argv(socket_path: str) -> list[str]:
     """The kernelspec ``argv`` that gets a kernel from the fork server at ``socket_path``."""
     return [sys.executable, os.path.abspath(__file__), "connect", socket_path, "{connection_file}"]
 
@@ -83,7 +85,7 @@ def _read_request(connection):
     return json.loads(data)
 
 
-def serve(socket_path):
+def serve(socket_path: str) -> None:
     """Warm up, then fork a kernel per request until stdin closes.
 
     The server keeps each client's connection: when the kernel exits it closes
@@ -167,7 +169,7 @@ def _kill(pid):
 
 
 # ---------------------------------------------------------------- the client
-def connect(socket_path, connection_file):
+def connect(socket_path: str, connection_file: str) -> None:
     """Ask the server for a kernel; pass signals on; exit with it."""
     client = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     client.connect(socket_path)

@@ -26,6 +26,8 @@ Examples
 >>> # here: PID 1 of the student's namespaces, /tmp empty and writable, no capabilities
 """
 
+from __future__ import annotations
+
 import ctypes
 import os
 
@@ -62,14 +64,14 @@ def _check(result, what):
         raise JailError(number, f"{what}: {os.strerror(number)}")
 
 
-def sandbox_uid(argv):
+def sandbox_uid(argv: list[str]) -> int:
     """The uid given as ``--uid N`` on the command line, else nobody."""
     if "--uid" in argv:
         return int(argv[argv.index("--uid") + 1])
     return NOBODY
 
 
-def drop_privileges(uid=NOBODY):
+def drop_privileges(uid: int = NOBODY) -> None:
     """Become ``uid`` (and its group) if running as root; forbid regaining privileges.
 
     The grader gives each concurrent sandbox its own uid, so that the process
@@ -148,8 +150,8 @@ def _drop_capabilities(libc):
     _check(libc.capset(header, data), "drop capabilities")
 
 
-def enter_student_jail(uid=NOBODY, keep_user=False, sandbox_folder="/sandbox", tmp_bytes=TMP_BYTES,
-                       keep_fds=()):
+def enter_student_jail(uid: int = NOBODY, keep_user: bool = False, sandbox_folder: str = "/sandbox",
+                       tmp_bytes: int = TMP_BYTES, keep_fds: tuple[int, ...] = ()) -> None:
     """Make this process's student namespaces and return in PID 1 of them; the calling process never
     returns: it waits for that PID 1 and exits with its status (killed by the same signal).
 
@@ -188,7 +190,7 @@ def enter_student_jail(uid=NOBODY, keep_user=False, sandbox_folder="/sandbox", t
     libc.prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0)
 
 
-def close_all_but(keep_fds):
+def close_all_but(keep_fds: tuple[int, ...] | list[int]) -> None:
     """Close every file descriptor but 0, 1, 2 and ``keep_fds``."""
     keep = sorted(set(keep_fds) | {0, 1, 2})
     for low, high in zip(keep, keep[1:] + [1 << 20]):

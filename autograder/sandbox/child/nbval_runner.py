@@ -18,10 +18,14 @@ the student's functions, which run in the student's own sandbox
 (``student_client.py``); ``--channels`` names each lesson's two pipes to it.
 """
 
+from __future__ import annotations
+
 import json
 import os
 import re
+import subprocess
 import sys
+from collections.abc import Iterator
 
 # Speed: nbval -> nbformat -> jsonschema imports rfc3987_syntax when it is installed, which builds
 # a grammar at import time (~1.2 s per run). It only checks the "iri" string format, which no
@@ -51,7 +55,7 @@ ANSI = re.compile(r"\x1b\[[0-9;]*m")
 ERROR_LINE = re.compile(r"^([A-Za-z_][\w.]*(Error|Exception|Failed|Exit|Interrupt)): ?(.*)$")
 
 
-def describe_failure(source, longrepr):
+def describe_failure(source: str, longrepr: object) -> str:
     """One line for a failed cell: its first line of code and what went wrong."""
     lines = [line for line in (source or "").strip().splitlines() if line.strip()]
     first = lines[0].strip() if lines else "(empty cell)"
@@ -81,14 +85,15 @@ class Summary:
     def __init__(self):
         self.notebooks = {}
 
-    def pytest_collection_modifyitems(self, session, config, items):
+    def pytest_collection_modifyitems(self, session: pytest.Session, config: pytest.Config,
+                                      items: list[pytest.Item]) -> None:
         for item in items:
             notebook = item.parent
             if hasattr(notebook, "skip_compare") and "text" not in notebook.skip_compare:
                 notebook.skip_compare = tuple(notebook.skip_compare) + ("text",)
 
     @pytest.hookimpl(hookwrapper=True)
-    def pytest_runtest_makereport(self, item, call):
+    def pytest_runtest_makereport(self, item: pytest.Item, call: pytest.CallInfo) -> Iterator[None]:
         outcome = yield
         report = outcome.get_result()
         if report.when != "call" and not (report.failed and report.when == "setup"):
@@ -101,7 +106,7 @@ class Summary:
             entry["failures"].append(describe_failure(source, str(report.longrepr)))
 
 
-def use_forked_kernels(timeout=30.0):
+def use_forked_kernels(timeout: float = 30.0) -> subprocess.Popen | None:
     """Start the fork server and make nbval's kernels come from it; return its process, or None.
 
     None (nbval then starts ordinary kernels) when the server cannot start or
@@ -135,7 +140,7 @@ def use_forked_kernels(timeout=30.0):
     return server
 
 
-def main(notebooks):
+def main(notebooks: list[str]) -> None:
     # No rasterising: figures are never compared, so the kernels draw nothing. With a
     # non-interactive backend plt.show() is a no-op, where ipykernel's default (inline) would
     # render every figure to PNG (about 1 CPU-second per lesson). The launcher's environment

@@ -24,12 +24,15 @@ Examples
 array([[ 0.87758256, -0.47942554,  0.        ], ...
 """
 
+from __future__ import annotations
+
 import builtins
 import json
 import os
 import select
 import sys
 import time
+from collections.abc import Callable
 
 import wire
 from feeder import LineChannel, RunnerGone
@@ -111,7 +114,8 @@ def _raise(name, error):
     raise StudentCodeError(f"{kind}: {message}{where}")
 
 
-def call(lesson, name, args=(), kwargs=None, timeout=CALL_TIMEOUT):
+def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None,
+         timeout: float = CALL_TIMEOUT) -> object:
     """Call the student's ``name`` of ``lesson`` in their sandbox; return its value, or raise what it raised."""
     channel = _channel(lesson)
     if channel.gone:
@@ -163,7 +167,7 @@ def _answer_callback(callables, message):
         return dict(answer, ok=False, error=f"{type(error).__name__}: {error}"[:300])
 
 
-def student_function(lesson, name):
+def student_function(lesson: str, name: str) -> Callable:
     """A function that calls the student's ``name`` of ``lesson`` (see :func:`call`)."""
 
     def function(*args, **kwargs):

@@ -16,6 +16,8 @@ Examples
 ((2, 2), <class 'tuple'>)
 """
 
+from __future__ import annotations
+
 import base64
 import json
 import math
@@ -87,7 +89,7 @@ def _encode_float(x):
     return {"__float__": "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf")}
 
 
-def encode(value, depth=0, budget=None):
+def encode(value: object, depth: int = 0, budget: list[int] | None = None) -> object:
     """Turn ``value`` into JSON-ready data, or raise :class:`WireError`.
 
     At most :data:`MAX_NODES` items of lists, tuples and dicts in all, counted before they are walked,
@@ -147,7 +149,7 @@ def _decode_float(x):
     raise WireError("bad float")
 
 
-def decode(data, depth=0):
+def decode(data: object, depth: int = 0) -> object:
     """Rebuild plain values from JSON data made by :func:`encode`; strict."""
     if depth > MAX_DEPTH:
         raise WireError("nested too deeply")
@@ -211,12 +213,12 @@ def _decode_array(data):
     return np.frombuffer(raw, dtype=dt).reshape(shape).copy()
 
 
-def dumps(value):
+def dumps(value: object) -> str:
     """One message line (no trailing newline)."""
     return json.dumps(encode(value), allow_nan=False, separators=(",", ":"))
 
 
-def loads(text, max_bytes=MAX_LINE_BYTES):
+def loads(text: str, max_bytes: int = MAX_LINE_BYTES) -> object:
     """Decode one message line; raises :class:`WireError` on anything but plain data.
 
     Its size and its number of JSON values (at most :data:`MAX_NODES`, counted from its brackets and

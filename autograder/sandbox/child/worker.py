@@ -32,6 +32,8 @@ The grader trusts none of this: it decodes replies strictly and compares
 values in its own process.
 """
 
+from __future__ import annotations
+
 import builtins
 import os
 import signal
@@ -39,6 +41,7 @@ import socket
 import sys
 import time
 import traceback
+from collections.abc import Callable
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -64,10 +67,10 @@ class CappedText:
     def __init__(self):
         self.reset()
 
-    def reset(self):
+    def reset(self) -> None:
         self.parts, self.kept, self.dropped = [], 0, 0
 
-    def write(self, text):
+    def write(self, text: str) -> int:
         text = str(text)
         room = STDOUT_KEEP - self.kept
         if room > 0:
@@ -76,13 +79,13 @@ class CappedText:
         self.dropped += max(0, len(text) - max(room, 0))
         return len(text)
 
-    def flush(self):
+    def flush(self) -> None:
         pass
 
-    def isatty(self):
+    def isatty(self) -> bool:
         return False
 
-    def text(self):
+    def text(self) -> str:
         out = "".join(self.parts)
         if self.dropped:
             out += f"\n[… {self.dropped} more characters not kept]"
@@ -139,16 +142,16 @@ class Worker:
         self.request_id = 0
         self.callback_seq = 0
 
-    def namespace(self, lesson):
+    def namespace(self, lesson: str) -> dict:
         if lesson not in self.namespaces:
             self.namespaces[lesson] = {"__name__": "__main__", "__builtins__": builtins}
         return self.namespaces[lesson]
 
-    def send(self, message):
+    def send(self, message: dict) -> None:
         self.replies.write(wire.dumps(message).encode("utf-8") + b"\n")
         self.replies.flush()
 
-    def reply(self, message):
+    def reply(self, message: dict) -> None:
         message["id"] = self.request_id
         message["stdout"] = _clean(message.get("stdout", ""))
         try:
@@ -159,7 +162,7 @@ class Worker:
         self.replies.write(line.encode("utf-8") + b"\n")
         self.replies.flush()
 
-    def run_guarded(self, action, timeout):
+    def run_guarded(self, action: Callable[[], object], timeout: float) -> tuple[bool, object, str]:
         """Run ``action()`` with its output captured and an alarm; return (ok, value or error, printed).
 
         A call made from inside another (the notebook stage's callback that calls a student function)
@@ -191,7 +194,7 @@ class Worker:
             self.output = outer_output
             sys.stdout, sys.stderr = outer_streams
 
-    def do_exec(self, request):
+    def do_exec(self, request: dict) -> None:
         namespace = self.namespace(request["lesson"])
         filename = f"<lesson {request['lesson']} cell {request['label']}>"
 
@@ -204,7 +207,7 @@ class Worker:
             message["error"] = result
         self.reply(message)
 
-    def invoke(self, call, timeout):
+    def invoke(self, call: dict, timeout: float) -> tuple[bool, object, list]:
         """Call ``call``'s function with its arguments, guarded and watched (:mod:`coursekit.watching`).
 
         Returns ``(ok, value or error dict, notes)``: ``notes`` holds ``"changed"`` (the arguments the
@@ -231,10 +234,10 @@ class Worker:
             notes["delegated"] = seen.used + (["sys.setprofile"] if seen.tampered else [])
         return True, value, notes
 
-    def do_call(self, request):
+    def do_call(self, request: dict) -> None:
         self.reply(self.call_reply(request))
 
-    def call_reply(self, request, timeout=None):
+    def call_reply(self, request: dict, timeout: float | None = None) -> dict:
         """One call's reply; its value travels as wire text (checked to be plain data, and bounded)."""
         started = time.monotonic()
         ok, result, notes = self.invoke(request, timeout or request.get("timeout") or 5.0)
@@ -255,7 +258,7 @@ class Worker:
         message["stdout"] = _clean(message.get("stdout", ""))
         return message
 
-    def materialize(self, value, handles):
+    def materialize(self, value: object, handles: list) -> object:
         """A call's argument with each callable argument made a function that asks the feeder (in the
         order of ``feeder.callables_in``)."""
         if isinstance(value, wire.Probe) and self.local_probes is not None:
@@ -296,7 +299,7 @@ class Worker:
         callback.__name__ = getattr(target, "name", None) or getattr(target, "label", "") or "callback"
         return callback
 
-    def nested_call(self, request):
+    def nested_call(self, request: dict) -> None:
         """Answer a call that arrives while a callback of another call is being evaluated."""
         outer = self.request_id
         self.request_id = request.get("id", 0)
@@ -305,7 +308,7 @@ class Worker:
         finally:
             self.request_id = outer
 
-    def serve(self):
+    def serve(self) -> None:
         self.reply({"ready": True})
         while True:
             line = self.requests.readline(wire.MAX_LINE_BYTES)
@@ -344,7 +347,8 @@ def _become_runner(requests_fd, replies_fd):
         os._exit(0)
 
 
-def start(requests_fd, replies_fd, uid, keep_user=False, in_jail=True, direct=False):
+def start(requests_fd: int, replies_fd: int, uid: int, keep_user: bool = False, in_jail: bool = True,
+          direct: bool = False) -> None:
     """Become this student's sandbox: the jail (unless ``in_jail`` is False: limits mode), the feeder,
     the runner. ``requests_fd``/``replies_fd`` talk to the grader. Never returns.
 
@@ -391,7 +395,7 @@ def start(requests_fd, replies_fd, uid, keep_user=False, in_jail=True, direct=Fa
         os._exit(0)
 
 
-def main():
+def main() -> None:
     requests, replies = os.dup(0), os.dup(1)
     devnull = os.open(os.devnull, os.O_RDWR)
     for fd in (0, 1, 2):

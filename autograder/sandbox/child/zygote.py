@@ -44,6 +44,8 @@ Examples
 >>> # bwrap --as-pid-1 ... -- python -I -B /sandbox/zygote.py --uid 4394304    (see autograder.sandbox.warm)
 """
 
+from __future__ import annotations
+
 import ctypes
 import json
 import os
@@ -230,7 +232,7 @@ def _answer(control, request, reply):
     return ()
 
 
-def serve(control):
+def serve(control: socket.socket) -> None:
     _send(control, {"ready": True})
     while True:
         try:
@@ -249,7 +251,7 @@ def serve(control):
             os.close(fd)
 
 
-def main():
+def main() -> None:
     control = socket.socket(fileno=os.dup(0))
     devnull = os.open(os.devnull, os.O_RDWR)
     for fd in (0, 1, 2):
