@@ -169,3 +169,35 @@ def test_a_grader_killed_by_student_code_is_reported_and_the_batch_finishes(tmp_
         assert "killed by SIGKILL" in rows["killer"]["problems"]
     else:  # an ordinary user: the kill was refused or hit only the sandbox
         assert float(rows["killer"]["score"]) < lesson.points
+
+
+def test_the_slot_a_grader_is_handed_reaches_every_sandbox_of_its_student(tmp_path, monkeypatch):
+    """grade_task -> grade_student -> the hidden suite's sandbox and each notebook-stage sandbox: the warm
+    slot is passed down, not found in a global (a dropped slot would only make grading cold, silently)."""
+    from autograder.batch import class_run
+    from autograder.grading import nbval_stage, pipeline
+    from autograder.sandbox.session import StudentSandbox
+
+    handed = object()
+    seen = []
+
+    class Recording(StudentSandbox):
+        def __init__(self, *args, slot=None, **kwargs):
+            seen.append(slot)
+            super().__init__(*args, slot=None, **kwargs)       # graded cold: the stand-in is no slot
+
+    monkeypatch.setattr(pipeline, "StudentSandbox", Recording)
+    monkeypatch.setattr(nbval_stage, "StudentSandbox", Recording)
+    folder = build_submission(tmp_path / "ada", lessons=(FIRST,))
+    result = pipeline.grade_student("ada", folder, GradingOptions(lessons=(FIRST,)), slot=handed)
+    assert result.score == result.max_score > 0
+    assert seen == [handed, handed], seen                      # the suite's sandbox, then lesson 01's notebook
+
+    graded = []
+    monkeypatch.setattr(class_run, "grade_student", lambda *args, slot=None: graded.append(slot) or result)
+    for name in ("become_subreaper", "kill_descendants"):   # not in this test process: it has other children
+        monkeypatch.setattr(class_run.process_tree, name, lambda *args, **kwargs: None)
+    task = class_run.GradingTask("ada", str(folder), FAST, str(tmp_path / "out"),
+                                 class_run.Stamp("f", {}), None)
+    class_run.grade_task(task, handed)
+    assert graded == [handed]
