@@ -1,13 +1,18 @@
 """``python -m autograder``: release the course, record outputs, grade a class.
 
+Every command that reads a course takes ``--course DIR`` (a course folder, see
+docs/AUTHORING.md "Write your own course"; default: this repository's course).
+
 Commands
 --------
+new-course DIR
+    Write a small, working course to start your own from (two lessons).
 release [--check]
     Regenerate ``course/`` from ``solutions/``; ``--check`` only verifies.
 record [--only NN ...]
     Re-record the demonstration outputs stored in the masters.
 grade [PATH] --out DIR [--jobs N] [--no-nbval] [--lessons NN ...] [--roster FILE]
-      [--nbgrader-db PATH] [--force] [--student ID ...] [--config course.toml] [--ignore-mtimes]
+      [--nbgrader-db PATH] [--force] [--student ID ...] [--config late.toml] [--ignore-mtimes]
       [--cluster ADDRESS]
     Grade every student folder in PATH (or the bundled sample class); with
     --student, re-grade only those. The gradebook never loses a student.
@@ -60,14 +65,24 @@ class UsageError(ValueError):
     """A mistake the instructor can fix on the command line; ``main`` prints it as one line, exit status 2."""
 
 
-def _lesson_numbers(given):
+def _course(args):
+    """The course a command works on: ``--course DIR``, else this repository's; a folder that is not a course
+    raises :class:`UsageError`."""
+    from autograder.lessons.course import Course, CourseError
+    from autograder.lessons.paths import this_course
+
+    try:
+        return Course.at(args.course) if getattr(args, "course", None) else this_course()
+    except CourseError as error:
+        raise UsageError(str(error)) from None
+
+
+def _lesson_numbers(given, course):
     """``given`` lesson numbers as the catalog spells them: "3" is read as "03" (said on stderr); an unknown one
     raises :class:`UsageError` naming the valid ones."""
     if not given:
         return ()
-    from autograder.lessons.catalog import load_catalog
-
-    valid = [lesson.number for lesson in load_catalog().graded_lessons]
+    valid = [lesson.number for lesson in course.catalog.graded_lessons]
     numbers = []
     for number in given:
         padded = number.zfill(2) if number.isdigit() and len(number) < 2 else number
@@ -111,19 +126,34 @@ def _require_students(path):
     raise UsageError(f"no student folders in {path}: {SUBMISSIONS_LAYOUT}")
 
 
+def _cmd_new_course(args):
+    from autograder.authoring.new_course import write_course
+    from autograder.lessons.paths import this_course
+
+    try:
+        root = write_course(Path(args.folder), this_course().support)
+    except ValueError as error:
+        raise UsageError(str(error)) from None
+    print(f"wrote a new course in {root}: two lessons to grow from. Next: python -m autograder release "
+          f"--course {root} (docs/AUTHORING.md, \"Write your own course\")")
+    return 0
+
+
 def _cmd_release(args):
     from autograder.authoring.release import release, stale_files
 
+    course = _course(args)
     if args.check:
-        problems = stale_files()
+        problems = stale_files(course.solutions, course.released)
         for path, reason in problems:
             print(f"{path}: {reason}")
         if problems:
-            print(f"course/ is out of date: {len(problems)} file(s). Run: python -m autograder release")
+            print(f"course/ is out of date: {len(problems)} file(s). Run: python -m autograder release"
+                  + (f" --course {args.course}" if args.course else ""))
             return 1
         print("course/ and solutions/ are in sync.")
         return 0
-    written = release()
+    written = release(course.solutions, course.released)
     for path in written:
         print(f"wrote {path}")
     print(f"release done: {len(written)} file(s) changed.")
@@ -134,7 +164,7 @@ def _cmd_record(args):
     from autograder.authoring.record import RecordingFailed, record_outputs
 
     try:
-        changed = record_outputs(only=args.only)
+        changed = record_outputs(_course(args).solutions, only=args.only)
     except RecordingFailed as error:
         print(f"record failed: {error}", file=sys.stderr)
         return 1
@@ -221,12 +251,13 @@ def _cmd_canary(args):
     from autograder.grading.pipeline import GradingOptions
     from autograder.sandbox import launcher
 
-    args.lessons = _lesson_numbers(args.lessons)
+    course = _course(args)
+    args.lessons = _lesson_numbers(args.lessons, course)
     print(launcher.describe_isolation())
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
-    prewarm()
+    prewarm(course)
     try:
-        print(describe_canary(ensure_reference_passes(options, fingerprint_parts(options))))
+        print(describe_canary(ensure_reference_passes(course, options, fingerprint_parts(options, course))))
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
         return 3
@@ -243,10 +274,12 @@ def _cmd_grade(args):
     from autograder.sandbox import launcher, warm
 
     out = Path(args.out)
-    args.lessons = _lesson_numbers(args.lessons)
+    course = _course(args)
+    args.lessons = _lesson_numbers(args.lessons, course)
     roster = _read_roster(args.roster)
     try:
-        config = load_config(args.config) if args.config else None
+        lessons = [lesson.number for lesson in course.catalog.graded_lessons]
+        config = load_config(args.config, lessons) if args.config else None
     except ConfigError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
@@ -254,8 +287,11 @@ def _cmd_grade(args):
     if path is None:
         from autograder.authoring.sample_class import build_sample_class
 
+        if args.course:
+            raise UsageError("give the submissions folder to grade: the bundled sample class is written for this "
+                             "repository's course only")
         path = out / "sample_class"
-        build_sample_class(path, lessons=tuple(args.lessons))
+        build_sample_class(path, course, lessons=tuple(args.lessons))
         print(f"No PATH given: grading the bundled sample class, written to {path}")
     path = Path(path)
     if not path.is_dir():
@@ -279,12 +315,12 @@ def _cmd_grade(args):
         from autograder.integrations.cluster import connect
 
         try:
-            runner = connect(args.cluster, options, announce=lambda line: print(line, flush=True))
+            runner = connect(args.cluster, course, options, announce=lambda line: print(line, flush=True))
         except ClusterError as error:
             print(f"error: {error}", file=sys.stderr)
             return 2
     try:
-        summary = grade_class(path, out, jobs=args.jobs, options=options, force=args.force,
+        summary = grade_class(path, out, course, jobs=args.jobs, options=options, force=args.force,
                               progress=Progress(sys.stderr), roster=roster,
                               only=tuple(args.student), announce=lambda line: print(line, flush=True),
                               config=config, runner=runner, similarity=not args.no_similarity)
@@ -323,7 +359,7 @@ def _cmd_grade(args):
     if args.nbgrader_db:
         from autograder.integrations.nbgrader_export import export_to_gradebook
 
-        rows = export_to_gradebook(summary.results, args.nbgrader_db)
+        rows = export_to_gradebook(summary.results, args.nbgrader_db, course)
         print(f"nbgrader gradebook: {rows} exercise score(s) written to {args.nbgrader_db}")
     print(f"gradebook:    {out / 'grades.csv'}")
     print(f"class report: {out / 'report.html'}")
@@ -394,7 +430,8 @@ def _cmd_book(args):
     from autograder.authoring.book import BookFailed, build_book
 
     try:
-        out, pages, warnings = build_book(args.out)
+        course = _course(args)
+        out, pages, warnings = build_book(args.out, course.solutions, course.title)
     except BookFailed as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
@@ -412,7 +449,7 @@ def _cmd_similarity(args):
         if not Path(folder).is_dir():
             print(f"error: {folder} is not a folder of student submissions", file=sys.stderr)
             return 2
-    findings = similarity_of_class(Path(args.path), past=[Path(p) for p in args.past])
+    findings = similarity_of_class(Path(args.path), _course(args), past=[Path(p) for p in args.past])
     csv_path, html_path = write_findings(findings, Path(args.out or args.path))
     print(f"compared {sum(findings.compared.values())} answers over {len(findings.compared)} exercises on this "
           "machine (nothing was sent anywhere)")
@@ -431,7 +468,8 @@ def _cmd_similarity(args):
 def _cmd_gradescope(args):
     from autograder.integrations.gradescope import build_bundle
 
-    path = build_bundle(args.out, lessons=_lesson_numbers(args.lessons), visibility=args.visibility,
+    course = _course(args)
+    path = build_bundle(args.out, course, lessons=_lesson_numbers(args.lessons, course), visibility=args.visibility,
                         nbval=not args.no_nbval)
     print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): upload it as the autograder of a "
           "Gradescope programming assignment (choose the Ubuntu 24.04 base image).")
@@ -449,7 +487,8 @@ def _cmd_gradescope_run(args):
 def _cmd_nbgrader_course(args):
     from autograder.integrations.nbgrader_course import build_course
 
-    root = build_course(args.out, lessons=_lesson_numbers(args.lessons))
+    course = _course(args)
+    root = build_course(args.out, course.solutions, lessons=_lesson_numbers(args.lessons, course))
     print(f"wrote the nbgrader course {root}: source/lessonNN/ for each lesson, with coursekit beside it.\n"
           f"Next, with the environment active (source .venv/bin/activate): cd {root} && "
           "nbgrader generate_assignment lesson01")
@@ -459,22 +498,22 @@ def _cmd_nbgrader_course(args):
 def _cmd_handout(args):
     from autograder.authoring.handout import build_handout
 
-    path = build_handout(args.out)
+    path = build_handout(args.out, _course(args))
+    course = f" --course {args.course}" if args.course else ""
     print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): the course notebooks, coursekit, a student "
-          "requirements.txt and a README. Run `python -m autograder release --check` first.")
+          f"requirements.txt and a README. Run `python -m autograder release --check{course}` first.")
     return 0
 
 
 def _cmd_mutants(args):
     from autograder.mutants.run import main as run_mutants
 
-    return run_mutants(exercises=args.exercise or None, lessons=args.lessons or None, jobs=args.jobs,
+    return run_mutants(_course(args), exercises=args.exercise or None, lessons=args.lessons or None, jobs=args.jobs,
                        markdown=args.markdown, save=args.save)
 
 
 def _cmd_export(args):
     from autograder.batch.class_run import Outputs, collect_results, saved_student_ids
-    from autograder.lessons.catalog import load_catalog
     from autograder.reports.roster import RosterError, read_roster
 
     try:
@@ -482,6 +521,7 @@ def _cmd_export(args):
     except RosterError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
+    catalog = _course(args).catalog
     outputs = Outputs(Path(args.out))
     ids = saved_student_ids(outputs)
     if not ids:
@@ -492,11 +532,11 @@ def _cmd_export(args):
     target = Path(args.file) if args.file else outputs.root / f"{args.to}.csv"
     from autograder.batch.class_run import write_atomically
 
-    write_atomically(target, EXPORTERS[args.to](results, load_catalog(), roster, missing=args.missing))
+    write_atomically(target, EXPORTERS[args.to](results, catalog, roster, missing=args.missing))
     print(f"wrote {target}: {len(results)} students, {args.to} gradebook import format")
     from autograder.reports.exports.missing import not_handed_in
 
-    absent = sum(len(not_handed_in(r, load_catalog().graded_lessons)) for r in results)
+    absent = sum(len(not_handed_in(r, catalog.graded_lessons)) for r in results)
     if absent:
         print(f"  {absent} lesson(s) not handed in: " + ("exported as 0 (--missing blank leaves them empty)"
                                                         if args.missing == "zero" else "left empty (--missing blank)"))
@@ -510,9 +550,16 @@ class _OneLineParser(argparse.ArgumentParser):
         self.exit(USAGE_ERROR, f"{self.prog}: error: {message} (see: {self.prog} --help)\n")
 
 
+COURSE_HELP = "the course folder (default: this repository's course); see docs/AUTHORING.md"
+
+
 def build_parser():
     parser = _OneLineParser(prog="python -m autograder", description=__doc__.split("\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
+
+    new = commands.add_parser("new-course", help="write a small, working course to start your own from")
+    new.add_argument("folder", help="where to write it (a new or empty folder)")
+    new.set_defaults(run=_cmd_new_course)
 
     release = commands.add_parser("release", help="regenerate course/ from solutions/")
     release.add_argument("--check", action="store_true", help="only check that course/ is up to date")
@@ -612,6 +659,8 @@ def build_parser():
     book = commands.add_parser("book", help="build the solved lessons as a static website (open OUT/index.html)")
     book.add_argument("--out", default="_build/book", help="the folder to write (replaced), e.g. _build/book")
     book.set_defaults(run=_cmd_book)
+    for command in (release, record, grade, similar, canary, course, handout, export, gradescope, mutants, book):
+        command.add_argument("--course", metavar="DIR", default=None, help=COURSE_HELP)
     return parser
 
 

@@ -39,9 +39,9 @@ sys.path.insert(0, str(ROOT / "tests"))
 
 from autograder.authoring.sample_class import build_sample_class  # noqa: E402
 from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit)  # noqa: E402
-from autograder.lessons.catalog import load_catalog  # noqa: E402
 from process_memory import PeakMemory  # noqa: E402
 from support import benchmark_class  # noqa: E402
+from support import THIS_COURSE  # noqa: E402
 
 
 def machine_cpu_seconds():
@@ -72,8 +72,8 @@ def run_nbgrader_baseline(students, course_dir, check=True):
 
     ``check=False``: a class with damaged notebooks, on which nbgrader reports errors but grades the rest.
     """
-    course = build_course(course_dir)
-    lessons = load_catalog().graded_lessons
+    course = build_course(course_dir, THIS_COURSE.solutions)
+    lessons = THIS_COURSE.catalog.graded_lessons
     for lesson in lessons:
         run_nbgrader(course, "generate_assignment", assignment_name(lesson), "--force")
     for folder in students:
@@ -108,7 +108,7 @@ def main():
     work = Path(args.work)
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
-    lessons = load_catalog().graded_lessons
+    lessons = THIS_COURSE.catalog.graded_lessons
     print(f"{os.cpu_count()} cores; {len(lessons)} lessons; N = {args.students} and {args.large}")
 
     students = benchmark_class(work / "class_small", args.students)
@@ -143,7 +143,7 @@ def main():
           f"--no-nbval {fast_memory / 2**20:.0f} MiB; N = {len(large)} full {large_full_memory / 2**20:.0f} MiB, "
           f"--no-nbval {large_fast_memory / 2**20:.0f} MiB")
 
-    ids = build_sample_class(work / "class_sample")
+    ids = build_sample_class(work / "class_sample", THIS_COURSE)
     sample_nbgrader = run_nbgrader_baseline([work / "class_sample" / i for i in ids], work / "nbgrader_sample",
                                             check=False)
     sample_full, _, _ = run_ours(work / "class_sample", work / "ours_sample_full")

@@ -29,21 +29,21 @@ sys.path.insert(0, str(ROOT))  # this checkout's autograder, not an installed on
 
 from autograder.authoring.sample_class import rename_locals  # noqa: E402
 from autograder.lessons import cells  # noqa: E402
-from autograder.lessons.catalog import load_catalog  # noqa: E402
 from autograder.lessons.notebook_files import canonical_text, read_master  # noqa: E402
-from autograder.lessons.paths import COURSE  # noqa: E402
+from autograder.lessons.paths import this_course  # noqa: E402
 from autograder.lessons.reference import answer_sources  # noqa: E402
 from autograder.similarity.stage import similarity_of_class  # noqa: E402
 
+THIS_COURSE = this_course()
 STAGE_LINE = re.compile(r"similar answers: .*\((?P<wall>[\d.]+) s, (?P<cpu>[\d.]+) s of CPU")
 
 
 def write_big_class(folder, students):
     """``students`` folders under ``folder``, each with every graded lesson answered by the reference with
     the student's own local names."""
-    references = answer_sources()
-    for lesson in load_catalog().graded_lessons:
-        released = read_master(COURSE / lesson.filename)
+    references = answer_sources(THIS_COURSE.solutions)
+    for lesson in THIS_COURSE.catalog.graded_lessons:
+        released = read_master(THIS_COURSE.released / lesson.filename)
         for number in range(students):
             nb = copy.deepcopy(released)
             for cell in nb.cells:
@@ -65,7 +65,7 @@ def time_stage(students, jobs):
         folder = Path(work) / "class"
         write_big_class(folder, students)
         started, cpu = time.perf_counter(), cpu_seconds()
-        findings = similarity_of_class(folder, jobs=jobs)
+        findings = similarity_of_class(folder, THIS_COURSE, jobs=jobs)
         seconds, cpu = time.perf_counter() - started, cpu_seconds() - cpu
     print(f"stage, {students} students x {len(findings.compared)} exercises "
           f"({sum(findings.compared.values())} answers compared, {jobs or os.cpu_count()} processes): "

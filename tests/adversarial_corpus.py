@@ -93,7 +93,7 @@ def cases(context):
              f"sys.path.insert(0, {str(SOLUTIONS.parent)!r})\n"
              "def rot_z(a):\n"
              "    from autograder.lessons.reference import load_reference\n"
-             "    return load_reference().rot_z(a)\n",
+             f"    return load_reference({str(SOLUTIONS)!r}).rot_z(a)\n",
              twin="def rot_z(a):\n    raise RuntimeError('no answer')\n", needs_namespaces=True),
         Case("symlink_to_solutions", "hands in a symbolic link to the instructor's master", "lesson_zero",
              damage="symlink_notebook", reason="symbolic link"),

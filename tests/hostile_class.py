@@ -42,12 +42,11 @@ from typing import Callable
 
 import ordinary_user
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import COURSE, PROJECT_ROOT
-from support import STUB, build_submission, mistakes
+from support import STUB, THIS_COURSE, build_submission, mistakes
 
-LESSON = load_catalog().lesson("01")
+LESSON = THIS_COURSE.catalog.lesson("01")
 NOTEBOOK = LESSON.filename
 DEEP = 100_000
 GRADE_OPTIONS = ("--lessons", "01", "--jobs", "2")  # the notebook stage included

@@ -18,14 +18,13 @@ ROOT = Path(__file__).resolve().parent.parent
 for entry in (ROOT, ROOT / "tests", ROOT / "solutions"):
     sys.path.insert(0, str(entry))
 
-from autograder.lessons.catalog import load_catalog  # noqa: E402
 from autograder.mistakes import all_mistakes  # noqa: E402
 from public_runner import run_public_checks  # noqa: E402
-from support import build_submission, grade, points_by_exercise  # noqa: E402
+from support import THIS_COURSE, build_submission, grade, points_by_exercise  # noqa: E402
 
 
 def report(lesson, name_part=""):
-    catalog = load_catalog()
+    catalog = THIS_COURSE.catalog
     for name, mistake in sorted(all_mistakes().items()):
         if catalog.exercise(mistake.exercise).lesson != lesson or name_part not in name:
             continue
@@ -41,7 +40,7 @@ def report(lesson, name_part=""):
                 if exercise.name == mistake.exercise and not check.passed:
                     print(f"      ✗ {check.description} (weight {check.weight:g}): {check.reason}\n        hint: {check.hint}")
         if mistake.kind == "mistake":
-            passed, printed = run_public_checks(mistake.exercise, mistake.source)
+            passed, printed = run_public_checks(THIS_COURSE, mistake.exercise, mistake.source)
             print(f"    public: {'all pass' if passed else 'fails'}")
             for line in printed.splitlines():
                 if "✗" in line or "hint" in line:

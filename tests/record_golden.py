@@ -45,9 +45,9 @@ def grade_sample_class(out, klass=None):
 def verdict_columns():
     """The gradebook columns that hold verdicts: one per exercise, then ``notebook_NN`` per lesson."""
     sys.path.insert(0, str(ROOT))
-    from autograder.lessons.catalog import load_catalog
+    from autograder.lessons.paths import this_course
 
-    catalog = load_catalog()
+    catalog = this_course().catalog
     return [e.name for e in catalog.exercises] + [f"notebook_{lesson.number}" for lesson in catalog.graded_lessons]
 
 

@@ -13,11 +13,11 @@ from pathlib import Path
 
 from autograder.authoring.sample_class import rename_locals
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import COURSE
 from autograder.lessons.reference import answer_sources
 from autograder.mistakes import all_alternatives
+from support import THIS_COURSE
 
 # More independently written answers, in styles the alternatives do not use.
 OWN_ANSWERS = {
@@ -84,7 +84,7 @@ def _code_without_docstring(source):
 def honest_answers():
     """``{student: {exercise: source}}``: each student writes a different style of each exercise (an
     alternative whose code is the reference's, docstring aside, is not one: it is left out)."""
-    references = answer_sources()
+    references = answer_sources(THIS_COURSE.solutions)
     styles = {}
     for alternative in sorted(all_alternatives().values(), key=lambda a: a.name):
         if _code_without_docstring(alternative.source.strip("\n")) == \
@@ -197,7 +197,7 @@ def planted_answers():
     for seed, (student, chosen) in enumerate(zip(five, kinds)):
         students[student] = {"numerical_jacobian": disguise(original, chosen, seed + 10)}
     planted.append(("cluster", tuple(five), ("numerical_jacobian",)))
-    students["refcopy"] = {"quat_to_matrix": rename(answer_sources()["quat_to_matrix"], seed=3)}
+    students["refcopy"] = {"quat_to_matrix": rename(answer_sources(THIS_COURSE.solutions)["quat_to_matrix"], seed=3)}
     planted.append(("reference", "refcopy", "quat_to_matrix"))
     return students, planted
 
@@ -205,7 +205,7 @@ def planted_answers():
 def write_class(folder, students):
     """Each student's answers into the released notebooks (other answers left as the stub)."""
     folder = Path(folder)
-    for lesson in load_catalog().graded_lessons:
+    for lesson in THIS_COURSE.catalog.graded_lessons:
         names = {e.name for e in lesson.exercises}
         for student, answers in students.items():
             if not names & set(answers):

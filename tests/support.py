@@ -15,16 +15,18 @@ from functools import lru_cache
 from pathlib import Path
 
 from autograder.grading.pipeline import GradingOptions, grade_student
-from autograder.lessons.paths import PROJECT_ROOT
-from autograder.lessons.reference import answer_sources, write_submission
+from autograder.lessons.hand_ins import write_submission
+from autograder.lessons.paths import PROJECT_ROOT, this_course
+from autograder.lessons.reference import answer_sources
 from autograder.mistakes import all_mistakes
 
 STUB = "stub"
+THIS_COURSE = this_course()  # the course the tests grade (a second one is built in tests/test_second_course.py)
 
 
 @lru_cache(maxsize=1)
 def references():
-    return answer_sources()
+    return answer_sources(THIS_COURSE.solutions)
 
 
 @lru_cache(maxsize=1)
@@ -44,7 +46,7 @@ def build_submission(folder, overrides=None, default="reference", lessons=None):
         choice = overrides.get(name, default)
         if choice != STUB:
             answers[name] = source if choice == "reference" else choice
-    return write_submission(folder, answers, lessons or ())
+    return write_submission(THIS_COURSE, folder, answers, lessons or ())
 
 
 def benchmark_class(target, count):
@@ -84,7 +86,7 @@ def _drawn_mistakes(student, by_exercise, share=3):
 
 def grade(folder, lessons=(), nbval=False):
     """Grade one folder in this process and return its StudentResult."""
-    return grade_student(Path(folder).name, Path(folder), GradingOptions(nbval=nbval, lessons=tuple(lessons)))
+    return grade_student(Path(folder).name, Path(folder), THIS_COURSE, GradingOptions(nbval=nbval, lessons=tuple(lessons)))
 
 
 def points_by_exercise(result):

@@ -22,13 +22,12 @@ import nbformat  # noqa: E402
 import numpy as np  # noqa: E402
 
 from autograder.grading.results import CheckResult, ExerciseResult, LessonResult, NotebookRun, StudentResult  # noqa: E402,E501
-from autograder.lessons.catalog import load_catalog  # noqa: E402
 from autograder.lessons.paths import PROJECT_ROOT, SOLUTIONS  # noqa: E402
-from autograder.lessons.reference import load_reference  # noqa: E402
 from autograder.reports.class_report import class_report_html  # noqa: E402
 from autograder.reports.feedback import feedback_html  # noqa: E402
 from book_build import shared_book  # noqa: E402
 from browser_support import Browser, open_book_page, require_chromium  # noqa: E402
+from support import THIS_COURSE
 
 LESSONS = sorted(p.stem for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
 BLOCKING = ("serious", "critical")
@@ -77,14 +76,14 @@ def _blocking_violations(page, contrast=True):
 def _student(student_id, failing):
     """A graded student of lesson 01 whose ``failing`` exercises lost their points, with a hint each."""
     exercises = []
-    for exercise in load_catalog().lesson("01").exercises:
+    for exercise in THIS_COURSE.catalog.lesson("01").exercises:
         lost = exercise.name in failing
         check = CheckResult(exercise=exercise.name, description=f"{exercise.name} on random rotations", weight=1.0,
                             passed=not lost, reason="off by 0.5 at θ = 1.2" if lost else "",
                             hint="looks like the transpose" if lost else "")
         exercises.append(ExerciseResult(name=exercise.name, lesson="01", max_points=exercise.points,
                                         points=0.0 if lost else exercise.points, checks=[check]))
-    lesson = LessonResult(number="01", title=load_catalog().lesson("01").title, notebook="01_frames_and_rotations.ipynb",
+    lesson = LessonResult(number="01", title=THIS_COURSE.catalog.lesson("01").title, notebook="01_frames_and_rotations.ipynb",
                           status="graded", exercises=exercises,
                           run=NotebookRun(status="passed", points=1.0, max_points=1.0))
     return StudentResult(student_id=student_id, status="graded", lessons=[lesson])
@@ -113,7 +112,7 @@ def test_book_pages_have_no_serious_violations(book, browser, screenshots):
 def test_feedback_page_and_class_report_have_no_serious_violations(browser, screenshots, tmp_path):
     students = [_student("ana", failing=()), _student("dev", failing=("rot_z", "rotate_point")),
                 StudentResult(student_id="ed", status="missing", reason="no submission folder")]
-    pages = {"feedback": feedback_html(students[1]), "class_report": class_report_html(students, load_catalog())}
+    pages = {"feedback": feedback_html(students[1]), "class_report": class_report_html(students, THIS_COURSE.catalog)}
     found = {}
     for name, html in pages.items():
         path = tmp_path / f"{name}.html"
@@ -147,7 +146,7 @@ def test_lesson_03_figure_3_tells_its_series_apart_without_colour(monkeypatch):
     and a legend names them."""
     master = nbformat.read(str(SOLUTIONS / "03_exp_and_log.ipynb"), as_version=4)
     (cell,) = [c for c in master.cells if c.cell_type == "code" and "Figure 3." in c.source]
-    reference = load_reference()
+    reference = THIS_COURSE.reference
     namespace = {"np": np, "plt": plt, "log_so3": reference.log_so3, "vee": reference.vee}
     from coursekit.lie import Exp
 

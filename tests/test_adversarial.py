@@ -29,15 +29,15 @@ from autograder.batch.class_run import safe_name
 from autograder.grading import pipeline, submissions
 from autograder.grading.results import LessonResult, StudentResult
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import (NotARegularFile, UnreadableNotebook, canonical_text, parse_notebook,
                                                read_master, read_regular_file, read_submission)
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from autograder.lessons.untrusted_text import csv_cell, html_text, one_line
 from autograder.sandbox import launcher
 from support import build_submission
+from support import THIS_COURSE
 
-LESSON = load_catalog().lesson("01")
+LESSON = THIS_COURSE.catalog.lesson("01")
 NAMESPACES = launcher.isolation()[0] == "namespaces"
 
 
@@ -276,7 +276,7 @@ def test_only_regular_files_are_ever_opened(kind, tmp_path):
         with pytest.raises(UnreadableNotebook, match="symbolic link|not a regular file"):
             read_submission(path, root=tmp_path)
         submissions.submission_hash(tmp_path)
-        files = submissions.match_lessons(tmp_path, load_catalog())
+        files = submissions.match_lessons(tmp_path, THIS_COURSE.catalog, THIS_COURSE.released)
     if kind != "folder":
         assert files.chosen["01"] == path  # graded as unreadable, so the reason reaches the student
 
@@ -346,7 +346,7 @@ def test_an_unexpected_error_on_one_notebook_costs_that_notebook(tmp_path, monke
 
     original = pipeline.extract.lesson_program
     monkeypatch.setattr(pipeline.extract, "lesson_program", broken)
-    lessons, _, _ = pipeline._read_lessons(folder, load_catalog(), ("01", "02"))
+    lessons, _, _ = pipeline._read_lessons(folder, THIS_COURSE, ("01", "02"))
     by_number = {shell.number: (shell, program) for shell, _, program in lessons}
     assert by_number["01"][0].status == "unreadable" and "KeyError" in by_number["01"][0].reason
     assert by_number["02"][0].status == "graded" and by_number["02"][1] is not None
@@ -413,12 +413,12 @@ def test_a_result_that_cannot_be_saved_still_reaches_the_gradebook(tmp_path, mon
     outputs = class_run.Outputs(tmp_path / "out")
     stamp = class_run.Stamp("f", {})
     monkeypatch.setattr(class_run, "save_result", lambda *a: (_ for _ in ()).throw(OSError(28, "No space left")))
-    task = class_run.GradingTask("mallory", str(tmp_path / "missing"), None, str(outputs.root), stamp, None)
+    task = class_run.GradingTask("mallory", str(tmp_path / "missing"), None, str(outputs.root), stamp, None, THIS_COURSE)
     result = class_run.record_death(task, "the grading process was killed by SIGKILL")
     assert result.status == "could not grade" and "could not be saved" in result.problems[-1]
     monkeypatch.undo()
     class_run.save_result(outputs, _graded("ada"), stamp, "now")
-    results = class_run.write_reports(outputs, ["ada", "mallory"], {"ada", "mallory"}, {"mallory": result})
+    results = class_run.write_reports(outputs, THIS_COURSE, ["ada", "mallory"], {"ada", "mallory"}, {"mallory": result})
     assert {r.student_id: r.status for r in results} == {"ada": "graded", "mallory": "could not grade"}
     assert "mallory" in outputs.gradebook.read_text(encoding="utf-8")
 
@@ -429,7 +429,7 @@ def test_the_report_is_written_even_when_the_full_page_fails(tmp_path, monkeypat
     outputs = class_run.Outputs(tmp_path / "out")
     class_run.save_result(outputs, _graded("esc\x1b[2J"), class_run.Stamp("f", {}), "now")
     monkeypatch.setattr(class_report, "class_report_html", lambda *a, **k: 1 / 0)
-    class_run.write_reports(outputs, ["esc\x1b[2J"], {"esc\x1b[2J"})
+    class_run.write_reports(outputs, THIS_COURSE, ["esc\x1b[2J"], {"esc\x1b[2J"})
     page = outputs.report.read_text(encoding="utf-8")
     assert "ZeroDivisionError" in page and "esc\\x1b[2J" in page and "\x1b" not in page
 

@@ -10,22 +10,22 @@ from collections import Counter
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from autograder.mistakes import all_alternatives
 from public_runner import run_public_checks
 from support import build_submission, grade
+from support import THIS_COURSE
 
 ALTERNATIVES = all_alternatives()
 
 
 def _ids(name):
-    return f"lesson{load_catalog().exercise(ALTERNATIVES[name].exercise).lesson}-{name}"
+    return f"lesson{THIS_COURSE.catalog.exercise(ALTERNATIVES[name].exercise).lesson}-{name}"
 
 
 @pytest.mark.parametrize("name", sorted(ALTERNATIVES), ids=_ids)
 def test_alternative_gets_full_hidden_marks(name, tmp_path):
     alternative = ALTERNATIVES[name]
-    lesson = load_catalog().exercise(alternative.exercise).lesson
+    lesson = THIS_COURSE.catalog.exercise(alternative.exercise).lesson
     folder = build_submission(tmp_path / "student", {alternative.exercise: alternative.source}, lessons=(lesson,))
     result = grade(folder, lessons=(lesson,))
     failed = [(c.exercise, c.description, c.reason, c.hint) for e in result.exercises for c in e.checks
@@ -36,11 +36,11 @@ def test_alternative_gets_full_hidden_marks(name, tmp_path):
 @pytest.mark.parametrize("name", sorted(ALTERNATIVES), ids=_ids)
 def test_alternative_passes_the_public_checks(name):
     alternative = ALTERNATIVES[name]
-    passed, printed = run_public_checks(alternative.exercise, alternative.source)
+    passed, printed = run_public_checks(THIS_COURSE, alternative.exercise, alternative.source)
     assert passed, f"{name} ({alternative.description}) fails a public check:\n{printed}"
 
 
 def test_every_lesson_has_alternatives():
-    counts = Counter(load_catalog().exercise(a.exercise).lesson for a in ALTERNATIVES.values())
-    missing = [lesson.number for lesson in load_catalog().graded_lessons if counts[lesson.number] == 0]
+    counts = Counter(THIS_COURSE.catalog.exercise(a.exercise).lesson for a in ALTERNATIVES.values())
+    missing = [lesson.number for lesson in THIS_COURSE.catalog.graded_lessons if counts[lesson.number] == 0]
     assert not missing, f"lessons without correct alternatives: {missing}"

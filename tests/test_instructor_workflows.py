@@ -14,11 +14,11 @@ import sys
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.paths import PROJECT_ROOT
 from support import STUB, build_submission
+from support import THIS_COURSE
 
-LESSON = load_catalog().lesson("01")
+LESSON = THIS_COURSE.catalog.lesson("01")
 
 
 def _run(*args):
@@ -126,7 +126,7 @@ def test_per_lesson_totals_and_canvas_export(class_folder, tmp_path):
     out = tmp_path / "out"
     _grade(class_folder, out)
     header = (out / "grades.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
-    lessons = [f"lesson_{lesson.number}" for lesson in load_catalog().graded_lessons]
+    lessons = [f"lesson_{lesson.number}" for lesson in THIS_COURSE.catalog.graded_lessons]
     assert header[4:4 + len(lessons)] == lessons
     assert float(_rows(out)["ana"][f"lesson_{LESSON.number}"]) == LESSON.points
 

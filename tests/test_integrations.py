@@ -14,14 +14,14 @@ from autograder.integrations.gradescope import build_bundle, unpack_bundle
 from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit,
                                                      with_environment_tools)
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import COURSE, PROJECT_ROOT
 from autograder.lessons.reference import answer_sources
 from autograder.sandbox import launcher
 from support import STUB, build_submission
+from support import THIS_COURSE
 
-LESSONS = load_catalog().graded_lessons
+LESSONS = THIS_COURSE.catalog.graded_lessons
 
 
 def _gradebook(root):
@@ -39,8 +39,8 @@ def nbgrader_course(tmp_path_factory):
     nbgrader reads an assignment id as a glob, so one ``generate_assignment "*"`` and one
     ``autograde "*"`` do every lesson (one start-up of nbgrader each instead of one per lesson).
     """
-    root = build_course(tmp_path_factory.mktemp("nbgrader") / "course")
-    references = answer_sources()
+    root = build_course(tmp_path_factory.mktemp("nbgrader") / "course", THIS_COURSE.solutions)
+    references = answer_sources(THIS_COURSE.solutions)
     run_nbgrader(root, "generate_assignment", "*", "--force")
     for lesson in LESSONS:
         released = root / "release" / assignment_name(lesson) / lesson.filename
@@ -98,7 +98,7 @@ def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
     whichever of autograde and our export ran last owns the automatic scores (the rule in
     autograder/integrations/nbgrader_export.py)."""
     first, second = LESSONS[0], LESSONS[1]
-    root = build_course(tmp_path / "course", lessons=(first.number, second.number))
+    root = build_course(tmp_path / "course", THIS_COURSE.solutions, lessons=(first.number, second.number))
     run_nbgrader(root, "generate_assignment", assignment_name(first), "--force")
     released = root / "release" / assignment_name(first) / first.filename
     answers = {"ada": "reference", "ben": STUB, "gina": "reference"}
@@ -137,7 +137,7 @@ def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
 @pytest.fixture(scope="module")
 def gradescope_root(tmp_path_factory):
     base = tmp_path_factory.mktemp("gradescope")
-    bundle = build_bundle(base / "autograder.zip", lessons=(LESSONS[0].number,))
+    bundle = build_bundle(base / "autograder.zip", THIS_COURSE, lessons=(LESSONS[0].number,))
     root = base / "autograder"
     source = unpack_bundle(bundle, root)
     for name in ("setup.sh", "run_autograder"):
@@ -184,7 +184,7 @@ def test_gradescope_reference_full_marks(gradescope_root, tmp_path, sandbox):
 
 def test_gradescope_setup_runs_the_canary(gradescope_root):
     setup = (gradescope_root / "source" / "setup.sh").read_text(encoding="utf-8")
-    assert setup.rstrip().endswith("-m autograder canary --lessons " + LESSONS[0].number)
+    assert setup.rstrip().endswith('-m autograder canary --course "." --lessons ' + LESSONS[0].number)
 
 
 def test_gradescope_stubs_zero(gradescope_root, tmp_path):

@@ -13,7 +13,6 @@ testing"), not a test.
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from autograder.mistakes import all_mistakes
 from autograder.mutants import operators
 from autograder.mutants.equivalent import EQUIVALENT
@@ -21,6 +20,7 @@ from autograder.mutants.generate import all_mutants, mutants_of
 from autograder.mutants.inprocess import grade_hidden, run_public_checks
 from autograder.mutants.run import grade_mutant, stale_equivalents
 from support import build_submission, grade, points_by_exercise
+from support import THIS_COURSE
 
 # One mutant per family, each a slip the issue names, with the exercise and a piece of its description.
 FAMILY_EXAMPLES = {
@@ -54,13 +54,13 @@ FAMILY_EXAMPLES = {
 
 def _example(family):
     exercise, words = FAMILY_EXAMPLES[family]
-    found = [m for m in mutants_of(exercise) if m.family == family and words in m.description]
+    found = [m for m in mutants_of(THIS_COURSE, exercise) if m.family == family and words in m.description]
     assert found, f"no {family} mutant of {exercise} whose description holds {words!r}"
     return found[0]
 
 
 def test_every_family_has_an_operator_and_an_example():
-    made = {m.family for m in all_mutants()}
+    made = {m.family for m in all_mutants(THIS_COURSE)}
     assert set(operators.FAMILIES) <= made, f"families no operator uses: {set(operators.FAMILIES) - made}"
     assert set(FAMILY_EXAMPLES) == set(operators.FAMILIES)
 
@@ -77,7 +77,7 @@ def test_families_with_only_equivalent_mutants_are_listed():
 @pytest.mark.parametrize("family", sorted(set(FAMILY_EXAMPLES) - EQUIVALENT_ONLY))
 def test_a_mutant_of_each_family_is_killed_by_both_suites(family):
     mutant = _example(family)
-    outcome = grade_mutant(mutant)
+    outcome = grade_mutant(THIS_COURSE, mutant)
     assert not outcome.error, outcome.error
     assert outcome.hidden_killed, f"{mutant.key} ({mutant.description}) keeps full hidden marks"
     assert outcome.public_killed, f"{mutant.key} ({mutant.description}) passes every public check"
@@ -91,24 +91,24 @@ KINDS = ["rot_z_transposed", "rotate_point_single_only", "quat_conjugate_in_plac
 @pytest.mark.parametrize("name", KINDS)
 def test_in_process_grading_gives_the_sandbox_s_points(name, tmp_path):
     mistake = all_mistakes()[name]
-    lesson = load_catalog().exercise(mistake.exercise).lesson
+    lesson = THIS_COURSE.catalog.exercise(mistake.exercise).lesson
     folder = build_submission(tmp_path / "student", {mistake.exercise: mistake.source}, lessons=(lesson,))
     real = points_by_exercise(grade(folder, lessons=(lesson,)))[mistake.exercise]
-    fast = grade_hidden(mistake.exercise, mistake.source)
+    fast = grade_hidden(THIS_COURSE, mistake.exercise, mistake.source)
     assert (fast.points, fast.max_points) == real
 
 
 def test_the_equivalent_list_names_mutants_of_today():
-    assert not stale_equivalents(all_mutants())
+    assert not stale_equivalents(all_mutants(THIS_COURSE))
     assert all(isinstance(why, str) and len(why) > 20 for why in EQUIVALENT.values())
 
 
 def test_listed_equivalents_are_correct_answers():
     """A sample (every 15th) of the equivalent mutants: full hidden marks and every public check passed."""
     keys = sorted(EQUIVALENT)[::15]
-    by_key = {m.key: m for m in all_mutants()}
+    by_key = {m.key: m for m in all_mutants(THIS_COURSE)}
     for key in keys:
         mutant = by_key[key]
-        assert not grade_hidden(mutant.exercise, mutant.source).killed, f"{key} ({mutant.description}) loses points"
-        passed, printed = run_public_checks(mutant.exercise, mutant.source)
+        assert not grade_hidden(THIS_COURSE, mutant.exercise, mutant.source).killed, f"{key} ({mutant.description}) loses points"
+        passed, printed = run_public_checks(THIS_COURSE, mutant.exercise, mutant.source)
         assert passed, f"{key} ({mutant.description}) fails a public check:\n{printed}"

@@ -16,10 +16,10 @@ from collections import Counter
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from autograder.mistakes import all_mistakes
 from public_runner import run_public_checks
 from support import build_submission, grade, points_by_exercise
+from support import THIS_COURSE
 
 MISTAKES = all_mistakes()
 WRONG = {name: m for name, m in MISTAKES.items() if m.kind == "mistake"}
@@ -31,7 +31,7 @@ KERNEL_SENSITIVE = {"quat_from_two_vectors"}
 
 def _lesson(mistake):
     try:
-        return load_catalog().exercise(mistake.exercise).lesson
+        return THIS_COURSE.catalog.exercise(mistake.exercise).lesson
     except KeyError:  # a lesson's mistakes written before its master: reported by the test below
         return "??"
 
@@ -78,7 +78,7 @@ def test_mistake_costs_points_on_its_exercise_only(name, tmp_path):
 @pytest.mark.parametrize("name", sorted(WRONG), ids=_ids)
 def test_mistake_fails_a_public_check(name):
     mistake = WRONG[name]
-    passed, printed = run_public_checks(mistake.exercise, mistake.source)
+    passed, printed = run_public_checks(THIS_COURSE, mistake.exercise, mistake.source)
     assert not passed, f"{name} ({mistake.description}) passes every public check:\n{printed}"
     if mistake.public_hint:
         assert mistake.public_hint in printed, f"{name}: no public hint {mistake.public_hint!r} in\n{printed}"
@@ -92,7 +92,7 @@ def test_every_exercise_has_typical_mistakes():
     orphans = [name for name, mistake in MISTAKES.items() if _lesson(mistake) == "??"]
     assert not orphans, f"mistakes for exercises that no master defines: {orphans}"
     counts = Counter(m.exercise for m in WRONG.values())
-    short = {e.name: counts[e.name] for e in load_catalog().exercises if counts[e.name] < MIN_PER_EXERCISE}
+    short = {e.name: counts[e.name] for e in THIS_COURSE.catalog.exercises if counts[e.name] < MIN_PER_EXERCISE}
     assert not short, f"exercises with fewer than {MIN_PER_EXERCISE} typical mistakes: {short}"
 
 

@@ -14,8 +14,8 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
+from support import THIS_COURSE
 
 MASTERS = sorted(p.name for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
 
@@ -49,7 +49,7 @@ def test_solutions_pass_nbval(name, tmp_path):
 def test_course_fails_only_with_not_implemented(name, tmp_path):
     _nbval(COURSE / name, tmp_path / "junit.xml")
     failures = _failures(tmp_path / "junit.xml")
-    has_exercises = bool(load_catalog().lesson(name[:2]).exercises)
+    has_exercises = bool(THIS_COURSE.catalog.lesson(name[:2]).exercises)
     assert bool(failures) == has_exercises, f"{name}: stubs should fail (and only stubs)"
     # a stub raises the first; its check cell the second; the hand-in cell the third
     stubs = ("NotImplementedError", "NotWrittenYet", "NotReadyYet")

@@ -4,10 +4,9 @@ import time
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
-from autograder.lessons.reference import load_reference
+from support import THIS_COURSE
 
-EXERCISES = [e.name for e in load_catalog().exercises]
+EXERCISES = [e.name for e in THIS_COURSE.catalog.exercises]
 
 
 @pytest.fixture(scope="module")
@@ -25,7 +24,7 @@ def test_reference_passes_the_public_checks_quickly(name, kit, capsys):
     coursekit, registered = kit
     assert name in registered, f"no public checks for {name}"
     started = time.perf_counter()
-    coursekit.check(name, getattr(load_reference(), name))
+    coursekit.check(name, getattr(THIS_COURSE.reference, name))
     elapsed = time.perf_counter() - started
     out = capsys.readouterr().out
     assert elapsed < 0.5, f"check cell for {name} took {elapsed:.2f} s"

@@ -2,10 +2,10 @@
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from support import STUB, build_submission, grade
+from support import THIS_COURSE
 
-LESSONS = [lesson.number for lesson in load_catalog().graded_lessons]
+LESSONS = [lesson.number for lesson in THIS_COURSE.catalog.graded_lessons]
 
 
 @pytest.mark.parametrize("lesson", LESSONS, ids=lambda n: f"lesson{n}")

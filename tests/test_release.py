@@ -8,6 +8,7 @@ from autograder.authoring.release import stale_files
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
 from autograder.lessons.paths import COURSE, HIDDEN_SUITE, SOLUTIONS
+from support import THIS_COURSE
 
 
 def _course_line_pairs(folder=COURSE):
@@ -69,7 +70,7 @@ def _leaks(blocks, pairs, run=2, public=frozenset()):
 
 
 def test_course_is_in_sync_with_solutions():
-    assert stale_files() == [], "run: python -m autograder release"
+    assert stale_files(THIS_COURSE.solutions, THIS_COURSE.released) == [], "run: python -m autograder release"
 
 
 def test_no_solution_code_in_course():

@@ -18,11 +18,11 @@ from pathlib import Path
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.paths import PROJECT_ROOT
 from support import STUB, build_submission, mistakes
+from support import THIS_COURSE
 
-CATALOG = load_catalog()
+CATALOG = THIS_COURSE.catalog
 FIRST, SECOND = CATALOG.lesson("01"), CATALOG.lesson("02")
 LESSONS = (FIRST.number, SECOND.number)
 MISTAKE = mistakes()["rot_z_transposed"]

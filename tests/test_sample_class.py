@@ -12,10 +12,10 @@ import sys
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.paths import PROJECT_ROOT
 from autograder.mistakes import all_mistakes, sample_assignments
 from support import grade_sample_class
+from support import THIS_COURSE
 
 FORMULA_ID = '=HYPERLINK("evil","click me")'
 
@@ -27,18 +27,18 @@ def run(tmp_path_factory):
 
 
 def _points(row):
-    return {e.name: float(row[e.name]) for e in load_catalog().exercises}
+    return {e.name: float(row[e.name]) for e in THIS_COURSE.catalog.exercises}
 
 
 def _maximum():
-    return {e.name: e.points for e in load_catalog().exercises}
+    return {e.name: e.points for e in THIS_COURSE.catalog.exercises}
 
 
 def test_gradebook_columns(run):
     out, _, rows = run
     header = (out / "grades.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     assert header[:4] == ["student_id", "score", "max_score", "status"]
-    lessons = [f"lesson_{lesson.number}" for lesson in load_catalog().graded_lessons]
+    lessons = [f"lesson_{lesson.number}" for lesson in THIS_COURSE.catalog.graded_lessons]
     assert header[4:4 + len(lessons)] == lessons
     start = 4 + len(lessons)
     assert header[start:start + len(_maximum())] == list(_maximum())
@@ -83,9 +83,9 @@ def test_faults_cost_only_their_exercises(run):
 
 def test_a_damaged_notebook_costs_only_its_lesson(run):
     _, _, rows = run
-    first = load_catalog().graded_lessons[0]
+    first = THIS_COURSE.catalog.graded_lessons[0]
     points, maximum = _points(rows["kim"]), _maximum()
-    for exercise in load_catalog().exercises:
+    for exercise in THIS_COURSE.catalog.exercises:
         expected = 0.0 if exercise.lesson == first.number else maximum[exercise.name]
         assert points[exercise.name] == expected, exercise.name
     assert rows["kim"]["status"] == "graded with problems"

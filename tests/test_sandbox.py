@@ -10,6 +10,7 @@ import pytest
 from autograder.lessons.paths import SOLUTIONS
 from autograder.sandbox import launcher, warm
 from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
+from support import THIS_COURSE
 
 NAMESPACES = launcher.isolation()[0] == "namespaces"
 
@@ -28,12 +29,12 @@ def make_box(request):
         if request.param == "warm":
             slot = next((s for s in slots if s.limits == limits), None)
             if slot is None:
-                slot = warm.WarmSlot(len(slots), limits)
+                slot = warm.WarmSlot(len(slots), limits, THIS_COURSE.support)
                 slot.spawn()
                 slot.wait_ready()
                 slots.append(slot)
         program = program or {"01": LessonProgram(setup="import numpy as np", cells=[("code", source)])}
-        return StudentSandbox(program, limits=limits, slot=slot)
+        return StudentSandbox(support=THIS_COURSE.support, program=program, limits=limits, slot=slot)
 
     make.warm = request.param == "warm"
     yield make

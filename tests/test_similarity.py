@@ -11,7 +11,6 @@ import sys
 import pytest
 
 from autograder.lessons.paths import PROJECT_ROOT
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.reference import answer_sources
 from autograder.mistakes import all_mistakes
 from autograder.similarity import findings as findings_module
@@ -21,6 +20,7 @@ from autograder.similarity.findings import (MIN_LENGTH, MIN_SHARED, PAIR_FLOOR, 
 from autograder.similarity.fingerprints import fingerprint, shared_counts
 from autograder.similarity.report import similar_answers_html
 from similarity_classes import honest_answers, planted_answers, write_class
+from support import THIS_COURSE
 
 
 def _run(folder, out, *past):
@@ -78,7 +78,7 @@ def test_the_page_marks_shared_spans_says_worth_a_look_and_never_copied(classes)
 
 
 def test_the_stub_never_counts_and_short_answers_are_not_compared():
-    stubs = released_stubs()
+    stubs = released_stubs(THIS_COURSE.released)
     answers = {"rot_z": {"a": stubs["rot_z"], "b": stubs["rot_z"]},
                "invert_rotation": {"a": "def invert_rotation(R):\n    return R.T\n",
                                    "b": "def invert_rotation(M):\n    return M.T\n"}}
@@ -104,7 +104,7 @@ def test_the_bar_rises_with_an_exercise_whose_answers_all_look_alike():
 def test_student_text_is_escaped_in_the_section():
     evil = '<script>alert(1)</script>'
     source = planted_answers()[0]["pair_rename"]["quat_multiply"]
-    findings = find_similar({"quat_multiply": {evil: source, "b": source + f"\n# {evil}\n"}}, {}, released_stubs())
+    findings = find_similar({"quat_multiply": {evil: source, "b": source + f"\n# {evil}\n"}}, {}, released_stubs(THIS_COURSE.released))
     html = similar_answers_html(findings)
     assert findings.clusters and "<script>" not in html and "&lt;script&gt;" in html
 
@@ -113,7 +113,7 @@ def test_a_huge_answer_costs_no_more_than_a_long_one(tmp_path):
     source = planted_answers()[0]["pair_rename"]["quat_multiply"]
     huge = source + "\n    unused = [" + "1, " * 400_000 + "]\n"  # one line: a notebook's lines are bounded
     write_class(tmp_path / "class", {"ana": {"quat_multiply": huge}, "bo": {"quat_multiply": source}})
-    answers = read_class(tmp_path / "class", load_catalog())
+    answers = read_class(tmp_path / "class", THIS_COURSE)
     assert len(answers.by_exercise["quat_multiply"]["ana"]) == MAX_ANSWER_CHARACTERS
 
 
@@ -156,9 +156,9 @@ def test_one_pass_finds_what_pairwise_scoring_finds(monkeypatch):
     students, _ = planted_answers()
     students["twin"] = dict(students["honest1"])  # the same texts as honest1: tokenised once
     students["twin_of_ring"] = dict(students["ring3"])
-    students["untouched"] = {exercise: source for exercise, source in released_stubs().items()
+    students["untouched"] = {exercise: source for exercise, source in released_stubs(THIS_COURSE.released).items()
                              if exercise in students["honest2"]}
-    answers, references, stubs = _by_exercise(students), answer_sources(), released_stubs()
+    answers, references, stubs = _by_exercise(students), answer_sources(THIS_COURSE.solutions), released_stubs(THIS_COURSE.released)
     monkeypatch.setattr(findings_module, "MIN_ANSWERS_FOR_WORKERS", 0)  # fork even for this small class
     for jobs in (1, 2):
         found = find_similar(answers, references, stubs, jobs=jobs)
@@ -179,13 +179,13 @@ def test_two_short_standard_answers_are_not_a_finding():
     body are."""
     mistakes = all_mistakes()
     short = {"dev": mistakes["align_svd_transposed"].source, "farid": mistakes["align_svd_reflection"].source}
-    stubs = released_stubs()
+    stubs = released_stubs(THIS_COURSE.released)
     prints = [fingerprint(source, stubs["align_svd"]) for source in short.values()]
     counts, sizes = shared_counts(prints)
     assert counts[0, 1] / sizes.min() >= PAIR_FLOOR and counts[0, 1] < MIN_SHARED  # alike, but one line
-    assert find_similar({"align_svd": short}, answer_sources(), stubs).clusters == []
+    assert find_similar({"align_svd": short}, answer_sources(THIS_COURSE.solutions), stubs).clusters == []
     longer = {author: source + "    " + "\n    ".join(["check = np.linalg.norm(P @ np.eye(3) - P, axis=1)",
                                                          "spread = float(np.sum(check ** 2)) + len(Q)"]) + "\n"
               for author, source in short.items()}
-    assert [c.members for c in find_similar({"align_svd": longer}, answer_sources(), stubs).clusters] == \
+    assert [c.members for c in find_similar({"align_svd": longer}, answer_sources(THIS_COURSE.solutions), stubs).clusters] == \
         [("dev", "farid")]

@@ -14,9 +14,9 @@
 
 from autograder.grading import nbval_stage, pipeline as grading
 from autograder.grading.results import ExerciseResult, LessonResult, NotebookRun, StudentResult
-from autograder.lessons.catalog import load_catalog
 from autograder.reports.class_report import class_report_html
 from support import STUB, build_submission
+from support import THIS_COURSE
 
 
 def _lesson(points):
@@ -53,7 +53,7 @@ def test_award_is_unchanged_for_lessons_that_ran():
 
 def test_nbval_gets_only_the_lessons_with_full_hidden_marks(tmp_path, monkeypatch):
     """Lesson 01 answered, lesson 02 left as stubs: nbval is asked for 01 only; 02 is skipped, worth 0."""
-    catalog = load_catalog()
+    catalog = THIS_COURSE.catalog
     first, second = catalog.graded_lessons[0], catalog.graded_lessons[1]
     folder = tmp_path / "student"
     build_submission(folder, {exercise.name: STUB for exercise in second.exercises},
@@ -66,7 +66,7 @@ def test_nbval_gets_only_the_lessons_with_full_hidden_marks(tmp_path, monkeypatc
                 for shell, _, _ in lessons}
 
     monkeypatch.setattr(grading, "run_notebooks", fake_run_notebooks)
-    result = grading.grade_student("s", folder, grading.GradingOptions(lessons=(first.number, second.number)))
+    result = grading.grade_student("s", folder, THIS_COURSE, grading.GradingOptions(lessons=(first.number, second.number)))
     runs = {lesson.number: lesson.run for lesson in result.lessons}
     assert asked == [first.number]
     assert (runs[first.number].status, runs[first.number].points) == ("passed", 1.0)
@@ -80,7 +80,7 @@ def test_class_report_counts_notebooks_run_and_not_run():
         lesson.run = NotebookRun(status=status, max_points=1.0)
         return StudentResult(student_id=status, status="graded", lessons=[lesson])
 
-    html = class_report_html([student("passed"), student("failed"), student("skipped")], load_catalog())
+    html = class_report_html([student("passed"), student("failed"), student("skipped")], THIS_COURSE.catalog)
     row = html[html.index("Notebook stage"):]
     assert '<tr><td>01</td><td class="num">1 / 2</td><td class="num">2</td><td class="num">1</td></tr>' in row
 

@@ -18,11 +18,11 @@ from nbclient import NotebookClient
 
 from autograder.grading.pipeline import GradingOptions
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
 from autograder.lessons.paths import COURSE, SOLUTIONS
+from support import THIS_COURSE
 
 LESSON = "01_frames_and_rotations.ipynb"
-EXERCISES = [e.name for e in load_catalog().lesson("01").exercises]
+EXERCISES = [e.name for e in THIS_COURSE.catalog.lesson("01").exercises]
 
 
 def _execute(folder):
@@ -108,7 +108,7 @@ def test_only_a_stub_gets_the_one_line(tmp_path):
 
 
 def test_every_lesson_ends_with_its_hand_in_cell():
-    for lesson in load_catalog().graded_lessons:
+    for lesson in THIS_COURSE.catalog.graded_lessons:
         nb = nbformat.read(str(SOLUTIONS / lesson.filename), as_version=4)
         ids = [c.get("id") for c in nb.cells]
         assert "ready-to-hand-in" in ids, lesson.filename

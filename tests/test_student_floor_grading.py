@@ -20,11 +20,11 @@ from pathlib import Path
 
 import pytest
 
-from autograder.lessons.catalog import load_catalog
 from support import grade, points_by_exercise
 
 sys.path.insert(0, str(Path(__file__).parent))
 import student_floor  # noqa: E402
+from support import THIS_COURSE
 
 # Two of the lessons whose public checks ran into Python 3.10's missing co_qualname (issue 35).
 LESSONS = ("03", "05")
@@ -58,7 +58,7 @@ def test_every_lesson_of_the_floor_run_ran_clean(floor_run):
 
 
 def test_notebooks_last_run_under_the_floors_grade_as_the_reference_answers(floor_run, tmp_path):
-    catalog = {lesson.number: lesson for lesson in load_catalog().graded_lessons}
+    catalog = {lesson.number: lesson for lesson in THIS_COURSE.catalog.graded_lessons}
     student = tmp_path / "floor_student"
     student.mkdir()
     for number in LESSONS:

@@ -29,6 +29,7 @@ from autograder.sandbox.child import wire
 from autograder.sandbox.launcher import Limits
 from autograder.sandbox.session import StudentError
 from support import STUB, build_submission, mistakes
+from support import THIS_COURSE
 
 FAULTS = {
     # hangs for angles above 5 rad (the checks use angles in [-2π, 2π])
@@ -83,9 +84,9 @@ def _as_rows(result):
 @pytest.mark.parametrize("name", sorted(SUBMISSIONS))
 def test_the_runner_agrees_with_plain_pytest_check_by_check(name, tmp_path, monkeypatch):
     folder = SUBMISSIONS[name](tmp_path / name)
-    fast = grade_student(name, folder, OPTIONS)
+    fast = grade_student(name, folder, THIS_COURSE, OPTIONS)
     monkeypatch.setattr(pipeline, "run_hidden_suite", run_hidden_suite_with_pytest)
-    plain = grade_student(name, folder, OPTIONS)
+    plain = grade_student(name, folder, THIS_COURSE, OPTIONS)
 
     fast_rows, fast_problems = _as_rows(fast)
     plain_rows, plain_problems = _as_rows(plain)
@@ -111,7 +112,7 @@ def _count_unrun(monkeypatch):
 
 def test_answers_equal_to_the_references_bit_for_bit_are_passed_without_running(tmp_path, monkeypatch):
     counts = _count_unrun(monkeypatch)
-    result = grade_student("ada", build_submission(tmp_path / "ada", lessons=("01", "02")),
+    result = grade_student("ada", build_submission(tmp_path / "ada", lessons=("01", "02")), THIS_COURSE,
                            GradingOptions(nbval=False, lessons=("01", "02")))
     assert result.score == result.max_score
     # rot_z and friends return the same bits as the reference's; a few results differ from the
@@ -124,7 +125,7 @@ def test_an_answer_one_rounding_away_from_the_reference_runs_its_tests_and_passe
               "    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) * (1.0 + 2.0 ** -52)")
     folder = build_submission(tmp_path / "nudged", {"rot_z": nudged}, lessons=("01",))
     counts = _count_unrun(monkeypatch)
-    result = grade_student("nudged", folder, GradingOptions(nbval=False, lessons=("01",)))
+    result = grade_student("nudged", folder, THIS_COURSE, GradingOptions(nbval=False, lessons=("01",)))
     rot_z = next(e for e in result.exercises if e.name == "rot_z")
     assert rot_z.points == rot_z.max_points and all(c.passed for c in rot_z.checks)
     assert counts["run"] >= len(rot_z.checks)  # its tests could not be skipped: they ran, and passed
@@ -132,27 +133,22 @@ def test_an_answer_one_rounding_away_from_the_reference_runs_its_tests_and_passe
 
 def _transcripts():
     from autograder.grading import suite
-    from autograder.lessons.catalog import load_catalog
-    from autograder.lessons.reference import load_reference
 
-    return suite.transcripts_for(load_reference(), load_catalog())
+    return suite.transcripts_for(THIS_COURSE.reference, THIS_COURSE)
 
 
 def test_recording_is_deterministic(tmp_path, monkeypatch):
     """The same calls and values in another process, one that loaded other modules (a grader's), as in this one:
     the transcripts kept on disk by one process are used by the next (autograder/grading/transcript_cache.py)."""
     from autograder.grading import suite, transcript_cache
-    from autograder.lessons.catalog import load_catalog
-    from autograder.lessons.reference import load_reference
 
     monkeypatch.setenv("AUTOGRADER_CACHE", str(tmp_path))
-    record = ("from autograder.grading import suite; from autograder.lessons.catalog import load_catalog; "
-              "from autograder.lessons.reference import load_reference; "
-              "suite.transcripts_for(load_reference(), load_catalog())")
+    record = ("from autograder.grading import suite; from autograder.lessons.paths import this_course; "
+              "course = this_course(); suite.transcripts_for(course.reference, course)")
     subprocess.run([sys.executable, "-c", record], cwd=PROJECT_ROOT, check=True, timeout=600)
-    first, _ = transcript_cache.load()
+    first, _ = transcript_cache.load(THIS_COURSE)
     suite.single_threaded_blas()
-    second = suite._record_transcripts(load_reference(), load_catalog(), suite.hidden_tests()[0])
+    second = suite._record_transcripts(THIS_COURSE.reference, THIS_COURSE.catalog, suite.hidden_tests(THIS_COURSE)[0])
     assert first.keys() == second.keys()
     differ = [k for k in first if first[k].calls != second[k].calls or first[k].results != second[k].results
               or not (first[k].passed and second[k].passed)]
@@ -242,13 +238,11 @@ def test_values_are_learned_only_from_a_test_that_passed_on_exactly_its_batch():
 def test_a_student_whose_code_is_the_references_runs_almost_no_test_once_learned(tmp_path, monkeypatch):
     """learn_reference_in_sandbox: the reference's sandbox values pass unrun too (and verdicts stay full)."""
     from autograder.grading import suite
-    from autograder.lessons.catalog import load_catalog
-    from autograder.lessons.reference import load_reference
 
-    suite.learn_reference_in_sandbox(load_reference(), load_catalog())
-    cut = sum(not t.complete for t in suite.transcripts_for(load_reference(), load_catalog()).values())
+    suite.learn_reference_in_sandbox(THIS_COURSE.reference, THIS_COURSE)
+    cut = sum(not t.complete for t in suite.transcripts_for(THIS_COURSE.reference, THIS_COURSE).values())
     counts = _count_unrun(monkeypatch)
-    result = grade_student("ada", build_submission(tmp_path / "ada"), GradingOptions(nbval=False))
+    result = grade_student("ada", build_submission(tmp_path / "ada"), THIS_COURSE, GradingOptions(nbval=False))
     assert result.score == result.max_score
     total = counts["run"] + counts["unrun"]
     # the tests cut for chained inputs always run (tests/test_transcripts_independent.py); of the rest, ≤ 2%

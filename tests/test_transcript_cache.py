@@ -11,15 +11,14 @@ import pytest
 
 from autograder.grading import fingerprint, suite, transcript_cache
 from autograder.grading.transcripts import Transcript
-from autograder.lessons.catalog import load_catalog
-from autograder.lessons.reference import load_reference
+from support import THIS_COURSE
 
 
 @pytest.fixture
 def fresh(tmp_path, monkeypatch):
     """An empty cache folder, and the reference's memo of transcripts forgotten (restored after)."""
     monkeypatch.setenv("AUTOGRADER_CACHE", str(tmp_path / "cache"))
-    monkeypatch.setattr(load_reference(), "memo", {})
+    monkeypatch.setattr(THIS_COURSE.reference, "memo", {})
     return tmp_path / "cache"
 
 
@@ -30,64 +29,64 @@ def _sample():
 
 
 def test_a_saved_transcript_loads_back_field_for_field(fresh):
-    transcript_cache.save(_sample(), learned={"03", "01"})
-    loaded, learned = transcript_cache.load()
+    transcript_cache.save(THIS_COURSE, _sample(), learned={"03", "01"})
+    loaded, learned = transcript_cache.load(THIS_COURSE)
     assert loaded == _sample() and learned == {"01", "03"}
     assert loaded["t::a"].keys == [("01", "rot_z")]  # tuples again, as the recorder makes them
 
 
 def test_the_file_name_follows_the_kernel_and_the_content(fresh, monkeypatch):
-    first = transcript_cache.path()
+    first = transcript_cache.path(THIS_COURSE)
     monkeypatch.setenv("OPENBLAS_CORETYPE", "Prescott-test")
-    assert transcript_cache.path() != first
+    assert transcript_cache.path(THIS_COURSE) != first
     monkeypatch.delenv("OPENBLAS_CORETYPE")
-    assert transcript_cache.path() == first
-    parts = fingerprint.content_parts()
-    monkeypatch.setattr(transcript_cache, "content_parts", lambda: dict(parts, **{"hidden suite": "other"}))
-    assert transcript_cache.path() != first
+    assert transcript_cache.path(THIS_COURSE) == first
+    parts = fingerprint.content_parts(THIS_COURSE)
+    monkeypatch.setattr(transcript_cache, "content_parts", lambda course: dict(parts, **{"hidden suite": "other"}))
+    assert transcript_cache.path(THIS_COURSE) != first
 
 
 @pytest.mark.parametrize("text", ["", "{not json", '{"format": 0, "learned": [], "transcripts": {}}',
                                   '{"format": 1, "learned": [], "transcripts": {"t": {"calls": 3}}}'])
 def test_a_damaged_or_foreign_file_is_never_used(fresh, text):
-    transcript_cache.path().parent.mkdir(parents=True)
-    transcript_cache.path().write_text(text, encoding="utf-8")
-    assert transcript_cache.load() is None
+    transcript_cache.path(THIS_COURSE).parent.mkdir(parents=True)
+    transcript_cache.path(THIS_COURSE).write_text(text, encoding="utf-8")
+    assert transcript_cache.load(THIS_COURSE) is None
 
 
 def test_a_process_that_finds_the_file_records_nothing(fresh, monkeypatch):
-    reference, catalog = load_reference(), load_catalog()
-    recorded = suite.transcripts_for(reference, catalog)
-    assert transcript_cache.path().exists()
+    reference = THIS_COURSE.reference
+    recorded = suite.transcripts_for(reference, THIS_COURSE)
+    assert transcript_cache.path(THIS_COURSE).exists()
     reference.memo.clear()
 
     def refuse(*args):
         raise AssertionError("recorded again although the file was there")
 
     monkeypatch.setattr(suite, "_record_transcripts", refuse)
-    assert suite.transcripts_for(reference, catalog) == recorded
+    assert suite.transcripts_for(reference, THIS_COURSE) == recorded
 
 
 def test_a_file_for_other_tests_is_recorded_again(fresh, monkeypatch):
-    reference, catalog = load_reference(), load_catalog()
-    transcript_cache.save(_sample())  # names tests the suite does not have
-    found = suite.transcripts_for(reference, catalog)
-    assert set(found) == {test.nodeid for test in suite.hidden_tests()[0]}
-    assert transcript_cache.load()[0] == found
+    reference = THIS_COURSE.reference
+    transcript_cache.save(THIS_COURSE, _sample())  # names tests the suite does not have
+    found = suite.transcripts_for(reference, THIS_COURSE)
+    assert set(found) == {test.nodeid for test in suite.hidden_tests(THIS_COURSE)[0]}
+    assert transcript_cache.load(THIS_COURSE)[0] == found
 
 
 def test_another_reference_is_never_cached(fresh):
     from types import SimpleNamespace
 
-    reference = load_reference()
+    reference = THIS_COURSE.reference
     copy = SimpleNamespace(**vars(reference))
-    suite.transcripts_for(copy, load_catalog())
-    assert not transcript_cache.path().exists()
+    suite.transcripts_for(copy, THIS_COURSE)
+    assert not transcript_cache.path(THIS_COURSE).exists()
 
 
 def test_lessons_are_learned_once_and_only_those_asked_for(fresh, monkeypatch):
-    reference, catalog = load_reference(), load_catalog()
-    suite.transcripts_for(reference, catalog)  # recorded first: every test runs once in this process
+    reference = THIS_COURSE.reference
+    suite.transcripts_for(reference, THIS_COURSE)  # recorded first: every test runs once in this process
     sent = set()
     real_prefetch = suite.Replay.prefetch
 
@@ -96,13 +95,13 @@ def test_lessons_are_learned_once_and_only_those_asked_for(fresh, monkeypatch):
         return real_prefetch(self, transcript, *rest)
 
     monkeypatch.setattr(suite.Replay, "prefetch", prefetch)
-    suite.learn_reference_in_sandbox(reference, catalog, lessons=("02",))
+    suite.learn_reference_in_sandbox(reference, THIS_COURSE, lessons=("02",))
     assert sent == {"02"}  # only lesson 02's calls went to the sandbox
-    assert transcript_cache.load()[1] == {"02"}
+    assert transcript_cache.load(THIS_COURSE)[1] == {"02"}
     reference.memo.clear()
 
     def no_sandbox(*args, **kwargs):
         raise AssertionError("a learned lesson was run in a sandbox again")
 
     monkeypatch.setattr(suite, "StudentSandbox", no_sandbox)
-    assert suite.learn_reference_in_sandbox(reference, catalog, lessons=("02",)) == 0
+    assert suite.learn_reference_in_sandbox(reference, THIS_COURSE, lessons=("02",)) == 0

@@ -17,9 +17,8 @@ import numpy as np
 import pytest
 
 from autograder.grading import suite, transcripts
-from autograder.lessons.catalog import load_catalog
-from autograder.lessons.reference import load_reference
 from autograder.sandbox.child import wire
+from support import THIS_COURSE
 
 
 def _arrays(value):
@@ -64,8 +63,8 @@ class _Watching:
 
 @pytest.fixture(scope="module")
 def recorded():
-    reference, catalog = load_reference(), load_catalog()
-    return reference, catalog, suite.transcripts_for(reference, catalog)
+    reference, catalog = THIS_COURSE.reference, THIS_COURSE.catalog
+    return reference, catalog, suite.transcripts_for(reference, THIS_COURSE)
 
 
 def test_no_kept_input_is_an_answer_the_test_got_earlier(recorded):
@@ -73,7 +72,7 @@ def test_no_kept_input_is_an_answer_the_test_got_earlier(recorded):
     recorder = transcripts.ReferenceRecorder(reference)
     proxy = suite.StudentProxy(recorder, catalog)
     offending = []
-    for test in suite.hidden_tests()[0]:
+    for test in suite.hidden_tests(THIS_COURSE)[0]:
         kept = found[test.nodeid]
         from_ref = []
         recorder.start()
@@ -98,7 +97,7 @@ def test_a_second_recording_with_other_nudges_keeps_the_same_calls(recorded, mon
     recorder = transcripts.ReferenceRecorder(reference, nudge=True)
     proxy = suite.StudentProxy(recorder, catalog)
     moved = []
-    for test in suite.hidden_tests()[0]:
+    for test in suite.hidden_tests(THIS_COURSE)[0]:
         second = recorder.start()
         suite._call_test(test, proxy, transcripts.NudgedReference(reference))
         kept = found[test.nodeid].calls
@@ -124,7 +123,7 @@ def _chained(student):
 
 
 def test_a_chained_call_is_cut_and_the_test_always_runs():
-    reference, catalog = load_reference(), load_catalog()
+    reference, catalog = THIS_COURSE.reference, THIS_COURSE.catalog
     test = SimpleNamespace(function=_chained, params={}, fixtures=("student",))
     first, second = transcripts.ReferenceRecorder(reference), transcripts.ReferenceRecorder(reference, nudge=True)
     recorded, nudged = first.start(), second.start()

@@ -17,6 +17,7 @@ import pytest
 
 from autograder.sandbox import launcher, process_tree, warm
 from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
+from support import THIS_COURSE
 
 pytestmark = pytest.mark.skipif(not warm.enabled(), reason="warm slots need the namespace sandbox")
 
@@ -135,7 +136,7 @@ def _program(source):
 
 @pytest.fixture
 def slot():
-    started = warm.WarmSlot(0, launcher.Limits())
+    started = warm.WarmSlot(0, launcher.Limits(), THIS_COURSE.support)
     started.spawn()
     started.wait_ready()
     assert started.usable(), "the slot's zygote did not start"
@@ -144,18 +145,18 @@ def slot():
 
 
 def test_workers_are_forked_from_the_slot(slot):
-    with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot) as box:
         assert box.call("01", "f") == 1
         assert isinstance(box.process, warm.WarmWorker)
 
 
 def test_the_next_student_finds_nothing_the_previous_one_left(slot):
-    with StudentSandbox(_program(LOOK_AROUND), slot=slot) as fresh:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program(LOOK_AROUND), slot=slot) as fresh:
         before = fresh.call("01", "look")  # /tmp holds the folders of a Python installed under /tmp, if any
-    with StudentSandbox(_program(LEAVE_EVERYTHING), slot=slot) as first:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program(LEAVE_EVERYTHING), slot=slot) as first:
         made = first.call("01", "leave")
         assert all(ident >= 0 for ident in made), made
-    with StudentSandbox(_program(LOOK_AROUND), slot=slot) as second:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program(LOOK_AROUND), slot=slot) as second:
         seen = second.call("01", "look")
         assert isinstance(second.process, warm.WarmWorker)
     # nothing of the first student: no process, no file at any depth, no IPC object, no key
@@ -167,8 +168,8 @@ def test_the_next_student_finds_nothing_the_previous_one_left(slot):
 
 def test_the_look_around_sees_what_a_student_leaves(slot):
     """The oracle above can fail: within one student's sandbox it finds every kind of thing left."""
-    with StudentSandbox(_program(LEAVE_EVERYTHING.replace('os.chmod("/tmp", 0)', "pass") + LOOK_AROUND),
-                        slot=slot) as box:
+    program = _program(LEAVE_EVERYTHING.replace('os.chmod("/tmp", 0)', "pass") + LOOK_AROUND)
+    with StudentSandbox(support=THIS_COURSE.support, program=program, slot=slot) as box:
         box.call("01", "leave")
         seen = box.call("01", "look")
     assert seen["others"], "the daemon"
@@ -177,7 +178,7 @@ def test_the_look_around_sees_what_a_student_leaves(slot):
 
 
 def test_student_code_cannot_reach_the_zygote(slot):
-    with StudentSandbox(_program(REACH_FOR_THE_ZYGOTE), slot=slot) as box:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program(REACH_FOR_THE_ZYGOTE), slot=slot) as box:
         found = box.call("01", "reach")
     refused = {key: value for key, value in found.items() if key != "sockets" and value not in ("PermissionError", -1)}
     assert not refused, found
@@ -190,22 +191,22 @@ def test_student_code_cannot_kill_the_zygote(slot):
     attack = ("import os, signal, time\ndef attack():\n    for number in (signal.SIGKILL, signal.SIGSTOP, signal.SIGTERM):\n"
               "        for target in (os.getppid(), -1):\n            try:\n                os.kill(target, number)\n"
               "            except OSError:\n                pass\n    time.sleep(0.3)\n    return os.getppid()")
-    with StudentSandbox(_program(attack), slot=slot) as box:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program(attack), slot=slot) as box:
         try:
             assert box.call("01", "attack") == 1
         except StudentError as error:  # kill(-1, SIGKILL) also hits the worker itself: a crash, as when cold
             assert error.kind == "crash", error
     assert slot.alive()
-    with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot) as box:
         assert box.call("01", "f") == 1
         assert isinstance(box.process, warm.WarmWorker)
 
 
 def test_a_slot_that_dies_costs_one_call_and_the_pool_replaces_it():
     """The OOM killer or an operator may still kill a slot from outside: the student goes on cold."""
-    with warm.SlotPool(1, launcher.Limits()) as pool:
+    with warm.SlotPool(1, launcher.Limits(), THIS_COURSE.support) as pool:
         slot = pool.slots[0]
-        with StudentSandbox(_program("def ok():\n    return 7"), slot=slot) as box:
+        with StudentSandbox(support=THIS_COURSE.support, program=_program("def ok():\n    return 7"), slot=slot) as box:
             assert box.call("01", "ok") == 7
             zygote = process_tree.descendants(slot.process.pid)[0]
             os.kill(zygote, signal.SIGKILL)  # as the OOM killer would
@@ -220,13 +221,13 @@ def test_a_slot_that_dies_costs_one_call_and_the_pool_replaces_it():
         pool.repair(0)
         replaced = pool.slots[0]
         assert replaced.alive()
-        with StudentSandbox(_program("def f():\n    return 1"), slot=replaced) as box:
+        with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=replaced) as box:
             assert box.call("01", "f") == 1
             assert isinstance(box.process, warm.WarmWorker)
 
 
 def test_a_slot_with_other_limits_is_not_used(slot):
-    with StudentSandbox(_program("def f():\n    return 1"), slot=slot,
+    with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot,
                         limits=launcher.Limits(memory_bytes=2**30)) as box:
         assert box.call("01", "f") == 1
         assert not isinstance(box.process, warm.WarmWorker)
@@ -237,12 +238,12 @@ def test_concurrent_slots_run_as_different_users():
     if os.geteuid() != 0:
         pytest.skip("as an ordinary user every sandbox runs as that user, in its own user namespace")
     who = "def who():\n    return int(open('/proc/self/uid_map').read().split()[1])  # the uid outside"
-    with warm.SlotPool(2, launcher.Limits()) as pool:
+    with warm.SlotPool(2, launcher.Limits(), THIS_COURSE.support) as pool:
         uids = []
         for slot in pool.slots:
-            with StudentSandbox(_program(who), slot=slot) as box:
+            with StudentSandbox(support=THIS_COURSE.support, program=_program(who), slot=slot) as box:
                 uids.append(box.call("01", "who"))
-    with StudentSandbox(_program(who)) as cold:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program(who)) as cold:
         uids.append(cold.call("01", "who"))
     assert len(set(uids)) == 3 and 0 not in uids, uids
 
@@ -252,11 +253,11 @@ def test_a_slot_that_cannot_start_leaves_its_graders_cold(monkeypatch):
         raise OSError("bwrap: no such file")
 
     monkeypatch.setattr(launcher, "spawn", no_bubblewrap)
-    with warm.SlotPool(1, launcher.Limits()) as pool:
+    with warm.SlotPool(1, launcher.Limits(), THIS_COURSE.support) as pool:
         slot = pool.slots[0]
         assert not slot.usable()
         monkeypatch.undo()
-        with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+        with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot) as box:
             assert box.call("01", "f") == 1
             assert not isinstance(box.process, warm.WarmWorker)
 
@@ -273,7 +274,7 @@ def test_a_worker_that_does_not_start_leaves_the_student_cold(slot, monkeypatch)
 
     original = warm.WarmSlot.fork_worker
     monkeypatch.setattr(warm.WarmSlot, "fork_worker", stillborn)
-    with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+    with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot) as box:
         assert box.call("01", "f") == 1
         assert not isinstance(box.process, warm.WarmWorker)
     assert slot.broken
@@ -286,7 +287,7 @@ def test_each_forked_grader_is_handed_a_slot_no_other_running_grader_has(tmp_pat
 
     def grade(item, slot):
         assert slot is not None and slot.usable()
-        with StudentSandbox(_program("def f():\n    return 1"), slot=slot) as box:
+        with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot) as box:
             assert box.call("01", "f") == 1
             assert isinstance(box.process, warm.WarmWorker)
         with open(item, "w") as out:       # which slot, and while this grader was running
@@ -297,7 +298,7 @@ def test_each_forked_grader_is_handed_a_slot_no_other_running_grader_has(tmp_pat
 
     items = [str(tmp_path / str(n)) for n in range(4)]
     problems = []
-    with warm.SlotPool(2, launcher.Limits()) as pool:
+    with warm.SlotPool(2, launcher.Limits(), THIS_COURSE.support) as pool:
         fork_each(grade, items, 2, lambda _, problem: problems.append(problem), slots=pool)
     assert problems == [None] * 4, problems
     runs = [tuple(map(float, open(item).read().split())) for item in items]

@@ -14,6 +14,7 @@ import pytest
 
 from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
 from coursekit.watching import watch_call
+from support import THIS_COURSE
 
 
 def _main(source):
@@ -86,7 +87,8 @@ def honest(R, p):
 
 @pytest.fixture(scope="module")
 def box():
-    with StudentSandbox({"01": LessonProgram(setup="import numpy as np", cells=[("code", SOURCE)])}) as sandbox:
+    program = {"01": LessonProgram(setup="import numpy as np", cells=[("code", SOURCE)])}
+    with StudentSandbox(program, THIS_COURSE.support) as sandbox:
         yield sandbox
 
 

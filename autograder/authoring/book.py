@@ -25,6 +25,7 @@ Examples
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
@@ -39,7 +40,6 @@ import nbformat
 from autograder.authoring.book_phrases import reader_phrasing
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
-from autograder.lessons.paths import SOLUTIONS
 
 FRONT_PAGE = "00_start_here"
 SUPPORT_PACKAGE = "coursekit"
@@ -47,7 +47,7 @@ SOLUTION_MARKERS = ("### BEGIN SOLUTION", "### END SOLUTION")
 READER_EDITION_VARIABLE = "COURSEKIT_EDITION"  # read by solutions/coursekit/edition.py
 
 CONF_PY = '''\
-project = "Rotations, hands on"
+project = {title}
 author = "the course authors"
 copyright = "the course authors"
 extensions = ["myst_nb"]
@@ -63,7 +63,7 @@ nb_execution_raise_on_error = True
 nb_execution_show_tb = True
 nb_merge_streams = True
 html_theme = "sphinx_book_theme"
-html_title = "Rotations, hands on"
+html_title = {title}
 html_copy_source = False
 html_show_sourcelink = False
 html_static_path = ["_static"]
@@ -140,13 +140,27 @@ def _alt_text_from_captions(page, root):
         page.write_text(changed, encoding="utf-8")
 
 
-def stage(solutions_dir: str | Path, staging: str | Path) -> list[str]:
-    """Write the book's sources into ``staging``: the solved lessons, coursekit, conf.py and MathJax."""
+def _front_page(title):
+    """A start page for a course without ``00_start_here.ipynb``: its title, then the lessons."""
+    return nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell(
+        f"# {title}\n\nThe solved lessons, to read and run. Each one opens with what it teaches.")])
+
+
+def stage(solutions_dir: str | Path, staging: str | Path, title: str = "") -> list[str]:
+    """Write the book's sources into ``staging``: the solved lessons, coursekit, conf.py and MathJax.
+
+    The start page is the course's ``00_start_here.ipynb``; a course without one gets a page with
+    ``title`` and the list of lessons.
+    """
     solutions_dir, staging = Path(solutions_dir), Path(staging)
     masters = sorted(solutions_dir.glob("[0-9][0-9]_*.ipynb"))
+    if not masters:
+        raise BookFailed(f"{solutions_dir} has no lessons (NN_*.ipynb)")
+    if FRONT_PAGE not in (path.stem for path in masters):
+        made = staging / f"{FRONT_PAGE}.ipynb"
+        nbformat.write(_front_page(title or solutions_dir.parent.name), made)
+        masters.insert(0, made)
     names = [path.stem for path in masters]
-    if FRONT_PAGE not in names:
-        raise BookFailed(f"{solutions_dir} has no {FRONT_PAGE}.ipynb")
     for path in masters:
         nb = _reader_copy(read_master(path))
         target = staging / path.name
@@ -165,9 +179,10 @@ def stage(solutions_dir: str | Path, staging: str | Path) -> list[str]:
     return names
 
 
-def build_book(out: str | Path, solutions_dir: str | Path = SOLUTIONS, timeout: float = 180, jobs: int = 2,
+def build_book(out: str | Path, solutions_dir: str | Path, title: str, timeout: float = 180, jobs: int = 2,
                keep_staging: str | Path | None = None) -> tuple[Path, list[str], str]:
-    """Build the book into ``out`` (replaced); return (out, the lesson names, Sphinx's warnings as text).
+    """Build the book of the course whose masters are in ``solutions_dir`` into ``out`` (replaced); return
+    (out, the lesson names, Sphinx's warnings as text). ``title``: the course's, on every page.
 
     Raises BookFailed with Sphinx's own report when a lesson raises or the
     build fails. Warnings are also written to ``OUT/../book-warnings.txt`` when there are any.
@@ -178,8 +193,8 @@ def build_book(out: str | Path, solutions_dir: str | Path = SOLUTIONS, timeout: 
         if staging.exists():
             shutil.rmtree(staging)
         staging.mkdir(parents=True)
-        names = stage(solutions_dir, staging)
-        (staging / "conf.py").write_text(CONF_PY.format(timeout=timeout), encoding="utf-8")
+        names = stage(solutions_dir, staging, title)
+        (staging / "conf.py").write_text(CONF_PY.format(timeout=timeout, title=json.dumps(title)), encoding="utf-8")
         # Links between lessons point at NN_topic.ipynb; the start page is index now.
         for path in staging.glob("*.ipynb"):
             text = path.read_text(encoding="utf-8")

@@ -1,6 +1,7 @@
 """The students' hand-out: ``python -m autograder handout --out course.zip``.
 
-The zip holds one folder, ``rotations-course/``, with
+The zip holds one folder (``rotations-course/`` for this repository's course: the course's
+``handout`` name, see :class:`~autograder.lessons.course.Course`), with
 
 - the released notebooks of ``course/`` and the ``coursekit`` package beside them;
 - ``requirements.txt``: what a student installs: the notebooks' and coursekit's direct
@@ -15,7 +16,7 @@ file of the zip to make sure it never names them.
 
 Examples
 --------
->>> build_handout("course.zip")                      # doctest: +SKIP
+>>> build_handout("course.zip", course)              # doctest: +SKIP
 PosixPath('course.zip')
 """
 
@@ -29,15 +30,11 @@ from pathlib import Path
 
 from autograder.authoring.student_install import (PYTHONS, check_python_text, floor_table, python_floor_text,
                                                   requirements_text)
-from autograder.lessons.paths import COURSE, SUPPORT_PACKAGE
+from autograder.lessons.course import SUPPORT_PACKAGE, Course
 
-FOLDER = "rotations-course"
+README = """# {title} — your copy of the course
 
-README = """# Rotations, hands on — your copy of the course
-
-A Jupyter course on 3D rotations: frames and rotation matrices, the Lie
-algebra and Rodrigues' formula, quaternions, Euler angles and gimbal lock,
-perturbations and Jacobians, poses, a capstone, and estimation on Lie groups.
+{about}
 
 ## Which Python
 
@@ -54,14 +51,14 @@ In a terminal, in this folder. Linux and macOS:
 
 ```bash
 python3 check_python.py && python3 -m venv .venv && .venv/bin/pip install -r requirements.txt
-.venv/bin/jupyter lab 00_start_here.ipynb
+.venv/bin/jupyter lab {start}
 ```
 
 Windows, in Command Prompt (`cmd`):
 
 ```bat
 py check_python.py && py -m venv .venv && .venv\\Scripts\\pip install -r requirements.txt
-.venv\\Scripts\\jupyter lab 00_start_here.ipynb
+.venv\\Scripts\\jupyter lab {start}
 ```
 
 `check_python.py` prints one line before anything is installed: that your
@@ -77,7 +74,7 @@ and Windows (then `python3.12` in place of `python3` on macOS, `py -3.12` in
 place of `py` on Windows), or with your package manager on Linux. Your
 older Python stays as it is.
 
-Start with `00_start_here.ipynb`: it explains how the lessons, the exercises
+Start with `{start}`: it explains how the lessons, the exercises
 and the check cells work. Keep the `coursekit` folder next to the notebooks:
 the check cells and figures use it.
 
@@ -87,7 +84,7 @@ the check cells and figures use it.
   every public check prints ✓ or ✗ with a hint.
 - Each lesson ends with a **Ready to hand in?** cell that runs all of the
   lesson's checks at once and lists what is still to do.
-- Hand in each lesson's notebook file (`01_frames_and_rotations.ipynb`, ...)
+- Hand in each lesson's notebook file (`{example}`, ...)
   the way your course asks. Only your answer cells are graded; more thorough
   hidden checks run when your work is graded, so a clean check cell is
   encouraging, not a guarantee.
@@ -99,23 +96,25 @@ def student_requirements() -> str:
     return requirements_text()
 
 
-def readme() -> str:
+def readme(course: Course) -> str:
     """The hand-out's ``README.md``: which Pythons and versions work, how to install, how to hand in."""
     pythons = ", ".join(PYTHONS[:-1]) + " and " + PYTHONS[-1]
-    return README.format(pythons=pythons, floor=python_floor_text(), table=floor_table())
+    lessons = course.catalog.lessons
+    return README.format(pythons=pythons, floor=python_floor_text(), table=floor_table(), title=course.title,
+                         about=course.about, start=lessons[0].filename, example=course.catalog.graded_lessons[0].filename)
 
 
-def handout_files() -> dict[str, bytes]:
-    """``{path inside the zip: bytes}`` for the hand-out."""
-    files = {}
-    for path in sorted(COURSE.glob("*.ipynb")):
-        files[f"{FOLDER}/{path.name}"] = path.read_bytes()
-    for path in sorted((COURSE / SUPPORT_PACKAGE).rglob("*.py")):
+def handout_files(course: Course) -> dict[str, bytes]:
+    """``{path inside the zip: bytes}`` for ``course``'s hand-out (its released notebooks and coursekit)."""
+    files, folder, released = {}, course.handout, course.released
+    for path in sorted(released.glob("*.ipynb")):
+        files[f"{folder}/{path.name}"] = path.read_bytes()
+    for path in sorted((released / SUPPORT_PACKAGE).rglob("*.py")):
         if "__pycache__" not in path.parts:
-            files[f"{FOLDER}/{path.relative_to(COURSE).as_posix()}"] = path.read_bytes()
-    files[f"{FOLDER}/requirements.txt"] = student_requirements().encode()
-    files[f"{FOLDER}/check_python.py"] = check_python_text().encode()
-    files[f"{FOLDER}/README.md"] = readme().encode()
+            files[f"{folder}/{path.relative_to(released).as_posix()}"] = path.read_bytes()
+    files[f"{folder}/requirements.txt"] = student_requirements().encode()
+    files[f"{folder}/check_python.py"] = check_python_text().encode()
+    files[f"{folder}/README.md"] = readme(course).encode()
     return files
 
 
@@ -131,13 +130,13 @@ def packed_at() -> tuple[int, int, int, int, int, int]:
     return tuple(max(moment[:6], (1980, 1, 1, 0, 0, 0)))  # the zip format starts in 1980
 
 
-def build_handout(out: str | Path) -> Path:
-    """Write the hand-out zip to ``out``; return its path."""
+def build_handout(out: str | Path, course: Course) -> Path:
+    """Write ``course``'s hand-out zip to ``out``; return its path."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     date = packed_at()
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as archive:
-        for name, data in handout_files().items():
+        for name, data in handout_files(course).items():
             info = zipfile.ZipInfo(name, date_time=date)
             info.external_attr = (stat.S_IFREG | 0o644) << 16
             info.compress_type = zipfile.ZIP_DEFLATED

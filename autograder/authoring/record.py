@@ -13,14 +13,13 @@ from pathlib import Path
 from autograder.authoring.execute import errors, execute_notebook
 from autograder.authoring.release import normalize_master
 from autograder.lessons.notebook_files import canonical_text, read_master, write_if_changed
-from autograder.lessons.paths import SOLUTIONS
 
 
 class RecordingFailed(RuntimeError):
     """A master raised an error while its outputs were being recorded."""
 
 
-def record_outputs(solutions_dir: str | Path = SOLUTIONS, only: list[str] | None = None) -> list[str]:
+def record_outputs(solutions_dir: str | Path, only: list[str] | None = None) -> list[str]:
     """Execute each master (or those whose name starts with one of ``only``); return changed files."""
     changed = []
     for path in sorted(Path(solutions_dir).glob("[0-9][0-9]_*.ipynb")):

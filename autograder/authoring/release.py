@@ -24,7 +24,7 @@ from nbformat import NotebookNode
 
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import canonical_text, read_master, write_if_changed
-from autograder.lessons.paths import COURSE, SOLUTIONS, SUPPORT_PACKAGE
+from autograder.lessons.course import SUPPORT_PACKAGE
 
 CODE_STUB = (
     "# Your code here: replace the next line with your solution.\n"
@@ -111,7 +111,7 @@ def _support_files(solutions_dir):
             yield path.relative_to(solutions_dir)
 
 
-def planned_files(solutions_dir: str | Path = SOLUTIONS) -> dict[tuple[str, str], str]:
+def planned_files(solutions_dir: str | Path) -> dict[tuple[str, str], str]:
     """Map each generated file (relative path under course/ or solutions/) to its text."""
     solutions_dir = Path(solutions_dir)
     plan = {}
@@ -128,7 +128,7 @@ def _target_dirs(solutions_dir, course_dir):
     return {"solutions": Path(solutions_dir), "course": Path(course_dir)}
 
 
-def stale_files(solutions_dir: str | Path = SOLUTIONS, course_dir: str | Path = COURSE) -> list[tuple[str, str]]:
+def stale_files(solutions_dir: str | Path, course_dir: str | Path) -> list[tuple[str, str]]:
     """What release would change: a sorted list of (path, reason)."""
     dirs = _target_dirs(solutions_dir, course_dir)
     plan = planned_files(solutions_dir)
@@ -147,8 +147,9 @@ def stale_files(solutions_dir: str | Path = SOLUTIONS, course_dir: str | Path = 
     return sorted(problems)
 
 
-def release(solutions_dir: str | Path = SOLUTIONS, course_dir: str | Path = COURSE) -> list[str]:
-    """Write course/ (and normalise the masters); return the list of files written."""
+def release(solutions_dir: str | Path, course_dir: str | Path) -> list[str]:
+    """Write ``course_dir`` (``course/``) from the masters in ``solutions_dir`` (and normalise the masters);
+    return the list of files written."""
     dirs = _target_dirs(solutions_dir, course_dir)
     written = []
     for (where, relative), text in planned_files(solutions_dir).items():

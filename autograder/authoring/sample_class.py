@@ -26,9 +26,9 @@ from pathlib import Path
 import nbformat
 
 from autograder.lessons import cells
-from autograder.lessons.catalog import Lesson, load_catalog
+from autograder.lessons.catalog import Lesson
+from autograder.lessons.course import Course
 from autograder.lessons.notebook_files import canonical_text, read_master
-from autograder.lessons.paths import COURSE
 from autograder.lessons.reference import answer_sources
 from autograder.mistakes import all_alternatives, all_mistakes, sample_assignments
 
@@ -115,9 +115,9 @@ def _answer_for(student, exercise_name, index, count, stub, references, mistakes
 
 
 def student_notebook(student: SampleStudent, lesson: Lesson, references: dict[str, str], mistakes: dict,
-                     chosen: list[str]) -> nbformat.NotebookNode:
-    """The notebook ``student`` hands in for ``lesson`` (a NotebookNode)."""
-    nb = read_master(COURSE / lesson.filename)
+                     chosen: list[str], released: Path) -> nbformat.NotebookNode:
+    """The notebook ``student`` hands in for ``lesson`` (a NotebookNode), from the released one in ``released``."""
+    nb = read_master(released / lesson.filename)
     names = [e.name for e in lesson.exercises]
     patched = False
     for cell in nb.cells:
@@ -134,16 +134,18 @@ def student_notebook(student: SampleStudent, lesson: Lesson, references: dict[st
     return nb
 
 
-def build_sample_class(target: str | Path, lessons: tuple[str, ...] = ()) -> list[str]:
+def build_sample_class(target: str | Path, course: Course, lessons: tuple[str, ...] = ()) -> list[str]:
     """Write every sample student's notebooks to ``target/<student_id>/``; return the ids.
+
+    ``course``: this repository's course (the mistakes corpus, :mod:`autograder.mistakes`, is written for it).
 
     ``lessons``: only these lesson numbers (default: every graded lesson).
     """
     target = Path(target)
     if target.exists():
         shutil.rmtree(target)
-    catalog = load_catalog()
-    references = answer_sources()
+    catalog = course.catalog
+    references = answer_sources(course.solutions)
     mistakes = all_mistakes()
     assignments = sample_assignments()
     unknown = sorted(set(assignments) - {s.student_id for s in STUDENTS})
@@ -155,11 +157,11 @@ def build_sample_class(target: str | Path, lessons: tuple[str, ...] = ()) -> lis
         chosen = assignments.get(student.student_id, [])
         chosen_lessons = [lesson for lesson in catalog.graded_lessons if not lessons or lesson.number in lessons]
         for number, lesson in enumerate(chosen_lessons):
-            text = canonical_text(student_notebook(student, lesson, references, mistakes, chosen))
+            text = canonical_text(student_notebook(student, lesson, references, mistakes, chosen, course.released))
             if student.damage == "corrupt_first" and number == 0:
                 text = text[: len(text) // 2]  # cut in the middle: no longer valid JSON
             (folder / lesson.filename).write_text(text, encoding="utf-8")
-        for extra in sorted(COURSE.glob("00_*.ipynb")):
+        for extra in sorted(course.released.glob("00_*.ipynb")):
             shutil.copy2(extra, folder / extra.name)
     (target / "README.json").write_text(json.dumps(
         {s.student_id: s.story for s in STUDENTS}, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")

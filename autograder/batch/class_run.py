@@ -52,8 +52,7 @@ from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_
 from autograder.grading.pipeline import GradingOptions, grade_student
 from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
-from autograder.lessons.catalog import load_catalog
-from autograder.lessons.reference import load_reference
+from autograder.lessons.course import Course
 from autograder.lessons.untrusted_text import one_line, safe_name
 from autograder.reports import feedback
 from autograder.reports.gradebook import gradebook_csv
@@ -79,6 +78,7 @@ class GradingTask(NamedTuple):
     out_root: str  # the run's output folder (:class:`Outputs`)
     stamp: "Stamp"
     config: object  # the course's settings (a CourseConfig) or None
+    course: Course  # the course graded (paths only: a Dask worker rebuilds its catalog and reference)
 
 
 class Runner(Protocol):
@@ -209,7 +209,7 @@ def save_result(outputs: Outputs, result: StudentResult, stamp: Stamp, graded_at
 
 def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     """Runs in a forked child: grade one student and save the result (``slot``: this child's warm slot)."""
-    student_id, folder, options, out_root, stamp, config = task
+    student_id, folder, options, out_root, stamp, config, course = task
     process_tree.become_subreaper()
     outputs = Outputs(Path(out_root))
 
@@ -219,7 +219,8 @@ def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     signal.signal(signal.SIGALRM, on_alarm)
     signal.alarm(STUDENT_TIMEOUT)
     try:
-        result = apply_late_policy(grade_student(student_id, Path(folder), options, slot=slot), folder, config)
+        result = apply_late_policy(grade_student(student_id, Path(folder), course, options, slot=slot), folder,
+                                   config)
     except Exception as error:  # our fault, not the student's: report, keep the batch going
         result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                                reason=f"{type(error).__name__}: {error}",
@@ -248,7 +249,7 @@ def record_death(task: GradingTask, problem: str) -> StudentResult:
     Never raises: when even this result cannot be saved, it is returned with a note, and the run keeps
     it in memory for this run's gradebook and report.
     """
-    student_id, folder, _, out_root, stamp, _ = task
+    student_id, folder, _, out_root, stamp, _, _ = task
     result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
                            reason=f"{problem}; nothing else was affected, run grade again to retry",
                            submission_hash=_hash_or_blank(folder))
@@ -276,11 +277,9 @@ class RunSummary:
     similarity_cpu_seconds: float = 0.0  # its CPU time, this process and its finished workers
 
 
-def prewarm() -> None:
+def prewarm(course: Course) -> None:
     """Import and compute, once, everything the forked graders share read-only."""
-    load_catalog()
-    load_reference()
-    preload_hidden_suite()
+    preload_hidden_suite(course)
     launcher.isolation()
     launcher.limits_mode_can_drop_root()
 
@@ -300,11 +299,12 @@ def saved_student_ids(outputs: Outputs) -> list[str]:
     return ids
 
 
-def grade_class(path: str | Path, out_dir: str | Path, jobs: int | None = None, options: GradingOptions = GradingOptions(),
+def grade_class(path: str | Path, out_dir: str | Path, course: Course, jobs: int | None = None,
+                options: GradingOptions = GradingOptions(),
                 force: bool = False, progress: Progress | None = None, roster: tuple | list = (),
                 only: tuple | list = (), announce: Callable[[str], None] | None = None,
                 config: CourseConfig | None = None, runner: Runner | None = None, similarity: bool = True) -> RunSummary:
-    """Grade every student under ``path`` into ``out_dir``; return a :class:`RunSummary`.
+    """Grade every student under ``path`` into ``out_dir`` against ``course``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
     ``only``: grade just these students (always re-graded); everyone else keeps their saved result.
@@ -331,13 +331,13 @@ def grade_class(path: str | Path, out_dir: str | Path, jobs: int | None = None, 
     unknown = sorted(set(only) - {student_id for student_id, _ in students})
     if unknown:
         raise UnknownStudents(f"no submission folder under {path} for: {', '.join(unknown)}")
-    prewarm()
+    prewarm(course)
     cleanup.sweep_stale()  # the temporary folders of a grader that was killed mid-batch
-    parts = fingerprint_parts(options)
+    parts = fingerprint_parts(options, course)
     summary = RunSummary(ignored=found.skipped)
     if announce:
         announce("canary: grading the reference solutions first (once per grader version)...")
-    summary.canary = ensure_reference_passes(options, parts)
+    summary.canary = ensure_reference_passes(course, options, parts)
     if announce:
         announce(describe_canary(summary.canary))
     outputs.root.mkdir(parents=True, exist_ok=True)
@@ -363,7 +363,7 @@ def grade_class(path: str | Path, out_dir: str | Path, jobs: int | None = None, 
             continue
         summary.reasons[student_id] = because
         tasks.append(GradingTask(student_id, str(folder), options, str(outputs.root), replace(stamp, because=because),
-                                 config))
+                                 config, course))
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:
         progress.start(len(tasks))
@@ -387,8 +387,8 @@ def grade_class(path: str | Path, out_dir: str | Path, jobs: int | None = None, 
         runner(grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120)
     elif tasks:
         jobs = min(jobs, len(tasks))
-        with warm.SlotPool(jobs, options.limits) if warm.enabled() else nullcontext() as slots:
-            learn_reference_in_sandbox(load_reference(), load_catalog(), options.limits,
+        with warm.SlotPool(jobs, options.limits, course.support) if warm.enabled() else nullcontext() as slots:
+            learn_reference_in_sandbox(course.reference, course, options.limits,
                                        slots.slots[0] if slots else None, lessons=options.lessons)
             fork_each(grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
     if progress:
@@ -398,8 +398,8 @@ def grade_class(path: str | Path, out_dir: str | Path, jobs: int | None = None, 
     summary.kept = sorted(earlier - submitted)
     everyone = submitted | earlier
     write_atomically(outputs.skipped, json.dumps([asdict(item) for item in found.skipped], indent=1))
-    section = _similarity_section(path, outputs, summary) if similarity else ""
-    summary.results = write_reports(outputs, sorted(everyone | set(roster)), everyone, unsaved, section)
+    section = _similarity_section(path, course, outputs, summary) if similarity else ""
+    summary.results = write_reports(outputs, course, sorted(everyone | set(roster)), everyone, unsaved, section)
     summary.seconds = time.monotonic() - started
     return summary
 
@@ -439,7 +439,7 @@ def load_skipped(outputs: Outputs) -> list[submissions.Skipped]:
         return []
 
 
-def _similarity_section(path, outputs, summary):
+def _similarity_section(path, course, outputs, summary):
     """Run the similarity stage on the class under ``path``: write its CSV and page into ``outputs``,
     keep the findings in ``summary`` and return the report's section (a short note if it failed)."""
     from autograder.similarity.report import similar_answers_html
@@ -447,7 +447,7 @@ def _similarity_section(path, outputs, summary):
 
     started, cpu = time.monotonic(), cpu_seconds()
     try:
-        summary.similarity = similarity_of_class(path)
+        summary.similarity = similarity_of_class(path, course)
         write_findings(summary.similarity, outputs.root, write_atomically)
         section = similar_answers_html(summary.similarity)
     except Exception as error:  # the grades do not depend on it
@@ -466,7 +466,7 @@ def cpu_seconds() -> float:
     return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
 
 
-def write_reports(outputs: Outputs, student_ids: list[str], submitted: set[str] | None = None,
+def write_reports(outputs: Outputs, course: Course, student_ids: list[str], submitted: set[str] | None = None,
                   unsaved: dict[str, StudentResult] | None = None, extra_section: str = "") -> list[StudentResult]:
     """Write grades.csv and report.html for ``student_ids``; return their results.
 
@@ -478,7 +478,7 @@ def write_reports(outputs: Outputs, student_ids: list[str], submitted: set[str] 
     from autograder.reports.class_report import class_report_html
 
     results, graded_at = collect_results(outputs, student_ids, submitted, unsaved)
-    catalog = load_catalog()
+    catalog = course.catalog
     write_atomically(outputs.gradebook, gradebook_csv(results, catalog, graded_at))
     try:
         linked = {r.student_id for r in results if outputs.feedback_html(r.student_id).is_file()}

@@ -12,7 +12,7 @@ student's grading once, not once per run.
 
 Examples
 --------
->>> ensure_reference_passes(GradingOptions(), parts)           # doctest: +SKIP
+>>> ensure_reference_passes(course, GradingOptions(), parts)   # doctest: +SKIP
 CanaryResult(cached=True, seconds=0.0, ...)
 """
 
@@ -26,6 +26,7 @@ from pathlib import Path
 from autograder.grading.fingerprint import cache_dir, fingerprint
 from autograder.grading.options import GradingOptions
 from autograder.grading.results import StudentResult
+from autograder.lessons.course import Course
 from autograder.sandbox import cleanup
 from autograder.sandbox.forking import fork_each
 
@@ -76,33 +77,34 @@ def shortfalls(result: StudentResult) -> list[str]:
     return lines
 
 
-def _grade_reference(options, folder, target, slot=None):
+def _grade_reference(course, options, folder, target, slot=None):
     """Runs in a fork, like a student's grading: grade the reference and write its result to ``target``."""
     from autograder.grading.pipeline import grade_student
     from autograder.sandbox import process_tree
 
     process_tree.become_subreaper()
     try:
-        result = grade_student("reference solutions (canary)", folder, options, slot=slot)
+        result = grade_student("reference solutions (canary)", folder, course, options, slot=slot)
     finally:
         process_tree.kill_descendants()
     Path(target).write_text(result.to_json(), encoding="utf-8")
 
 
-def ensure_reference_passes(options: GradingOptions, parts: dict[str, str], timeout: float = 900) -> CanaryResult:
-    """Grade the reference through the full pipeline unless a passing canary is cached; raise
+def ensure_reference_passes(course: Course, options: GradingOptions, parts: dict[str, str],
+                            timeout: float = 900) -> CanaryResult:
+    """Grade ``course``'s reference through the full pipeline unless a passing canary is cached; raise
     :class:`CanaryFailed` naming each failing lesson and stage."""
     marker = _marker(parts)
     if marker.exists():
         return CanaryResult(cached=True, seconds=0.0)
-    from autograder.lessons.reference import write_reference_submission
+    from autograder.lessons.hand_ins import write_reference_submission
 
     started = time.monotonic()
     with cleanup.private_folder_for("canary") as base:
-        folder = write_reference_submission(Path(base) / "reference", lessons=options.lessons)
+        folder = write_reference_submission(course, Path(base) / "reference", lessons=options.lessons)
         target = Path(base) / "result.json"
         deaths = []
-        fork_each(lambda _, slot: _grade_reference(options, folder, target, slot), [None], jobs=1,
+        fork_each(lambda _, slot: _grade_reference(course, options, folder, target, slot), [None], jobs=1,
                   on_done=lambda _, problem: deaths.append(problem), deadline_seconds=timeout)
         if deaths[0] or not target.exists():
             raise CanaryFailed(f"grading the reference solutions failed: {deaths[0] or 'no result was written'}; "

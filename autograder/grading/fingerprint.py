@@ -7,7 +7,7 @@ can say *why* it re-grades a student (:func:`what_changed`).
 
 Examples
 --------
->>> parts = fingerprint_parts(GradingOptions())                          # doctest: +SKIP
+>>> parts = fingerprint_parts(GradingOptions(), course)                  # doctest: +SKIP
 >>> sorted(parts)                                                        # doctest: +SKIP
 ['coursekit', 'grader code', 'grading options', 'hidden suite', 'isolation mode', 'libraries',
  'reference solutions']
@@ -25,10 +25,10 @@ from importlib import metadata
 from pathlib import Path
 
 from autograder.grading.options import GradingOptions
-from autograder.lessons.paths import HIDDEN_SUITE, PACKAGE, SOLUTIONS, SUPPORT_PACKAGE
+from autograder.lessons.course import Course
 from autograder.sandbox import launcher
 
-GRADER = PACKAGE
+GRADER = Path(__file__).resolve().parents[1]  # the autograder package
 # Parts whose value is readable as it is (shown as "old → new" when it changes); the others are digests.
 READABLE = ("isolation mode", "libraries")
 LIBRARIES = ("numpy", "scipy", "nbval", "pytest", "ipykernel")
@@ -42,8 +42,8 @@ def _digest_files(files, root):
 
 
 def _grader_files():
-    """The grader's own code: every module except the hidden suite (its own part) and the mistakes corpus
-    (fixtures for the project's tests and the sample class, never run while grading)."""
+    """The grader's own code: every module except this repository's hidden suite (a part of its course)
+    and the mistakes corpus (fixtures for the project's tests and the sample class, never run while grading)."""
     skipped = (GRADER / "hidden", GRADER / "mistakes")
     return [p for p in GRADER.rglob("*.py") if "__pycache__" not in p.parts
             and not any(parent in skipped for parent in p.parents)]
@@ -59,24 +59,23 @@ def _versions():
     return ", ".join(found)
 
 
-def content_parts(solutions_dir: Path = SOLUTIONS) -> dict[str, str]:
-    """``{ingredient: digest or readable value}`` of what the grader runs: its code, the reference
-    solutions, coursekit, the hidden suite and the library versions (no options, no isolation mode)."""
-    solutions_dir = Path(solutions_dir)
-    support = solutions_dir / SUPPORT_PACKAGE
-    hidden = [p for p in HIDDEN_SUITE.rglob("*") if p.is_file() and "__pycache__" not in p.parts]
+def content_parts(course: Course) -> dict[str, str]:
+    """``{ingredient: digest or readable value}`` of what the grader runs: its code, ``course``'s reference
+    solutions, coursekit and hidden suite, and the library versions (no options, no isolation mode)."""
+    solutions_dir, support, suite = course.solutions, course.support, course.hidden_suite
+    hidden = [p for p in suite.rglob("*") if p.is_file() and "__pycache__" not in p.parts]
     return {
         "grader code": _digest_files(_grader_files(), GRADER),
         "reference solutions": _digest_files(solutions_dir.glob("[0-9][0-9]_*.ipynb"), solutions_dir),
         "coursekit": _digest_files([p for p in support.rglob("*.py") if "__pycache__" not in p.parts], support),
-        "hidden suite": _digest_files(hidden, HIDDEN_SUITE),
+        "hidden suite": _digest_files(hidden, suite),
         "libraries": _versions(),
     }
 
 
-def fingerprint_parts(options: GradingOptions, solutions_dir: Path = SOLUTIONS) -> dict[str, str]:
+def fingerprint_parts(options: GradingOptions, course: Course) -> dict[str, str]:
     """``{ingredient: digest or readable value}`` for everything besides the submission that decides a grade."""
-    content = content_parts(solutions_dir)
+    content = content_parts(course)
     libraries = content.pop("libraries")
     return {
         **content,

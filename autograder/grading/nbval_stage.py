@@ -36,9 +36,8 @@ import nbformat
 from autograder.grading.options import GradingOptions
 from autograder.grading.results import LessonResult, NotebookRun
 from autograder.lessons import cells
-from autograder.lessons.catalog import Catalog
+from autograder.lessons.course import Course
 from autograder.lessons.notebook_files import canonical_text, read_master
-from autograder.lessons.paths import SOLUTIONS
 from autograder.sandbox import cleanup, launcher
 from autograder.sandbox.session import LessonProgram, SandboxUnavailable, StudentError, StudentSandbox
 from autograder.sandbox.warm import WarmSlot
@@ -69,14 +68,14 @@ def _stage_timeout(count):
     return 60.0 + 45.0 * count
 
 
-def _student_channels(runnable, options, slot):
+def _student_channels(runnable, options, support, slot):
     """One loaded sandbox per lesson (forked from this grader's warm slot, if any), its pipes handed over.
 
     Returns ``(sandboxes, {lesson: (request fd, reply fd)}, {lesson: why it could not start})``.
     """
     sandboxes, channels, problems = [], {}, {}
     for shell, program in runnable:
-        box = StudentSandbox({shell.number: program}, limits=options.limits, slot=slot, resets_slot=False,
+        box = StudentSandbox({shell.number: program}, support, limits=options.limits, slot=slot, resets_slot=False,
                              direct=True)
         sandboxes.append(box)
         try:
@@ -90,8 +89,8 @@ def _student_channels(runnable, options, slot):
 
 
 def run_notebooks(folder: Path, lessons: list[tuple[LessonResult, Path, LessonProgram | None]], options: GradingOptions,
-                  catalog: Catalog, solutions_dir: Path = SOLUTIONS, slot: WarmSlot | None = None) -> dict[str, NotebookRun]:
-    """Run nbval on every readable lesson notebook of one student.
+                  course: Course, slot: WarmSlot | None = None) -> dict[str, NotebookRun]:
+    """Run nbval on every readable lesson notebook of one student, against ``course``'s masters.
 
     ``slot``: the grader's warm slot, whose zygote forks the lessons' sandboxes; None: cold starts.
 
@@ -100,17 +99,18 @@ def run_notebooks(folder: Path, lessons: list[tuple[LessonResult, Path, LessonPr
     """
     runnable = [(shell, program) for shell, _, program in lessons if program is not None]
     runs = {}
-    sandboxes, channels, problems = _student_channels(runnable, options, slot)
+    catalog = course.catalog
+    sandboxes, channels, problems = _student_channels(runnable, options, course.support, slot)
     try:
         with cleanup.private_folder_for("nbval") as base:
-            sandbox_dir, scratch_dir = launcher.prepare_dirs(base)
+            sandbox_dir, scratch_dir = launcher.prepare_dirs(base, course.support)
             (sandbox_dir / "nbval_sanitize.cfg").write_text(SANITIZE)
             names = []
             for shell, _ in runnable:
                 if shell.number not in channels:
                     continue
                 lesson = catalog.lesson(shell.number)
-                nb = merged_notebook(read_master(Path(solutions_dir) / lesson.filename), shell.number)
+                nb = merged_notebook(read_master(course.solutions / lesson.filename), shell.number)
                 (scratch_dir / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
                 os.chmod(scratch_dir / lesson.filename, 0o644)
                 names.append(lesson.filename)

@@ -24,9 +24,8 @@ from autograder.grading.results import (COULD_NOT_GRADE, GRADED, GRADED_WITH_PRO
                                         LessonResult, NotebookRun, StudentResult)
 from autograder.grading.suite import StudentProxy, run_hidden_suite
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
+from autograder.lessons.course import Course
 from autograder.lessons.notebook_files import UnreadableNotebook, read_submission
-from autograder.lessons.reference import load_reference
 from autograder.sandbox import launcher
 from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
 from autograder.sandbox.warm import WarmSlot
@@ -65,11 +64,12 @@ def _note_failed_prerequisites(shell, program):
                                   f"fix {other} first, its mistake may be the cause here")
 
 
-def _read_lessons(folder, catalog, only=()):
+def _read_lessons(folder, course, only=()):
     """For each graded lesson: (LessonResult shell, notebook path, program or None); notes on the files
     (which of several notebooks was graded, notebooks that belong to no lesson); and one line for each
     thing of the folder that was skipped (hidden, a link, too deep), with why."""
-    files = submissions.match_lessons(folder, catalog)
+    catalog = course.catalog
+    files = submissions.match_lessons(folder, catalog, course.released)
     notes = [files.notes[number] for number in sorted(files.notes) if not only or number in only]
     notes += [f"{path.relative_to(folder)} was not graded: " + (files.unreadable.get(path) or "it holds no exercise "
               "of the course (no answer cell and no exercise function)") for path in files.unmatched]
@@ -97,30 +97,29 @@ def _read_lessons(folder, catalog, only=()):
     return found, notes, [item.line() for item in files.skipped]
 
 
-def grade_student(student_id: str, folder: Path, options: GradingOptions = GradingOptions(),
-                  solutions_dir: Path | None = None, slot: WarmSlot | None = None) -> StudentResult:
-    """Grade the submission in ``folder``; never raises for anything the student did.
+def grade_student(student_id: str, folder: Path, course: Course, options: GradingOptions = GradingOptions(),
+                  slot: WarmSlot | None = None) -> StudentResult:
+    """Grade the submission in ``folder`` against ``course``; never raises for anything the student did.
 
     ``slot``: the warm slot (:class:`~autograder.sandbox.warm.WarmSlot`) this grader process was
     given, whose zygote forks the student's sandboxes; None starts each sandbox cold.
     """
     started = time.monotonic()
-    catalog = load_catalog() if solutions_dir is None else load_catalog(solutions_dir)
-    reference = load_reference() if solutions_dir is None else load_reference(solutions_dir)
+    catalog, reference = course.catalog, course.reference
     result = StudentResult(student_id=student_id, status=GRADED,
                            submission_hash=submissions.submission_hash(folder),
                            isolation=launcher.isolation()[0])
-    lessons, file_notes, result.skipped = _read_lessons(folder, catalog, options.lessons)
+    lessons, file_notes, result.skipped = _read_lessons(folder, course, options.lessons)
     result.problems.extend(file_notes)
     programs = {shell.number: program for shell, _, program in lessons if program is not None}
     unavailable = {shell.number: f"{shell.notebook}: {shell.reason}" for shell, _, program in lessons
                    if program is None}
 
     checks, suite_problems = [], []
-    with StudentSandbox(programs, limits=options.limits, slot=slot) as sandbox:
+    with StudentSandbox(programs, course.support, limits=options.limits, slot=slot) as sandbox:
         proxy = StudentProxy(sandbox, catalog, unavailable)
         try:
-            checks, suite_problems = run_hidden_suite(proxy, reference,
+            checks, suite_problems = run_hidden_suite(proxy, reference, course,
                                                       lessons=[shell.number for shell, _, _ in lessons])
         except StudentError as error:  # e.g. the sandbox crashed too many times
             result.problems.append(f"grading stopped early: {error.message}")
@@ -158,7 +157,7 @@ def grade_student(student_id: str, folder: Path, options: GradingOptions = Gradi
                          if program is not None and full_hidden_marks(shell)]
         stage_failed = ""
         try:
-            runs = run_notebooks(folder, worth_running, options, catalog, slot=slot) if worth_running else {}
+            runs = run_notebooks(folder, worth_running, options, course, slot=slot) if worth_running else {}
         except Exception as error:  # costs this student's notebook points, with the reason
             runs, stage_failed = {}, f"the notebook stage failed ({type(error).__name__}: {error})"
         for shell, _, program in lessons:

@@ -43,7 +43,6 @@ from autograder.lessons import cells
 from autograder.lessons.catalog import Catalog
 from autograder.lessons.notebook_files import (MAX_NOTEBOOK_BYTES, UnreadableNotebook, file_kind, read_master,
                                                read_regular_file, read_submission)
-from autograder.lessons.paths import COURSE
 
 MAX_DEPTH = 2  # folders searched below a student's folder
 MAX_ENTRIES = 10_000  # entries looked at in one student's folder, all levels together
@@ -232,10 +231,10 @@ def _fingerprint(source):
 
 
 @lru_cache(maxsize=None)
-def _stubs(filename):
+def _stubs(released, filename):
     """``{exercise: fingerprint of its answer cell}`` in the released notebook (untouched work)."""
     try:
-        nb = read_master(COURSE / filename)
+        nb = read_master(Path(released) / filename)
     except OSError:
         return {}
     return {cells.grade_id(c): _fingerprint(cells.source_text(c)) for c in nb.cells if cells.is_answer_cell(c)}
@@ -295,9 +294,12 @@ def _name_matches(path, lesson):
     return path.name == lesson.filename or path.name.startswith(lesson.number + "_")
 
 
-def match_lessons(folder: Path, catalog: Catalog, notebooks: list[Path] | None = None,
+def match_lessons(folder: Path, catalog: Catalog, released: Path, notebooks: list[Path] | None = None,
                   read: Callable[[Path], nbformat.NotebookNode] | None = None) -> LessonFiles:
     """Match the notebooks of one student's ``folder`` to ``catalog``'s graded lessons, by content.
+
+    ``released``: the folder of the released notebooks (``course.released``), whose answer cells tell
+    untouched stubs from work.
 
     ``read(path)``: how a notebook is read (default :func:`read_submission` inside ``folder``); a caller
     that reads the chosen notebooks again passes a memoising one, so each file is parsed once.
@@ -309,7 +311,7 @@ def match_lessons(folder: Path, catalog: Catalog, notebooks: list[Path] | None =
 
     Examples
     --------
-    >>> files = match_lessons(Path("class/dan"), load_catalog())           # doctest: +SKIP
+    >>> files = match_lessons(Path("class/dan"), course.catalog, course.released)  # doctest: +SKIP
     >>> files.chosen["03"].name, files.unmatched
     ('dan_exp_log_final.ipynb', [])
     """
@@ -332,7 +334,7 @@ def match_lessons(folder: Path, catalog: Catalog, notebooks: list[Path] | None =
     claimed = set()
     for lesson in lessons:
         names = {e.name for e in lesson.exercises}
-        stubs = _stubs(lesson.filename)
+        stubs = _stubs(released, lesson.filename)
         candidates = []
         for path, code_cells in readable.items():
             answers = _answers(code_cells, names)

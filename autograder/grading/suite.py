@@ -31,8 +31,8 @@ from __future__ import annotations
 import contextlib
 import functools
 import os
-import sys
 from dataclasses import dataclass, field
+from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
@@ -40,16 +40,11 @@ import pytest
 from autograder.grading import transcript_cache
 from autograder.grading.results import CheckResult
 from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, Transcript, independent_prefix
-from autograder.hidden.own_work import CHANGED_HINT, DELEGATED_HINT, forbidden_for
-from autograder.lessons.catalog import Catalog
-from autograder.lessons.paths import HIDDEN_SUITE, SOLUTIONS
+from autograder.lessons.course import Course
 from autograder.lessons.reference import answer_sources
 from autograder.sandbox import launcher
 from autograder.sandbox.session import LessonProgram, SandboxUnavailable, StudentError, StudentSandbox
 from autograder.sandbox.warm import WarmSlot
-
-if str(SOLUTIONS) not in sys.path:
-    sys.path.insert(0, str(SOLUTIONS))  # the hidden suite uses coursekit.diagnose for hints
 
 CONTEXT = SimpleNamespace(student=None, reference=None)
 PRINTED_KEEP = 2000  # characters of a check's printed output kept for the feedback page
@@ -66,9 +61,17 @@ HINTS = {
     "missing": "keep your code in the exercise's answer cell, under the same function name; "
                "helper functions must be defined in that cell too",
     "bad_value": "return numpy arrays, numbers, tuples, lists or dicts",
-    "delegated": DELEGATED_HINT,
 }
 CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its arguments in place
+
+
+def _contracts():
+    """The graded course's ``coursekit.contracts`` (which library calls each exercise must not hand its
+    work to, and the two contract hints); the course put its coursekit on ``sys.path``
+    (:meth:`~autograder.lessons.course.Course.use_support_package`)."""
+    import coursekit.contracts
+
+    return coursekit.contracts
 
 
 def contract_results(proxy: StudentProxy, tests: list[HiddenTest]) -> list[CheckResult]:
@@ -84,7 +87,7 @@ def contract_results(proxy: StudentProxy, tests: list[HiddenTest]) -> list[Check
         results.append(CheckResult(
             exercise=exercise, description="leaves its arguments unchanged", weight=weight, passed=False,
             reason=f"{exercise} changed its argument{'s' if len(names) > 1 else ''} {', '.join(names)} "
-                   f"in place{where}", hint=CHANGED_HINT))
+                   f"in place{where}", hint=_contracts().CHANGED_HINT))
     return results
 
 
@@ -119,7 +122,7 @@ class StudentProxy:
         if name.startswith("_"):
             raise AttributeError(name)
         lesson = self._catalog.exercise(name).lesson
-        forbid = forbidden_for(name)
+        forbid = _contracts().forbidden_for(name)
 
         def call(*args, **kwargs):
             if lesson in self._unavailable:
@@ -152,12 +155,13 @@ def _first_line(text, limit=240):
 
 def _explain(error):
     """(reason, hint) for an exception raised by a hidden test."""
-    from autograder.hidden.helpers import Wrong
+    from autograder.grading.hidden_api import Wrong
 
     if isinstance(error, Wrong):
         return _first_line(error.reason), _first_line(error.hint)
     if isinstance(error, StudentError):
-        return _first_line(error.message), HINTS.get(error.kind, "")
+        hint = _contracts().DELEGATED_HINT if error.kind == "delegated" else HINTS.get(error.kind, "")
+        return _first_line(error.message), hint
     if isinstance(error, AssertionError):
         return _first_line(str(error).splitlines()[0] if str(error) else "a check failed"), ""
     return (_first_line(f"the result could not be checked ({type(error).__name__}: {error})"),
@@ -205,9 +209,13 @@ def _no_plugin_autoload():
             os.environ["PYTEST_DISABLE_PLUGIN_AUTOLOAD"] = before
 
 
-def _pytest_args(files):
+SUITE_INI = Path(__file__).with_name("hidden_suite.ini")  # the ``exercise`` marker; the same for every course
+
+
+def _pytest_args(files, course):
     return [str(f) for f in files] + [
-        "-c", str(HIDDEN_SUITE / "pytest.ini"), "--rootdir", str(HIDDEN_SUITE.parent.parent),
+        # no conftest.py: the fixtures are the grader's own, and a conftest above the course folder is not ours
+        "-c", str(SUITE_INI), "--rootdir", str(course.root), "--noconftest", "-p", "autograder.grading.hidden_fixtures",
         "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings",
         # these two end every session with gc.collect() several times (~0.2 s a student) to find
         # exceptions nobody reads here
@@ -221,9 +229,14 @@ def _describe(item):
     return doc
 
 
-@functools.lru_cache(maxsize=1)
-def hidden_tests() -> tuple[list[HiddenTest], list[str]]:
-    """(tests, problems): the hidden suite as pytest collects it, in pytest's order; once per process.
+def hidden_test_files(course: Course) -> list[Path]:
+    """The course's hidden test files, ``test_NN_*.py``, in name order."""
+    return sorted(course.hidden_suite.glob("test_*.py"))
+
+
+@functools.lru_cache(maxsize=2)
+def hidden_tests(course: Course) -> tuple[list[HiddenTest], list[str]]:
+    """(tests, problems): ``course``'s hidden suite as pytest collects it, in pytest's order; once per process.
 
     Raises :class:`SuiteError` if pytest cannot collect it, or if a test asks
     for a fixture other than ``student`` and ``ref`` (the runner provides
@@ -231,8 +244,8 @@ def hidden_tests() -> tuple[list[HiddenTest], list[str]]:
     """
     grabber = _Grabber()
     with _no_plugin_autoload():
-        code = pytest.main(_pytest_args(sorted(HIDDEN_SUITE.glob("test_*.py"))) + ["--collect-only"],
-                           plugins=[grabber])
+        course.use_support_package()
+        code = pytest.main(_pytest_args(hidden_test_files(course), course) + ["--collect-only"], plugins=[grabber])
     if code != pytest.ExitCode.OK or not grabber.items:
         raise SuiteError(f"the hidden suite could not be collected (pytest exit status {int(code)})")
     tests, problems = [], []
@@ -266,17 +279,15 @@ def _memo(reference):
     return memo
 
 
-def _is_default_reference(reference):
-    """True for the reference of the project's own masters, the only one whose transcripts go to disk."""
-    from autograder.lessons.reference import load_reference
-
-    return reference is load_reference()
+def _is_course_reference(reference, course):
+    """True for the course's own reference (the masters'), the only one whose transcripts go to disk."""
+    return reference is course.reference
 
 
-def transcripts_for(reference: object, catalog: Catalog) -> dict[str, Transcript]:
-    """``{nodeid: Transcript}``: every hidden test run once on ``reference``, its calls recorded.
+def transcripts_for(reference: object, course: Course) -> dict[str, Transcript]:
+    """``{nodeid: Transcript}``: every hidden test of ``course`` run once on ``reference``, its calls recorded.
 
-    Kept in the reference's memo. For the project's own reference the transcripts
+    Kept in the reference's memo. For the course's own reference the transcripts
     are also read from, and saved to, :mod:`autograder.grading.transcript_cache`,
     so a machine records them once per grader version.
     """
@@ -284,14 +295,14 @@ def transcripts_for(reference: object, catalog: Catalog) -> dict[str, Transcript
     if memo.get("transcripts") is not None:
         return memo["transcripts"]
     single_threaded_blas()  # as in the sandbox, so that equal answers are equal bit for bit
-    tests = hidden_tests()[0]
-    saved = transcript_cache.load() if _is_default_reference(reference) else None
+    tests = hidden_tests(course)[0]
+    saved = transcript_cache.load(course) if _is_course_reference(reference, course) else None
     if saved is not None and set(saved[0]) == {test.nodeid for test in tests}:
         found, memo["learned"] = saved
     else:
-        found = _record_transcripts(reference, catalog, tests)
-        if _is_default_reference(reference):
-            transcript_cache.save(found)
+        found = _record_transcripts(reference, course.catalog, tests)
+        if _is_course_reference(reference, course):
+            transcript_cache.save(course, found)
     memo["transcripts"] = found
     return found
 
@@ -316,15 +327,15 @@ def _record_transcripts(reference, catalog, tests):
     return found
 
 
-def reference_programs(catalog: Catalog) -> dict[str, LessonProgram]:
+def reference_programs(course: Course) -> dict[str, LessonProgram]:
     """``{lesson: LessonProgram}`` of the reference solutions: each master's setup and answer cells."""
-    sources = answer_sources()
+    sources, catalog = answer_sources(course.solutions), course.catalog
     return {lesson.number: LessonProgram(setup=lesson.setup_source,
                                          cells=[(e.name, sources[e.name]) for e in lesson.exercises])
             for lesson in catalog.graded_lessons}
 
 
-def learn_reference_in_sandbox(reference: object, catalog: Catalog, limits: launcher.Limits | None = None,
+def learn_reference_in_sandbox(reference: object, course: Course, limits: launcher.Limits | None = None,
                                slot: WarmSlot | None = None, lessons: tuple[str, ...] = ()) -> int:
     """Run the hidden tests of ``lessons`` (all when empty) once on the reference solutions in a sandbox,
     as a student; return how many tests taught a new passing list of values.
@@ -340,7 +351,7 @@ def learn_reference_in_sandbox(reference: object, catalog: Catalog, limits: laun
     (:mod:`autograder.grading.transcript_cache`), are not run again.
     Speed only: any failure here just leaves the memo as it was.
     """
-    transcripts = transcripts_for(reference, catalog)
+    transcripts, catalog = transcripts_for(reference, course), course.catalog
     done = _memo(reference)["learned"]
     wanted = {lesson.number for lesson in catalog.graded_lessons if not lessons or lesson.number in lessons}
     todo = wanted - done
@@ -349,10 +360,10 @@ def learn_reference_in_sandbox(reference: object, catalog: Catalog, limits: laun
     done |= todo
     learned = 0
     try:
-        with StudentSandbox(reference_programs(catalog), limits=limits, slot=slot) as sandbox:
+        with StudentSandbox(reference_programs(course), course.support, limits=limits, slot=slot) as sandbox:
             proxy = StudentProxy(sandbox, catalog)
             replay = proxy._replay = Replay(sandbox)
-            for test in hidden_tests()[0]:
+            for test in hidden_tests(course)[0]:
                 transcript = transcripts.get(test.nodeid)
                 if test.lesson not in todo or transcript is None or not transcript.passed:
                     continue
@@ -364,8 +375,8 @@ def learn_reference_in_sandbox(reference: object, catalog: Catalog, limits: laun
                 replay.stop()
     except (SandboxUnavailable, StudentError):
         return learned
-    if _is_default_reference(reference):
-        transcript_cache.save(transcripts, done)
+    if _is_course_reference(reference, course):
+        transcript_cache.save(course, transcripts, done)
     return learned
 
 
@@ -393,17 +404,17 @@ def _printed_text(parts):
     return printed
 
 
-def run_hidden_suite(proxy: StudentProxy, reference: object,
+def run_hidden_suite(proxy: StudentProxy, reference: object, course: Course,
                      lessons: list[str] | None = None) -> tuple[list[CheckResult], list[str]]:
-    """Run the hidden suite for one student; return (list of CheckResult, problems).
+    """Run ``course``'s hidden suite for one student; return (list of CheckResult, problems).
 
     ``lessons``: only run the tests of these lesson numbers (default all).
     """
-    tests, problems = hidden_tests()
+    tests, problems = hidden_tests(course)
     tests = [t for t in tests if lessons is None or t.lesson in lessons]
     if not tests:
         return [], []
-    transcripts = transcripts_for(reference, proxy._catalog)
+    transcripts = transcripts_for(reference, course)
     replay = proxy._replay = Replay(proxy._sandbox)
     results = []
     try:
@@ -508,23 +519,20 @@ def single_threaded_blas() -> int:
     return done
 
 
-def preload_hidden_suite() -> None:
+def preload_hidden_suite(course: Course) -> None:
     """Collect the hidden suite and record the reference's calls once, so forked graders reuse them (speed)."""
     import gc
 
-    from autograder.lessons.catalog import load_catalog
-    from autograder.lessons.reference import load_reference
-
     single_threaded_blas()
-    hidden_tests()
-    transcripts_for(load_reference(), load_catalog())
+    hidden_tests(course)
+    transcripts_for(course.reference, course)
     # Everything imported so far lives as long as the process: keep it out of the garbage
     # collector's scans (each forked grader would otherwise walk, and copy, the whole heap).
     gc.collect()
     gc.freeze()
 
 
-def run_hidden_suite_with_pytest(proxy: StudentProxy, reference: object,
+def run_hidden_suite_with_pytest(proxy: StudentProxy, reference: object, course: Course,
                                  lessons: list[str] | None = None) -> tuple[list[CheckResult], list[str]]:
     """:func:`run_hidden_suite` as a plain ``pytest.main`` run, call by call: the yardstick of the fast runner.
 
@@ -532,15 +540,16 @@ def run_hidden_suite_with_pytest(proxy: StudentProxy, reference: object,
     """
     CONTEXT.student, CONTEXT.reference = proxy, reference
     collector = _Collector(proxy)
-    files = sorted(HIDDEN_SUITE.glob("test_*.py"))
+    files = hidden_test_files(course)
     if lessons is not None:
         files = [f for f in files if f.stem.split("_")[1] in lessons]
     if not files:
         return [], []
     with _no_plugin_autoload():
-        code = pytest.main(_pytest_args(files), plugins=[collector])
+        course.use_support_package()
+        code = pytest.main(_pytest_args(files, course), plugins=[collector])
     if code not in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) or not collector.results:
         raise SuiteError(f"the hidden suite did not run (pytest exit status {int(code)}, "
                          f"{len(collector.results)} checks collected)")
-    tests = [t for t in hidden_tests()[0] if lessons is None or t.lesson in lessons]
+    tests = [t for t in hidden_tests(course)[0] if lessons is None or t.lesson in lessons]
     return collector.results + contract_results(proxy, tests), collector.problems

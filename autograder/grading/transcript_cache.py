@@ -22,8 +22,8 @@ code never runs with write access to it (see SECURITY.md).
 
 Examples
 --------
->>> saved = load()                         # doctest: +SKIP
->>> save(transcripts, learned={"01"})      # doctest: +SKIP
+>>> saved = load(course)                           # doctest: +SKIP
+>>> save(course, transcripts, learned={"01"})      # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -36,6 +36,7 @@ from pathlib import Path
 
 from autograder.grading.fingerprint import cache_dir, content_parts
 from autograder.grading.transcripts import Transcript
+from autograder.lessons.course import Course
 
 FORMAT = 1  # bump when Transcript's fields or their meaning change
 
@@ -50,21 +51,21 @@ def _cpu_model():
     return platform.processor()
 
 
-def key() -> str:
+def key(course: Course) -> str:
     """A digest of everything the reference's transcripts depend on (see the module's docstring)."""
-    parts = dict(content_parts(), format=FORMAT, machine=platform.machine(), cpu=_cpu_model(),
+    parts = dict(content_parts(course), format=FORMAT, machine=platform.machine(), cpu=_cpu_model(),
                  kernel=os.environ.get("OPENBLAS_CORETYPE", ""), l2=os.environ.get("OPENBLAS_L2_SIZE", ""))
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:20]
 
 
-def path() -> Path:
-    """This machine's and this grader's transcript file."""
-    return cache_dir() / f"transcripts-{key()}.json"
+def path(course: Course) -> Path:
+    """This machine's, this grader's and this course's transcript file."""
+    return cache_dir() / f"transcripts-{key(course)}.json"
 
 
-def save(transcripts: dict[str, Transcript], learned: set[str] | tuple = ()) -> None:
+def save(course: Course, transcripts: dict[str, Transcript], learned: set[str] | tuple = ()) -> None:
     """Write ``{nodeid: Transcript}`` and the lessons already learned in a sandbox, atomically; never raises."""
-    target = path()
+    target = path(course)
     document = {"format": FORMAT, "learned": sorted(learned),
                 "transcripts": {nodeid: vars(t) for nodeid, t in transcripts.items()}}
     tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
@@ -76,11 +77,11 @@ def save(transcripts: dict[str, Transcript], learned: set[str] | tuple = ()) -> 
         tmp.unlink(missing_ok=True)
 
 
-def load() -> tuple[dict[str, Transcript], set[str]] | None:
+def load(course: Course) -> tuple[dict[str, Transcript], set[str]] | None:
     """``({nodeid: Transcript}, learned lessons)`` from this machine's file, or ``None`` if there is none
     (or it cannot be read: recording again is always safe)."""
     try:
-        document = json.loads(path().read_text(encoding="utf-8"))
+        document = json.loads(path(course).read_text(encoding="utf-8"))
         if document.get("format") != FORMAT:
             return None
         transcripts = {}

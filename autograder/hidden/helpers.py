@@ -19,50 +19,13 @@ so one wrong exercise never costs points elsewhere.
 """
 
 import numpy as np
-import pytest
 from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.child.wire import Probe  # noqa: F401  (callable arguments, by name)
 from autograder.sandbox.session import StudentError
+from autograder.grading.hidden_api import Wrong, exercise, expect, expect_close, fmt  # noqa: F401  (for the tests)
 from coursekit.diagnose import (ALLCLOSE_HINT, LISTS_HINT, rotation_hint, rotation_problem,  # noqa: F401  (for the tests)
                                 shape_problem)
-
-
-class Wrong(AssertionError):
-    """A failed hidden check: ``reason`` is what was seen, ``hint`` a likely cause."""
-
-    def __init__(self, reason, hint=""):
-        super().__init__(reason)
-        self.reason = reason
-        self.hint = hint or ""
-
-
-def exercise(name, weight=1.0):
-    """Mark a test as grading exercise ``name`` with relative ``weight``."""
-    return pytest.mark.exercise(name=name, weight=float(weight))
-
-
-def fmt(value, digits=4):
-    """Short text for a value in a failure message; tiny numbers keep their significant digits.
-
-    Examples
-    --------
-    >>> fmt([1.0, 2.5e-9, -0.0])
-    '[1, 2.5e-09, 0]'
-    """
-    try:
-        array = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        return repr(value)[:120]
-    text = np.array2string(array + 0.0, separator=", ", threshold=20, max_line_width=1000,
-                           formatter={"float_kind": lambda x: f"{x:.{digits}g}"})
-    return " ".join(text.split())
-
-
-def expect(condition, reason, hint=""):
-    """Raise :class:`Wrong` unless ``condition``."""
-    if not condition:
-        raise Wrong(reason, hint)
 
 
 def expect_array(value, shape, what):
@@ -71,23 +34,6 @@ def expect_array(value, shape, what):
     if problem:
         raise Wrong(f"{what} {problem}")
     return np.asarray(value, dtype=float)
-
-
-def expect_close(got, expected, tol, what, hint="", scale=1.0):
-    """Raise :class:`Wrong` unless ``got`` matches ``expected`` entrywise within ``tol · max(1, scale)``.
-
-    ``scale`` is the size of the inputs (e.g. |ρ| of a pose), so the tolerance
-    is relative to them; the message gives the size of the error.
-    """
-    got = np.asarray(got, dtype=float)
-    expected = np.asarray(expected, dtype=float)
-    if got.shape != expected.shape:
-        raise Wrong(f"{what}: shape {got.shape}, expected {expected.shape}", hint)
-    tol = tol * max(1.0, float(scale))
-    error = float(np.max(np.abs(got - expected))) if got.size else 0.0
-    if not error <= tol:
-        raise Wrong(f"{what} is off by {error:.2g} (tolerance {tol:.2g}): got {fmt(got, 6)}, "
-                    f"expected {fmt(expected, 6)}", hint)
 
 
 def expect_same_with_lists(function, args, shape, what, lists=None, **kwargs):

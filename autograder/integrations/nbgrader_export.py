@@ -26,7 +26,7 @@ What nbgrader can live with:
 
 Examples
 --------
->>> export_to_gradebook(results, "nbgrader-course/gradebook.db")  # doctest: +SKIP
+>>> export_to_gradebook(results, "nbgrader-course/gradebook.db", course)  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -39,9 +39,8 @@ from nbgrader.api import Gradebook, MissingEntry
 from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.integrations.nbgrader_course import assignment_name, with_environment_tools
 from autograder.lessons import cells
-from autograder.lessons.catalog import load_catalog
+from autograder.lessons.course import Course
 from autograder.lessons.notebook_files import read_master
-from autograder.lessons.paths import COURSE
 
 
 def _database_url(path_or_url):
@@ -49,7 +48,7 @@ def _database_url(path_or_url):
     return text if "://" in text else f"sqlite:///{text}"
 
 
-def _ensure_structure(url, lesson):
+def _ensure_structure(url, lesson, released):
     """Record the lesson's cells as ``nbgrader generate_assignment`` would (its own SaveCells step)."""
     from nbgrader.preprocessors import SaveCells
 
@@ -64,14 +63,14 @@ def _ensure_structure(url, lesson):
             recorded = False
     if not recorded:  # already there (from nbgrader itself or an earlier export): leave it as it is
         resources = {"nbgrader": {"db_url": url, "assignment": assignment, "notebook": notebook}}
-        SaveCells().preprocess(read_master(COURSE / lesson.filename), resources)
+        SaveCells().preprocess(read_master(released / lesson.filename), resources)
     return assignment, notebook
 
 
-def export_to_gradebook(results: list[StudentResult], database: str | os.PathLike) -> int:
-    """Create assignments (as nbgrader would), students, and automatic scores for the lessons handed in;
-    return the number of grade cells written."""
-    catalog = load_catalog()
+def export_to_gradebook(results: list[StudentResult], database: str | os.PathLike, course: Course) -> int:
+    """Create ``course``'s assignments (as nbgrader would), students, and automatic scores for the lessons
+    handed in; return the number of grade cells written."""
+    catalog = course.catalog
     url = _database_url(database)
     written = 0
     os.environ.update(with_environment_tools())
@@ -79,7 +78,7 @@ def export_to_gradebook(results: list[StudentResult], database: str | os.PathLik
                  for lesson in result.lessons if lesson.status != "missing"}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # SQLAlchemy's notes about nbgrader's own models
-        structure = {lesson.number: _ensure_structure(url, lesson) for lesson in catalog.graded_lessons
+        structure = {lesson.number: _ensure_structure(url, lesson, course.released) for lesson in catalog.graded_lessons
                      if lesson.number in handed_in}
         gradebook = Gradebook(url)
     with warnings.catch_warnings(), gradebook:

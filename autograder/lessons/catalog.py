@@ -1,11 +1,11 @@
-"""The lessons and their exercises, read from the masters in ``solutions/``.
+"""The lessons and their exercises, read from a course's masters (``solutions/``).
 
 The masters are the single source of truth: an exercise exists because its
 answer cell exists, and it is worth what its check cell's ``points`` say.
 
 Examples
 --------
->>> catalog = load_catalog()
+>>> catalog = load_catalog(Path("solutions"))
 >>> catalog.exercise("rot_z").lesson
 '01'
 """
@@ -21,7 +21,6 @@ import nbformat
 
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
-from autograder.lessons.paths import SOLUTIONS
 
 LESSON_FILE = re.compile(r"^(\d\d)_[a-z0-9_]+\.ipynb$")
 
@@ -116,7 +115,7 @@ def lesson_from_notebook(path: Path, nb: nbformat.NotebookNode) -> Lesson:
 
 
 @lru_cache(maxsize=4)
-def load_catalog(solutions_dir: Path = SOLUTIONS) -> Catalog:
+def load_catalog(solutions_dir: Path) -> Catalog:
     """Build the catalog from every ``NN_*.ipynb`` master, in lesson order."""
     lessons = []
     for path in sorted(Path(solutions_dir).glob("[0-9][0-9]_*.ipynb")):

@@ -3,10 +3,12 @@
 The hidden suite compares each student's answer with these functions (and
 with scipy where it applies). They are the solution cells of ``solutions/``
 executed as written, so there is one copy of every solution in the project.
+The setup cells import ``coursekit``: call :meth:`~autograder.lessons.course.Course.use_support_package`
+first (``Course.reference`` does).
 
 Examples
 --------
->>> ref = load_reference()
+>>> ref = load_reference(Path("solutions"))
 >>> ref.rot_z(0.0)
 array([[1., 0., 0.],
        [0., 1., 0.],
@@ -23,8 +25,7 @@ import nbformat
 
 from autograder.lessons import cells
 from autograder.lessons.catalog import load_catalog
-from autograder.lessons.notebook_files import canonical_text, read_master
-from autograder.lessons.paths import COURSE, SOLUTIONS
+from autograder.lessons.notebook_files import read_master
 
 
 def lesson_namespace(master: nbformat.NotebookNode, label: str) -> dict:
@@ -54,58 +55,26 @@ class ReferenceSolutions(SimpleNamespace):
 
 
 @lru_cache(maxsize=2)
-def load_reference(solutions_dir: Path = SOLUTIONS) -> ReferenceSolutions:
+def load_reference(solutions_dir: Path) -> ReferenceSolutions:
     """A namespace with every exercise function of every lesson, from the masters."""
     catalog = load_catalog(solutions_dir)
     functions = {}
     for lesson in catalog.graded_lessons:
-        namespace = lesson_namespace(read_master(solutions_dir / lesson.filename), lesson.number)
+        namespace = lesson_namespace(read_master(Path(solutions_dir) / lesson.filename), lesson.number)
         for exercise in lesson.exercises:
             functions[exercise.name] = namespace[exercise.name]
     return ReferenceSolutions(functions)
 
 
-def answer_sources(solutions_dir: Path = SOLUTIONS) -> dict[str, str]:
+def answer_sources(solutions_dir: Path) -> dict[str, str]:
     """``{exercise name: answer-cell source}`` of the masters, solution markers removed."""
     catalog = load_catalog(solutions_dir)
     sources = {}
     for lesson in catalog.graded_lessons:
-        for cell in read_master(solutions_dir / lesson.filename).cells:
+        for cell in read_master(Path(solutions_dir) / lesson.filename).cells:
             if cells.is_answer_cell(cell):
                 text = cells.source_text(cell)
                 kept = [line for line in text.splitlines()
                         if line.strip() not in (cells.BEGIN_SOLUTION, cells.END_SOLUTION)]
                 sources[cells.grade_id(cell)] = "\n".join(kept)
     return sources
-
-
-def write_submission(folder: str | Path, answers: dict[str, str], lessons: tuple[str, ...] = ()) -> Path:
-    """Write the released notebooks into ``folder`` with ``answers`` in their answer cells, as a student
-    would hand them in; return ``folder`` (a :class:`~pathlib.Path`).
-
-    ``answers``: ``{exercise name: answer-cell source}``; an exercise not in it keeps its stub.
-    ``lessons``: only these lesson numbers (default: every graded lesson).
-
-    Examples
-    --------
-    >>> folder = write_submission(tmp, {"rot_z": "def rot_z(angle):\\n    return None"}, lessons=("01",))  # doctest: +SKIP
-    >>> sorted(p.name for p in folder.iterdir())                                                    # doctest: +SKIP
-    ['01_frames_and_rotations.ipynb']
-    """
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    for lesson in load_catalog().graded_lessons:
-        if lessons and lesson.number not in lessons:
-            continue
-        nb = read_master(COURSE / lesson.filename)
-        for cell in nb.cells:
-            if cells.is_answer_cell(cell) and cells.grade_id(cell) in answers:
-                cell.source = answers[cells.grade_id(cell)]
-        (folder / lesson.filename).write_text(canonical_text(nb), encoding="utf-8")
-    return folder
-
-
-def write_reference_submission(folder: str | Path, lessons: tuple[str, ...] = ()) -> Path:
-    """:func:`write_submission` with every reference answer: the canary's submission
-    (:mod:`autograder.grading.canary`), which must get full marks."""
-    return write_submission(folder, answer_sources(), lessons)

@@ -7,7 +7,7 @@ does not change; :mod:`autograder.mutants.equivalent` lists mutants by key.
 
 Examples
 --------
->>> found = mutants_of("rot_z")            # doctest: +SKIP
+>>> found = mutants_of(course, "rot_z")    # doctest: +SKIP
 >>> found[0].key, found[0].family          # doctest: +SKIP
 ('rot_z.1f0c9a2e', 'sign')
 """
@@ -19,7 +19,7 @@ import hashlib
 from dataclasses import dataclass
 from functools import lru_cache
 
-from autograder.lessons.catalog import load_catalog
+from autograder.lessons.course import Course
 from autograder.lessons.reference import answer_sources
 from autograder.mutants import operators
 
@@ -53,11 +53,11 @@ def _globals_of(setup_source):
 
 
 @lru_cache(maxsize=None)
-def mutants_of(exercise: str) -> tuple[Mutant, ...]:
+def mutants_of(course: Course, exercise: str) -> tuple[Mutant, ...]:
     """Every distinct mutant of ``exercise``'s reference answer, in operator order (a tuple)."""
-    catalog = load_catalog()
+    catalog = course.catalog
     lesson = catalog.exercise(exercise).lesson
-    reference = answer_sources()[exercise]
+    reference = answer_sources(course.solutions)[exercise]
     tree = ast.parse(reference)
     seen = {ast.unparse(tree)}
     found = []
@@ -77,14 +77,14 @@ def mutants_of(exercise: str) -> tuple[Mutant, ...]:
     return tuple(found)
 
 
-def all_mutants(exercises: list[str] | None = None, lessons: list[str] | None = None) -> list[Mutant]:
+def all_mutants(course: Course, exercises: list[str] | None = None, lessons: list[str] | None = None) -> list[Mutant]:
     """The mutants of every graded exercise of the catalog (or of the ones named), lesson by lesson."""
     found = []
-    for lesson in load_catalog().graded_lessons:
+    for lesson in course.catalog.graded_lessons:
         if lessons and lesson.number not in lessons:
             continue
         for exercise in lesson.exercises:
             if exercises and exercise.name not in exercises:
                 continue
-            found.extend(mutants_of(exercise.name))
+            found.extend(mutants_of(course, exercise.name))
     return found

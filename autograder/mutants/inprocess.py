@@ -14,7 +14,7 @@ corpus. Student submissions are graded in the real sandbox.
 
 Examples
 --------
->>> hidden = grade_hidden("rot_z", "def rot_z(a):\\n    return np.eye(3)\\n")   # doctest: +SKIP
+>>> hidden = grade_hidden(course, "rot_z", "def rot_z(a):\\n    return np.eye(3)\\n")   # doctest: +SKIP
 >>> hidden.points < hidden.max_points                                        # doctest: +SKIP
 True
 """
@@ -29,9 +29,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from autograder.grading.suite import StudentProxy, run_hidden_suite
-from autograder.lessons.catalog import load_catalog
-from autograder.lessons.paths import SOLUTIONS
-from autograder.lessons.reference import answer_sources, load_reference
+from autograder.lessons.course import Course
+from autograder.lessons.reference import answer_sources
 from autograder.sandbox.launcher import Limits
 from autograder.sandbox.session import CellOutcome, LessonProgram, StudentSandbox
 
@@ -40,8 +39,8 @@ PUBLIC_SECONDS = 20.0  # a check cell that runs longer than this counts as faile
 
 @lru_cache(maxsize=1)
 def _worker_module():
-    if str(SOLUTIONS) not in sys.path:
-        sys.path.insert(0, str(SOLUTIONS))
+    """The sandbox worker's module, imported here (it imports ``coursekit.watching``: the course's
+    :meth:`~autograder.lessons.course.Course.use_support_package` comes first)."""
     from autograder.sandbox.child import worker
 
     return worker
@@ -114,10 +113,11 @@ def _kept_streams():
         sys.stdout, sys.stderr = saved
 
 
-def lesson_programs(lesson: str, overrides: dict[str, str]) -> dict[str, LessonProgram]:
+def lesson_programs(course: Course, lesson: str, overrides: dict[str, str]) -> dict[str, LessonProgram]:
     """``{lesson: LessonProgram}``: the master's setup and answers, with ``overrides`` ({exercise: source})."""
-    catalog = load_catalog()
-    sources = answer_sources()
+    course.use_support_package()
+    catalog = course.catalog
+    sources = answer_sources(course.solutions)
     setup = catalog.lesson(lesson).setup_source
     cells = [(e.name, overrides.get(e.name, sources[e.name])) for e in catalog.lesson(lesson).exercises]
     return {lesson: LessonProgram(setup=setup, cells=cells)}
@@ -143,13 +143,13 @@ def _score(max_points, checks):
     return round(max_points * sum(c.weight for c in checks if c.passed) / total, 2) if total else 0.0
 
 
-def grade_hidden(exercise: str, source: str, sandbox: InProcessSandbox | None = None) -> HiddenGrade:
+def grade_hidden(course: Course, exercise: str, source: str, sandbox: InProcessSandbox | None = None) -> HiddenGrade:
     """The hidden suite's verdict on ``source`` as the answer to ``exercise`` (other answers: the reference's)."""
-    catalog = load_catalog()
+    catalog = course.catalog
     lesson = catalog.exercise(exercise).lesson
-    sandbox = sandbox or InProcessSandbox(lesson_programs(lesson, {exercise: source}))
+    sandbox = sandbox or InProcessSandbox(lesson_programs(course, lesson, {exercise: source}))
     proxy = StudentProxy(sandbox, catalog)
-    checks, _ = run_hidden_suite(proxy, load_reference(), lessons=[lesson])
+    checks, _ = run_hidden_suite(proxy, course.reference, course, lessons=[lesson])
     grade = HiddenGrade(exercise, 0.0, catalog.exercise(exercise).points)
     for other in catalog.lesson(lesson).exercises:
         own = [c for c in checks if c.exercise == other.name]
@@ -170,17 +170,19 @@ def _on_alarm(signum, frame):
     raise _Alarm()
 
 
-def run_public_checks(exercise: str, source: str, sandbox: InProcessSandbox | None = None) -> tuple[bool, str]:
+def run_public_checks(course: Course, exercise: str, source: str,
+                      sandbox: InProcessSandbox | None = None) -> tuple[bool, str]:
     """``(passed, printed)``: did every public check of ``exercise`` pass for the answer ``source``?
 
     The answer runs as the check cell would see it: after the lesson's setup cell
     and the other answers (the reference's), in a namespace named ``__main__``.
     """
+    course.use_support_package()
     import coursekit
     from coursekit.checking import CheckFailed
 
-    lesson = load_catalog().exercise(exercise).lesson
-    sandbox = sandbox or InProcessSandbox(lesson_programs(lesson, {exercise: source}))
+    lesson = course.catalog.exercise(exercise).lesson
+    sandbox = sandbox or InProcessSandbox(lesson_programs(course, lesson, {exercise: source}))
     function = sandbox.namespace(lesson).get(exercise)
     out = io.StringIO()
     if not callable(function):

@@ -14,6 +14,7 @@ public checks at least :data:`PUBLIC_TARGET` of what the hidden suite kills.
 
 from __future__ import annotations
 
+import functools
 import multiprocessing
 import os
 import time
@@ -22,6 +23,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from autograder.mutants.equivalent import EQUIVALENT
+from autograder.lessons.course import Course
 from autograder.mutants.generate import Mutant, all_mutants
 
 HIDDEN_TARGET = 0.98
@@ -50,14 +52,14 @@ class Outcome:
         return self.key in EQUIVALENT
 
 
-def grade_mutant(mutant: Mutant) -> Outcome:
+def grade_mutant(course: Course, mutant: Mutant) -> Outcome:
     """The :class:`Outcome` of one mutant (both suites share one in-process sandbox)."""
     from autograder.mutants.inprocess import InProcessSandbox, grade_hidden, lesson_programs, run_public_checks
 
     try:
-        sandbox = InProcessSandbox(lesson_programs(mutant.lesson, {mutant.exercise: mutant.source}))
-        hidden = grade_hidden(mutant.exercise, mutant.source, sandbox)
-        public_passed, printed = run_public_checks(mutant.exercise, mutant.source, sandbox)
+        sandbox = InProcessSandbox(lesson_programs(course, mutant.lesson, {mutant.exercise: mutant.source}))
+        hidden = grade_hidden(course, mutant.exercise, mutant.source, sandbox)
+        public_passed, printed = run_public_checks(course, mutant.exercise, mutant.source, sandbox)
     except Exception as error:  # noqa: BLE001 (one mutant's trouble is reported, the run goes on)
         return Outcome(mutant.key, mutant.exercise, mutant.family, mutant.description, False, False,
                        error=f"{type(error).__name__}: {error}")
@@ -67,36 +69,35 @@ def grade_mutant(mutant: Mutant) -> Outcome:
                    hidden.elsewhere)
 
 
-def _preload():
+def _preload(course):
     """Everything the forks share: the suite collected, the reference's calls recorded, the checks imported."""
     from autograder.grading.suite import hidden_tests, single_threaded_blas, transcripts_for
-    from autograder.lessons.catalog import load_catalog
-    from autograder.lessons.reference import load_reference
     from autograder.mutants.inprocess import _worker_module
 
     warnings.simplefilter("ignore")  # a mutant's overflow or 0/0 is its own business (the sandbox keeps it too)
     single_threaded_blas()
-    hidden_tests()
-    transcripts_for(load_reference(), load_catalog())
+    course.use_support_package()
+    hidden_tests(course)
+    transcripts_for(course.reference, course)
     _worker_module()
     import coursekit.checks  # noqa: F401  (importing registers every lesson's checks)
 
 
-def grade_all(mutants: list[Mutant], jobs: int | None = None,
+def grade_all(course: Course, mutants: list[Mutant], jobs: int | None = None,
               progress: Callable[[int, int], None] | None = None) -> list[Outcome]:
     """Outcomes of ``mutants``, in their order; ``jobs`` forked processes (default: the cores, at most 2)."""
-    _preload()
+    _preload(course)
     jobs = jobs or min(2, os.cpu_count() or 1)
     if jobs <= 1:
         outcomes = []
         for mutant in mutants:
-            outcomes.append(grade_mutant(mutant))
+            outcomes.append(grade_mutant(course, mutant))
             if progress:
                 progress(len(outcomes), len(mutants))
         return outcomes
     with multiprocessing.get_context("fork").Pool(jobs) as pool:
         outcomes = []
-        for outcome in pool.imap(grade_mutant, mutants, chunksize=4):
+        for outcome in pool.imap(functools.partial(grade_mutant, course), mutants, chunksize=4):
             outcomes.append(outcome)
             if progress:
                 progress(len(outcomes), len(mutants))
@@ -176,22 +177,20 @@ def stale_equivalents(mutants: list[Mutant]) -> list[str]:
     return sorted(key for key in EQUIVALENT if key not in keys)
 
 
-def main(exercises: list[str] | None = None, lessons: list[str] | None = None, jobs: int | None = None,
+def main(course: Course, exercises: list[str] | None = None, lessons: list[str] | None = None, jobs: int | None = None,
          markdown: bool = False, show_survivors: bool = True, out: Callable[[str], None] = print,
          save: str | None = None) -> int:
     """Generate, grade and report; return 0 when every exercise meets both targets, else 1.
 
     ``save``: a path to write every outcome to, as JSON (for reading survivors and hints at leisure).
     """
-    from autograder.lessons.catalog import load_catalog
-
     started = time.monotonic()
-    mutants = all_mutants(exercises, lessons)
-    names = [e.name for e in load_catalog().exercises
+    mutants = all_mutants(course, exercises, lessons)
+    names = [e.name for e in course.catalog.exercises
              if (not exercises or e.name in exercises) and (not lessons or e.lesson in lessons)]
     out(f"{len(mutants)} mutants of {len(names)} exercises, graded by the hidden suite and the public checks "
         f"({jobs or min(2, os.cpu_count() or 1)} processes)")
-    outcomes = grade_all(mutants, jobs)
+    outcomes = grade_all(course, mutants, jobs)
     if save:
         import dataclasses
         import json

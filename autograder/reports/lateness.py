@@ -1,17 +1,29 @@
 """Due dates and a late policy, from a small course config file, applied to a graded student.
 
-The config is TOML (``grade --config course.toml``); everything in it is optional::
+The config is TOML (``grade --config late.toml``); everything in it is optional::
 
     timezone = "Europe/Berlin"        # for due dates written without an offset (default UTC)
 
     [late_policy]                     # for every lesson, unless the lesson says otherwise
+    rule = "per_day"                  # how lateness costs points: "per_day" (the default) or "cutoff"
     grace_minutes = 15                # this late still counts as on time
-    penalty_per_day = 0.10            # fraction of the lesson's points lost per started day late
+    penalty_per_day = 0.10            # per_day: fraction of the lesson's points lost per started day late
     max_penalty = 0.50                # never more than this fraction
 
     [lessons."03"]
     due = 2026-12-01T23:59:00         # TOML date-time, with or without an offset
     penalty_per_day = 0.25            # a lesson may override any policy value
+
+    [lessons."09"]
+    due = 2026-12-20T23:59:00
+    rule = "cutoff"                   # past the due date and the grace, the lesson loses max_penalty (all of it)
+
+The rules are late-policy plugins (:mod:`autograder.reports.plugins`, kind ``"late_policy"``): a function
+``rule(policy, late) -> (fraction, reason)`` called with the :class:`LatePolicy` and the seconds after the due
+date, only past the grace. ``per_day`` (:func:`per_day`) takes ``penalty_per_day`` for every started day, at most
+``max_penalty``; ``cutoff`` (:func:`cutoff`) takes ``max_penalty`` at once (by default 1: the lesson scores 0),
+whatever ``penalty_per_day`` says. Another rule is registered with ``@register("late_policy", "NAME")`` and
+chosen with ``rule = "NAME"``; a rule the registry does not know is refused with the known ones.
 
 When a lesson was handed in comes from one trusted source: nbgrader's
 ``timestamp.txt`` at the top of the submission (``<student>/<assignment>/``),
@@ -26,7 +38,7 @@ are written in the course's timezone.
 
 Examples
 --------
->>> config = parse_config('[lessons."01"]\\ndue = 2026-12-01T12:00:00Z\\n[late_policy]\\npenalty_per_day = 0.1')
+>>> config = parse_config('[lessons."01"]\\ndue = 2026-12-01T12:00:00Z\\n[late_policy]\\npenalty_per_day = 0.1', "course.toml", ["01"])
 >>> config.due["01"].isoformat()
 '2026-12-01T12:00:00+00:00'
 >>> penalty(config, "01", datetime(2026, 12, 2, 13, 0, tzinfo=timezone.utc))
@@ -45,8 +57,11 @@ from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 
 from autograder.grading.results import StudentResult
 from autograder.grading.submissions import collected_time, handed_in_at, nbgrader_timestamp
+from autograder.reports.plugins import UnknownPlugin, did_you_mean, lookup, register
 
-POLICY_KEYS = ("grace_minutes", "penalty_per_day", "max_penalty")
+DEFAULT_RULE = "per_day"
+NUMBER_KEYS = ("grace_minutes", "penalty_per_day", "max_penalty")
+POLICY_KEYS = ("rule", *NUMBER_KEYS)
 # The config's schema: the keys each table may hold (values are checked where they are read).
 TOP_KEYS = ("timezone", "late_policy", "lessons")
 LESSON_KEYS = ("due", *POLICY_KEYS)
@@ -58,9 +73,12 @@ class ConfigError(ValueError):
 
 @dataclass(frozen=True)
 class LatePolicy:
+    """The late policy of a lesson: its values from the config, and the name of the rule that reads them."""
+
     grace_minutes: float = 0.0
     penalty_per_day: float = 0.0
     max_penalty: float = 1.0
+    rule: str = DEFAULT_RULE  # the name of a registered late-policy rule (autograder.reports.plugins)
 
 
 @dataclass(frozen=True)
@@ -87,18 +105,20 @@ def _aware(value, zone, where):
 
 
 def _policy(table, base, where):
-    values = {key: table.get(key, getattr(base, key)) for key in POLICY_KEYS}
+    values = {key: table.get(key, getattr(base, key)) for key in NUMBER_KEYS}
     for key, value in values.items():
         if not isinstance(value, (int, float)) or value < 0:
             raise ConfigError(f"{where}: {key} must be a number ≥ 0, not {value!r}")
     if values["max_penalty"] > 1:
         raise ConfigError(f"{where}: max_penalty is a fraction of the points, at most 1")
-    return LatePolicy(**{key: float(value) for key, value in values.items()})
-
-
-def _did_you_mean(given, known):
-    close = difflib.get_close_matches(given, known, n=1, cutoff=0.6)
-    return f"; did you mean {close[0]!r}?" if close else ""
+    rule = table.get("rule", base.rule)
+    if not isinstance(rule, str):
+        raise ConfigError(f'{where}: rule must be a name in quotes, e.g. rule = "{DEFAULT_RULE}"')
+    try:
+        lookup("late_policy", rule)
+    except UnknownPlugin as error:
+        raise ConfigError(f"{where}: {error}") from None
+    return LatePolicy(rule=rule, **{key: float(value) for key, value in values.items()})
 
 
 def _check_keys(table, known, where):
@@ -107,7 +127,7 @@ def _check_keys(table, known, where):
         if key not in known:
             elsewhere = (" (it belongs in [late_policy] or a lesson's table)" if key in POLICY_KEYS else
                          " (it belongs in a lesson's table, [lessons.\"03\"])" if key == "due" else "")
-            raise ConfigError(f"{where}: unknown key {key!r}{elsewhere or _did_you_mean(key, known)} "
+            raise ConfigError(f"{where}: unknown key {key!r}{elsewhere or did_you_mean(key, known)} "
                               f"(known here: {', '.join(known)})")
 
 
@@ -122,20 +142,17 @@ def _check_lesson(number, lessons, name):
                       f"(the lessons are {' '.join(lessons)})")
 
 
-def parse_config(text: str, name: str = "course config", lessons: list[str] | None = None) -> CourseConfig:
+def parse_config(text: str, name: str, lessons: list[str]) -> CourseConfig:
     """A :class:`CourseConfig` from TOML text; raise :class:`ConfigError` with the place of a mistake.
 
     Every key is checked against the schema (``TOP_KEYS``, ``POLICY_KEYS``, ``LESSON_KEYS``) and every lesson
-    against ``lessons`` (default: the graded lessons of the catalog); a misspelt name gets the close one.
+    against ``lessons`` (the course's graded lesson numbers); a misspelt name gets the close one. A
+    ``rule`` must be a registered late-policy rule (:func:`autograder.reports.plugins.names`).
     """
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
         raise ConfigError(f"{name} is not valid TOML: {error}") from None
-    if lessons is None:
-        from autograder.lessons.catalog import load_catalog
-
-        lessons = [lesson.number for lesson in load_catalog().graded_lessons]
     _check_keys(data, TOP_KEYS, name)
     for key in ("late_policy", "lessons"):
         if not isinstance(data.get(key, {}), dict):
@@ -164,13 +181,13 @@ def parse_config(text: str, name: str = "course config", lessons: list[str] | No
     return CourseConfig(due=due, policies=policies, default_policy=default, source=text, zone=zone)
 
 
-def load_config(path: str | Path) -> CourseConfig:
-    """Read ``path`` (see the module docstring)."""
+def load_config(path: str | Path, lessons: list[str]) -> CourseConfig:
+    """Read ``path`` (see the module docstring); ``lessons``: the course's graded lesson numbers."""
     try:
         text = Path(path).read_text(encoding="utf-8")
     except OSError as error:
         raise ConfigError(f"cannot read the course config {path}: {error.strerror}") from None
-    return parse_config(text, Path(path).name)
+    return parse_config(text, Path(path).name, lessons)
 
 
 def submission_time(notebook: Path, folder: Path) -> datetime | None:
@@ -201,8 +218,39 @@ def local_time(moment: datetime, zone: ZoneInfo) -> str:
     return moment.astimezone(zone).strftime("%Y-%m-%d %H:%M %Z")
 
 
+@register("late_policy", DEFAULT_RULE)
+def per_day(policy: LatePolicy, late: float) -> tuple[float, str]:
+    """The default rule: ``penalty_per_day`` for every started day ``late`` (seconds past the due date), at most
+    ``max_penalty``; ``(fraction, "2 days late")``.
+
+    Examples
+    --------
+    >>> per_day(LatePolicy(penalty_per_day=0.1, max_penalty=0.5), 90_000)
+    (0.2, '2 days late')
+    """
+    days = math.ceil(late / 86400)
+    fraction = round(min(policy.max_penalty, days * policy.penalty_per_day), 4)
+    return fraction, f"{days} day{'s' if days != 1 else ''} late"
+
+
+@register("late_policy", "cutoff")
+def cutoff(policy: LatePolicy, late: float) -> tuple[float, str]:
+    """Past the due date and the grace, the lesson loses ``max_penalty`` at once (by default all its points);
+    ``penalty_per_day`` plays no part.
+
+    Examples
+    --------
+    >>> cutoff(LatePolicy(rule="cutoff"), 60)
+    (1.0, 'after the cutoff')
+    """
+    return round(policy.max_penalty, 4), "after the cutoff"
+
+
 def penalty(config: CourseConfig, lesson: str, handed_in: datetime | None) -> tuple[float, str]:
-    """``(fraction of the lesson's points lost, sentence)``; ``(0.0, "")`` when on time or without a due date."""
+    """``(fraction of the lesson's points lost, sentence)``; ``(0.0, "")`` when on time or without a due date.
+
+    Past the grace, the lesson's rule (:attr:`LatePolicy.rule`, a registered late-policy plugin) says the fraction.
+    """
     due = config.due.get(lesson)
     if due is None or handed_in is None:
         return 0.0, ""
@@ -210,11 +258,9 @@ def penalty(config: CourseConfig, lesson: str, handed_in: datetime | None) -> tu
     late = (handed_in - due).total_seconds()
     if late <= policy.grace_minutes * 60:
         return 0.0, ""
-    days = math.ceil(late / 86400)
-    fraction = round(min(policy.max_penalty, days * policy.penalty_per_day), 4)
+    fraction, reason = lookup("late_policy", policy.rule)(policy, late)
     return fraction, (f"handed in {local_time(handed_in, config.zone)}, {_span(late)} after the due date "
-                      f"({local_time(due, config.zone)}): "
-                      f"{days} day{'s' if days != 1 else ''} late, −{100 * fraction:g}%")
+                      f"({local_time(due, config.zone)}): {reason}, −{100 * fraction:g}%")
 
 
 def apply_late_policy(result: StudentResult, folder: Path, config: CourseConfig | None) -> StudentResult:

@@ -39,11 +39,11 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from autograder.lessons.paths import PROJECT_ROOT
 from autograder.sandbox import cgroups, cleanup
 
 NOBODY = 65534
 ZYGOTE_CAPABILITIES = ("CAP_SETUID", "CAP_SETGID", "CAP_KILL")
+GRADER_ROOT = Path(__file__).resolve().parents[2]  # the folder holding the autograder package: never bound inside
 
 LIMITS_ONLY_WARNING = (
     "Student code was isolated by resource limits only: it ran in its own process with limits and "
@@ -122,7 +122,7 @@ def _python_roots():
     for path in sorted({os.path.realpath(p) for p in candidates if p and os.path.isdir(p)}, key=len):
         if any(path == r or path.startswith(r + os.sep) for r in roots):
             continue
-        project = str(PROJECT_ROOT)
+        project = str(GRADER_ROOT)
         if path == project or project.startswith(path + os.sep):
             continue  # never bind the project (or a folder holding it), only what is inside
         roots.append(path)
@@ -313,8 +313,9 @@ def describe_isolation() -> str:
     return f"sandbox: RESOURCE LIMITS ONLY — {detail}. {LIMITS_ONLY_WARNING} Student code runs as {user_name()}{caps}."
 
 
-def prepare_dirs(base: str | Path, uid: int | None = None) -> tuple[Path, Path]:
-    """Create ``base/sandbox`` (worker files, read-only inside) and ``base/scratch`` (writable).
+def prepare_dirs(base: str | Path, support: Path, uid: int | None = None) -> tuple[Path, Path]:
+    """Create ``base/sandbox`` (worker files and the course's support package ``support``, a
+    ``coursekit`` folder; read-only inside) and ``base/scratch`` (writable).
 
     As root, the scratch folder belongs to ``uid`` (default :func:`sandbox_uid`), the sandbox's user.
     """
@@ -327,9 +328,7 @@ def prepare_dirs(base: str | Path, uid: int | None = None) -> tuple[Path, Path]:
                  "zygote.py", "student_client.py"):
         if (child_dir / name).exists():
             shutil.copy2(child_dir / name, sandbox_dir / name)
-    from autograder.lessons.paths import SOLUTIONS, SUPPORT_PACKAGE
-
-    shutil.copytree(SOLUTIONS / SUPPORT_PACKAGE, sandbox_dir / SUPPORT_PACKAGE,
+    shutil.copytree(support, sandbox_dir / "coursekit",
                     ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True)
     for path in (base, sandbox_dir):
         os.chmod(path, 0o755)

@@ -11,7 +11,7 @@ Examples
 --------
 >>> program = {"01": LessonProgram(setup="import numpy as np",
 ...                                cells=[("rot_z", "def rot_z(a):\\n    return np.eye(3)")])}
->>> with StudentSandbox(program) as box:                        # doctest: +SKIP
+>>> with StudentSandbox(program, course.support) as box:       # doctest: +SKIP
 ...     box.call("01", "rot_z", [0.3])
 array([[1., 0., 0.], ...
 """
@@ -25,6 +25,7 @@ import subprocess
 import sys
 import time
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from autograder.sandbox import cleanup, launcher, warm
 from autograder.sandbox.child import wire
@@ -93,11 +94,14 @@ class SandboxUnavailable(RuntimeError):
 class StudentSandbox:
     """One student's sandbox; use as a context manager."""
 
-    def __init__(self, program, limits=None, base_dir=None, slot=None, resets_slot=True, direct=False):
+    def __init__(self, program, support, limits=None, base_dir=None, slot=None, resets_slot=True, direct=False):
         self.program = program
+        self.support = Path(support)  # the course's coursekit folder, copied into the sandbox
         self.limits = limits or launcher.Limits()
-        # a warm slot (see warm.py) when the caller has a usable one with the same limits, else cold starts
-        self.slot = slot if slot is not None and slot.usable() and slot.limits == self.limits else None
+        # a warm slot (see warm.py) when the caller has a usable one with the same limits and course, else
+        # cold starts
+        self.slot = slot if (slot is not None and slot.usable() and slot.limits == self.limits
+                             and slot.support == self.support) else None
         # the first sandbox of a student resets the slot before and after; more sandboxes of the same
         # student (the notebook stage's, one per lesson) share it without resetting
         self._slot_reset = not resets_slot
@@ -130,7 +134,7 @@ class StudentSandbox:
                 self._tmp = base = cleanup.private_folder("sandbox")
             else:
                 base = self._base_dir
-            self.sandbox_dir, self.scratch_dir = launcher.prepare_dirs(base)
+            self.sandbox_dir, self.scratch_dir = launcher.prepare_dirs(base, self.support)
         return self.sandbox_dir, self.scratch_dir
 
     def _fork_warm(self):

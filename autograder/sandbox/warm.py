@@ -23,7 +23,7 @@ the grader's). ``AUTOGRADER_WARM=0`` turns them off.
 
 Examples
 --------
->>> with SlotPool(2, Limits()) as pool:                        # doctest: +SKIP
+>>> with SlotPool(2, Limits(), course.support) as pool:        # doctest: +SKIP
 ...     pool.enter(0)                      # in a forked grader: StudentSandbox now forks from slot 0
 """
 
@@ -38,6 +38,7 @@ import subprocess
 import sys
 import time
 from dataclasses import replace
+from pathlib import Path
 
 from autograder.sandbox import cleanup, launcher
 
@@ -106,8 +107,8 @@ class WarmWorker:
 class WarmSlot:
     """One long-lived sandbox with a zygote; started by the batch's parent, used by one grader at a time."""
 
-    def __init__(self, index, limits):
-        self.index, self.limits = index, limits
+    def __init__(self, index, limits, support):
+        self.index, self.limits, self.support = index, limits, Path(support)
         self.process = self.control = None
         self._base = None
         self.broken = False
@@ -124,7 +125,7 @@ class WarmSlot:
     def _spawn(self):
         self._base = cleanup.private_folder(f"slot{self.index}")
         uid = launcher.sandbox_uid() + PID_LIMIT * (self.index + 1)
-        sandbox_dir, scratch_dir = launcher.prepare_dirs(self._base, uid)
+        sandbox_dir, scratch_dir = launcher.prepare_dirs(self._base, self.support, uid)
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
         slot_limits = replace(self.limits, memory_bytes=self.limits.memory_bytes + ZYGOTE_MEMORY,
                               processes=self.limits.processes + 2, cpu_seconds=ZYGOTE_CPU_SECONDS)
@@ -234,8 +235,8 @@ class WarmSlot:
 class SlotPool:
     """The batch's slots: started by the parent before it forks graders, one per concurrent grader."""
 
-    def __init__(self, count, limits):
-        self.slots = [WarmSlot(index, limits) for index in range(count)]
+    def __init__(self, count, limits, support):
+        self.slots = [WarmSlot(index, limits, support) for index in range(count)]
 
     def __enter__(self):
         for slot in self.slots:

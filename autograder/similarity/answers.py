@@ -11,7 +11,7 @@ no more than a long answer.
 
 Examples
 --------
->>> answers = read_class(Path("class"), load_catalog())        # doctest: +SKIP
+>>> answers = read_class(Path("class"), course)               # doctest: +SKIP
 >>> answers.by_exercise["rot_z"]["ada"][:14]
 'def rot_z(angle'
 """
@@ -26,9 +26,8 @@ from pathlib import Path
 from autograder.grading.extract import lesson_program
 from autograder.grading.submissions import match_lessons, scan_submissions
 from autograder.lessons import cells
-from autograder.lessons.catalog import Catalog
+from autograder.lessons.course import Course
 from autograder.lessons.notebook_files import read_master, read_submission
-from autograder.lessons.paths import COURSE
 
 MAX_ANSWER_CHARACTERS = 20_000  # a long answer is a few thousand
 
@@ -45,8 +44,9 @@ class ClassAnswers:
         return sorted({author for answers in self.by_exercise.values() for author in answers} | set(self.unread))
 
 
-def student_answers(folder: Path, catalog: Catalog) -> dict[str, str]:
+def student_answers(folder: Path, course: Course) -> dict[str, str]:
     """``{exercise: source}`` of one student's folder (lessons matched by content, cells by grade_id)."""
+    catalog = course.catalog
     found, parsed = {}, {}
 
     def read(path):  # each notebook parsed once: matching lessons reads it, and so does taking its cells
@@ -54,7 +54,7 @@ def student_answers(folder: Path, catalog: Catalog) -> dict[str, str]:
             parsed[path] = read_submission(path, root=folder)
         return parsed[path]
 
-    files = match_lessons(Path(folder), catalog, read=read)
+    files = match_lessons(Path(folder), catalog, course.released, read=read)
     for lesson in catalog.graded_lessons:
         path = files.chosen.get(lesson.number)
         if path is None or path in files.unreadable:
@@ -64,15 +64,15 @@ def student_answers(folder: Path, catalog: Catalog) -> dict[str, str]:
     return found
 
 
-def _one_student(folder, catalog):
+def _one_student(folder, course):
     """``(answers, None)``, or ``(None, why)`` when the folder could not be read (that student only)."""
     try:
-        return student_answers(folder, catalog), None
+        return student_answers(folder, course), None
     except Exception as error:
         return None, f"{type(error).__name__}: {error}"
 
 
-def read_class(path: str | Path, catalog: Catalog, prefix: str = "", jobs: int = 1) -> ClassAnswers:
+def read_class(path: str | Path, course: Course, prefix: str = "", jobs: int = 1) -> ClassAnswers:
     """Every student's answers under ``path`` (any layout :mod:`~autograder.grading.submissions` reads).
 
     ``prefix`` is put before each student id (``"past term/"`` for a past class), so authors from
@@ -80,7 +80,7 @@ def read_class(path: str | Path, catalog: Catalog, prefix: str = "", jobs: int =
     """
     answers = ClassAnswers()
     students = scan_submissions(path).files
-    tasks = [(folder, catalog) for _, folder in students]
+    tasks = [(folder, course) for _, folder in students]
     if jobs > 1 and len(tasks) > 20 and "fork" in multiprocessing.get_all_start_methods():
         with multiprocessing.get_context("fork").Pool(jobs) as pool:
             read = pool.starmap(_one_student, tasks, chunksize=max(1, len(tasks) // (4 * jobs)))
@@ -96,7 +96,7 @@ def read_class(path: str | Path, catalog: Catalog, prefix: str = "", jobs: int =
 
 
 @lru_cache(maxsize=None)
-def released_stubs(course_dir: Path = COURSE) -> dict[str, str]:
+def released_stubs(course_dir: Path) -> dict[str, str]:
     """``{exercise: the answer cell as released in course/}``: what every student started from."""
     stubs = {}
     for path in sorted(Path(course_dir).glob("[0-9][0-9]_*.ipynb")):

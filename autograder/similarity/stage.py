@@ -7,7 +7,7 @@ class report. Everything runs on this machine.
 
 Examples
 --------
->>> findings = similarity_of_class(Path("class"), past=[Path("2025")])   # doctest: +SKIP
+>>> findings = similarity_of_class(Path("class"), course, past=[Path("2025")])   # doctest: +SKIP
 >>> paths = write_findings(findings, Path("out"))                          # doctest: +SKIP
 """
 
@@ -17,7 +17,7 @@ import os
 from pathlib import Path
 from typing import Callable
 
-from autograder.lessons.catalog import load_catalog
+from autograder.lessons.course import Course
 from autograder.lessons.reference import answer_sources
 from autograder.similarity.answers import read_class, released_stubs
 from autograder.similarity.findings import Findings, find_similar
@@ -27,24 +27,23 @@ CSV_NAME = "similar_answers.csv"
 HTML_NAME = "similar_answers.html"
 
 
-def similarity_of_class(path: str | Path, past: tuple | list = (), jobs: int | None = None) -> Findings:
+def similarity_of_class(path: str | Path, course: Course, past: tuple | list = (), jobs: int | None = None) -> Findings:
     """The :class:`~autograder.similarity.findings.Findings` of the class under ``path``.
 
     ``past``: folders of past terms' submissions (same layouts); their authors are named
     ``"<folder name>/<student>"``, and pairs within a past term are not compared. ``jobs``: processes
     that fingerprint the answers (default: the number of cores).
     """
-    catalog = load_catalog()
     jobs = jobs or os.cpu_count() or 1
-    current = read_class(path, catalog, jobs=jobs)
+    current = read_class(path, course, jobs=jobs)
     earlier, unread = {}, dict(current.unread)
     for folder in past:
-        answers = read_class(folder, catalog, prefix=f"{Path(folder).name}/", jobs=jobs)
+        answers = read_class(folder, course, prefix=f"{Path(folder).name}/", jobs=jobs)
         unread.update(answers.unread)
         for exercise, by_author in answers.by_exercise.items():
             earlier.setdefault(exercise, {}).update(by_author)
-    return find_similar(current.by_exercise, answer_sources(), released_stubs(), earlier, unread,
-                        jobs=jobs)
+    return find_similar(current.by_exercise, answer_sources(course.solutions), released_stubs(course.released),
+                        earlier, unread, jobs=jobs)
 
 
 def write_findings(findings: Findings, out_dir: str | Path,

@@ -1,4 +1,4 @@
-"""Canvas: the CSV that Canvas's Gradebook → Import accepts.
+"""Canvas (exporter ``"canvas"``, ``export --to canvas``): the CSV that Canvas's Gradebook → Import accepts.
 
 Columns ``Student, ID, SIS User ID, SIS Login ID, Section``, then one column
 per lesson (each lesson is its own Canvas assignment, named
@@ -13,7 +13,7 @@ roster's ``canvas_id`` (Canvas's own number) when known.
 
 Examples
 --------
->>> text = write(results, load_catalog(), read_roster("roster.csv"))      # doctest: +SKIP
+>>> text = write(results, course.catalog, read_roster("roster.csv"))     # doctest: +SKIP
 >>> text.splitlines()[0]                                                   # doctest: +SKIP
 'Student,ID,SIS User ID,SIS Login ID,Section,Lesson 01: Frames and rotations,...'
 """
@@ -27,6 +27,7 @@ from autograder.grading.results import StudentResult
 from autograder.lessons.catalog import Catalog, Lesson
 from autograder.lessons.untrusted_text import csv_cell
 from autograder.reports.exports.missing import MISSING_CHOICES, not_handed_in
+from autograder.reports.plugins import register
 
 FIXED = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
 
@@ -35,6 +36,7 @@ def assignment_name(lesson: Lesson) -> str:
     return f"Lesson {lesson.number}: {lesson.title}" if lesson.title else f"Lesson {lesson.number}"
 
 
+@register("exporter", "canvas")
 def write(results: list[StudentResult], catalog: Catalog, roster: tuple | list = (), missing: str = "zero") -> str:
     """The import file's text for ``results`` (StudentResult), with names and sections from ``roster``; a lesson
     not handed in is 0, or an empty cell with ``missing="blank"``."""
