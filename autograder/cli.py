@@ -105,8 +105,10 @@ def _positive_jobs(text):
     return jobs
 
 
-SUBMISSIONS_LAYOUT = ("a submissions folder holds one folder per student (SUBMISSIONS/anna/01_frames.ipynb, "
-                      "SUBMISSIONS/ben/...), or is nbgrader's submitted/<student>/<assignment>/ layout")
+SUBMISSIONS_LAYOUT = (
+    "a submissions folder holds one folder per student (SUBMISSIONS/anna/01_frames.ipynb, "
+    "SUBMISSIONS/ben/...), or is nbgrader's submitted/<student>/<assignment>/ layout"
+)
 
 
 def _require_students(path):
@@ -120,9 +122,11 @@ def _require_students(path):
     if students and not all(re.fullmatch(r"lesson\d\d", student_id) for student_id in students):
         return
     if students or any(child.suffix == ".ipynb" for child in path.iterdir()):
-        raise UsageError(f"{path} looks like one student's folder ({'assignment folders' if students else 'notebooks'}"
-                         f", no student folders): give the folder that holds every student's folder; "
-                         f"{SUBMISSIONS_LAYOUT}")
+        raise UsageError(
+            f"{path} looks like one student's folder ({'assignment folders' if students else 'notebooks'}"
+            f", no student folders): give the folder that holds every student's folder; "
+            f"{SUBMISSIONS_LAYOUT}"
+        )
     raise UsageError(f"no student folders in {path}: {SUBMISSIONS_LAYOUT}")
 
 
@@ -134,8 +138,10 @@ def _cmd_new_course(args):
         root = write_course(Path(args.folder), this_course().support)
     except ValueError as error:
         raise UsageError(str(error)) from None
-    print(f"wrote a new course in {root}: two lessons to grow from. Next: python -m autograder release "
-          f"--course {root} (docs/AUTHORING.md, \"Write your own course\")")
+    print(
+        f"wrote a new course in {root}: two lessons to grow from. Next: python -m autograder release "
+        f'--course {root} (docs/AUTHORING.md, "Write your own course")'
+    )
     return 0
 
 
@@ -148,8 +154,10 @@ def _cmd_release(args):
         for path, reason in problems:
             print(f"{path}: {reason}")
         if problems:
-            print(f"course/ is out of date: {len(problems)} file(s). Run: python -m autograder release"
-                  + (f" --course {args.course}" if args.course else ""))
+            print(
+                f"course/ is out of date: {len(problems)} file(s). Run: python -m autograder release"
+                + (f" --course {args.course}" if args.course else "")
+            )
             return 1
         print("course/ and solutions/ are in sync.")
         return 0
@@ -194,8 +202,10 @@ def _print_table(results, problems_shown=3):
         for problem in r.problems[:problems_shown]:
             print(f"{'':<{width}}  {'':>13}    - {one_line(problem, 160)}")
         if len(r.problems) > problems_shown:
-            print(f"{'':<{width}}  {'':>13}    - and {len(r.problems) - problems_shown} more "
-                  "(see the student's feedback page)")
+            print(
+                f"{'':<{width}}  {'':>13}    - and {len(r.problems) - problems_shown} more "
+                "(see the student's feedback page)"
+            )
 
 
 def _print_skipped(ignored, results, shown=20):
@@ -203,10 +213,16 @@ def _print_skipped(ignored, results, shown=20):
     walk of their folder skipped; at most ``shown`` lines of each (``status`` lists them all)."""
     inside = [r for r in results if r.skipped]
     sections = [
-        (f"not graded: {len(ignored)} entr{'y' if len(ignored) == 1 else 'ies'} of the submissions folder that are "
-         "not student folders:", [one_line(item.line(), 200) for item in ignored]),
-        (f"not read: {len(inside)} student folder(s) hold entries the grader skipped (hidden, links, too deep):",
-         [f"{one_line(r.student_id, 40)}: {one_line('; '.join(r.skipped), 200)}" for r in inside])]
+        (
+            f"not graded: {len(ignored)} entr{'y' if len(ignored) == 1 else 'ies'} of the submissions folder that are "
+            "not student folders:",
+            [one_line(item.line(), 200) for item in ignored],
+        ),
+        (
+            f"not read: {len(inside)} student folder(s) hold entries the grader skipped (hidden, links, too deep):",
+            [f"{one_line(r.student_id, 40)}: {one_line('; '.join(r.skipped), 200)}" for r in inside],
+        ),
+    ]
     if ignored or inside:
         print()
     for title, lines in sections:
@@ -288,8 +304,10 @@ def _cmd_grade(args):
         from autograder.authoring.sample_class import build_sample_class
 
         if args.course:
-            raise UsageError("give the submissions folder to grade: the bundled sample class is written for this "
-                             "repository's course only")
+            raise UsageError(
+                "give the submissions folder to grade: the bundled sample class is written for this "
+                "repository's course only"
+            )
         path = out / "sample_class"
         build_sample_class(path, course, lessons=tuple(args.lessons))
         print(f"No PATH given: grading the bundled sample class, written to {path}")
@@ -300,9 +318,11 @@ def _cmd_grade(args):
     _require_students(path)
     print(launcher.describe_isolation())
     if not args.cluster and warm.enabled():
-        print("sandbox slots: each grading process keeps one warm sandbox whose workers are forked fresh for "
-              "every student and reset between students (SECURITY.md, \"Warm slots\"; AUTOGRADER_WARM=0 turns "
-              "them off)")
+        print(
+            "sandbox slots: each grading process keeps one warm sandbox whose workers are forked fresh for "
+            'every student and reset between students (SECURITY.md, "Warm slots"; AUTOGRADER_WARM=0 turns '
+            "them off)"
+        )
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     if args.ignore_mtimes:  # lateness only from timestamp.txt (autograder/reports/copied_times.py)
         from dataclasses import replace
@@ -320,10 +340,21 @@ def _cmd_grade(args):
             print(f"error: {error}", file=sys.stderr)
             return 2
     try:
-        summary = grade_class(path, out, course, jobs=args.jobs, options=options, force=args.force,
-                              progress=Progress(sys.stderr), roster=roster,
-                              only=tuple(args.student), announce=lambda line: print(line, flush=True),
-                              config=config, runner=runner, similarity=not args.no_similarity)
+        summary = grade_class(
+            path,
+            out,
+            course,
+            jobs=args.jobs,
+            options=options,
+            force=args.force,
+            progress=Progress(sys.stderr),
+            roster=roster,
+            only=tuple(args.student),
+            announce=lambda line: print(line, flush=True),
+            config=config,
+            runner=runner,
+            similarity=not args.no_similarity,
+        )
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
         return 3
@@ -346,14 +377,19 @@ def _cmd_grade(args):
         if because != "first grading":
             print(f"  {count} re-graded: {because}")
     if summary.kept:
-        print(f"  {len(summary.kept)} graded earlier and not under {path}, kept as they were: "
-              + ", ".join(one_line(k, 40) for k in summary.kept[:10]) + (" ..." if len(summary.kept) > 10 else ""))
+        print(
+            f"  {len(summary.kept)} graded earlier and not under {path}, kept as they were: "
+            + ", ".join(one_line(k, 40) for k in summary.kept[:10])
+            + (" ..." if len(summary.kept) > 10 else "")
+        )
     _print_skipped(summary.ignored, summary.results)
     if summary.similarity is not None:
-        print(f"similar answers: {len(summary.similarity.clusters)} finding(s) worth a look, "
-              f"{len(summary.similarity.reference_matches)} answer(s) close to the reference "
-              f"({summary.similarity_seconds:.1f} s, {summary.similarity_cpu_seconds:.1f} s of CPU, on this machine): "
-              f"see the report and {out / 'similar_answers.csv'}")
+        print(
+            f"similar answers: {len(summary.similarity.clusters)} finding(s) worth a look, "
+            f"{len(summary.similarity.reference_matches)} answer(s) close to the reference "
+            f"({summary.similarity_seconds:.1f} s, {summary.similarity_cpu_seconds:.1f} s of CPU, on this machine): "
+            f"see the report and {out / 'similar_answers.csv'}"
+        )
     elif summary.similarity_note:
         print(f"similar answers: {summary.similarity_note}")
     if args.nbgrader_db:
@@ -381,8 +417,10 @@ def _cmd_status(args):
         return 1
     limited = [r.student_id for r in results if r.isolation == "limits"]
     if limited:
-        print(f"WARNING: {len(limited)} of {len(results)} students were graded with resource limits only. "
-              f"{LIMITS_ONLY_WARNING}\n")
+        print(
+            f"WARNING: {len(limited)} of {len(results)} students were graded with resource limits only. "
+            f"{LIMITS_ONLY_WARNING}\n"
+        )
     _print_table(results)
     _print_lateness(results)
     because = {}
@@ -451,11 +489,15 @@ def _cmd_similarity(args):
             return 2
     findings = similarity_of_class(Path(args.path), _course(args), past=[Path(p) for p in args.past])
     csv_path, html_path = write_findings(findings, Path(args.out or args.path))
-    print(f"compared {sum(findings.compared.values())} answers over {len(findings.compared)} exercises on this "
-          "machine (nothing was sent anywhere)")
+    print(
+        f"compared {sum(findings.compared.values())} answers over {len(findings.compared)} exercises on this "
+        "machine (nothing was sent anywhere)"
+    )
     for number, cluster in enumerate(findings.clusters, 1):
-        print(f"finding {number}, worth a look: {', '.join(one_line(m, 40) for m in cluster.members)} "
-              f"on {', '.join(cluster.exercises)} (up to {100 * cluster.score:.0f}% shared)")
+        print(
+            f"finding {number}, worth a look: {', '.join(one_line(m, 40) for m in cluster.members)} "
+            f"on {', '.join(cluster.exercises)} (up to {100 * cluster.score:.0f}% shared)"
+        )
     for student, pairs in reference_matches_by_student(findings).items():
         names = ", ".join(p.exercise for p in pairs[:5]) + (f" and {len(pairs) - 5} more" if len(pairs) > 5 else "")
         print(f"close to the reference solution: {one_line(student, 40)}, {len(pairs)} answer(s): {names}")
@@ -469,10 +511,17 @@ def _cmd_gradescope(args):
     from autograder.integrations.gradescope import build_bundle
 
     course = _course(args)
-    path = build_bundle(args.out, course, lessons=_lesson_numbers(args.lessons, course), visibility=args.visibility,
-                        nbval=not args.no_nbval)
-    print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): upload it as the autograder of a "
-          "Gradescope programming assignment (choose the Ubuntu 24.04 base image).")
+    path = build_bundle(
+        args.out,
+        course,
+        lessons=_lesson_numbers(args.lessons, course),
+        visibility=args.visibility,
+        nbval=not args.no_nbval,
+    )
+    print(
+        f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): upload it as the autograder of a "
+        "Gradescope programming assignment (choose the Ubuntu 24.04 base image)."
+    )
     return 0
 
 
@@ -489,9 +538,11 @@ def _cmd_nbgrader_course(args):
 
     course = _course(args)
     root = build_course(args.out, course.solutions, lessons=_lesson_numbers(args.lessons, course))
-    print(f"wrote the nbgrader course {root}: source/lessonNN/ for each lesson, with coursekit beside it.\n"
-          f"Next, with the environment active (source .venv/bin/activate): cd {root} && "
-          "nbgrader generate_assignment lesson01")
+    print(
+        f"wrote the nbgrader course {root}: source/lessonNN/ for each lesson, with coursekit beside it.\n"
+        f"Next, with the environment active (source .venv/bin/activate): cd {root} && "
+        "nbgrader generate_assignment lesson01"
+    )
     return 0
 
 
@@ -500,16 +551,24 @@ def _cmd_handout(args):
 
     path = build_handout(args.out, _course(args))
     course = f" --course {args.course}" if args.course else ""
-    print(f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): the course notebooks, coursekit, a student "
-          f"requirements.txt and a README. Run `python -m autograder release --check{course}` first.")
+    print(
+        f"wrote {path} ({path.stat().st_size / 2**20:.1f} MiB): the course notebooks, coursekit, a student "
+        f"requirements.txt and a README. Run `python -m autograder release --check{course}` first."
+    )
     return 0
 
 
 def _cmd_mutants(args):
     from autograder.mutants.run import main as run_mutants
 
-    return run_mutants(_course(args), exercises=args.exercise or None, lessons=args.lessons or None, jobs=args.jobs,
-                       markdown=args.markdown, save=args.save)
+    return run_mutants(
+        _course(args),
+        exercises=args.exercise or None,
+        lessons=args.lessons or None,
+        jobs=args.jobs,
+        markdown=args.markdown,
+        save=args.save,
+    )
 
 
 def _cmd_export(args):
@@ -538,8 +597,14 @@ def _cmd_export(args):
 
     absent = sum(len(not_handed_in(r, catalog.graded_lessons)) for r in results)
     if absent:
-        print(f"  {absent} lesson(s) not handed in: " + ("exported as 0 (--missing blank leaves them empty)"
-                                                        if args.missing == "zero" else "left empty (--missing blank)"))
+        print(
+            f"  {absent} lesson(s) not handed in: "
+            + (
+                "exported as 0 (--missing blank leaves them empty)"
+                if args.missing == "zero"
+                else "left empty (--missing blank)"
+            )
+        )
     return 0
 
 
@@ -574,28 +639,55 @@ def build_parser():
     grade.add_argument("--out", required=True, help="where grades.csv and feedback/ go")
     grade.add_argument("--jobs", type=_positive_jobs, default=None, help="parallel graders (default: number of cores)")
     grade.add_argument("--no-nbval", action="store_true", help="skip the notebook stage (faster)")
-    grade.add_argument("--lessons", nargs="+", default=(), metavar="NN",
-                       help="grade only these lessons, e.g. --lessons 01 03 (default: all)")
+    grade.add_argument(
+        "--lessons",
+        nargs="+",
+        default=(),
+        metavar="NN",
+        help="grade only these lessons, e.g. --lessons 01 03 (default: all)",
+    )
     grade.add_argument("--roster", help="a file with one student id per line; absent ones are 'missing'")
-    grade.add_argument("--nbgrader-db", metavar="PATH",
-                       help="also write the scores into this nbgrader gradebook (e.g. nbgrader-course/gradebook.db)")
+    grade.add_argument(
+        "--nbgrader-db",
+        metavar="PATH",
+        help="also write the scores into this nbgrader gradebook (e.g. nbgrader-course/gradebook.db)",
+    )
     grade.add_argument("--force", action="store_true", help="re-grade students whose submission did not change")
-    grade.add_argument("--config", metavar="TOML",
-                       help="course config with due dates and the late policy (see autograder/reports/lateness.py)")
-    grade.add_argument("--ignore-mtimes", action="store_true",
-                       help="take no hand-in time from the notebooks' modification times (a copy resets them): "
-                            "only nbgrader's timestamp.txt makes a lesson late")
-    grade.add_argument("--student", nargs="+", default=(), metavar="ID",
-                       help="re-grade only these students; everyone else keeps their saved grade")
-    grade.add_argument("--cluster", metavar="ADDRESS",
-                       help="grade on a Dask cluster: tcp://HOST:8786 (a running scheduler), or local:N "
-                            "(N local worker processes); see docs/CLUSTER.md")
-    grade.add_argument("--no-similarity", action="store_true",
-                       help="do not compare the students' answers with each other (the 'Similar answers' section)")
+    grade.add_argument(
+        "--config",
+        metavar="TOML",
+        help="course config with due dates and the late policy (see autograder/reports/lateness.py)",
+    )
+    grade.add_argument(
+        "--ignore-mtimes",
+        action="store_true",
+        help="take no hand-in time from the notebooks' modification times (a copy resets them): "
+        "only nbgrader's timestamp.txt makes a lesson late",
+    )
+    grade.add_argument(
+        "--student",
+        nargs="+",
+        default=(),
+        metavar="ID",
+        help="re-grade only these students; everyone else keeps their saved grade",
+    )
+    grade.add_argument(
+        "--cluster",
+        metavar="ADDRESS",
+        help="grade on a Dask cluster: tcp://HOST:8786 (a running scheduler), or local:N "
+        "(N local worker processes); see docs/CLUSTER.md",
+    )
+    grade.add_argument(
+        "--no-similarity",
+        action="store_true",
+        help="do not compare the students' answers with each other (the 'Similar answers' section)",
+    )
     grade.set_defaults(run=_cmd_grade)
 
-    similar = commands.add_parser("similarity", help="compare a class's answers with each other, the reference "
-                                                     "solution and past terms (on this machine)")
+    similar = commands.add_parser(
+        "similarity",
+        help="compare a class's answers with each other, the reference solution and past terms (on this machine)",
+    )
     similar.add_argument("path", help="one folder per student, or nbgrader's submitted/ layout")
     similar.add_argument("--out", default=None, help="where similar_answers.csv and .html go (default: PATH)")
     similar.add_argument("--past", nargs="+", default=(), metavar="DIR", help="past terms' submissions")
@@ -620,8 +712,12 @@ def build_parser():
     export.add_argument("--to", required=True, choices=sorted(EXPORTERS), help="the format")
     export.add_argument("--roster", help="CSV roster with names, sections, SIS ids (see autograder/reports/roster.py)")
     export.add_argument("--file", help="where to write (default: OUT/<format>.csv)")
-    export.add_argument("--missing", choices=("zero", "blank"), default="zero",
-                        help="a lesson not handed in: 0 points (default) or an empty cell")
+    export.add_argument(
+        "--missing",
+        choices=("zero", "blank"),
+        default="zero",
+        help="a lesson not handed in: 0 points (default) or an empty cell",
+    )
     export.set_defaults(run=_cmd_export)
 
     status = commands.add_parser("status", help="show the saved results of a grading run")
@@ -632,9 +728,12 @@ def build_parser():
     gradescope = commands.add_parser("gradescope", help="build a Gradescope autograder bundle (zip)")
     gradescope.add_argument("--out", required=True, help="the zip to write, e.g. autograder.zip")
     gradescope.add_argument("--lessons", nargs="+", default=(), metavar="NN", help="lessons it grades (default all)")
-    gradescope.add_argument("--visibility", default="after_due_date",
-                            choices=["hidden", "after_due_date", "after_published", "visible"],
-                            help="when students see each check's details (default: after the due date)")
+    gradescope.add_argument(
+        "--visibility",
+        default="after_due_date",
+        choices=["hidden", "after_due_date", "after_published", "visible"],
+        help="when students see each check's details (default: after the due date)",
+    )
     gradescope.add_argument("--no-nbval", action="store_true", help="skip the notebook stage")
     gradescope.set_defaults(run=_cmd_gradescope)
 
@@ -647,8 +746,9 @@ def build_parser():
     preview.add_argument("--figures", help="folder for the PNG files")
     preview.set_defaults(run=_cmd_preview)
 
-    mutants = commands.add_parser("mutants", help="mutation-test the hidden suite and the public checks "
-                                                  "on mutants of the reference answers")
+    mutants = commands.add_parser(
+        "mutants", help="mutation-test the hidden suite and the public checks on mutants of the reference answers"
+    )
     mutants.add_argument("--exercise", nargs="*", default=[], help="only these exercises")
     mutants.add_argument("--lessons", nargs="*", default=[], help="only these lessons, e.g. 03 04")
     mutants.add_argument("--jobs", type=_positive_jobs, default=None, help="processes (default: 2, or 1 on one core)")
@@ -667,8 +767,10 @@ def build_parser():
 def _interrupted_line(args):
     """What Ctrl-C leaves behind, and how to go on."""
     if args.command == "grade":
-        return (f"interrupted: every student graded so far is saved in {Path(args.out) / 'students'}; run the same "
-                "command again to resume (saved students are not graded twice)")
+        return (
+            f"interrupted: every student graded so far is saved in {Path(args.out) / 'students'}; run the same "
+            "command again to resume (saved students are not graded twice)"
+        )
     return f"interrupted: `{args.command}` stopped before it finished; run it again"
 
 

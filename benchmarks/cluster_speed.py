@@ -61,20 +61,25 @@ def main():
     print(f"{os.cpu_count()} cores; N = {len(students)} students, every lesson; {mode}")
 
     local_wall, local_grading, _, _ = grade(work / "class", work / "local", extra + ["--jobs", "2"])
-    cluster_wall, cluster_grading, startup, _ = grade(work / "class", work / "cluster",
-                                                      extra + ["--cluster", "local:2"])
+    cluster_wall, cluster_grading, startup, _ = grade(
+        work / "class", work / "cluster", extra + ["--cluster", "local:2"]
+    )
     n = len(students)
     print()
     print(f"{'':34}{'wall':>9}{'grading':>10}{'s/student':>11}{'start-up':>10}")
     print(f"{'local, --jobs 2':34}{local_wall:8.1f}s{local_grading:9.1f}s{local_grading / n:10.2f}s{'':>10}")
-    print(f"{'Dask, --cluster local:2':34}{cluster_wall:8.1f}s{cluster_grading:9.1f}s"
-          f"{cluster_grading / n:10.2f}s{startup:9.1f}s")
+    print(
+        f"{'Dask, --cluster local:2':34}{cluster_wall:8.1f}s{cluster_grading:9.1f}s"
+        f"{cluster_grading / n:10.2f}s{startup:9.1f}s"
+    )
     print()
     per_student = (cluster_grading - local_grading) / n
-    print(f"overhead of the cluster: {cluster_wall - local_wall:+.1f} s of wall time in all = "
-          f"{startup:.1f} s start-up (workers started and checked, canary on each; once per run) "
-          f"{'+' if per_student >= 0 else '-'} {abs(per_student):.2f} s per student "
-          f"({100 * per_student / (local_grading / n):+.0f} % of the local cost per student)")
+    print(
+        f"overhead of the cluster: {cluster_wall - local_wall:+.1f} s of wall time in all = "
+        f"{startup:.1f} s start-up (workers started and checked, canary on each; once per run) "
+        f"{'+' if per_student >= 0 else '-'} {abs(per_student):.2f} s per student "
+        f"({100 * per_student / (local_grading / n):+.0f} % of the local cost per student)"
+    )
 
 
 if __name__ == "__main__":

@@ -38,7 +38,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests"))
 
 from autograder.authoring.sample_class import build_sample_class  # noqa: E402
-from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit)  # noqa: E402
+from autograder.integrations.nbgrader_course import assignment_name, build_course, run_nbgrader, submit  # noqa: E402
 from process_memory import PeakMemory  # noqa: E402
 from support import benchmark_class  # noqa: E402
 from support import THIS_COURSE  # noqa: E402
@@ -95,8 +95,20 @@ def warm_canary(work):
     """Grade a one-student class in both modes, untimed: the canary is cached from then on."""
     benchmark_class(work / "class_warm", 1)
     for extra in ((), ("--no-nbval",)):
-        timed([sys.executable, "-m", "autograder", "grade", str(work / "class_warm"),
-               "--out", str(work / "ours_warm"), "--force", *extra], ROOT)
+        timed(
+            [
+                sys.executable,
+                "-m",
+                "autograder",
+                "grade",
+                str(work / "class_warm"),
+                "--out",
+                str(work / "ours_warm"),
+                "--force",
+                *extra,
+            ],
+            ROOT,
+        )
 
 
 def main():
@@ -123,38 +135,47 @@ def main():
 
     large = benchmark_class(work / "class_large", args.large)
     large_full, large_full_memory, large_full_cpu = run_ours(work / "class_large", work / "ours_large_full")
-    large_fast, large_fast_memory, large_fast_cpu = run_ours(work / "class_large", work / "ours_large_fast",
-                                                             ["--no-nbval"])
+    large_fast, large_fast_memory, large_fast_cpu = run_ours(
+        work / "class_large", work / "ours_large_fast", ["--no-nbval"]
+    )
 
     print()
     print(f"ratio full / nbgrader:          {full_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.25)")
     print(f"ratio --no-nbval / nbgrader:    {fast_seconds / nbgrader_seconds:6.3f}   (target ≤ 0.04)")
     print()
-    print("seconds per student             "
-          f"N = {len(students):<4d}  N = {len(large):<4d}")
+    print(f"seconds per student             N = {len(students):<4d}  N = {len(large):<4d}")
     print(f"  nbgrader                      {nbgrader_seconds / len(students):7.2f}")
     print(f"  ours, full                    {full_seconds / len(students):7.2f}  {large_full / len(large):7.2f}")
     print(f"  ours, --no-nbval              {fast_seconds / len(students):7.2f}  {large_fast / len(large):7.2f}")
-    print("CPU seconds per student (busy time of the whole machine / N; the target of issue 17 item 4 is "
-          "≤ 0.5 for --no-nbval)")
+    print(
+        "CPU seconds per student (busy time of the whole machine / N; the target of issue 17 item 4 is "
+        "≤ 0.5 for --no-nbval)"
+    )
     print(f"  ours, full                    {full_cpu / len(students):7.2f}  {large_full_cpu / len(large):7.2f}")
     print(f"  ours, --no-nbval              {fast_cpu / len(students):7.2f}  {large_fast_cpu / len(large):7.2f}")
-    print(f"peak memory of the grader, whole process tree: N = {len(students)} full {full_memory / 2**20:.0f} MiB, "
-          f"--no-nbval {fast_memory / 2**20:.0f} MiB; N = {len(large)} full {large_full_memory / 2**20:.0f} MiB, "
-          f"--no-nbval {large_fast_memory / 2**20:.0f} MiB")
+    print(
+        f"peak memory of the grader, whole process tree: N = {len(students)} full {full_memory / 2**20:.0f} MiB, "
+        f"--no-nbval {fast_memory / 2**20:.0f} MiB; N = {len(large)} full {large_full_memory / 2**20:.0f} MiB, "
+        f"--no-nbval {large_fast_memory / 2**20:.0f} MiB"
+    )
 
     ids = build_sample_class(work / "class_sample", THIS_COURSE)
-    sample_nbgrader = run_nbgrader_baseline([work / "class_sample" / i for i in ids], work / "nbgrader_sample",
-                                            check=False)
+    sample_nbgrader = run_nbgrader_baseline(
+        [work / "class_sample" / i for i in ids], work / "nbgrader_sample", check=False
+    )
     sample_full, _, _ = run_ours(work / "class_sample", work / "ours_sample_full")
     sample_fast, _, _ = run_ours(work / "class_sample", work / "ours_sample_fast", ["--no-nbval"])
     print()
     print(f"the sample class ({len(ids)} students: mistakes, cheats, hangs, a damaged notebook):")
     print(f"  stock nbgrader autograde:     {sample_nbgrader:8.1f} s")
-    print(f"  ours, full:                   {sample_full:8.1f} s   ratio {sample_full / sample_nbgrader:6.3f}"
-          "   (target ≤ 0.25)")
-    print(f"  ours, --no-nbval:             {sample_fast:8.1f} s   ratio {sample_fast / sample_nbgrader:6.3f}"
-          "   (target ≤ 0.04)")
+    print(
+        f"  ours, full:                   {sample_full:8.1f} s   ratio {sample_full / sample_nbgrader:6.3f}"
+        "   (target ≤ 0.25)"
+    )
+    print(
+        f"  ours, --no-nbval:             {sample_fast:8.1f} s   ratio {sample_fast / sample_nbgrader:6.3f}"
+        "   (target ≤ 0.04)"
+    )
     print(f"machine: {os.cpu_count()} cores")
 
 

@@ -56,15 +56,19 @@ def main():
         shutil.copytree(base / "honest", base / "class", symlinks=True)
         built = build_class(base / "class")
         students = 3 + sum(1 for student in built.values() if student is not None)
-        print(f"hostile class: {len(CASES)} cases, {students} students (3 honest), "
-              f"{len(built) - students + 3} entries that are not students")
+        print(
+            f"hostile class: {len(CASES)} cases, {students} students (3 honest), "
+            f"{len(built) - students + 3} entries that are not students"
+        )
         mib = 2**20
         for mode in args.modes:
             for label, folder in (("honest students alone", "honest"), ("hostile class", "class")):
                 command, _, env = commands(base, base / folder, base / f"out-{mode}-{folder}", mode)
                 seconds, largest, together, tree = measured(command, env)
-                print(f"{mode:>13}, {label:>21}: {seconds:6.1f} s; largest grader process {largest / mib:5.0f} MiB, "
-                      f"grader processes together {together / mib:5.0f} MiB, with sandboxes {tree / mib:5.0f} MiB")
+                print(
+                    f"{mode:>13}, {label:>21}: {seconds:6.1f} s; largest grader process {largest / mib:5.0f} MiB, "
+                    f"grader processes together {together / mib:5.0f} MiB, with sandboxes {tree / mib:5.0f} MiB"
+                )
     finally:
         unlock(base)
         shutil.rmtree(base, ignore_errors=True)

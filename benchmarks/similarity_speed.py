@@ -67,9 +67,12 @@ def time_stage(students, jobs):
         started, cpu = time.perf_counter(), cpu_seconds()
         findings = similarity_of_class(folder, THIS_COURSE, jobs=jobs)
         seconds, cpu = time.perf_counter() - started, cpu_seconds() - cpu
-    print(f"stage, {students} students x {len(findings.compared)} exercises "
-          f"({sum(findings.compared.values())} answers compared, {jobs or os.cpu_count()} processes): "
-          f"{seconds:.1f} s wall, {cpu:.1f} s CPU (load average {os.getloadavg()[0]:.1f})", flush=True)
+    print(
+        f"stage, {students} students x {len(findings.compared)} exercises "
+        f"({sum(findings.compared.values())} answers compared, {jobs or os.cpu_count()} processes): "
+        f"{seconds:.1f} s wall, {cpu:.1f} s CPU (load average {os.getloadavg()[0]:.1f})",
+        flush=True,
+    )
 
 
 def time_grade(extra):
@@ -77,8 +80,12 @@ def time_grade(extra):
     options (stage figures NaN when the stage did not run)."""
     with tempfile.TemporaryDirectory() as work:
         started, cpu = time.perf_counter(), cpu_seconds()
-        result = subprocess.run([sys.executable, "-m", "autograder", "grade", "--out", str(Path(work) / "out"),
-                                 *extra], cwd=ROOT, capture_output=True, text=True)
+        result = subprocess.run(
+            [sys.executable, "-m", "autograder", "grade", "--out", str(Path(work) / "out"), *extra],
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+        )
         wall, cpu = time.perf_counter() - started, cpu_seconds() - cpu
     if result.returncode != 0:
         raise SystemExit(f"grade {' '.join(extra)} failed:\n{result.stdout[-2000:]}\n{result.stderr[-2000:]}")
@@ -100,11 +107,15 @@ def main():
     if args.sample:
         wall, cpu, stage_wall, stage_cpu = time_grade([])
         bare_wall, bare_cpu, _, _ = time_grade(["--no-similarity"])
-        print(f"grade of the sample class: {wall:.1f} s wall, {cpu:.1f} s CPU; with --no-similarity: "
-              f"{bare_wall:.1f} s wall, {bare_cpu:.1f} s CPU (load average {os.getloadavg()[0]:.1f})")
-        print(f"similarity stage within it: {stage_wall:.1f} s wall = {100 * stage_wall / wall:.1f}% of the run, "
-              f"{stage_cpu:.1f} s CPU = {100 * stage_cpu / cpu:.1f}% of the run's CPU "
-              f"(the two runs differ by {cpu - bare_cpu:+.1f} s CPU)")
+        print(
+            f"grade of the sample class: {wall:.1f} s wall, {cpu:.1f} s CPU; with --no-similarity: "
+            f"{bare_wall:.1f} s wall, {bare_cpu:.1f} s CPU (load average {os.getloadavg()[0]:.1f})"
+        )
+        print(
+            f"similarity stage within it: {stage_wall:.1f} s wall = {100 * stage_wall / wall:.1f}% of the run, "
+            f"{stage_cpu:.1f} s CPU = {100 * stage_cpu / cpu:.1f}% of the run's CPU "
+            f"(the two runs differ by {cpu - bare_cpu:+.1f} s CPU)"
+        )
 
 
 if __name__ == "__main__":

@@ -22,8 +22,13 @@ def shared_book(tmp_path_factory, worker_input=None):
     with open(root / "shared-book.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if not done.exists():
-            run = subprocess.run([sys.executable, "-m", "autograder", "book", "--out", str(out)], cwd=PROJECT_ROOT,
-                                 capture_output=True, text=True, timeout=900)
+            run = subprocess.run(
+                [sys.executable, "-m", "autograder", "book", "--out", str(out)],
+                cwd=PROJECT_ROOT,
+                capture_output=True,
+                text=True,
+                timeout=900,
+            )
             assert run.returncode == 0, run.stderr[-3000:]
             done.write_text("built\n", encoding="utf-8")
     return out

@@ -21,8 +21,15 @@ from pathlib import Path
 import pytest
 
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
-CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync", "--no-first-run", "--disable-quic"]
+CHROMIUM_ARGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+]
 
 
 def require_chromium():
@@ -48,8 +55,14 @@ class Browser:
     def page(self, width=1400, height=1000):
         page = self.browser.new_page(viewport={"width": width, "height": height})
         page.js_errors = []
-        page.on("console", lambda message: page.js_errors.append(f"console.{message.type}: {message.text[:300]}")
-                if message.type == "error" else None)
+        page.on(
+            "console",
+            lambda message: (
+                page.js_errors.append(f"console.{message.type}: {message.text[:300]}")
+                if message.type == "error"
+                else None
+            ),
+        )
         page.on("pageerror", lambda error: page.js_errors.append(f"page error: {str(error)[:300]}"))
         return page
 
@@ -68,15 +81,32 @@ class JupyterLab:
         news.parent.mkdir(parents=True, exist_ok=True)
         news.write_text('{"fetchNews": "false", "checkForUpdates": false}', encoding="utf-8")  # no pop-up
         self.port, self.token = free_port(), secrets.token_hex(16)
-        env = dict(os.environ, JUPYTERLAB_SETTINGS_DIR=str(settings),
-                   JUPYTERLAB_WORKSPACES_DIR=str(self.root / ".workspaces"),
-                   JUPYTER_RUNTIME_DIR=str(self.root / ".runtime"), IPYTHONDIR=str(self.root / ".ipython"))
+        env = dict(
+            os.environ,
+            JUPYTERLAB_SETTINGS_DIR=str(settings),
+            JUPYTERLAB_WORKSPACES_DIR=str(self.root / ".workspaces"),
+            JUPYTER_RUNTIME_DIR=str(self.root / ".runtime"),
+            IPYTHONDIR=str(self.root / ".ipython"),
+        )
         for name in ("MPLBACKEND", "PYTEST_DISABLE_PLUGIN_AUTOLOAD", "JPY_SESSION_NAME"):
             env.pop(name, None)
         self.server = subprocess.Popen(
-            [sys.executable, "-m", "jupyterlab", "--no-browser", "--allow-root", "--ip=127.0.0.1",
-             f"--port={self.port}", f"--IdentityProvider.token={self.token}", f"--ServerApp.root_dir={self.root}"],
-            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+            [
+                sys.executable,
+                "-m",
+                "jupyterlab",
+                "--no-browser",
+                "--allow-root",
+                "--ip=127.0.0.1",
+                f"--port={self.port}",
+                f"--IdentityProvider.token={self.token}",
+                f"--ServerApp.root_dir={self.root}",
+            ],
+            env=env,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            start_new_session=True,
+        )
         self.base = f"http://127.0.0.1:{self.port}"
         deadline = time.monotonic() + 90
         while True:
@@ -173,8 +203,10 @@ def settle_math(page, timeout_ms=8_000):
     """Wait until MathJax has typeset the rendered markdown (no formula left in raw form)."""
     page.wait_for_timeout(1000)
     try:
-        page.wait_for_function("() => ![...document.querySelectorAll('.jp-RenderedMarkdown')]"
-                               ".some(e => /\\$[^$]+\\$/.test(e.innerText))", timeout=timeout_ms)
+        page.wait_for_function(
+            "() => ![...document.querySelectorAll('.jp-RenderedMarkdown')].some(e => /\\$[^$]+\\$/.test(e.innerText))",
+            timeout=timeout_ms,
+        )
     except Exception:  # noqa: BLE001  (a page with raw TeX is reported by page_problems)
         pass
 
@@ -258,7 +290,7 @@ LAB_SELECTORS = {
 }
 BOOK_SELECTORS = {
     "prose": "article.bd-article p, article.bd-article li, article.bd-article td, article.bd-article h1,"
-             " article.bd-article h2, article.bd-article h3",
+    " article.bd-article h2, article.bd-article h3",
     "images": "img",
     "canvases": "canvas",
     "stderr": ".output.stderr, .cell_output .stderr",
@@ -288,8 +320,11 @@ def figure_pictures(page, timeout_s=10):
 
 def changed_figures(pictures, reference):
     """Problems for figures that are missing or drawn differently from ``reference`` (the real lesson's)."""
-    problems = [f"figure {k + 1} differs from the lesson's" for k, (got, want) in enumerate(zip(pictures, reference))
-                if got != want]
+    problems = [
+        f"figure {k + 1} differs from the lesson's"
+        for k, (got, want) in enumerate(zip(pictures, reference))
+        if got != want
+    ]
     if len(pictures) != len(reference):
         problems.append(f"{len(pictures)} figures drawn, the lesson draws {len(reference)}")
     return problems

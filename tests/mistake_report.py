@@ -38,7 +38,9 @@ def report(lesson, name_part=""):
         for exercise in result.exercises:
             for check in exercise.checks:
                 if exercise.name == mistake.exercise and not check.passed:
-                    print(f"      ✗ {check.description} (weight {check.weight:g}): {check.reason}\n        hint: {check.hint}")
+                    print(
+                        f"      ✗ {check.description} (weight {check.weight:g}): {check.reason}\n        hint: {check.hint}"
+                    )
         if mistake.kind == "mistake":
             passed, printed = run_public_checks(THIS_COURSE, mistake.exercise, mistake.source)
             print(f"    public: {'all pass' if passed else 'fails'}")

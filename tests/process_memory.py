@@ -69,7 +69,7 @@ class PeakMemory:
                 try:
                     with open(f"/proc/{entry}/stat", encoding="ascii", errors="replace") as handle:
                         stat = handle.read()
-                    children.setdefault(int(stat[stat.rfind(")") + 2:].split()[1]), []).append(int(entry))
+                    children.setdefault(int(stat[stat.rfind(")") + 2 :].split()[1]), []).append(int(entry))
                 except (OSError, ValueError, IndexError):
                     pass
         found, stack = [self.pid], [self.pid]

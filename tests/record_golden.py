@@ -34,8 +34,16 @@ BENCHMARK_STUDENTS = 8
 def grade_sample_class(out, klass=None):
     """Grade the sample class, or the class in folder ``klass`` (full pipeline, nbval included) into
     ``out``; return grades.csv's path."""
-    command = [sys.executable, "-m", "autograder", "grade", *([str(klass)] if klass else []),
-               "--out", str(out), "--force"]
+    command = [
+        sys.executable,
+        "-m",
+        "autograder",
+        "grade",
+        *([str(klass)] if klass else []),
+        "--out",
+        str(out),
+        "--force",
+    ]
     result = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=1800)
     if result.returncode != 0:
         raise RuntimeError("grading the sample class failed:\n" + result.stdout[-2000:] + result.stderr[-2000:])

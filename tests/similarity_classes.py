@@ -21,15 +21,15 @@ from support import THIS_COURSE
 
 # More independently written answers, in styles the alternatives do not use.
 OWN_ANSWERS = {
-    "rot_z": '''
+    "rot_z": """
 def rot_z(a):
     R = np.eye(3)
     R[0, 0] = R[1, 1] = np.cos(a)
     R[1, 0] = np.sin(a)
     R[0, 1] = -R[1, 0]
     return R
-''',
-    "quat_multiply": '''
+""",
+    "quat_multiply": """
 def quat_multiply(p, q):
     a1, b1, c1, d1 = (float(x) for x in p)
     a2, b2, c2, d2 = (float(x) for x in q)
@@ -37,8 +37,8 @@ def quat_multiply(p, q):
                      a1*b2 + b1*a2 + c1*d2 - d1*c2,
                      a1*c2 - b1*d2 + c1*a2 + d1*b2,
                      a1*d2 + b1*c2 - c1*b2 + d1*a2])
-''',
-    "hat": '''
+""",
+    "hat": """
 def hat(w):
     out = np.zeros((3, 3))
     for i in range(3):
@@ -46,15 +46,15 @@ def hat(w):
         e[i] = 1.0
         out[:, i] = np.cross(w, e)
     return out
-''',
-    "compose": '''
+""",
+    "compose": """
 def compose(*rotations):
     result = np.identity(3)
     for matrix in rotations:
         result = np.einsum("ij,jk->ik", result, np.asarray(matrix, dtype=float))
     return result
-''',
-    "exp_so3": '''
+""",
+    "exp_so3": """
 def exp_so3(w):
     w = np.asarray(w, dtype=float)
     K = np.array([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
@@ -63,13 +63,13 @@ def exp_so3(w):
         term = term @ K / n
         total = total + term
     return total
-''',
-    "to_homogeneous": '''
+""",
+    "to_homogeneous": """
 def to_homogeneous(points):
     coordinates = np.array(points, dtype=float)
     padding = [(0, 0)] * (coordinates.ndim - 1) + [(0, 1)]
     return np.pad(coordinates, padding, constant_values=1.0)
-''',
+""",
 }
 
 
@@ -87,8 +87,9 @@ def honest_answers():
     references = answer_sources(THIS_COURSE.solutions)
     styles = {}
     for alternative in sorted(all_alternatives().values(), key=lambda a: a.name):
-        if _code_without_docstring(alternative.source.strip("\n")) == \
-                _code_without_docstring(references[alternative.exercise]):
+        if _code_without_docstring(alternative.source.strip("\n")) == _code_without_docstring(
+            references[alternative.exercise]
+        ):
             continue
         styles.setdefault(alternative.exercise, []).append(alternative.source.strip("\n") + "\n")
     for exercise, source in OWN_ANSWERS.items():
@@ -101,6 +102,7 @@ def honest_answers():
 
 
 # -- disguises ---------------------------------------------------------------------------------------
+
 
 def rename(source, seed=0):
     """Every local variable renamed (the signature, attributes and keywords left alone)."""
@@ -135,9 +137,9 @@ def reorder(source):
         read = [{n.id for n in ast.walk(s.value) if isinstance(n, ast.Name)} for s in (first, second)]
         if written[0] & read[1] or written[1] & read[0] or written[0] & written[1]:
             continue
-        a = lines[first.lineno - 1:first.end_lineno]
-        b = lines[second.lineno - 1:second.end_lineno]
-        lines[first.lineno - 1:second.end_lineno] = b + a
+        a = lines[first.lineno - 1 : first.end_lineno]
+        b = lines[second.lineno - 1 : second.end_lineno]
+        lines[first.lineno - 1 : second.end_lineno] = b + a
         return "\n".join(lines) + "\n"
     return source
 
@@ -150,8 +152,11 @@ def insert_dead_code(source):
     docstring = isinstance(first, ast.Expr) and isinstance(getattr(first, "value", None), ast.Constant)
     at = first.end_lineno if docstring else first.lineno - 1
     indent = " " * first.col_offset
-    dead = [f"{indent}unused_steps = [0.0 for _ in range(2)]", f"{indent}for _ in range(0):",
-            f"{indent}    unused_steps.append(1.0)"]
+    dead = [
+        f"{indent}unused_steps = [0.0 for _ in range(2)]",
+        f"{indent}for _ in range(0):",
+        f"{indent}    unused_steps.append(1.0)",
+    ]
     lines = source.splitlines()
     lines[at:at] = dead
     return "\n".join(lines) + "\n"
@@ -175,24 +180,32 @@ def disguise(source, kinds, seed=0):
 
 # -- the planted class -------------------------------------------------------------------------------
 
+
 def planted_answers():
     """``(answers, planted)``: the honest class plus copies; ``planted`` lists the findings to report:
     ``("cluster", members, exercises)`` and ``("reference", student, exercise)``."""
     students = honest_answers()
     planted = []
-    copies = [("pair_rename", ["rename"], "quat_multiply"),
-              ("pair_comments", ["comments", "rename"], "exp_so3"),
-              ("pair_reformat", ["reformat"], "quat_slerp"),
-              ("pair_reorder", ["reorder", "rename"], "right_jacobian_so3"),
-              ("pair_dead", ["dead code"], "matrix_to_euler_zyx")]
+    copies = [
+        ("pair_rename", ["rename"], "quat_multiply"),
+        ("pair_comments", ["comments", "rename"], "exp_so3"),
+        ("pair_reformat", ["reformat"], "quat_slerp"),
+        ("pair_reorder", ["reorder", "rename"], "right_jacobian_so3"),
+        ("pair_dead", ["dead code"], "matrix_to_euler_zyx"),
+    ]
     for seed, (student, kinds, exercise) in enumerate(copies):
         original = students["honest1"].pop(exercise)  # its writer is a student of their own
         students[f"{student}_source"] = {exercise: original}
         students[student] = {exercise: disguise(original, kinds, seed)}
         planted.append(("cluster", (student, f"{student}_source"), (exercise,)))
     five = [f"ring{i}" for i in range(1, 6)]
-    kinds = [["rename"], ["comments"], ["reformat", "rename"], ["reorder", "dead code"],
-             ["rename", "comments", "dead code"]]
+    kinds = [
+        ["rename"],
+        ["comments"],
+        ["reformat", "rename"],
+        ["reorder", "dead code"],
+        ["rename", "comments", "dead code"],
+    ]
     original = students["honest2"].pop("numerical_jacobian")
     for seed, (student, chosen) in enumerate(zip(five, kinds)):
         students[student] = {"numerical_jacobian": disguise(original, chosen, seed + 10)}

@@ -37,7 +37,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 # Run inside the floor venv: execute one notebook with nbclient (a jupyterlab dependency), save it, and
 # print its errors as JSON. MPLBACKEND=Agg as in grading: no front end, no figures to draw twice.
-RUN_ONE = r'''
+RUN_ONE = r"""
 import json, sys
 import nbformat
 from nbclient import NotebookClient
@@ -50,13 +50,14 @@ nbformat.write(nb, target)
 errors = [(i, o.get("ename"), str(o.get("evalue"))[:300]) for i, c in enumerate(nb.cells)
           for o in c.get("outputs", []) if o.get("output_type") == "error"]
 print(json.dumps(errors))
-'''
+"""
 
 
 def student_install():
     """``autograder/authoring/student_install.py``, loaded by path (no package import, any Python 3)."""
-    spec = importlib.util.spec_from_file_location("student_install",
-                                                  ROOT / "autograder" / "authoring" / "student_install.py")
+    spec = importlib.util.spec_from_file_location(
+        "student_install", ROOT / "autograder" / "authoring" / "student_install.py"
+    )
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -65,8 +66,9 @@ def student_install():
 def version_of(python):
     """``(3, 11, 2)`` for a Python executable, or None when it does not run."""
     try:
-        out = subprocess.run([python, "-c", "import sys; print(*sys.version_info[:3])"],
-                             capture_output=True, text=True, timeout=30)
+        out = subprocess.run(
+            [python, "-c", "import sys; print(*sys.version_info[:3])"], capture_output=True, text=True, timeout=30
+        )
     except OSError:
         return None
     return tuple(int(part) for part in out.stdout.split()) if out.returncode == 0 else None
@@ -78,8 +80,9 @@ def oldest_python(floor):
     candidates = set(glob.glob(str(pyenv / "*" / "bin" / "python3")))
     candidates |= {shutil.which(f"python3.{minor}") or "" for minor in range(floor[1], 20)}
     candidates |= {"/usr/bin/python3", sys.executable}
-    found = sorted((version, path) for path in candidates if path and (version := version_of(path))
-                   and version[:2] >= floor)
+    found = sorted(
+        (version, path) for path in candidates if path and (version := version_of(path)) and version[:2] >= floor
+    )
     if not found:
         raise SystemExit(f"no Python {floor[0]}.{floor[1]} or newer found")
     return found[0][1]
@@ -95,20 +98,27 @@ def install(python, out, module, floors=True):
     start = time.monotonic()
     subprocess.run([python, "-m", "venv", str(venv)], check=True)
     floor_python = str(venv / "bin" / "python")
-    pip = subprocess.run([floor_python, "-m", "pip", "install", "-q", "--disable-pip-version-check",
-                          "-r", str(out / "requirements.txt")] + (["-c", str(out / "floors.txt")] if floors else []),
-                         capture_output=True, text=True)
+    pip = subprocess.run(
+        [floor_python, "-m", "pip", "install", "-q", "--disable-pip-version-check", "-r", str(out / "requirements.txt")]
+        + (["-c", str(out / "floors.txt")] if floors else []),
+        capture_output=True,
+        text=True,
+    )
     if pip.returncode != 0:
         noise = "WARNING: Location"  # a local mirror that pip's configuration names but this machine lacks
-        raise SystemExit("the student list did not install:\n"
-                         + "\n".join(line for line in pip.stderr.splitlines() if not line.startswith(noise)))
+        raise SystemExit(
+            "the student list did not install:\n"
+            + "\n".join(line for line in pip.stderr.splitlines() if not line.startswith(noise))
+        )
     return floor_python, time.monotonic() - start
 
 
 def installed_versions(floor_python, module):
     names = [name for name, *_ in module.PACKAGES] + ["nbclient"]
-    code = ("import json, sys\nfrom importlib import metadata\n"
-            "print(json.dumps({n: metadata.version(n) for n in sys.argv[1:]}))")
+    code = (
+        "import json, sys\nfrom importlib import metadata\n"
+        "print(json.dumps({n: metadata.version(n) for n in sys.argv[1:]}))"
+    )
     out = subprocess.run([floor_python, "-c", code, *names], capture_output=True, text=True, check=True)
     return json.loads(out.stdout)
 
@@ -117,8 +127,7 @@ def lessons_folder(out, only=()):
     """``out/lessons``: the solved masters and the hand-out's coursekit; returns the notebooks to run."""
     folder = out / "lessons"
     shutil.rmtree(folder, ignore_errors=True)
-    shutil.copytree(ROOT / "course" / "coursekit", folder / "coursekit",
-                    ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(ROOT / "course" / "coursekit", folder / "coursekit", ignore=shutil.ignore_patterns("__pycache__"))
     notebooks = []
     for path in sorted((ROOT / "solutions").glob("[0-9][0-9]_*.ipynb")):
         if not only or path.name[:2] in only:
@@ -132,8 +141,13 @@ def run_lesson(floor_python, notebook, out):
     env = dict(os.environ, MPLBACKEND="Agg", PYTHONHASHSEED="0")
     env.pop("PYTHONPATH", None)
     start = time.monotonic()
-    run = subprocess.run([floor_python, "-c", RUN_ONE, str(notebook), str(executed), str(notebook.parent)],
-                         capture_output=True, text=True, env=env, cwd=notebook.parent)
+    run = subprocess.run(
+        [floor_python, "-c", RUN_ONE, str(notebook), str(executed), str(notebook.parent)],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=notebook.parent,
+    )
     seconds = round(time.monotonic() - start, 1)
     if run.returncode != 0:
         return {"seconds": seconds, "errors": [[None, "RunnerFailed", run.stderr[-800:]]]}
@@ -146,8 +160,11 @@ def main(argv=None):
     parser.add_argument("--python", help="the Python to build the venv with (default: the oldest here)")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--lessons", nargs="*", default=(), help="two-digit numbers (default: all)")
-    parser.add_argument("--newest", action="store_true",
-                        help="install as a student does, the newest versions for this Python, not the floors")
+    parser.add_argument(
+        "--newest",
+        action="store_true",
+        help="install as a student does, the newest versions for this Python, not the floors",
+    )
     args = parser.parse_args(argv)
     module = student_install()
     out = args.out.resolve()
@@ -162,16 +179,22 @@ def main(argv=None):
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         runs = dict(zip((n.name for n in notebooks), pool.map(lambda n: run_lesson(floor_python, n, out), notebooks)))
     summary = {
-        "python": ".".join(map(str, version_of(floor_python))), "python_path": python, "floors": not args.newest,
+        "python": ".".join(map(str, version_of(floor_python))),
+        "python_path": python,
+        "floors": not args.newest,
         "versions": installed_versions(floor_python, module),
-        "install_seconds": round(install_seconds, 1), "seconds": round(time.monotonic() - start, 1),
-        "lessons": runs, "ok": all(not run["errors"] for run in runs.values()),
+        "install_seconds": round(install_seconds, 1),
+        "seconds": round(time.monotonic() - start, 1),
+        "lessons": runs,
+        "ok": all(not run["errors"] for run in runs.values()),
     }
     (out / "summary.json").write_text(json.dumps(summary, indent=1), encoding="utf-8")
     for name, run in runs.items():
         print(f"{name}: {run['seconds']} s, {len(run['errors'])} error(s) {run['errors'][:2] if run['errors'] else ''}")
-    print(f"floor run: Python {summary['python']} ({python}), install {summary['install_seconds']} s, "
-          f"all {summary['seconds']} s, {'ok' if summary['ok'] else 'FAILED'}")
+    print(
+        f"floor run: Python {summary['python']} ({python}), install {summary['install_seconds']} s, "
+        f"all {summary['seconds']} s, {'ok' if summary['ok'] else 'FAILED'}"
+    )
     return 0 if summary["ok"] else 1
 
 

@@ -86,7 +86,9 @@ def _drawn_mistakes(student, by_exercise, share=3):
 
 def grade(folder, lessons=(), nbval=False):
     """Grade one folder in this process and return its StudentResult."""
-    return grade_student(Path(folder).name, Path(folder), THIS_COURSE, GradingOptions(nbval=nbval, lessons=tuple(lessons)))
+    return grade_student(
+        Path(folder).name, Path(folder), THIS_COURSE, GradingOptions(nbval=nbval, lessons=tuple(lessons))
+    )
 
 
 def points_by_exercise(result):
@@ -102,8 +104,14 @@ def grade_sample_class(out, sandbox=None):
     env = {key: value for key, value in os.environ.items() if key != "AUTOGRADER_SANDBOX"}
     if sandbox:
         env["AUTOGRADER_SANDBOX"] = sandbox
-    result = subprocess.run([sys.executable, "-m", "autograder", "grade", "--out", str(out)],
-                            cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=1500, env=env)
+    result = subprocess.run(
+        [sys.executable, "-m", "autograder", "grade", "--out", str(out)],
+        cwd=PROJECT_ROOT,
+        capture_output=True,
+        text=True,
+        timeout=1500,
+        env=env,
+    )
     assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-2000:]
     with open(Path(out) / "grades.csv", newline="", encoding="utf-8") as handle:
         rows = {row["student_id"]: row for row in csv.DictReader(handle)}

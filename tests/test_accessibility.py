@@ -69,8 +69,11 @@ def _blocking_violations(page, contrast=True):
 
     options = {"resultTypes": ["violations"]} if contrast else WITHOUT_CONTRAST
     violations = Axe().run(page, options=options).response["violations"]
-    return [f"{v['impact']} {v['id']}: {v['help']} ({len(v['nodes'])}x, e.g. {v['nodes'][0]['target']})"
-            for v in violations if v.get("impact") in BLOCKING]
+    return [
+        f"{v['impact']} {v['id']}: {v['help']} ({len(v['nodes'])}x, e.g. {v['nodes'][0]['target']})"
+        for v in violations
+        if v.get("impact") in BLOCKING
+    ]
 
 
 def _student(student_id, failing):
@@ -78,14 +81,31 @@ def _student(student_id, failing):
     exercises = []
     for exercise in THIS_COURSE.catalog.lesson("01").exercises:
         lost = exercise.name in failing
-        check = CheckResult(exercise=exercise.name, description=f"{exercise.name} on random rotations", weight=1.0,
-                            passed=not lost, reason="off by 0.5 at θ = 1.2" if lost else "",
-                            hint="looks like the transpose" if lost else "")
-        exercises.append(ExerciseResult(name=exercise.name, lesson="01", max_points=exercise.points,
-                                        points=0.0 if lost else exercise.points, checks=[check]))
-    lesson = LessonResult(number="01", title=THIS_COURSE.catalog.lesson("01").title, notebook="01_frames_and_rotations.ipynb",
-                          status="graded", exercises=exercises,
-                          run=NotebookRun(status="passed", points=1.0, max_points=1.0))
+        check = CheckResult(
+            exercise=exercise.name,
+            description=f"{exercise.name} on random rotations",
+            weight=1.0,
+            passed=not lost,
+            reason="off by 0.5 at θ = 1.2" if lost else "",
+            hint="looks like the transpose" if lost else "",
+        )
+        exercises.append(
+            ExerciseResult(
+                name=exercise.name,
+                lesson="01",
+                max_points=exercise.points,
+                points=0.0 if lost else exercise.points,
+                checks=[check],
+            )
+        )
+    lesson = LessonResult(
+        number="01",
+        title=THIS_COURSE.catalog.lesson("01").title,
+        notebook="01_frames_and_rotations.ipynb",
+        status="graded",
+        exercises=exercises,
+        run=NotebookRun(status="passed", points=1.0, max_points=1.0),
+    )
     return StudentResult(student_id=student_id, status="graded", lessons=[lesson])
 
 
@@ -110,8 +130,11 @@ def test_book_pages_have_no_serious_violations(book, browser, screenshots):
 
 
 def test_feedback_page_and_class_report_have_no_serious_violations(browser, screenshots, tmp_path):
-    students = [_student("ana", failing=()), _student("dev", failing=("rot_z", "rotate_point")),
-                StudentResult(student_id="ed", status="missing", reason="no submission folder")]
+    students = [
+        _student("ana", failing=()),
+        _student("dev", failing=("rot_z", "rotate_point")),
+        StudentResult(student_id="ed", status="missing", reason="no submission folder"),
+    ]
     pages = {"feedback": feedback_html(students[1]), "class_report": class_report_html(students, THIS_COURSE.catalog)}
     found = {}
     for name, html in pages.items():
@@ -157,7 +180,9 @@ def test_lesson_03_figure_3_tells_its_series_apart_without_colour(monkeypatch):
     fig = plt.gcf()
     assert any(ax.get_legend() is not None for ax in fig.axes), "no legend names the series"
     for ax in fig.axes:
-        styles = [(line.get_marker(), line.get_linestyle(), line.get_markerfacecolor() == "none")
-                  for line in _labelled_series(ax)]
+        styles = [
+            (line.get_marker(), line.get_linestyle(), line.get_markerfacecolor() == "none")
+            for line in _labelled_series(ax)
+        ]
         assert len(styles) >= 2 and len(set(styles)) == len(styles), styles
     plt.close(fig)

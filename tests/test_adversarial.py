@@ -29,8 +29,15 @@ from autograder.batch.class_run import safe_name
 from autograder.grading import pipeline, submissions
 from autograder.grading.results import LessonResult, StudentResult
 from autograder.lessons import cells
-from autograder.lessons.notebook_files import (NotARegularFile, UnreadableNotebook, canonical_text, parse_notebook,
-                                               read_master, read_regular_file, read_submission)
+from autograder.lessons.notebook_files import (
+    NotARegularFile,
+    UnreadableNotebook,
+    canonical_text,
+    parse_notebook,
+    read_master,
+    read_regular_file,
+    read_submission,
+)
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from autograder.lessons.untrusted_text import csv_cell, html_text, one_line
 from autograder.sandbox import launcher
@@ -88,7 +95,9 @@ def _build(case, folder):
         os.mkfifo(notebook)
     elif case.damage:
         text = damage_notebook(case, read_master(notebook), notebook.read_text(encoding="utf-8"))
-        notebook.write_bytes(text.encode("latin-1", errors="replace") if case.damage == "latin1" else text.encode("utf-8"))
+        notebook.write_bytes(
+            text.encode("latin-1", errors="replace") if case.damage == "latin1" else text.encode("utf-8")
+        )
 
 
 def _sleepers():
@@ -117,9 +126,25 @@ def corpus(tmp_path_factory):
             if case.twin:
                 build_submission(class_dir / f"{case.name}__twin", {case.target: case.twin}, lessons=("01",))
         started = time.monotonic()
-        run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(class_dir), "--out", str(out),
-                              "--lessons", "01", "--jobs", "2"],
-                             cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=1500)
+        run = subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "autograder",
+                "grade",
+                str(class_dir),
+                "--out",
+                str(out),
+                "--lessons",
+                "01",
+                "--jobs",
+                "2",
+            ],
+            cwd=PROJECT_ROOT,
+            capture_output=True,
+            text=True,
+            timeout=1500,
+        )
         seconds = time.monotonic() - started
         time.sleep(6)  # give any detached process the time to try its attack
     finally:
@@ -128,8 +153,16 @@ def corpus(tmp_path_factory):
     for path in (out / "students").glob("*.json"):
         result = StudentResult.from_json(json.dumps(json.loads(path.read_text(encoding="utf-8"))["result"]))
         results[result.student_id] = result
-    return {"cases": {c.name: c for c in corpus_cases}, "results": results, "run": run, "out": out,
-            "canary": canary, "received": listener.received, "seconds": seconds, "class": class_dir}
+    return {
+        "cases": {c.name: c for c in corpus_cases},
+        "results": results,
+        "run": run,
+        "out": out,
+        "canary": canary,
+        "received": listener.received,
+        "seconds": seconds,
+        "class": class_dir,
+    }
 
 
 CASE_NAMES = [c.name for c in cases({"out_dir": Path("/x"), "canary": Path("/x"), "port": 1})]
@@ -228,8 +261,18 @@ def test_student_text_reaches_the_terminal_escaped(corpus):
 # (issue 32, item 1: each per-student step outside the sandbox is contained whatever the folder holds;
 # tests/test_hostile_class.py grades a whole class of such students, as root and as an ordinary user)
 
-HOSTILE_TEXTS = ["esc\x1b[2J\x1b]0;title\x07", "two\nlines\r\n", "bidi\u202eevil\u202c\u200b", "lone\ud800\udcff",
-                 "nul\0del\x7f", "x" * 100_000, "=1+1", "\t=cmd", "é" * 200, "%41~" * 50]
+HOSTILE_TEXTS = [
+    "esc\x1b[2J\x1b]0;title\x07",
+    "two\nlines\r\n",
+    "bidi\u202eevil\u202c\u200b",
+    "lone\ud800\udcff",
+    "nul\0del\x7f",
+    "x" * 100_000,
+    "=1+1",
+    "\t=cmd",
+    "é" * 200,
+    "%41~" * 50,
+]
 
 
 class _Alarm:
@@ -241,6 +284,7 @@ class _Alarm:
     def __enter__(self):
         def ring(signum, frame):
             raise AssertionError(f"blocked for more than {self.seconds} s")
+
         self.previous = signal.signal(signal.SIGALRM, ring)
         signal.alarm(self.seconds)
 
@@ -301,14 +345,17 @@ def _notebook_with(value_text, where="metadata"):
     return json.dumps(data).replace('"@@"', value_text).encode("utf-8")
 
 
-@pytest.mark.parametrize("value, words", [
-    ("[" * 100_000 + "]" * 100_000, "nests its JSON"),
-    ('{"a":' * 100_000 + "0" + "}" * 100_000, "nests its JSON"),
-    ("[" * 900 + "]" * 900, "nests its JSON"),
-    ("[" * 70 + "]" * 70, "nests its JSON"),
-    ("[" + ",".join(["{}"] * 300_000) + "]", "JSON lists and objects"),
-    ("[" + ",".join(["1e9"] * 1_100_000) + "]", "JSON values"),
-])
+@pytest.mark.parametrize(
+    "value, words",
+    [
+        ("[" * 100_000 + "]" * 100_000, "nests its JSON"),
+        ('{"a":' * 100_000 + "0" + "}" * 100_000, "nests its JSON"),
+        ("[" * 900 + "]" * 900, "nests its JSON"),
+        ("[" * 70 + "]" * 70, "nests its JSON"),
+        ("[" + ",".join(["{}"] * 300_000) + "]", "JSON lists and objects"),
+        ("[" + ",".join(["1e9"] * 1_100_000) + "]", "JSON values"),
+    ],
+)
 def test_notebook_json_is_bounded_in_depth_and_size(value, words):
     for where in ("metadata", "cell"):
         with pytest.raises(UnreadableNotebook, match=words):
@@ -327,11 +374,20 @@ def test_too_many_cells_is_refused():
         parse_notebook(json.dumps(data).encode())
 
 
-@pytest.mark.parametrize("source", [
-    "x = " + "-" * 100_000 + "1", "x = y" + ".a" * 100_000, "x = f" + "(1)" * 100_000, "x = 1" + "**1" * 100_000,
-    "x = " + "not " * 100_000 + "y", "x = " + "(" * 100_000 + ")" * 100_000, "def f():\n    return '\0'\n",
-    "def f():\n" + "    x = 1\n" * 100_000, "def f(:\n",
-])
+@pytest.mark.parametrize(
+    "source",
+    [
+        "x = " + "-" * 100_000 + "1",
+        "x = y" + ".a" * 100_000,
+        "x = f" + "(1)" * 100_000,
+        "x = 1" + "**1" * 100_000,
+        "x = " + "not " * 100_000 + "y",
+        "x = " + "(" * 100_000 + ")" * 100_000,
+        "def f():\n    return '\0'\n",
+        "def f():\n" + "    x = 1\n" * 100_000,
+        "def f(:\n",
+    ],
+)
 def test_any_cell_source_parses_or_gives_none(source):
     assert cells.parse_source(source) is None
 
@@ -364,8 +420,13 @@ def test_the_walk_of_a_folder_is_bounded_and_lists_what_it_skips(tmp_path):
     found = submissions.scan_folder(folder)
     assert folder / LESSON.filename in found.files and len(found.files) == submissions.MAX_NOTEBOOKS
     lines = "\n".join(item.line() for item in found.skipped)
-    for words in (".hidden/: a hidden folder", "a/b/c/: deeper than", "linked: a symbolic link",
-                  "at most 50 notebooks", "more than 10,000 entries"):
+    for words in (
+        ".hidden/: a hidden folder",
+        "a/b/c/: deeper than",
+        "linked: a symbolic link",
+        "at most 50 notebooks",
+        "more than 10,000 entries",
+    ):
         assert words in lines, lines
     assert len(found.skipped) <= submissions.MAX_SKIPPED_LISTED + 1
 
@@ -395,8 +456,25 @@ def test_student_text_is_one_line_bounded_and_encodable(text):
 
 
 def test_safe_names_are_bounded_portable_and_distinct():
-    ids = HOSTILE_TEXTS + ["", ".", "..", "../etc/passwd", "a/b", "aA", "a%41", "a~b", "L" * 250, "L" * 249 + "M",
-                           "S" * 200 + "-one", "S" * 200 + "-two", "é" * 127, "e\u0301", "é", "\udce9", "\ud800"]
+    ids = HOSTILE_TEXTS + [
+        "",
+        ".",
+        "..",
+        "../etc/passwd",
+        "a/b",
+        "aA",
+        "a%41",
+        "a~b",
+        "L" * 250,
+        "L" * 249 + "M",
+        "S" * 200 + "-one",
+        "S" * 200 + "-two",
+        "é" * 127,
+        "e\u0301",
+        "é",
+        "\udce9",
+        "\ud800",
+    ]
     names = [safe_name(i) for i in ids]
     assert len(set(names)) == len(ids)
     for name in names:
@@ -405,15 +483,20 @@ def test_safe_names_are_bounded_portable_and_distinct():
 
 
 def _graded(student_id):
-    return StudentResult(student_id=student_id, status="graded", lessons=[
-        LessonResult(number="01", title="Frames", notebook="01.ipynb", status="graded")])
+    return StudentResult(
+        student_id=student_id,
+        status="graded",
+        lessons=[LessonResult(number="01", title="Frames", notebook="01.ipynb", status="graded")],
+    )
 
 
 def test_a_result_that_cannot_be_saved_still_reaches_the_gradebook(tmp_path, monkeypatch):
     outputs = class_run.Outputs(tmp_path / "out")
     stamp = class_run.Stamp("f", {})
     monkeypatch.setattr(class_run, "save_result", lambda *a: (_ for _ in ()).throw(OSError(28, "No space left")))
-    task = class_run.GradingTask("mallory", str(tmp_path / "missing"), None, str(outputs.root), stamp, None, THIS_COURSE)
+    task = class_run.GradingTask(
+        "mallory", str(tmp_path / "missing"), None, str(outputs.root), stamp, None, THIS_COURSE
+    )
     result = class_run.record_death(task, "the grading process was killed by SIGKILL")
     assert result.status == "could not grade" and "could not be saved" in result.problems[-1]
     monkeypatch.undo()

@@ -28,8 +28,7 @@ def test_alternative_gets_full_hidden_marks(name, tmp_path):
     lesson = THIS_COURSE.catalog.exercise(alternative.exercise).lesson
     folder = build_submission(tmp_path / "student", {alternative.exercise: alternative.source}, lessons=(lesson,))
     result = grade(folder, lessons=(lesson,))
-    failed = [(c.exercise, c.description, c.reason, c.hint) for e in result.exercises for c in e.checks
-              if not c.passed]
+    failed = [(c.exercise, c.description, c.reason, c.hint) for e in result.exercises for c in e.checks if not c.passed]
     assert not failed, f"{name} ({alternative.description}) lost points: {failed}"
 
 

@@ -16,8 +16,7 @@ import pytest
 
 from autograder.lessons.paths import PACKAGE, PROJECT_ROOT
 
-STAGES = ("lessons", "authoring", "sandbox", "grading", "reports", "similarity", "batch", "integrations",
-          "mutants")
+STAGES = ("lessons", "authoring", "sandbox", "grading", "reports", "similarity", "batch", "integrations", "mutants")
 DATA = ("hidden", "mistakes")  # the hidden suite and the mistake corpus: content, not stages
 
 
@@ -127,8 +126,13 @@ def test_no_private_name_is_imported_from_another_stage():
 def _module_level_names(tree):
     names = set()
     for node in tree.body:
-        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(
-            node, (ast.AnnAssign, ast.AugAssign)) else []
+        targets = (
+            node.targets
+            if isinstance(node, ast.Assign)
+            else [node.target]
+            if isinstance(node, (ast.AnnAssign, ast.AugAssign))
+            else []
+        )
         names.update(t.id for t in targets if isinstance(t, ast.Name))
     return names
 
@@ -174,8 +178,10 @@ def _submodules_imported(path, module):
 
 def _module_graph():
     """``{module: {modules it imports}}`` over ``autograder/``, lazy imports included."""
-    modules = {".".join(p.relative_to(PACKAGE.parent).with_suffix("").parts).removesuffix(".__init__"): p
-               for p in PACKAGE.rglob("*.py")}
+    modules = {
+        ".".join(p.relative_to(PACKAGE.parent).with_suffix("").parts).removesuffix(".__init__"): p
+        for p in PACKAGE.rglob("*.py")
+    }
     graph = {}
     for module, path in modules.items():
         targets = set()
@@ -234,12 +240,19 @@ def test_public_functions_say_their_types(stage):
     bare = []
     for path in sorted((PACKAGE / stage).rglob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
-        methods = [item for node in tree.body if isinstance(node, ast.ClassDef) and not node.name.startswith("_")
-                   for item in node.body]
+        methods = [
+            item
+            for node in tree.body
+            if isinstance(node, ast.ClassDef) and not node.name.startswith("_")
+            for item in node.body
+        ]
         for node in tree.body + methods:
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and not node.name.startswith("_"):
-                arguments = [a for a in node.args.posonlyargs + node.args.args + node.args.kwonlyargs
-                             if a.arg not in ("self", "cls")]
+                arguments = [
+                    a
+                    for a in node.args.posonlyargs + node.args.args + node.args.kwonlyargs
+                    if a.arg not in ("self", "cls")
+                ]
                 if node.returns is None or any(a.annotation is None for a in arguments):
                     bare.append(f"{path.relative_to(PACKAGE.parent)}:{node.lineno} {node.name}")
     assert not bare, "public functions without type hints:\n" + "\n".join(bare)
@@ -253,8 +266,11 @@ def test_no_module_below_the_cli_reads_the_course_paths():
         where = path.relative_to(PACKAGE).as_posix()
         if where in ("cli.py", "lessons/paths.py"):
             continue
-        if any(name.startswith("autograder.lessons.paths") for name in _imported_names(path) |
-               _submodules_imported(path, ".".join(path.relative_to(PACKAGE.parent).with_suffix("").parts))):
+        if any(
+            name.startswith("autograder.lessons.paths")
+            for name in _imported_names(path)
+            | _submodules_imported(path, ".".join(path.relative_to(PACKAGE.parent).with_suffix("").parts))
+        ):
             readers.add(where)
     assert not readers, f"modules below the CLI that read lessons/paths.py (take a Course instead): {sorted(readers)}"
 
@@ -269,7 +285,10 @@ def test_only_the_course_puts_its_support_package_on_the_import_path():
         if where in allowed or where.startswith("sandbox/child/"):
             continue
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if isinstance(node, ast.Attribute) and node.attr in ("insert", "append") and \
-                    ast.unparse(node.value) == "sys.path":
+            if (
+                isinstance(node, ast.Attribute)
+                and node.attr in ("insert", "append")
+                and ast.unparse(node.value) == "sys.path"
+            ):
                 found.append(f"{where}:{node.lineno}")
     assert not found, f"sys.path changed below the CLI: {found}"

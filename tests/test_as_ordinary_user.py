@@ -18,20 +18,45 @@ import ordinary_user
 ROOT = Path(__file__).resolve().parent.parent
 # what only root can do or see, the reasons a wall's test may give for skipping as nobody
 ONLY_AS_ROOT = ("as an ordinary user every sandbox runs as that user", "only root makes device files")
-WALLS = ["test_sandbox.py", "test_warm_slots.py", "test_feeder.py", "test_watching.py", "test_cleanup.py",
-         "test_notebook_stage_walls.py", "test_adversarial.py"]
+WALLS = [
+    "test_sandbox.py",
+    "test_warm_slots.py",
+    "test_feeder.py",
+    "test_watching.py",
+    "test_cleanup.py",
+    "test_notebook_stage_walls.py",
+    "test_adversarial.py",
+]
 
 
-@pytest.mark.skipif(not ordinary_user.running_as_root() or ordinary_user.available() is not None,
-                    reason="runs only as root; as an ordinary user the files ran that way already")
+@pytest.mark.skipif(
+    not ordinary_user.running_as_root() or ordinary_user.available() is not None,
+    reason="runs only as root; as an ordinary user the files ran that way already",
+)
 def test_the_walls_hold_as_an_ordinary_user():
     work = Path(tempfile.mkdtemp(prefix="walls-as-nobody-"))  # not under pytest's root-only folder
     (work / "holds").mkdir()
     work.chmod(0o777)
     files = [str(ROOT / "tests" / name) for name in WALLS if (ROOT / "tests" / name).exists()]
     # --basetemp: pytest's own clean-up of older numbered folders is recursive, and these tests make deep trees
-    command = [sys.executable, "-m", "pytest", *files, "-p", "no:cacheprovider", "-n", "1", "-q",
-               "--rootdir", str(ROOT), "-o", "addopts=", "--basetemp", str(work / "tmp"), "-rs"]
+    command = [
+        sys.executable,
+        "-m",
+        "pytest",
+        *files,
+        "-p",
+        "no:cacheprovider",
+        "-n",
+        "1",
+        "-q",
+        "--rootdir",
+        str(ROOT),
+        "-o",
+        "addopts=",
+        "--basetemp",
+        str(work / "tmp"),
+        "-rs",
+    ]
     try:
         # -u: an earlier test of this worker may have left the variable set, and -n needs xdist loaded
         wrapped = ["env", "-u", "PYTEST_DISABLE_PLUGIN_AUTOLOAD", "HOME=/tmp", *command]

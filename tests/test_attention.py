@@ -5,10 +5,21 @@ from autograder.reports.attention import stage_warnings, worth_a_look
 
 
 def _student(student_id, notebook_status, full=True, note=""):
-    exercise = ExerciseResult(name="rot_z", lesson="01", max_points=1.0, points=1.0 if full else 0.0,
-                              checks=[CheckResult("rot_z", "a quarter turn", 1.0, full, "" if full else note)])
-    lesson = LessonResult(number="01", title="Frames", notebook="01.ipynb", status="graded", exercises=[exercise],
-                          run=NotebookRun(status=notebook_status, max_points=1.0))
+    exercise = ExerciseResult(
+        name="rot_z",
+        lesson="01",
+        max_points=1.0,
+        points=1.0 if full else 0.0,
+        checks=[CheckResult("rot_z", "a quarter turn", 1.0, full, "" if full else note)],
+    )
+    lesson = LessonResult(
+        number="01",
+        title="Frames",
+        notebook="01.ipynb",
+        status="graded",
+        exercises=[exercise],
+        run=NotebookRun(status=notebook_status, max_points=1.0),
+    )
     return StudentResult(student_id=student_id, status="graded", lessons=[lesson])
 
 

@@ -61,10 +61,23 @@ def test_rerun_skips_unchanged_and_regrades_changed(small_class, tmp_path):
 def test_killed_run_loses_nothing_already_graded(small_class, tmp_path):
     out_full, out_killed = tmp_path / "full", tmp_path / "killed"
     grade_class(small_class, out_full, THIS_COURSE, jobs=2, options=FAST)
-    command = [sys.executable, "-m", "autograder", "grade", str(small_class), "--out", str(out_killed),
-               "--no-nbval", "--lessons", FIRST, "--jobs", "1"]
-    process = subprocess.Popen(command, cwd=PROJECT_ROOT, stdout=subprocess.DEVNULL,
-                               stderr=subprocess.DEVNULL, start_new_session=True)
+    command = [
+        sys.executable,
+        "-m",
+        "autograder",
+        "grade",
+        str(small_class),
+        "--out",
+        str(out_killed),
+        "--no-nbval",
+        "--lessons",
+        FIRST,
+        "--jobs",
+        "1",
+    ]
+    process = subprocess.Popen(
+        command, cwd=PROJECT_ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True
+    )
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and len(list((out_killed / "students").glob("*.json"))) < 2:
         time.sleep(0.05)
@@ -101,18 +114,29 @@ def test_unsafe_ids_make_safe_file_names():
 
 
 def _result(student, passed):
-    check = CheckResult(exercise="rot_z", description="quarter turn sends x to y", weight=1.0, passed=passed,
-                        reason="" if passed else "got x → -y", hint="" if passed else "looks like the transpose")
-    exercise = ExerciseResult(name="rot_z", lesson="01", max_points=1.0, points=1.0 if passed else 0.0,
-                              checks=[check])
-    return StudentResult(student_id=student, status="graded",
-                         lessons=[LessonResult(number="01", title="Frames", notebook="01.ipynb", status="graded",
-                                               exercises=[exercise])])
+    check = CheckResult(
+        exercise="rot_z",
+        description="quarter turn sends x to y",
+        weight=1.0,
+        passed=passed,
+        reason="" if passed else "got x → -y",
+        hint="" if passed else "looks like the transpose",
+    )
+    exercise = ExerciseResult(name="rot_z", lesson="01", max_points=1.0, points=1.0 if passed else 0.0, checks=[check])
+    return StudentResult(
+        student_id=student,
+        status="graded",
+        lessons=[LessonResult(number="01", title="Frames", notebook="01.ipynb", status="graded", exercises=[exercise])],
+    )
 
 
 def test_class_report_contents():
-    results = [_result("<script>alert(1)</script>", False), _result("bo", True), _result("cy", False),
-               StudentResult(student_id="dee", status="missing", reason="no submission folder")]
+    results = [
+        _result("<script>alert(1)</script>", False),
+        _result("bo", True),
+        _result("cy", False),
+        StudentResult(student_id="dee", status="missing", reason="no submission folder"),
+    ]
     html = class_report_html(results, THIS_COURSE.catalog)
     assert "rot_z" in html and "33%" in html  # one of three graded students has full marks
     assert "quarter turn sends x to y" in html and "looks like the transpose" in html and "(2)" in html
@@ -154,13 +178,30 @@ def test_a_grader_killed_by_student_code_is_reported_and_the_batch_finishes(tmp_
     """Without namespaces (forced here), student code may kill the process grading it: the batch goes on."""
     lesson = THIS_COURSE.catalog.lesson("01")
     killer = "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)\n"
-    build_submission(tmp_path / "class" / "killer", {"rot_z": killer + "def rot_z(a):\n    return None\n"},
-                     lessons=("01",))
+    build_submission(
+        tmp_path / "class" / "killer", {"rot_z": killer + "def rot_z(a):\n    return None\n"}, lessons=("01",)
+    )
     build_submission(tmp_path / "class" / "honest", lessons=("01",))
     env = dict(os.environ, AUTOGRADER_SANDBOX="limits")
-    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(tmp_path / "class"), "--out",
-                          str(tmp_path / "out"), "--no-nbval", "--lessons", "01"],
-                         cwd=PROJECT_ROOT, env=env, capture_output=True, text=True, timeout=300)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "autograder",
+            "grade",
+            str(tmp_path / "class"),
+            "--out",
+            str(tmp_path / "out"),
+            "--no-nbval",
+            "--lessons",
+            "01",
+        ],
+        cwd=PROJECT_ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert run.returncode == 0, run.stderr[-2000:]
     assert "RESOURCE LIMITS ONLY" in run.stdout
     rows = _rows(tmp_path / "out" / "grades.csv")
@@ -184,20 +225,21 @@ def test_the_slot_a_grader_is_handed_reaches_every_sandbox_of_its_student(tmp_pa
     class Recording(StudentSandbox):
         def __init__(self, *args, slot=None, **kwargs):
             seen.append(slot)
-            super().__init__(*args, slot=None, **kwargs)       # graded cold: the stand-in is no slot
+            super().__init__(*args, slot=None, **kwargs)  # graded cold: the stand-in is no slot
 
     monkeypatch.setattr(pipeline, "StudentSandbox", Recording)
     monkeypatch.setattr(nbval_stage, "StudentSandbox", Recording)
     folder = build_submission(tmp_path / "ada", lessons=(FIRST,))
     result = pipeline.grade_student("ada", folder, THIS_COURSE, GradingOptions(lessons=(FIRST,)), slot=handed)
     assert result.score == result.max_score > 0
-    assert seen == [handed, handed], seen                      # the suite's sandbox, then lesson 01's notebook
+    assert seen == [handed, handed], seen  # the suite's sandbox, then lesson 01's notebook
 
     graded = []
     monkeypatch.setattr(class_run, "grade_student", lambda *args, slot=None: graded.append(slot) or result)
-    for name in ("become_subreaper", "kill_descendants"):   # not in this test process: it has other children
+    for name in ("become_subreaper", "kill_descendants"):  # not in this test process: it has other children
         monkeypatch.setattr(class_run.process_tree, name, lambda *args, **kwargs: None)
-    task = class_run.GradingTask("ada", str(folder), FAST, str(tmp_path / "out"),
-                                 class_run.Stamp("f", {}), None, THIS_COURSE)
+    task = class_run.GradingTask(
+        "ada", str(folder), FAST, str(tmp_path / "out"), class_run.Stamp("f", {}), None, THIS_COURSE
+    )
     class_run.grade_task(task, handed)
     assert graded == [handed]

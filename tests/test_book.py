@@ -41,18 +41,38 @@ def test_every_lesson_has_a_page_and_the_start_page_is_the_front_page(book):
 
 
 def test_the_book_holds_no_stubs_hidden_tests_or_grader(book):
-    everything = "\n".join(p.read_text(encoding="utf-8", errors="replace") for p in book.rglob("*")
-                           if p.is_file() and p.suffix in (".html", ".js", ".txt", ".ipynb", ".py"))
+    everything = "\n".join(
+        p.read_text(encoding="utf-8", errors="replace")
+        for p in book.rglob("*")
+        if p.is_file() and p.suffix in (".html", ".js", ".txt", ".ipynb", ".py")
+    )
     assert not list(book.rglob("*.ipynb")) and not list(book.rglob("*.py")), "notebook or Python sources leaked"
-    for marker in ("raise NotImplementedError", "BEGIN SOLUTION", "END SOLUTION", "autograder/hidden",
-                   "@exercise(", "def test_", "from .helpers import", "public_check("):
+    for marker in (
+        "raise NotImplementedError",
+        "BEGIN SOLUTION",
+        "END SOLUTION",
+        "autograder/hidden",
+        "@exercise(",
+        "def test_",
+        "from .helpers import",
+        "public_check(",
+    ):
         assert marker not in everything, f"the book contains {marker!r}"
 
 
 # What only a student needs, named in issue 29; the rest comes from the cells the masters tag student-only.
-STUDENT_PHRASES = ("How grading works", "Handing in", "raise NotImplementedError", "Save the notebook",
-                   "hand in this file", "hidden checks", "your log_so3", "Ready to hand in",
-                   "your notebook is graded", "not written yet")
+STUDENT_PHRASES = (
+    "How grading works",
+    "Handing in",
+    "raise NotImplementedError",
+    "Save the notebook",
+    "hand in this file",
+    "hidden checks",
+    "your log_so3",
+    "Ready to hand in",
+    "your notebook is graded",
+    "not written yet",
+)
 
 
 def _plain_runs(markdown, shortest=25):
@@ -92,8 +112,12 @@ def test_the_book_is_the_readers_edition(book):
     found = [phrase for phrase in STUDENT_PHRASES if phrase.lower() in everything.lower()]
     found += [f"{lesson}: {phrase[:80]}" for lesson, phrase in derived if " ".join(phrase.split()) in everything]
     assert not found, found
-    reader_only = [c for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb") for c in nbformat.read(str(p), as_version=4).cells
-                   if cells.is_reader_only(c)]
+    reader_only = [
+        c
+        for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb")
+        for c in nbformat.read(str(p), as_version=4).cells
+        if cells.is_reader_only(c)
+    ]
     assert reader_only
     course = " ".join(p.read_text(encoding="utf-8") for p in COURSE.glob("[0-9][0-9]_*.ipynb"))
     for cell in reader_only:
@@ -106,27 +130,43 @@ def test_the_book_says_the_reference_where_the_lab_says_your(book):
     """No page, figure alt text or printed output of the book speaks of the reader's own answer or of the
     lab's tools ("your numerical Jacobian", "before you run the check cell"), while the lab keeps them."""
     pages = {p.stem: _page_text(p) for p in _pages(book)}
-    found = [f"{name}: ...{text[max(0, k - 60):k + 40]}..." for name, text in pages.items()
-             for phrase in LAB_ONLY_PHRASES for k in [text.lower().find(phrase.lower())] if k >= 0]
+    found = [
+        f"{name}: ...{text[max(0, k - 60) : k + 40]}..."
+        for name, text in pages.items()
+        for phrase in LAB_ONLY_PHRASES
+        for k in [text.lower().find(phrase.lower())]
+        if k >= 0
+    ]
     assert not found, found
     assert "The reference numerical Jacobian against two analytic ones" in pages["06_perturbations_and_jacobians"]
     assert "matches the reference numerical Jacobian = True" in pages["06_perturbations_and_jacobians"]
-    assert "in your head" in pages["04_quaternions"]                 # the reader as a person keeps "your"
+    assert "in your head" in pages["04_quaternions"]  # the reader as a person keeps "your"
     course = " ".join(p.read_text(encoding="utf-8") for p in COURSE.glob("[0-9][0-9]_*.ipynb"))
     assert "Your numerical Jacobian against two analytic ones" in course
 
 
-@pytest.mark.parametrize("lab, book", [
-    ("With your `boxminus` and `boxplus_right`: a round trip", "With the reference `boxminus` and `boxplus_right`: a round trip"),
-    ("Your $\\mathbf J_r$ against the identities", "The reference $\\mathbf J_r$ against the identities"),
-    ("Then a round trip through both of your functions", "Then a round trip through both of the reference functions"),
-    ("Here are your three rotations at work", "Here are the three reference rotations at work"),
-    ("Your function must work for any length", "The function must work for any length"),
-    ("Check your matrix, before you run the check cell.", "Check the reference matrix."),
-    ("Do not call your `to_homogeneous`", "Do not call `to_homogeneous`"),
-    ("design your own solver; point your fingers; in your head; Your turn",
-     "design your own solver; point your fingers; in your head; Your turn"),
-])
+@pytest.mark.parametrize(
+    "lab, book",
+    [
+        (
+            "With your `boxminus` and `boxplus_right`: a round trip",
+            "With the reference `boxminus` and `boxplus_right`: a round trip",
+        ),
+        ("Your $\\mathbf J_r$ against the identities", "The reference $\\mathbf J_r$ against the identities"),
+        (
+            "Then a round trip through both of your functions",
+            "Then a round trip through both of the reference functions",
+        ),
+        ("Here are your three rotations at work", "Here are the three reference rotations at work"),
+        ("Your function must work for any length", "The function must work for any length"),
+        ("Check your matrix, before you run the check cell.", "Check the reference matrix."),
+        ("Do not call your `to_homogeneous`", "Do not call `to_homogeneous`"),
+        (
+            "design your own solver; point your fingers; in your head; Your turn",
+            "design your own solver; point your fingers; in your head; Your turn",
+        ),
+    ],
+)
 def test_reader_phrasing(lab, book):
     assert reader_phrasing(lab) == book
 
@@ -185,8 +225,9 @@ def test_the_browser_check_catches_a_broken_page(book, tmp_path):
     try:
         for case, (html, _) in cases.items():
             target = book / f"broken_{case.replace(' ', '_')}.html"
-            target.write_text(source[:heading] + f"<p>Broken on purpose: {html}.</p>" + source[heading:],
-                              encoding="utf-8")
+            target.write_text(
+                source[:heading] + f"<p>Broken on purpose: {html}.</p>" + source[heading:], encoding="utf-8"
+            )
             page = browser.page()
             open_book_page(page, target)
             found[case] = "\n".join(page_problems(page, BOOK_SELECTORS, min_math=1))
@@ -198,8 +239,9 @@ def test_the_browser_check_catches_a_broken_page(book, tmp_path):
         assert expected in found[case], (case, found[case])
 
 
-EXPLORER_LESSONS = sorted(path.stem for path in SOLUTIONS.glob("[0-9][0-9]_*.ipynb")
-                          if "explore_" in path.read_text(encoding="utf-8"))
+EXPLORER_LESSONS = sorted(
+    path.stem for path in SOLUTIONS.glob("[0-9][0-9]_*.ipynb") if "explore_" in path.read_text(encoding="utf-8")
+)
 
 
 def test_every_explorer_moves_in_the_book_and_the_gimbal_reaches_the_lock(book):
@@ -229,9 +271,12 @@ def test_every_explorer_moves_in_the_book_and_the_gimbal_reaches_the_lock(book):
                 first = picture.get_attribute("src")
                 last = int(slider.get_attribute("max"))
                 slider.focus()
-                page.keyboard.press("End")                     # the keyboard's drag to the far end: pitch 90°
-                page.wait_for_function("([img, before]) => img.getAttribute('src') !== before",
-                                       arg=[picture.element_handle(), first], timeout=10_000)
+                page.keyboard.press("End")  # the keyboard's drag to the far end: pitch 90°
+                page.wait_for_function(
+                    "([img, before]) => img.getAttribute('src') !== before",
+                    arg=[picture.element_handle(), first],
+                    timeout=10_000,
+                )
                 shot = artifacts / "book_05_gimbal_locked.png"
                 explorer.screenshot(path=str(shot))
                 print(f"book: the gimbal at the lock, from file:// -> {shot}")

@@ -27,8 +27,16 @@ import pytest
 
 from autograder.authoring.handout import build_handout
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
-from browser_support import (LAB_SELECTORS, Browser, JupyterLab, changed_figures, figure_pictures, open_and_run_all,
-                             page_problems, require_chromium)
+from browser_support import (
+    LAB_SELECTORS,
+    Browser,
+    JupyterLab,
+    changed_figures,
+    figure_pictures,
+    open_and_run_all,
+    page_problems,
+    require_chromium,
+)
 from support import THIS_COURSE
 
 ARTIFACTS = PROJECT_ROOT / "test-artifacts" / "browser"
@@ -87,8 +95,9 @@ def test_the_handout_notebooks_open_unmodified(session):
         if page.query_selector(".lm-TabBar-tab.jp-mod-current.jp-mod-dirty"):
             dirty.append(name)
         # the save's own answer, not the tab's dot (already clean), says the file is written
-        with page.expect_response(lambda response: "/api/contents/" in response.url
-                                  and response.request.method == "PUT", timeout=30_000):
+        with page.expect_response(
+            lambda response: "/api/contents/" in response.url and response.request.method == "PUT", timeout=30_000
+        ):
             page.keyboard.press("Control+s")
         after = json.loads(path.read_text(encoding="utf-8"))
         assert after["metadata"]["language_info"]["name"] == "python"
@@ -96,7 +105,8 @@ def test_the_handout_notebooks_open_unmodified(session):
             notebook["metadata"].pop("language_info")
         if after != before:
             changed[name] = [key for key in ("metadata", "nbformat", "nbformat_minor") if after[key] != before[key]] + [
-                index for index, (old, new) in enumerate(zip(before["cells"], after["cells"])) if old != new]
+                index for index, (old, new) in enumerate(zip(before["cells"], after["cells"])) if old != new
+            ]
         session["lab"].shut_down_kernel(f"handout/rotations-course/{name}")
     page.close()
     assert not dirty, f"marked modified as soon as they opened: {dirty}"
@@ -114,26 +124,34 @@ def test_solved_lesson_reads_cleanly(session, name):
         (c.querySelector('.cm-content') || {}).textContent || '',
         [...c.querySelectorAll('.jp-OutputArea-output')].map(o => o.textContent).join('\\n')])""")
     # Start here shows on purpose what a failed check looks like, in a cell that catches CheckFailed.
-    failed = [out[:120] for source, out in cells if "except CheckFailed" not in source
-              and ("✗" in out or "NotWrittenYet" in out or "CheckFailed" in out)]
+    failed = [
+        out[:120]
+        for source, out in cells
+        if "except CheckFailed" not in source and ("✗" in out or "NotWrittenYet" in out or "CheckFailed" in out)
+    ]
     demonstrations = [out for source, out in cells if "except CheckFailed" in source]
     errors = page.locator(".jp-OutputArea-output[data-mime-type='application/vnd.jupyter.error']").count()
     nb = nbformat.read(SOLUTIONS / name, as_version=4)
-    figure_cells = sum(1 for c in nb.cells if c.cell_type == "code" and
-                       (re.search(r"plt\.show\(\)", c.source) or "explore_" in c.source))
-    figures = (page.locator(".jp-OutputArea-output img").count()
-               + page.locator(LAB_SELECTORS["canvases"]).count())
+    figure_cells = sum(
+        1
+        for c in nb.cells
+        if c.cell_type == "code" and (re.search(r"plt\.show\(\)", c.source) or "explore_" in c.source)
+    )
+    figures = page.locator(".jp-OutputArea-output img").count() + page.locator(LAB_SELECTORS["canvases"]).count()
     names = live_figure_names(page)
     hand_in = _cell(page, "ready_to_hand_in(").locator(".jp-OutputArea").text_content() if nb_has_hand_in(name) else ""
-    if name.startswith("03_"):                                   # Figure 3: two series apart without colour
+    if name.startswith("03_"):  # Figure 3: two series apart without colour
         figure = page.locator(".jupyter-matplotlib-canvas-div[aria-label^='Figure 3.']").first
         figure.scroll_into_view_if_needed()
         figure.screenshot(path=str(ARTIFACTS / "solutions_03_figure_3.png"))
     page.close()
     assert not problems, problems
     assert len(names) >= (1 if figure_cells else 0), names
-    unnamed = [(number, role, label) for number, (role, label) in enumerate(names, 1)
-               if not re.match(r"Figure \d+[a-z]?\. \S", label)]
+    unnamed = [
+        (number, role, label)
+        for number, (role, label) in enumerate(names, 1)
+        if not re.match(r"Figure \d+[a-z]?\. \S", label)
+    ]
     assert not unnamed, f"live figures (n-th on the page, role, name) without a caption: {unnamed}"
     assert all(role == "img" and not re.search(r"[$\\{}]", label) for role, label in names), names
     assert "[]" not in hand_in and "ready to hand in" in hand_in.lower() or not hand_in, hand_in
@@ -182,9 +200,13 @@ def live_figure_names(page, timeout_ms=20_000):
         page.wait_for_function(NAMED, timeout=timeout_ms, polling=250)
     except Exception:  # noqa: BLE001  (the names found are reported by the caller's assertion)
         pass
-    return [(role, label or "") for role, label in page.evaluate(
-        "() => [...document.querySelectorAll('.jupyter-matplotlib-canvas-div')]"
-        ".map(c => [c.getAttribute('role'), c.getAttribute('aria-label')])")]
+    return [
+        (role, label or "")
+        for role, label in page.evaluate(
+            "() => [...document.querySelectorAll('.jupyter-matplotlib-canvas-div')]"
+            ".map(c => [c.getAttribute('role'), c.getAttribute('aria-label')])"
+        )
+    ]
 
 
 def accessible_name(locator):
@@ -205,14 +227,15 @@ def test_a_worked_example_ahead_of_its_exercise_says_so_in_one_line(session):
     stopped = check.locator(".jp-OutputArea").text_content()
     example = _cell(page, "R_wb = np.asarray(euler_zyx_to_matrix(")
     example.locator(".cm-content").click()
-    page.keyboard.press("Shift+Enter")                            # run just this cell
-    page.wait_for_function("(cell) => cell.querySelector('.jp-OutputArea-output')", arg=example.element_handle(),
-                           timeout=30_000)
+    page.keyboard.press("Shift+Enter")  # run just this cell
+    page.wait_for_function(
+        "(cell) => cell.querySelector('.jp-OutputArea-output')", arg=example.element_handle(), timeout=30_000
+    )
     example.scroll_into_view_if_needed()
     said = example.locator(".jp-OutputArea").inner_text().strip()
     example.screenshot(path=str(ARTIFACTS / "course_05_worked_example_ahead.png"))
     check.locator(".cm-content").click()
-    page.keyboard.press("Control+Enter")                          # the check cell alone, not through Run All
+    page.keyboard.press("Control+Enter")  # the check cell alone, not through Run All
     page.wait_for_timeout(1500)
     again = check.locator(".jp-OutputArea").inner_text()
     check.screenshot(path=str(ARTIFACTS / "course_05_check_cell_run_alone.png"))
@@ -234,14 +257,18 @@ def test_typed_answer_turns_a_check_green(session):
     answer = _cell(page, "def rot2d(theta)")
     answer.locator(".cm-content").click()
     page.keyboard.press("Control+a")
-    page.keyboard.insert_text("import numpy as np\n\ndef rot2d(theta):\n"
-                              "    c, s = np.cos(theta), np.sin(theta)\n"
-                              "    return np.array([[c, -s], [s, c]])\n")
-    page.keyboard.press("Shift+Enter")                       # run the answer, move to its check
-    page.keyboard.press("Shift+Enter")                       # run the check
-    page.wait_for_function("() => [...document.querySelectorAll('.jp-OutputArea-output')]"
-                           ".some(e => e.textContent.includes('rot2d: public checks') && e.textContent.includes('passed'))",
-                           timeout=30_000)
+    page.keyboard.insert_text(
+        "import numpy as np\n\ndef rot2d(theta):\n"
+        "    c, s = np.cos(theta), np.sin(theta)\n"
+        "    return np.array([[c, -s], [s, c]])\n"
+    )
+    page.keyboard.press("Shift+Enter")  # run the answer, move to its check
+    page.keyboard.press("Shift+Enter")  # run the check
+    page.wait_for_function(
+        "() => [...document.querySelectorAll('.jp-OutputArea-output')]"
+        ".some(e => e.textContent.includes('rot2d: public checks') && e.textContent.includes('passed'))",
+        timeout=30_000,
+    )
     text = check.locator(".jp-OutputArea").text_content()
     page.screenshot(path=str(ARTIFACTS / "course_01_check_turned_green.png"))
     page.close()
@@ -259,32 +286,35 @@ def test_gimbal_slider_changes_the_figure(session):
     before = canvas.evaluate("c => c.toDataURL()")
     handle = explorer.locator(".widget-slider", has_text="pitch").locator(".noUi-handle").first
     explorer.locator(".widget-slider", has_text="yaw").locator(".noUi-handle").first.focus()
-    for _ in range(3):                                     # the keyboard alone reaches the next slider
-        page.keyboard.press("Tab")                         # (past the yaw slider's editable readout)
+    for _ in range(3):  # the keyboard alone reaches the next slider
+        page.keyboard.press("Tab")  # (past the yaw slider's editable readout)
         if handle.evaluate("h => h === document.activeElement"):
             break
     assert handle.evaluate("h => h === document.activeElement"), "Tab from the yaw slider never reaches pitch"
     assert handle.get_attribute("role") == "slider"
-    page.keyboard.press("End")                             # pitch to +90°: the lock
-    page.wait_for_function("([c, b]) => c.toDataURL() !== b", arg=[canvas.element_handle(), before],
-                           timeout=20_000)
+    page.keyboard.press("End")  # pitch to +90°: the lock
+    page.wait_for_function("([c, b]) => c.toDataURL() !== b", arg=[canvas.element_handle(), before], timeout=20_000)
     explorer.screenshot(path=str(ARTIFACTS / "solutions_05_gimbal_locked.png"))
     readout = explorer.locator(".widget-slider", has_text="pitch").locator(".widget-readout").text_content()
     locked = live_figure_names(page)
-    for _ in range(3):                                     # off the lock by three steps: 88.5, not 88 or 89
+    for _ in range(3):  # off the lock by three steps: 88.5, not 88 or 89
         page.keyboard.press("ArrowLeft")
     page.wait_for_timeout(1500)
     near = explorer.locator(".widget-slider", has_text="pitch").locator(".widget-readout").text_content().strip()
-    page.wait_for_function("(text) => [...document.querySelectorAll('.coursekit-explorer "
-                           ".jupyter-matplotlib-canvas-div')].some(c => (c.getAttribute('aria-label') || '')"
-                           ".includes('pitch ' + text + '°'))", arg=near, timeout=20_000)
+    page.wait_for_function(
+        "(text) => [...document.querySelectorAll('.coursekit-explorer "
+        ".jupyter-matplotlib-canvas-div')].some(c => (c.getAttribute('aria-label') || '')"
+        ".includes('pitch ' + text + '°'))",
+        arg=near,
+        timeout=20_000,
+    )
     explorer.screenshot(path=str(ARTIFACTS / "solutions_05_gimbal_near_the_lock.png"))
     named = [label for _, label in live_figure_names(page) if "Gimbal at" in label]
-    in_the_tree = accessible_name(canvas.locator("xpath=.."))           # the canvas's div, as a screen reader gets it
+    in_the_tree = accessible_name(canvas.locator("xpath=.."))  # the canvas's div, as a screen reader gets it
     page.close()
     assert readout.strip().startswith("90"), readout
     assert any("pitch 90°" in label for _, label in locked), locked
-    assert near != "90" and "." in near, near                   # a value between the steps, e.g. 88.5
+    assert near != "90" and "." in near, near  # a value between the steps, e.g. 88.5
     assert named and all(f"pitch {near}°" in label for label in named), (near, named)
     assert in_the_tree[0] == "img" and f"pitch {near}°" in in_the_tree[1], in_the_tree
 
@@ -297,8 +327,9 @@ def _broken_copy(root, name):
     frame = next(line for line in figure.source.splitlines() if line.startswith("draw_frame("))
     figure.source = figure.source.replace(frame + "\n", "", 1)
     nb.cells.insert(1, nbformat.v4.new_markdown_cell(r"A broken formula: $\frac{1}{2$ and $x^{1}^{2}$."))
-    nb.cells.insert(2, nbformat.v4.new_code_cell("import warnings\nwarnings.warn('a RuntimeWarning on stderr', "
-                                                 "RuntimeWarning)"))
+    nb.cells.insert(
+        2, nbformat.v4.new_code_cell("import warnings\nwarnings.warn('a RuntimeWarning on stderr', RuntimeWarning)")
+    )
     nb.cells.insert(3, nbformat.v4.new_markdown_cell("![a figure that is not there](missing_figure.png)"))
     path = root / "solutions" / f"broken_{name}"
     nbformat.write(nb, path)
@@ -309,7 +340,7 @@ def test_the_browser_check_catches_each_breakage(session):
     """The check that passes the real lessons reports a bad formula, stderr output, a missing image and a
     figure drawn without one of its frames (against the figures of the real lesson, drawn in this session)."""
     name = next(n for n in LESSONS if n.startswith("01_"))
-    if name not in PICTURES:                                  # the real lesson's figures, for reference
+    if name not in PICTURES:  # the real lesson's figures, for reference
         page = _run(session, f"solutions/{name}")
         PICTURES[name] = figure_pictures(page)
         page.close()
@@ -324,4 +355,4 @@ def test_the_browser_check_catches_each_breakage(session):
     assert "stderr output" in joined and "RuntimeWarning" in joined, problems
     assert "broken or empty image" in joined, problems
     assert "figure 1 differs from the lesson's" in joined, problems
-    assert "figure 2 differs" not in joined, problems        # the other figures are drawn as in the lesson
+    assert "figure 2 differs" not in joined, problems  # the other figures are drawn as in the lesson

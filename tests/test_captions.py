@@ -18,16 +18,21 @@ pytestmark = pytest.mark.filterwarnings("ignore:Passing unrecognized arguments:D
 TEX_LEFT = re.compile(r"[$\\{}]|\b(mathbf|mathrm|frac|boldsymbol|theta|delta|times)\b")
 
 
-@pytest.mark.parametrize("tex, words", [
-    (r"Figure 3. The family $R_z(\delta)\,R_y(\pi/2)\,R_x(\alpha + \delta)$, $\alpha$ = 0.3 rad",
-     "Figure 3. The family R_z(δ) R_y(π/2) R_x(α + δ), α = 0.3 rad"),
-    (r"A steady spin $R(t) = \exp(t\,[\omega]_\times)$", "A steady spin R(t) = exp(t [ω]×)"),
-    (r"$\|\mathbf{R}^\top\mathbf{R} - I\|$ at $h = 10^{-15}$", "‖RᵀR - I‖ at h = 10⁻¹⁵"),
-    (r"columns $r_1, r_2, r_3$", "columns r₁, r₂, r₃"),
-    (r"$\frac{\pi}{2} - \varepsilon$ and $\frac{a+b}{2}$", "π/2 - ε and (a+b)/2"),
-    (r"$\mathrm{Exp}(\theta\mathbf{u})$, $\hat{\mathbf{R}}$, $x_{\mathrm{body}}$", "Exp(θu), R̂, x_(body)"),
-    ("no math: 5% of \\$3, pitch 88.5°", "no math: 5% of $3, pitch 88.5°"),
-])
+@pytest.mark.parametrize(
+    "tex, words",
+    [
+        (
+            r"Figure 3. The family $R_z(\delta)\,R_y(\pi/2)\,R_x(\alpha + \delta)$, $\alpha$ = 0.3 rad",
+            "Figure 3. The family R_z(δ) R_y(π/2) R_x(α + δ), α = 0.3 rad",
+        ),
+        (r"A steady spin $R(t) = \exp(t\,[\omega]_\times)$", "A steady spin R(t) = exp(t [ω]×)"),
+        (r"$\|\mathbf{R}^\top\mathbf{R} - I\|$ at $h = 10^{-15}$", "‖RᵀR - I‖ at h = 10⁻¹⁵"),
+        (r"columns $r_1, r_2, r_3$", "columns r₁, r₂, r₃"),
+        (r"$\frac{\pi}{2} - \varepsilon$ and $\frac{a+b}{2}$", "π/2 - ε and (a+b)/2"),
+        (r"$\mathrm{Exp}(\theta\mathbf{u})$, $\hat{\mathbf{R}}$, $x_{\mathrm{body}}$", "Exp(θu), R̂, x_(body)"),
+        ("no math: 5% of \\$3, pitch 88.5°", "no math: 5% of $3, pitch 88.5°"),
+    ],
+)
 def test_readable_text(tex, words):
     assert readable_text(tex) == words
     assert not TEX_LEFT.search(readable_text(tex).replace("$3", ""))
@@ -53,7 +58,7 @@ def _live(fig, number=2):
 
 def test_a_live_figure_is_renamed_by_its_title_each_time_it_is_drawn():
     fig = plt.figure()
-    assert name_live_figure(fig) is fig                                  # a picture: nothing to name
+    assert name_live_figure(fig) is fig  # a picture: nothing to name
     name_live_figure_when_drawn(_live(fig))
     fig.suptitle(r"Figure 2b. Gimbal at pitch $88.5°$")
     fig.canvas.draw()
@@ -83,6 +88,6 @@ def test_a_cell_that_ends_names_its_figures_before_any_draw(monkeypatch):
 
     fig, ax = plt.subplots()
     ax.set_title(r"Figure 5. Gauss-Newton on $SE(3)$")
-    monkeypatch.setattr(Gcf, "figs", {5: _live(fig, 5).canvas.manager})   # open, as pyplot keeps a shown figure
+    monkeypatch.setattr(Gcf, "figs", {5: _live(fig, 5).canvas.manager})  # open, as pyplot keeps a shown figure
     name_open_figures()
     assert fig.canvas._figure_label == "Figure 5. Gauss-Newton on SE(3)"

@@ -71,8 +71,9 @@ def test_every_lesson_written_has_all_its_spec_exercises():
 def test_catalog_points_match_exercise_headings():
     catalog = THIS_COURSE.catalog
     for lesson in catalog.graded_lessons:
-        text = "\n".join(cells.source_text(c) for c in read_master(SOLUTIONS / lesson.filename).cells
-                         if c.cell_type == "markdown")
+        text = "\n".join(
+            cells.source_text(c) for c in read_master(SOLUTIONS / lesson.filename).cells if c.cell_type == "markdown"
+        )
         for exercise in lesson.exercises:
             points = f"{exercise.points:g} point" + ("" if exercise.points == 1 else "s")
             pattern = rf"`{re.escape(exercise.name)}`[^\n]*\({re.escape(points)}"

@@ -54,8 +54,7 @@ def klass(tmp_path_factory):
 
 
 def _grade(klass, out, *extra, timeout=420):
-    command = [sys.executable, "-m", "autograder", "grade", str(klass), "--out", str(out), "--lessons", LESSON,
-               *extra]
+    command = [sys.executable, "-m", "autograder", "grade", str(klass), "--out", str(out), "--lessons", LESSON, *extra]
     run = subprocess.run(command, cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=timeout)
     return run
 
@@ -70,9 +69,12 @@ def _without(value, fields):
 
 def _saved(out, folder="students", fields=TIME_FIELDS):
     """``{file name: canonical JSON text without the time fields}`` of a results folder."""
-    return {path.name: json.dumps(_without(json.loads(path.read_text(encoding="utf-8")), fields),
-                                  indent=1, sort_keys=True, ensure_ascii=False)
-            for path in sorted((Path(out) / folder).glob("*.json"))}
+    return {
+        path.name: json.dumps(
+            _without(json.loads(path.read_text(encoding="utf-8")), fields), indent=1, sort_keys=True, ensure_ascii=False
+        )
+        for path in sorted((Path(out) / folder).glob("*.json"))
+    }
 
 
 def _grades(out):
@@ -104,8 +106,9 @@ def test_cluster_results_equal_local_results(klass, tmp_path):
         assert (cluster / "feedback" / page.name).read_bytes() == page.read_bytes(), page.name
     gradescope = ("execution_time",)
     assert _saved(cluster, "results", gradescope) == _saved(local, "results", gradescope)
-    scores = {json.loads(text)["result"]["student_id"]: json.loads(text)["result"]["score"]
-              for text in expected.values()}
+    scores = {
+        json.loads(text)["result"]["student_id"]: json.loads(text)["result"]["score"] for text in expected.values()
+    }
     assert scores["ada"] == scores["dee"] > scores["cy"] > scores["bob"] == scores["eve"] == 0
 
 
@@ -119,9 +122,13 @@ def dask_cluster():
     # One task at a time per worker (the scheduler keeps the rest queued): a killed worker then takes down
     # exactly one student's grading, which the fault tests count on. With the default saturation (1.1) a
     # one-thread worker may hold a second, queued task, and its death counts against both.
-    with dask.config.set({"distributed.scheduler.worker-saturation": 1.0}), \
-            LocalCluster(n_workers=2, processes=True, threads_per_worker=1, host="127.0.0.1",
-                         dashboard_address="127.0.0.1:0") as cluster, Client(cluster) as client:
+    with (
+        dask.config.set({"distributed.scheduler.worker-saturation": 1.0}),
+        LocalCluster(
+            n_workers=2, processes=True, threads_per_worker=1, host="127.0.0.1", dashboard_address="127.0.0.1:0"
+        ) as cluster,
+        Client(cluster) as client,
+    ):
         yield cluster, client
 
 
@@ -147,8 +154,20 @@ def _kill_worker_grading(client, key=None, timeout=240):
 
 
 def _start_grading(klass, out, address):
-    command = [sys.executable, "-m", "autograder", "grade", str(klass), "--out", str(out), "--lessons", LESSON,
-               "--no-nbval", "--cluster", address]
+    command = [
+        sys.executable,
+        "-m",
+        "autograder",
+        "grade",
+        str(klass),
+        "--out",
+        str(out),
+        "--lessons",
+        LESSON,
+        "--no-nbval",
+        "--cluster",
+        address,
+    ]
     return subprocess.Popen(command, cwd=PROJECT_ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
@@ -197,9 +216,24 @@ def test_a_missing_path_or_scheduler_fails_clearly_and_writes_nothing(klass, tmp
     with socket.socket() as probe:  # a loopback port where nothing listens
         probe.bind(("127.0.0.1", 0))
         unused = probe.getsockname()[1]
-    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(klass), "--out", str(out),
-                          "--cluster", f"tcp://127.0.0.1:{unused}"], cwd=PROJECT_ROOT, capture_output=True,
-                         text=True, timeout=120, env=dict(os.environ, DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT="2s"))
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "autograder",
+            "grade",
+            str(klass),
+            "--out",
+            str(out),
+            "--cluster",
+            f"tcp://127.0.0.1:{unused}",
+        ],
+        cwd=PROJECT_ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=dict(os.environ, DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT="2s"),
+    )
     assert run.returncode == 2
     assert f"cannot reach the Dask scheduler at tcp://127.0.0.1:{unused} within 2 s" in run.stderr, run.stderr
     assert not out.exists()
@@ -214,8 +248,14 @@ def test_a_worker_with_a_weaker_sandbox_is_refused(klass, tmp_path):
     from distributed import LocalCluster
 
     out = tmp_path / "out"
-    with LocalCluster(n_workers=1, processes=True, threads_per_worker=1, host="127.0.0.1",
-                      dashboard_address="127.0.0.1:0", env={"AUTOGRADER_SANDBOX": "limits"}) as cluster:
+    with LocalCluster(
+        n_workers=1,
+        processes=True,
+        threads_per_worker=1,
+        host="127.0.0.1",
+        dashboard_address="127.0.0.1:0",
+        env={"AUTOGRADER_SANDBOX": "limits"},
+    ) as cluster:
         run = _grade(klass, out, "--no-nbval", "--cluster", cluster.scheduler_address, timeout=180)
     assert run.returncode == 2
     assert "refused worker" in run.stdout and "its sandbox is weaker than the driver's: limits" in run.stdout

@@ -47,9 +47,12 @@ def test_the_minimum_is_the_tightest_one():
     earlier = Version(f"{below.major}.{below.minor}.{below.micro - 1}") if below.micro else None
     if earlier is None:
         return
-    blocking = [name for name in _pins()
-                if metadata.metadata(name).get("Requires-Python")
-                and not SpecifierSet(metadata.metadata(name)["Requires-Python"]).contains(earlier)]
+    blocking = [
+        name
+        for name in _pins()
+        if metadata.metadata(name).get("Requires-Python")
+        and not SpecifierSet(metadata.metadata(name)["Requires-Python"]).contains(earlier)
+    ]
     assert blocking, f"nothing needs {MINIMUM_PYTHON}: the README could promise {earlier}"
 
 

@@ -33,8 +33,13 @@ def test_it_plots_the_students_iterations(monkeypatch):
     assert title.startswith("cost ")
 
 
-@pytest.mark.parametrize("error, words", [(NotImplementedError("not written"), "write align_gauss_newton"),
-                                          (ValueError("shapes"), "raised ValueError: shapes")])
+@pytest.mark.parametrize(
+    "error, words",
+    [
+        (NotImplementedError("not written"), "write align_gauss_newton"),
+        (ValueError("shapes"), "raised ValueError: shapes"),
+    ],
+)
 def test_it_says_what_stops_it(monkeypatch, error, words):
     def broken(P, Q, R0, iters=10):
         raise error
@@ -53,8 +58,9 @@ def test_the_gimbal_title_says_the_angle_its_slider_shows(monkeypatch):
     from coursekit import explorers
 
     captured = {}
-    monkeypatch.setattr(explorers, "_explore", lambda draw, controls, *args, **kwargs: captured.update(
-        draw=draw, controls=controls))
+    monkeypatch.setattr(
+        explorers, "_explore", lambda draw, controls, *args, **kwargs: captured.update(draw=draw, controls=controls)
+    )
     explorers.explore_gimbal(figure="5")
     plt.close("all")
     fig = plt.figure()

@@ -21,8 +21,9 @@ from autograder.sandbox.child.wire import Probe
 from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
 from support import THIS_COURSE
 
-pytestmark = pytest.mark.skipif(launcher.isolation()[0] != "namespaces",
-                                reason=f"the feeder lives in namespaces ({launcher.isolation()[1]})")
+pytestmark = pytest.mark.skipif(
+    launcher.isolation()[0] != "namespaces", reason=f"the feeder lives in namespaces ({launcher.isolation()[1]})"
+)
 
 SOURCE = r'''
 import gc, os, select, signal
@@ -76,8 +77,11 @@ def box(request):
         slot = warm.WarmSlot(0, launcher.Limits(), THIS_COURSE.support)
         slot.spawn()
         slot.wait_ready()
-    with StudentSandbox(support=THIS_COURSE.support, program={"01": LessonProgram(setup="import numpy as np", cells=[("code", SOURCE)])},
-                        slot=slot) as sandbox:
+    with StudentSandbox(
+        support=THIS_COURSE.support,
+        program={"01": LessonProgram(setup="import numpy as np", cells=[("code", SOURCE)])},
+        slot=slot,
+    ) as sandbox:
         yield sandbox
     if slot is not None:
         slot.close()

@@ -41,18 +41,26 @@ def _measure(fig, where):
 
     fig.set_dpi(DPI)
     renderer = fig.canvas.get_renderer()
-    fig.draw(renderer)                                      # runs the layout engine, as saving does
-    tight = fig.get_tightbbox(renderer).width * DPI         # the inline PNG (bbox_inches="tight")
-    canvas = fig.get_figwidth() * DPI                       # the ipympl canvas, and an explorer's frame
+    fig.draw(renderer)  # runs the layout engine, as saving does
+    tight = fig.get_tightbbox(renderer).width * DPI  # the inline PNG (bbox_inches="tight")
+    canvas = fig.get_figwidth() * DPI  # the ipympl canvas, and an explorer's frame
     shown = max(tight, canvas) if where == "frame" else tight
     scale = min(1.0, BOOK_COLUMN_PX / shown)
-    texts = [t for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip() and t.figure is fig
-             and _on_figure(t, renderer, fig)]
+    texts = [
+        t
+        for t in fig.findobj(Text)
+        if t.get_visible() and t.get_text().strip() and t.figure is fig and _on_figure(t, renderer, fig)
+    ]
     smallest = min(texts, key=lambda t: t.get_fontsize(), default=None)
-    return {"where": where, "title": _title(fig), "lab_px": round(max(tight, canvas)), "book_px": round(shown),
-            "scale": round(scale, 3),
-            "min_font_pt": None if smallest is None else round(smallest.get_fontsize() * scale, 2),
-            "min_font_text": None if smallest is None else smallest.get_text()[:60]}
+    return {
+        "where": where,
+        "title": _title(fig),
+        "lab_px": round(max(tight, canvas)),
+        "book_px": round(shown),
+        "scale": round(scale, 3),
+        "min_font_pt": None if smallest is None else round(smallest.get_fontsize() * scale, 2),
+        "min_font_text": None if smallest is None else smallest.get_text()[:60],
+    }
 
 
 def _on_figure(text, renderer, fig):
@@ -84,7 +92,7 @@ def survey(out_json, png_dir=None):
     def last_frame_only(animation, *args, **kwargs):
         # The survey measures the frames' figure, not the film: draw the last frame (pitch 90° for the
         # gimbal) and skip encoding the rest, which the book build and test_book.py do for real.
-        animation._fig.canvas.mpl_disconnect(animation._first_draw_id)   # no restart at frame 0 on the next draw
+        animation._fig.canvas.mpl_disconnect(animation._first_draw_id)  # no restart at frame 0 on the next draw
         animation._draw_frame(list(animation.new_frame_seq())[-1])
         return ""
 
@@ -113,8 +121,11 @@ def survey(out_json, png_dir=None):
         real_close("all")
 
     def close(fig=None):
-        figures = [plt.figure(n) for n in plt.get_fignums()] if fig in (None, "all") else (
-            [fig] if hasattr(fig, "canvas") else [])
+        figures = (
+            [plt.figure(n) for n in plt.get_fignums()]
+            if fig in (None, "all")
+            else ([fig] if hasattr(fig, "canvas") else [])
+        )
         for figure in figures:
             record(figure, "frame")
         real_close(fig)
@@ -127,7 +138,7 @@ def survey(out_json, png_dir=None):
         for cell in nb.cells:
             if cell.cell_type == "code":
                 result = shell.run_cell(cell.source.replace("%matplotlib", "# %matplotlib"), silent=True)
-                if not result.success:                 # a syntax error, or an exception while running
+                if not result.success:  # a syntax error, or an exception while running
                     raise RuntimeError(f"{path.name}: {result.error_before_exec or result.error_in_exec!r}")
         show()
     Path(out_json).write_text(json.dumps(records, indent=1), encoding="utf-8")
@@ -141,8 +152,14 @@ def figures(tmp_path_factory):
         old.unlink()
     env = dict(os.environ, MPLBACKEND="Agg", PYTHONHASHSEED="0", COURSEKIT_BOOK="1")
     env.pop("JPY_SESSION_NAME", None)
-    run = subprocess.run([sys.executable, __file__, str(out), str(ARTIFACTS)], cwd=ROOT, env=env,
-                         capture_output=True, text=True, timeout=600)
+    run = subprocess.run(
+        [sys.executable, __file__, str(out), str(ARTIFACTS)],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert run.returncode == 0, run.stderr[-3000:]
     print(f"figures: PNGs at the size shown in the book in {ARTIFACTS}")
     return json.loads(out.read_text(encoding="utf-8"))
@@ -156,8 +173,9 @@ def test_every_lesson_draws_figures_and_every_explorer_has_frames(figures):
     lessons = {entry["lesson"] for entry in figures}
     masters = {p.stem for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb") if not p.stem.startswith("00_")}
     assert masters <= lessons, f"no figure measured in {sorted(masters - lessons)}"
-    explorers = sum(source.read_text(encoding="utf-8").count("explore_")
-                    for source in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
+    explorers = sum(
+        source.read_text(encoding="utf-8").count("explore_") for source in SOLUTIONS.glob("[0-9][0-9]_*.ipynb")
+    )
     assert explorers and sum(entry["where"] == "frame" for entry in figures) >= 5
 
 
@@ -167,8 +185,12 @@ def test_every_figure_fits_the_jupyterlab_column(figures):
 
 
 def test_every_text_reads_at_9_pt_as_the_book_shows_it(figures):
-    small = [f"{_describe(e)}: {e['min_font_text']!r} at {e['min_font_pt']} pt ({e['book_px']} px wide, shown at "
-             f"{e['scale']:.2f})" for e in figures if e["min_font_pt"] is not None and e["min_font_pt"] < MIN_FONT_PT]
+    small = [
+        f"{_describe(e)}: {e['min_font_text']!r} at {e['min_font_pt']} pt ({e['book_px']} px wide, shown at "
+        f"{e['scale']:.2f})"
+        for e in figures
+        if e["min_font_pt"] is not None and e["min_font_pt"] < MIN_FONT_PT
+    ]
     assert not small, f"text under {MIN_FONT_PT} pt at the size the book shows:\n" + "\n".join(small)
 
 

@@ -26,9 +26,14 @@ FORK_KERNEL = PACKAGE / "sandbox" / "child" / "fork_kernel.py"
 @pytest.fixture
 def server(tmp_path):
     socket_path = str(tmp_path / ".kernels")
-    process = subprocess.Popen([sys.executable, str(FORK_KERNEL), "serve", socket_path], stdin=subprocess.PIPE,
-                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, cwd=tmp_path,
-                               env=dict(os.environ, MPLBACKEND="agg"))
+    process = subprocess.Popen(
+        [sys.executable, str(FORK_KERNEL), "serve", socket_path],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        cwd=tmp_path,
+        env=dict(os.environ, MPLBACKEND="agg"),
+    )
     assert process.stdout.readline().strip() == b"ready"
     yield socket_path, process
     process.stdin.close()
@@ -76,8 +81,10 @@ def test_forked_kernels_run_code_and_share_nothing(server, tmp_path):
     socket_path, _ = server
     first, first_client = _kernel(socket_path, tmp_path)
     try:
-        printed, error = _run(first_client, "import sys, os, numpy\nLEAK = 1\nnumpy.LEAKED = 1\n"
-                                            "print('numpy' in sys.modules, os.getcwd())")
+        printed, error = _run(
+            first_client,
+            "import sys, os, numpy\nLEAK = 1\nnumpy.LEAKED = 1\nprint('numpy' in sys.modules, os.getcwd())",
+        )
         assert error is None and printed.split() == ["True", str(tmp_path)]
     finally:
         first_client.stop_channels()
@@ -111,8 +118,13 @@ def test_interrupt_and_kill_reach_the_forked_kernel(server, tmp_path):
 
 def test_the_server_leaves_when_its_runner_does(tmp_path):
     socket_path = str(tmp_path / ".kernels")
-    process = subprocess.Popen([sys.executable, str(FORK_KERNEL), "serve", socket_path], stdin=subprocess.PIPE,
-                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, cwd=tmp_path)
+    process = subprocess.Popen(
+        [sys.executable, str(FORK_KERNEL), "serve", socket_path],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        cwd=tmp_path,
+    )
     assert process.stdout.readline().strip() == b"ready"
     process.stdin.close()
     assert process.wait(timeout=10) == 0

@@ -22,8 +22,13 @@ def _task(item, slot):
 def test_every_child_ends_with_a_reason():
     outcomes = {}
     started = time.monotonic()
-    fork_each(_task, ["fine", "killed", "raises", "exits", "hangs", "also fine"], jobs=2,
-              on_done=lambda item, problem: outcomes.__setitem__(item, problem), deadline_seconds=2)
+    fork_each(
+        _task,
+        ["fine", "killed", "raises", "exits", "hangs", "also fine"],
+        jobs=2,
+        on_done=lambda item, problem: outcomes.__setitem__(item, problem),
+        deadline_seconds=2,
+    )
     assert time.monotonic() - started < 30
     assert outcomes["fine"] is None and outcomes["also fine"] is None
     assert "SIGKILL" in outcomes["killed"]

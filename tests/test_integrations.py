@@ -11,8 +11,13 @@ from pathlib import Path
 import pytest
 
 from autograder.integrations.gradescope import build_bundle, unpack_bundle
-from autograder.integrations.nbgrader_course import (assignment_name, build_course, run_nbgrader, submit,
-                                                     with_environment_tools)
+from autograder.integrations.nbgrader_course import (
+    assignment_name,
+    build_course,
+    run_nbgrader,
+    submit,
+    with_environment_tools,
+)
 from autograder.lessons import cells
 from autograder.lessons.notebook_files import canonical_text, read_master
 from autograder.lessons.paths import COURSE, PROJECT_ROOT
@@ -75,10 +80,25 @@ def test_stock_nbgrader_grades_reference_full_and_release_zero(nbgrader_course, 
 
 
 def _grade_into(course_root, *extra, nbval=False):
-    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(course_root), "--out",
-                          str(course_root.parent / "out"), *([] if nbval else ["--no-nbval"]), "--nbgrader-db",
-                          str(course_root / "gradebook.db"), *extra], cwd=PROJECT_ROOT, capture_output=True,
-                         text=True, timeout=600)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "autograder",
+            "grade",
+            str(course_root),
+            "--out",
+            str(course_root.parent / "out"),
+            *([] if nbval else ["--no-nbval"]),
+            "--nbgrader-db",
+            str(course_root / "gradebook.db"),
+            *extra,
+        ],
+        cwd=PROJECT_ROOT,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert run.returncode == 0, run.stdout[-1500:] + run.stderr[-2000:]
     with open(course_root.parent / "out" / "grades.csv", newline="", encoding="utf-8") as handle:
         return {row["student_id"]: float(row["score"]) for row in csv.DictReader(handle)}
@@ -109,8 +129,9 @@ def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
             nb = read_master(released)
             for cell in nb.cells:
                 if cells.is_answer_cell(cell):
-                    cell.source = (CHEAT if cells.grade_id(cell) == first.exercises[0].name else "") \
-                        + cells.source_text(cell).replace("raise NotImplementedError", "return None  #")
+                    cell.source = (
+                        CHEAT if cells.grade_id(cell) == first.exercises[0].name else ""
+                    ) + cells.source_text(cell).replace("raise NotImplementedError", "return None  #")
             notebook.write_text(canonical_text(nb), encoding="utf-8")
         submit(root, student, first, notebook)
 
@@ -118,8 +139,9 @@ def test_nbgrader_db_lives_alongside_stock_nbgrader(tmp_path):
     assert ours == {"ada": first.points + first.hand_in_points, "ben": 0.0, "gina": 0.0}
     assert _scores(root, first) == ours
     with _gradebook(root) as gradebook:
-        point = gradebook.find_grade(cells.HAND_IN_GRADE_ID, first.filename[:-len(".ipynb")],
-                                     assignment_name(first), "ada")
+        point = gradebook.find_grade(
+            cells.HAND_IN_GRADE_ID, first.filename[: -len(".ipynb")], assignment_name(first), "ada"
+        )
         assert point.auto_score == point.max_score == first.hand_in_points == 1.0
     assert _scores(root, second) == {}, "a lesson nobody handed in got submissions"
 
@@ -157,8 +179,9 @@ def _run_gradescope(root, folder, sandbox=None):
     env.pop("AUTOGRADER_SANDBOX", None)
     if sandbox:
         env["AUTOGRADER_SANDBOX"] = sandbox
-    run = subprocess.run([str(root / "source" / "run_autograder")], env=env, capture_output=True, text=True,
-                         timeout=600)
+    run = subprocess.run(
+        [str(root / "source" / "run_autograder")], env=env, capture_output=True, text=True, timeout=600
+    )
     assert run.returncode == 0, run.stderr[-2000:]
     return json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
 
@@ -188,8 +211,9 @@ def test_gradescope_setup_runs_the_canary(gradescope_root):
 
 
 def test_gradescope_stubs_zero(gradescope_root, tmp_path):
-    data = _run_gradescope(gradescope_root, build_submission(tmp_path / "s", default=STUB,
-                                                             lessons=(LESSONS[0].number,)))
+    data = _run_gradescope(
+        gradescope_root, build_submission(tmp_path / "s", default=STUB, lessons=(LESSONS[0].number,))
+    )
     _check_schema(data)
     assert data["score"] == 0 and "not written yet" in data["tests"][0]["output"]
 
@@ -204,9 +228,23 @@ def test_gradescope_corrupt_notebook(gradescope_root, tmp_path):
 
 def test_grade_writes_gradescope_results(tmp_path):
     build_submission(tmp_path / "class" / "ada", lessons=(LESSONS[0].number,))
-    run = subprocess.run([sys.executable, "-m", "autograder", "grade", str(tmp_path / "class"), "--out",
-                          str(tmp_path / "out"), "--no-nbval", "--lessons", LESSONS[0].number],
-                         cwd=PROJECT_ROOT, capture_output=True, text=True)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "autograder",
+            "grade",
+            str(tmp_path / "class"),
+            "--out",
+            str(tmp_path / "out"),
+            "--no-nbval",
+            "--lessons",
+            LESSONS[0].number,
+        ],
+        cwd=PROJECT_ROOT,
+        capture_output=True,
+        text=True,
+    )
     assert run.returncode == 0, run.stderr[-2000:]
     data = json.loads(Path(tmp_path / "out" / "results" / "ada.json").read_text(encoding="utf-8"))
     _check_schema(data)

@@ -84,8 +84,14 @@ def test_a_mutant_of_each_family_is_killed_by_both_suites(family):
     assert not outcome.elsewhere, f"{mutant.key} also cost points on {outcome.elsewhere}"
 
 
-KINDS = ["rot_z_transposed", "rotate_point_single_only", "quat_conjugate_in_place", "exp_so3_delegates",
-         "is_rotation_crashes_on_shape", "align_gauss_newton_updates_R0"]
+KINDS = [
+    "rot_z_transposed",
+    "rotate_point_single_only",
+    "quat_conjugate_in_place",
+    "exp_so3_delegates",
+    "is_rotation_crashes_on_shape",
+    "align_gauss_newton_updates_R0",
+]
 
 
 @pytest.mark.parametrize("name", KINDS)
@@ -109,6 +115,8 @@ def test_listed_equivalents_are_correct_answers():
     by_key = {m.key: m for m in all_mutants(THIS_COURSE)}
     for key in keys:
         mutant = by_key[key]
-        assert not grade_hidden(THIS_COURSE, mutant.exercise, mutant.source).killed, f"{key} ({mutant.description}) loses points"
+        assert not grade_hidden(THIS_COURSE, mutant.exercise, mutant.source).killed, (
+            f"{key} ({mutant.description}) loses points"
+        )
         passed, printed = run_public_checks(THIS_COURSE, mutant.exercise, mutant.source)
         assert passed, f"{key} ({mutant.description}) fails a public check:\n{printed}"

@@ -38,18 +38,28 @@ def _lesson(mistake):
 
 def _others_hints(mistake, field):
     own = getattr(mistake, field)
-    return {getattr(m, field) for m in WRONG.values()
-            if m.exercise == mistake.exercise and getattr(m, field) and getattr(m, field) not in own
-            and own not in getattr(m, field)}
+    return {
+        getattr(m, field)
+        for m in WRONG.values()
+        if m.exercise == mistake.exercise
+        and getattr(m, field)
+        and getattr(m, field) not in own
+        and own not in getattr(m, field)
+    }
 
 
 def _ids(name):
     return f"lesson{_lesson(MISTAKES[name])}-{name}"
 
 
-@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.blas_sensitive)
-                                  if MISTAKES[name].exercise in KERNEL_SENSITIVE else name
-                                  for name in sorted(MISTAKES)], ids=_ids)
+@pytest.mark.parametrize(
+    "name",
+    [
+        pytest.param(name, marks=pytest.mark.blas_sensitive) if MISTAKES[name].exercise in KERNEL_SENSITIVE else name
+        for name in sorted(MISTAKES)
+    ],
+    ids=_ids,
+)
 def test_mistake_costs_points_on_its_exercise_only(name, tmp_path):
     mistake = MISTAKES[name]
     lesson = _lesson(mistake)
@@ -64,8 +74,10 @@ def test_mistake_costs_points_on_its_exercise_only(name, tmp_path):
     if mistake.kind != "mistake":
         return
     if mistake.classic:
-        assert earned <= available / 2, (f"{name} misses the core idea of {mistake.exercise} but earns "
-                                         f"{earned:g} of {available:g} points (at most half allowed)")
+        assert earned <= available / 2, (
+            f"{name} misses the core idea of {mistake.exercise} but earns "
+            f"{earned:g} of {available:g} points (at most half allowed)"
+        )
     failed = [c for e in result.exercises if e.name == mistake.exercise for c in e.checks if not c.passed]
     told = [f"{c.reason} | hint: {c.hint}" for c in failed]
     if mistake.hint:

@@ -46,16 +46,23 @@ def _child_env():
 def test_the_folder_has_the_course_layout(course):
     files = sorted(p.relative_to(course).as_posix() for p in course.rglob("*") if p.is_file())
     assert LAYOUT_FILE in files and not (course / "course").exists()  # course/ is written by release
-    assert {"solutions/00_start_here.ipynb", "solutions/01_rotation_matrices.ipynb",
-            "solutions/02_reading_angles.ipynb"} <= set(files)
-    assert {"hidden/test_01_rotation_matrices.py", "hidden/test_02_reading_angles.py"} == \
-        {f for f in files if f.startswith("hidden/")}
+    assert {
+        "solutions/00_start_here.ipynb",
+        "solutions/01_rotation_matrices.ipynb",
+        "solutions/02_reading_angles.ipynb",
+    } <= set(files)
+    assert {"hidden/test_01_rotation_matrices.py", "hidden/test_02_reading_angles.py"} == {
+        f for f in files if f.startswith("hidden/")
+    }
     for name in ("__init__.py", "contracts.py", "checks/lesson01.py", "checks/lesson02.py", *GENERIC_MODULES):
         assert f"solutions/coursekit/{name}" in files, name
     assert not [f for f in files if f.endswith(TEMPLATE_SUFFIX) or "__pycache__" in f], files
     found = Course.at(course)
-    assert (found.title, found.solutions, found.hidden_suite) == ("Turning the plane", course / "solutions",
-                                                                  course / "hidden")
+    assert (found.title, found.solutions, found.hidden_suite) == (
+        "Turning the plane",
+        course / "solutions",
+        course / "hidden",
+    )
 
 
 def test_the_masters_follow_the_conventions(course):
@@ -76,7 +83,8 @@ def test_the_masters_follow_the_conventions(course):
                 assert function.name == cells.grade_id(cell) and "Parameters" in docstring and "Returns" in docstring
         headings = [cells.source_text(c) for c in nb.cells if cells.source_text(c).startswith("### Exercise")]
         assert [h.splitlines()[0] for h in headings] == [
-            f"### Exercise {k}: `{e.name}` ({e.points:g} points)" for k, e in enumerate(lesson.exercises, 1)]
+            f"### Exercise {k}: `{e.name}` ({e.points:g} points)" for k, e in enumerate(lesson.exercises, 1)
+        ]
 
 
 def test_the_generic_modules_are_this_repositorys_byte_for_byte(course):
@@ -92,8 +100,10 @@ def test_the_hidden_tests_import_only_the_hidden_api_numpy_and_coursekit(course)
                 imported.update(alias.name for alias in node.names)
             elif isinstance(node, ast.ImportFrom):
                 imported.add(node.module)
-        assert imported <= {"numpy", "autograder.grading.hidden_api", "coursekit", "coursekit.diagnose"}, \
-            (path.name, imported)
+        assert imported <= {"numpy", "autograder.grading.hidden_api", "coursekit", "coursekit.diagnose"}, (
+            path.name,
+            imported,
+        )
 
 
 def test_a_folder_with_files_is_refused(tmp_path):
@@ -111,8 +121,20 @@ def test_a_folder_with_files_is_refused(tmp_path):
 
 
 def test_the_written_course_passes_ruff(course):
-    run = subprocess.run([sys.executable, "-m", "ruff", "check", "--no-cache", "--config",
-                          str(PROJECT_ROOT / "pyproject.toml"), str(course)], capture_output=True, text=True)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "ruff",
+            "check",
+            "--no-cache",
+            "--config",
+            str(PROJECT_ROOT / "pyproject.toml"),
+            str(course),
+        ],
+        capture_output=True,
+        text=True,
+    )
     assert run.returncode == 0, run.stdout + run.stderr
 
 
@@ -134,8 +156,15 @@ PUBLIC_CHECKS = textwrap.dedent("""
 
 
 def test_the_public_checks_pass_for_the_reference_and_fail_for_the_stubs(course):
-    run = subprocess.run([sys.executable, "-c", PUBLIC_CHECKS], input=json.dumps(answer_sources(course / "solutions")),
-                         cwd=course / "solutions", env=_child_env(), capture_output=True, text=True, timeout=120)
+    run = subprocess.run(
+        [sys.executable, "-c", PUBLIC_CHECKS],
+        input=json.dumps(answer_sources(course / "solutions")),
+        cwd=course / "solutions",
+        env=_child_env(),
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert run.returncode == 0, run.stderr
     report = json.loads(run.stdout)
     assert {n: tuple(names) for n, names in report["lessons"].items()} == LESSONS
@@ -184,12 +213,36 @@ HIDDEN_FIXTURES = textwrap.dedent("""
 def test_the_hidden_tests_pass_for_the_reference_and_fail_for_the_stubs(course, tmp_path, student):
     """Plain pytest with ``student`` and ``ref`` given by a plugin outside the course, as the grader gives them."""
     (tmp_path / "course_fixtures.py").write_text(HIDDEN_FIXTURES, encoding="utf-8")
-    env = _child_env() | {"COURSE_SOLUTIONS": str(course / "solutions"), "STUDENT": student,
-                          "PYTEST_DISABLE_PLUGIN_AUTOLOAD": "1",
-                          "PYTHONPATH": f"{tmp_path}{os.pathsep}{PROJECT_ROOT}"}
-    run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "course_fixtures",
-                          "--noconftest", "-c", os.devnull, "--rootdir", str(course / "hidden"), "-o",
-                          "addopts=", str(course / "hidden")], env=env, capture_output=True, text=True, timeout=300)
+    env = _child_env() | {
+        "COURSE_SOLUTIONS": str(course / "solutions"),
+        "STUDENT": student,
+        "PYTEST_DISABLE_PLUGIN_AUTOLOAD": "1",
+        "PYTHONPATH": f"{tmp_path}{os.pathsep}{PROJECT_ROOT}",
+    }
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "-q",
+            "-p",
+            "no:cacheprovider",
+            "-p",
+            "course_fixtures",
+            "--noconftest",
+            "-c",
+            os.devnull,
+            "--rootdir",
+            str(course / "hidden"),
+            "-o",
+            "addopts=",
+            str(course / "hidden"),
+        ],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     summary = run.stdout.strip().splitlines()[-1]
     assert summary.startswith("9 passed" if student == "reference" else "9 failed"), run.stdout[-3000:]
 
@@ -197,5 +250,7 @@ def test_the_hidden_tests_pass_for_the_reference_and_fail_for_the_stubs(course, 
 def test_the_masters_run_top_to_bottom_and_record_their_demonstrations(tmp_path):
     course = write_course(tmp_path / "plane", SUPPORT)  # record_outputs raises if a cell raises
     for filename in ("01_rotation_matrices.ipynb", "02_reading_angles.ipynb"):
-        shown = [cell.outputs for cell in read_master(course / "solutions" / filename).cells if cells.checks_output(cell)]
+        shown = [
+            cell.outputs for cell in read_master(course / "solutions" / filename).cells if cells.checks_output(cell)
+        ]
         assert shown and all(shown), f"{filename}: a demonstration cell has no recorded output"

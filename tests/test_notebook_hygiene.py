@@ -26,7 +26,7 @@ from autograder.lessons.paths import COURSE, SOLUTIONS
 
 MASTERS = sorted(p.name for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
 
-RECORD_FIGURES = '''
+RECORD_FIGURES = """
 import json as _json
 import matplotlib.pyplot as _plt
 _FIGURES = []
@@ -53,7 +53,7 @@ def _recording_show(*args, **kwargs):
     return _original_show(*args, **kwargs)
 
 _plt.show = _recording_show
-'''
+"""
 REPORT_FIGURES = "print('FIGURES:' + _json.dumps(_FIGURES))"
 BARE_REPR = re.compile(r"^(<[\w.]+ (object )?at 0x[0-9a-f]+>|<Figure size|\[<matplotlib|Text\(|<matplotlib)")
 UNIT = re.compile(r"\[[^\]]+\]|\([^)]+\)")
@@ -81,8 +81,12 @@ def _run(runs, name):
 @pytest.mark.parametrize("name", MASTERS)
 def test_runs_quickly_without_errors(runs, name):
     nb, seconds, figures = _run(runs, name)
-    errors = [(i, o.get("ename"), o.get("evalue")) for i, c in enumerate(nb.cells)
-              for o in c.get("outputs", []) if o.get("output_type") == "error"]
+    errors = [
+        (i, o.get("ename"), o.get("evalue"))
+        for i, c in enumerate(nb.cells)
+        for o in c.get("outputs", [])
+        if o.get("output_type") == "error"
+    ]
     assert not errors, errors[:3]
     assert seconds < 60, f"{name} took {seconds:.0f} s"
     assert figures is not None
@@ -91,16 +95,24 @@ def test_runs_quickly_without_errors(runs, name):
 @pytest.mark.parametrize("name", MASTERS)
 def test_prints_no_warnings(runs, name):
     nb, _, _ = _run(runs, name)
-    stderr = [(i, o["text"][:300]) for i, c in enumerate(nb.cells) for o in c.get("outputs", [])
-              if o.get("output_type") == "stream" and o.get("name") == "stderr"]
+    stderr = [
+        (i, o["text"][:300])
+        for i, c in enumerate(nb.cells)
+        for o in c.get("outputs", [])
+        if o.get("output_type") == "stream" and o.get("name") == "stderr"
+    ]
     assert not stderr, stderr[:3]
 
 
 @pytest.mark.parametrize("name", MASTERS)
 def test_no_bare_reprs(runs, name):
     nb, _, _ = _run(runs, name)
-    bare = [(i, o["data"]["text/plain"][:80]) for i, c in enumerate(nb.cells) for o in c.get("outputs", [])
-            if o.get("output_type") == "execute_result" and BARE_REPR.match(o["data"].get("text/plain", ""))]
+    bare = [
+        (i, o["data"]["text/plain"][:80])
+        for i, c in enumerate(nb.cells)
+        for o in c.get("outputs", [])
+        if o.get("output_type") == "execute_result" and BARE_REPR.match(o["data"].get("text/plain", ""))
+    ]
     assert not bare, bare
 
 
@@ -129,8 +141,11 @@ def test_figure_cells_end_with_show():
     for name in MASTERS:
         for index, cell in enumerate(read_master(SOLUTIONS / name).cells):
             source = cells.source_text(cell)
-            if cell.cell_type == "code" and re.search(r"plt\.(figure|subplots)\(|new_3d_axes\(", source) \
-                    and "plt.show()" not in source:
+            if (
+                cell.cell_type == "code"
+                and re.search(r"plt\.(figure|subplots)\(|new_3d_axes\(", source)
+                and "plt.show()" not in source
+            ):
                 missing.append(f"{name} cell {index + 1}")
     assert not missing, missing
 
@@ -138,8 +153,9 @@ def test_figure_cells_end_with_show():
 def test_every_lesson_links_to_the_next():
     names = sorted(p.name for p in SOLUTIONS.glob("[0-9][0-9]_*.ipynb"))
     for current, following in zip(names, names[1:] + [names[0]]):
-        text = "\n".join(cells.source_text(c) for c in read_master(SOLUTIONS / current).cells[-3:]
-                         if c.cell_type == "markdown")
+        text = "\n".join(
+            cells.source_text(c) for c in read_master(SOLUTIONS / current).cells[-3:] if c.cell_type == "markdown"
+        )
         assert f"]({following})" in text, f"{current} does not end with a link to {following}"
 
 
@@ -157,8 +173,9 @@ def test_no_placeholder_text_anywhere_a_student_looks():
 
 def test_start_page_lists_every_lesson_with_its_time():
     """00_start_here's table names each lesson, links to it, and quotes the time the lesson states."""
-    start = "\n".join(cells.source_text(c) for c in read_master(SOLUTIONS / "00_start_here.ipynb").cells
-                      if c.cell_type == "markdown")
+    start = "\n".join(
+        cells.source_text(c) for c in read_master(SOLUTIONS / "00_start_here.ipynb").cells if c.cell_type == "markdown"
+    )
     for name in MASTERS:
         if name.startswith("00_"):
             continue

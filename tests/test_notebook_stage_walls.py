@@ -16,7 +16,7 @@ import pytest
 from autograder.sandbox import launcher
 from support import build_submission, grade, references
 
-TRAP = '''
+TRAP = """
 import glob, json
 
 def _replay_everything():
@@ -38,14 +38,18 @@ def _replay_everything():
 
 _replay_everything()
 
-'''
+"""
+
 
 def _rotate_point(trap):
     source = references()["rotate_point"]
-    body = source.replace('    R_wb = np.asarray(R_wb, dtype=float)',
-                          '    if np.array_equal(np.asarray(p_b, dtype=float), [0.5, 0.3, 2.0]):\n'
-                          '        raise RuntimeError("only on the demonstration\'s point")\n'
-                          '    R_wb = np.asarray(R_wb, dtype=float)', 1)
+    body = source.replace(
+        "    R_wb = np.asarray(R_wb, dtype=float)",
+        "    if np.array_equal(np.asarray(p_b, dtype=float), [0.5, 0.3, 2.0]):\n"
+        '        raise RuntimeError("only on the demonstration\'s point")\n'
+        "    R_wb = np.asarray(R_wb, dtype=float)",
+        1,
+    )
     assert body != source
     return (TRAP if trap else "") + body
 
@@ -63,7 +67,8 @@ def test_a_demonstration_that_raises_costs_the_notebook_point(tmp_path, trap):
 
 @pytest.mark.skipif(launcher.isolation()[0] != "namespaces", reason="needs the namespace sandbox")
 def test_the_same_answer_without_its_flaw_keeps_the_point(tmp_path):
-    folder = build_submission(tmp_path / "student", {"rotate_point": TRAP + references()["rotate_point"]},
-                              lessons=("01",))
+    folder = build_submission(
+        tmp_path / "student", {"rotate_point": TRAP + references()["rotate_point"]}, lessons=("01",)
+    )
     lesson = grade(folder, lessons=("01",), nbval=True).lessons[0]
     assert lesson.run.points == lesson.run.max_points, lesson.run

@@ -24,9 +24,26 @@ def _nbval(path, junit):
     env = dict(os.environ, MPLBACKEND="Agg", PYTHONHASHSEED="0")
     env.pop("PYTEST_DISABLE_PLUGIN_AUTOLOAD", None)
     return subprocess.run(
-        [sys.executable, "-m", "pytest", "--nbval-lax", "-p", "no:cacheprovider", "-q", "-o", "addopts=",
-         "--nbval-cell-timeout=120", f"--junitxml={junit}", str(path)],
-        cwd=PROJECT_ROOT, env=env, capture_output=True, text=True, timeout=600)
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "--nbval-lax",
+            "-p",
+            "no:cacheprovider",
+            "-q",
+            "-o",
+            "addopts=",
+            "--nbval-cell-timeout=120",
+            f"--junitxml={junit}",
+            str(path),
+        ],
+        cwd=PROJECT_ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
 
 
 def _failures(junit):

@@ -18,8 +18,16 @@ from autograder.batch.class_run import Outputs, Stamp, save_result
 from autograder.grading.results import GRADED, ExerciseResult, LessonResult, StudentResult
 from autograder.reports import plugins
 from autograder.reports.exports import EXPORTERS, canvas
-from autograder.reports.lateness import (DEFAULT_RULE, ConfigError, LatePolicy, apply_late_policy, cutoff,
-                                         parse_config, penalty, per_day)
+from autograder.reports.lateness import (
+    DEFAULT_RULE,
+    ConfigError,
+    LatePolicy,
+    apply_late_policy,
+    cutoff,
+    parse_config,
+    penalty,
+    per_day,
+)
 
 DUE = datetime(2026, 12, 1, 12, 0, tzinfo=timezone.utc)
 LESSONS = ["01", "02", "03"]  # the config's lessons, given: these tests need no catalog
@@ -41,16 +49,27 @@ def test_the_registry_lists_both_kinds_with_the_built_in_plugins():
 
 def test_the_default_rule_is_per_day_and_gives_what_it_always_gave():
     assert DEFAULT_RULE == "per_day" and LatePolicy().rule == "per_day"
-    old_style = config('[lessons."01"]\ndue = 2026-12-01T12:00:00Z\n[late_policy]\npenalty_per_day = 0.1\n'
-                       'max_penalty = 0.5\n[lessons."03"]\ndue = 2026-12-01T12:00:00Z\npenalty_per_day = 0.25\n')
+    old_style = config(
+        '[lessons."01"]\ndue = 2026-12-01T12:00:00Z\n[late_policy]\npenalty_per_day = 0.1\n'
+        'max_penalty = 0.5\n[lessons."03"]\ndue = 2026-12-01T12:00:00Z\npenalty_per_day = 0.25\n'
+    )
     assert old_style.policy("01").rule == old_style.policy("03").rule == "per_day"
     assert penalty(old_style, "01", DUE + timedelta(days=1, hours=1)) == (
-        0.2, "handed in 2026-12-02 13:00 UTC, 1 day 1 h after the due date (2026-12-01 12:00 UTC): "
-             "2 days late, −20%")
+        0.2,
+        "handed in 2026-12-02 13:00 UTC, 1 day 1 h after the due date (2026-12-01 12:00 UTC): 2 days late, −20%",
+    )
     assert penalty(old_style, "01", DUE + timedelta(days=30))[0] == 0.5
     assert penalty(old_style, "03", DUE + timedelta(hours=1))[0] == 0.25
-    assert penalty(config('[late_policy]\nrule = "per_day"\npenalty_per_day = 0.1\n[lessons."01"]\n'
-                          'due = 2026-12-01T12:00:00Z\n'), "01", DUE + timedelta(days=1, hours=1))[0] == 0.2
+    assert (
+        penalty(
+            config(
+                '[late_policy]\nrule = "per_day"\npenalty_per_day = 0.1\n[lessons."01"]\ndue = 2026-12-01T12:00:00Z\n'
+            ),
+            "01",
+            DUE + timedelta(days=1, hours=1),
+        )[0]
+        == 0.2
+    )
 
 
 def _handed_in(tmp_path, moment):
@@ -59,21 +78,28 @@ def _handed_in(tmp_path, moment):
     (folder / "lesson01").mkdir(parents=True)
     (folder / "lesson01" / "01_frames.ipynb").write_text("{}", encoding="utf-8")
     (folder / "lesson01" / "timestamp.txt").write_text(f"{moment:%Y-%m-%d %H:%M:%S.%f} UTC", encoding="utf-8")
-    lesson = LessonResult("01", "Frames", "lesson01/01_frames.ipynb", GRADED,
-                          exercises=[ExerciseResult("rot_z", "01", max_points=4.0, points=4.0)])
+    lesson = LessonResult(
+        "01",
+        "Frames",
+        "lesson01/01_frames.ipynb",
+        GRADED,
+        exercises=[ExerciseResult("rot_z", "01", max_points=4.0, points=4.0)],
+    )
     return folder, StudentResult("ana", GRADED, lessons=[lesson])
 
 
 CUTOFF_CONFIGS = {  # the rule for every lesson, or for lesson 01 only (the others keep per_day)
     "course": '[late_policy]\nrule = "cutoff"\ngrace_minutes = 15\n[lessons."01"]\ndue = 2026-12-01T12:00:00Z\n',
-    "lesson": '[late_policy]\npenalty_per_day = 0.1\ngrace_minutes = 15\n'
-              '[lessons."01"]\ndue = 2026-12-01T12:00:00Z\nrule = "cutoff"\n',
+    "lesson": "[late_policy]\npenalty_per_day = 0.1\ngrace_minutes = 15\n"
+    '[lessons."01"]\ndue = 2026-12-01T12:00:00Z\nrule = "cutoff"\n',
 }
 
 
 @pytest.mark.parametrize("where", CUTOFF_CONFIGS)
-@pytest.mark.parametrize("after, points", [(timedelta(hours=-1), 4.0), (timedelta(minutes=14), 4.0),
-                                           (timedelta(minutes=16), 0.0), (timedelta(days=9), 0.0)])
+@pytest.mark.parametrize(
+    "after, points",
+    [(timedelta(hours=-1), 4.0), (timedelta(minutes=14), 4.0), (timedelta(minutes=16), 0.0), (timedelta(days=9), 0.0)],
+)
 def test_the_cutoff_rule_gives_full_points_before_due_and_grace_and_zero_after(tmp_path, where, after, points):
     course = config(CUTOFF_CONFIGS[where])
     assert course.policy("02").rule == ("cutoff" if where == "course" else "per_day")
@@ -92,14 +118,20 @@ def test_the_cutoff_rule_takes_max_penalty_when_the_config_caps_it():
     assert penalty(course, "01", DUE + timedelta(hours=1))[0] == 0.5
 
 
-@pytest.mark.parametrize("toml, expected", [
-    ('[late_policy]\nrule = "cut-off"\n', "course.toml [late_policy]: unknown late-policy rule 'cut-off'; "
-                                          "did you mean 'cutoff'? (known: cutoff, per_day)"),
-    ('[lessons."03"]\nrule = "per_week"\n', """course.toml [lessons."03"]: unknown late-policy rule 'per_week'"""),
-    ('[late_policy]\nrule = 3\n', 'rule must be a name in quotes, e.g. rule = "per_day"'),
-    ('rule = "cutoff"\n', "unknown key 'rule' (it belongs in [late_policy] or a lesson's table)"),
-    ('[late_policy]\nrules = "cutoff"\n', "did you mean 'rule'?"),
-])
+@pytest.mark.parametrize(
+    "toml, expected",
+    [
+        (
+            '[late_policy]\nrule = "cut-off"\n',
+            "course.toml [late_policy]: unknown late-policy rule 'cut-off'; "
+            "did you mean 'cutoff'? (known: cutoff, per_day)",
+        ),
+        ('[lessons."03"]\nrule = "per_week"\n', """course.toml [lessons."03"]: unknown late-policy rule 'per_week'"""),
+        ("[late_policy]\nrule = 3\n", 'rule must be a name in quotes, e.g. rule = "per_day"'),
+        ('rule = "cutoff"\n', "unknown key 'rule' (it belongs in [late_policy] or a lesson's table)"),
+        ('[late_policy]\nrules = "cutoff"\n', "did you mean 'rule'?"),
+    ],
+)
 def test_an_unknown_rule_is_refused_with_the_known_names(toml, expected):
     with pytest.raises(ConfigError, match=re.escape(expected)) as refused:
         config(toml)
@@ -110,14 +142,17 @@ def test_an_unknown_rule_is_refused_with_the_known_names(toml, expected):
 def test_an_unknown_exporter_names_the_known_ones():
     with pytest.raises(plugins.UnknownPlugin) as refused:
         EXPORTERS["canvass"]
-    assert str(refused.value) == f"unknown exporter 'canvass'; did you mean 'canvas'? (known: " \
-                                 f"{', '.join(plugins.names('exporter'))})"
+    assert (
+        str(refused.value) == f"unknown exporter 'canvass'; did you mean 'canvas'? (known: "
+        f"{', '.join(plugins.names('exporter'))})"
+    )
     assert isinstance(refused.value, KeyError) and "canvass" not in EXPORTERS  # still a mapping, as the dict was
 
 
 def test_a_name_cannot_be_taken_twice():
-    with pytest.raises(ValueError, match="exporter 'canvas' is already registered by "
-                                         "autograder.reports.exports.canvas.write"):
+    with pytest.raises(
+        ValueError, match="exporter 'canvas' is already registered by autograder.reports.exports.canvas.write"
+    ):
         plugins.register("exporter", "canvas")(lambda results, catalog, roster=(), missing="zero": "")
 
 
@@ -142,10 +177,16 @@ def test_a_registered_exporter_is_offered_by_the_export_command(names_only, tmp_
 
     outputs = Outputs(tmp_path / "results")
     for student, points in (("ana", 4.0), ("bo", 1.5)):
-        lesson = LessonResult("01", "Frames", "01_frames.ipynb", GRADED,
-                              exercises=[ExerciseResult("rot_z", "01", max_points=4.0, points=points)])
-        save_result(outputs, StudentResult(student, GRADED, lessons=[lesson]), Stamp("0" * 16, {}),
-                    "2026-12-01T12:00:00+00:00")
+        lesson = LessonResult(
+            "01",
+            "Frames",
+            "01_frames.ipynb",
+            GRADED,
+            exercises=[ExerciseResult("rot_z", "01", max_points=4.0, points=points)],
+        )
+        save_result(
+            outputs, StudentResult(student, GRADED, lessons=[lesson]), Stamp("0" * 16, {}), "2026-12-01T12:00:00+00:00"
+        )
     before = signal.getsignal(signal.SIGINT)
     try:
         status = main(["export", "--out", str(outputs.root), "--to", "names-only"])

@@ -44,7 +44,7 @@ def _partial(W, first, last, factorial=True):
 
 
 def _entrywise(W, n):
-    return sum(W ** k / np.prod(np.arange(1, k + 1)) for k in range(n))
+    return sum(W**k / np.prod(np.arange(1, k + 1)) for k in range(n))
 
 
 def _rodrigues_swapped(w):
@@ -84,8 +84,8 @@ def _eigen_row_lines(R):
     real, pair = np.real(vectors[:, k]), np.real(vectors[:, (k + 1) % 3])
     rows = []
     for flip in (1.0, -1.0):
-        rows.append([real[0], flip * pair[0], flip * pair[0]])      # real eigenvalue first: row 0
-        rows.append([flip * pair[2], flip * pair[2], real[2]])      # real eigenvalue last: row 2
+        rows.append([real[0], flip * pair[0], flip * pair[0]])  # real eigenvalue first: row 0
+        rows.append([flip * pair[2], flip * pair[2], real[2]])  # real eigenvalue last: row 2
     return np.array([_unit(row) for row in rows])
 
 
@@ -93,16 +93,25 @@ def _eigen_slips(R, keys):
     """What each axis_from_eigen slip returns for R (the module keeps those that differ from the axis)."""
     values, vectors = np.linalg.eig(R)
     sym_values, sym_vectors = np.linalg.eigh(R)
-    slips = {"row": _eigen_row_lines(R), "first": _unit(vectors[:, 0]), "first_eigenvalue": complex(values[0]),
-             "svd_of_R": np.linalg.svd(R)[2][-1],
-             "eigh": sym_vectors[:, int(np.argmin(np.abs(sym_values - 1.0)))]}
+    slips = {
+        "row": _eigen_row_lines(R),
+        "first": _unit(vectors[:, 0]),
+        "first_eigenvalue": complex(values[0]),
+        "svd_of_R": np.linalg.svd(R)[2][-1],
+        "eigh": sym_vectors[:, int(np.argmin(np.abs(sym_values - 1.0)))],
+    }
     return {key: slips[key] for key in keys}
 
 
 def _log_inputs():
-    return {"quarter": L.QUARTER_TURN_Z, "tiny_1e-08": _exp(1e-8 * L.AXIS_221), "tiny_0.001": _exp(1e-3 * L.AXIS_221),
-            "half_z": L.HALF_TURN_Z, "half_diagonal": L.HALF_TURN_DIAGONAL,
-            "below_pi": _exp((np.pi - 1e-6) * L.AXIS_BELOW_PI)}
+    return {
+        "quarter": L.QUARTER_TURN_Z,
+        "tiny_1e-08": _exp(1e-8 * L.AXIS_221),
+        "tiny_0.001": _exp(1e-3 * L.AXIS_221),
+        "half_z": L.HALF_TURN_Z,
+        "half_diagonal": L.HALF_TURN_DIAGONAL,
+        "below_pi": _exp((np.pi - 1e-6) * L.AXIS_BELOW_PI),
+    }
 
 
 def expected_constants():
@@ -122,26 +131,39 @@ def expected_constants():
         "SKEW_SAMPLE": _hat(w),
         "HAT_SYMMETRIC_AT_W": np.array([[0.0, z, y], [z, 0.0, x], [y, x, 0.0]]),
         "HAT_PERMUTED_AT_W": [_hat(w[list(order)]) for order in L.PERMUTATIONS],
-        "E_X_HAT": _hat([1.0, 0.0, 0.0]), "E_Y_HAT": _hat([0.0, 1.0, 0.0]), "E_Z_HAT": _hat([0.0, 0.0, 1.0]),
+        "E_X_HAT": _hat([1.0, 0.0, 0.0]),
+        "E_Y_HAT": _hat([0.0, 1.0, 0.0]),
+        "E_Z_HAT": _hat([0.0, 0.0, 1.0]),
         "BRACKET_2X2": L.A_2X2 @ L.B_2X2 - L.B_2X2 @ L.A_2X2,
         "BRACKET_SLIPS": {
-            "e_x, e_y": {"anticommutator": L.E_X_HAT @ L.E_Y_HAT + L.E_Y_HAT @ L.E_X_HAT,
-                         "entrywise": L.E_X_HAT * L.E_Y_HAT - L.E_Y_HAT * L.E_X_HAT,
-                         "AB": L.E_X_HAT @ L.E_Y_HAT, "BA": L.E_Y_HAT @ L.E_X_HAT},
-            "2x2": {"anticommutator": L.A_2X2 @ L.B_2X2 + L.B_2X2 @ L.A_2X2,
-                    "entrywise": L.A_2X2 * L.B_2X2 - L.B_2X2 * L.A_2X2,
-                    "AB": L.A_2X2 @ L.B_2X2, "BA": L.B_2X2 @ L.A_2X2}},
+            "e_x, e_y": {
+                "anticommutator": L.E_X_HAT @ L.E_Y_HAT + L.E_Y_HAT @ L.E_X_HAT,
+                "entrywise": L.E_X_HAT * L.E_Y_HAT - L.E_Y_HAT * L.E_X_HAT,
+                "AB": L.E_X_HAT @ L.E_Y_HAT,
+                "BA": L.E_Y_HAT @ L.E_X_HAT,
+            },
+            "2x2": {
+                "anticommutator": L.A_2X2 @ L.B_2X2 + L.B_2X2 @ L.A_2X2,
+                "entrywise": L.A_2X2 * L.B_2X2 - L.B_2X2 * L.A_2X2,
+                "AB": L.A_2X2 @ L.B_2X2,
+                "BA": L.B_2X2 @ L.A_2X2,
+            },
+        },
         "SERIES_AT_SKEW": {n: _partial(W, 0, n - 1) for n in (1, 2, 3, 4)},
         "SERIES_ENTRYWISE_AT_SKEW": {n: _entrywise(W, n) for n in (1, 2, 3)},
         "SERIES_NO_FACTORIAL_AT_SKEW": {n: _partial(W, 0, n - 1, factorial=False) for n in (1, 2, 3)},
         "QUARTER_W": Q,
         "SERIES_ENTRYWISE_QUARTER_30": _entrywise(Q, 30),
         "SERIES_NO_FACTORIAL_QUARTER_30": _partial(Q, 0, 29, factorial=False),
-        "EXP_SLIPS": {name: {"swapped": _rodrigues_swapped(v), "unnormalised": _rodrigues_unnormalised(v)}
-                      for name, v in (("quarter", [0.0, 0.0, np.pi / 2]), ("sample", w), ("tiny", [0.0, 0.0, 1e-8]))},
+        "EXP_SLIPS": {
+            name: {"swapped": _rodrigues_swapped(v), "unnormalised": _rodrigues_unnormalised(v)}
+            for name, v in (("quarter", [0.0, 0.0, np.pi / 2]), ("sample", w), ("tiny", [0.0, 0.0, 1e-8]))
+        },
         "LOG_SLIPS": log_slips,
-        "EIGEN_SLIPS": {"two_rad": _eigen_slips(_exp(2.0 * L.AXIS_221), ("row", "svd_of_R", "eigh")),
-                        "half_z": _eigen_slips(L.HALF_TURN_Z, ("first", "first_eigenvalue"))},
+        "EIGEN_SLIPS": {
+            "two_rad": _eigen_slips(_exp(2.0 * L.AXIS_221), ("row", "svd_of_R", "eigh")),
+            "half_z": _eigen_slips(L.HALF_TURN_Z, ("first", "first_eigenvalue")),
+        },
     }
 
 
@@ -194,17 +216,28 @@ def test_fixed_inputs_are_what_the_literals_assume():
 def _code_only(source):
     """The module's code without its strings and comments (hint texts may name formulas)."""
     tokens = tokenize.generate_tokens(io.StringIO(source).readline)
-    return " ".join(t.string for t in tokens if t.type not in (tokenize.STRING, tokenize.COMMENT)
-                    and not (t.type == getattr(tokenize, "FSTRING_MIDDLE", -1)))
+    return " ".join(
+        t.string
+        for t in tokens
+        if t.type not in (tokenize.STRING, tokenize.COMMENT) and not (t.type == getattr(tokenize, "FSTRING_MIDDLE", -1))
+    )
 
 
 def test_the_module_computes_no_answer():
     """No hat, series sum, Rodrigues, atan2 or arccos angle, eigen or SVD pick in the shipped code."""
     code = _code_only(inspect.getsource(L))
-    banned = [r"\b_skew\b", r"\b_partial\b", r"\b_log_parts\b", r"\bnp \. (arctan2|arccos|cos|tan)\b",
-              r"\bnp \. linalg \. (eig|eigh|svd|matrix_power)\b", r"\b(E_X_HAT|E_Y_HAT|A_2X2|B_2X2) @",
-              r"@ (E_X_HAT|E_Y_HAT|A_2X2|B_2X2)\b", r"\b(SKEW_SAMPLE|QUARTER_W|term) @", r"@ (SKEW_SAMPLE|QUARTER_W)\b",
-              r"\*\* k\b"]
+    banned = [
+        r"\b_skew\b",
+        r"\b_partial\b",
+        r"\b_log_parts\b",
+        r"\bnp \. (arctan2|arccos|cos|tan)\b",
+        r"\bnp \. linalg \. (eig|eigh|svd|matrix_power)\b",
+        r"\b(E_X_HAT|E_Y_HAT|A_2X2|B_2X2) @",
+        r"@ (E_X_HAT|E_Y_HAT|A_2X2|B_2X2)\b",
+        r"\b(SKEW_SAMPLE|QUARTER_W|term) @",
+        r"@ (SKEW_SAMPLE|QUARTER_W)\b",
+        r"\*\* k\b",
+    ]
     found = [pattern for pattern in banned if re.search(pattern, code)]
     assert not found, f"the public lesson 03 checks compute something they must only store: {found}"
 
@@ -212,4 +245,6 @@ def test_the_module_computes_no_answer():
 def test_bracket_of_generic_hats_is_the_hat_of_the_cross_product():
     assert np.allclose(L.HAT_V_SAMPLE, _hat(L.V_SAMPLE), rtol=0, atol=1e-15)
     assert np.allclose(L.HAT_W_CROSS_V, _hat(np.cross(L.W_SAMPLE, L.V_SAMPLE)), rtol=0, atol=1e-15)
-    assert np.allclose(L.SKEW_SAMPLE @ L.HAT_V_SAMPLE - L.HAT_V_SAMPLE @ L.SKEW_SAMPLE, L.HAT_W_CROSS_V, rtol=0, atol=1e-14)
+    assert np.allclose(
+        L.SKEW_SAMPLE @ L.HAT_V_SAMPLE - L.HAT_V_SAMPLE @ L.SKEW_SAMPLE, L.HAT_W_CROSS_V, rtol=0, atol=1e-14
+    )

@@ -14,12 +14,12 @@ def test_the_rolled_body_and_its_spin():
     R = Rotation.from_rotvec([np.pi / 2, 0.0, 0.0]).as_matrix()
     assert np.allclose(checks.ROLLED, R, atol=1e-15)
     omega_w = np.array([0.0, 0.0, 1.0])
-    R_dot = skew(omega_w) @ R                                     # lesson 03: dR/dt = [ω_w]× R
+    R_dot = skew(omega_w) @ R  # lesson 03: dR/dt = [ω_w]× R
     assert np.allclose(checks.ROLLED_DOT, R_dot, atol=1e-15)
-    h = 1e-7                                                      # and the same by a finite difference
+    h = 1e-7  # and the same by a finite difference
     assert np.allclose(checks.ROLLED_DOT, (Rotation.from_rotvec(h * omega_w).as_matrix() @ R - R) / h, atol=1e-6)
     assert np.allclose(checks.WORLD_RATE, omega_w)
-    assert np.allclose(checks.BODY_RATE, R.T @ omega_w, atol=1e-15)   # ω_w = R ω_b
+    assert np.allclose(checks.BODY_RATE, R.T @ omega_w, atol=1e-15)  # ω_w = R ω_b
 
 
 def test_the_slips():

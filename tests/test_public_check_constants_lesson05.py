@@ -35,24 +35,35 @@ def rz_ry_rx(yaw, pitch, roll):
 
 def without_lock_branch(R):
     """Mistake: the general atan2 formulas of matrix_to_euler_zyx used at (and next to) the lock too."""
-    return np.array([np.arctan2(R[1, 0], R[0, 0]), np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])),
-                     np.arctan2(R[2, 1], R[2, 2])])
+    return np.array(
+        [np.arctan2(R[1, 0], R[0, 0]), np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])), np.arctan2(R[2, 1], R[2, 2])]
+    )
 
 
 def lecture_angles(q, normalise):
     """Mistake: the lecture's atan2/asin formulas for quat_to_euler_zyx (asin clipped), no lock branch."""
     q = np.asarray(q, dtype=float)
     w, x, y, z = q / np.linalg.norm(q) if normalise else q
-    return np.array([np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)),
-                     np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
-                     np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))])
+    return np.array(
+        [
+            np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)),
+            np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
+            np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y)),
+        ]
+    )
 
 
 def all_plus_quat(yaw, pitch, roll):
     """Mistake: the z-y-x half-angle quaternion with every mixed product added (the minus signs lost)."""
     cy, sy, cp, sp, cr, sr = (f(a / 2) for a in (yaw, pitch, roll) for f in (np.cos, np.sin))
-    return np.array([cy * cp * cr + sy * sp * sr, cy * cp * sr + sy * sp * cr,
-                     cy * sp * cr + sy * cp * sr, sy * cp * cr + cy * sp * sr])
+    return np.array(
+        [
+            cy * cp * cr + sy * sp * sr,
+            cy * cp * sr + sy * sp * cr,
+            cy * sp * cr + sy * cp * sr,
+            sy * cp * cr + cy * sp * sr,
+        ]
+    )
 
 
 def rates_matrix(pitch, roll):
@@ -100,8 +111,10 @@ def test_lock_quaternions_are_scipys_zyx(sign):
 
 @pytest.mark.parametrize("sign", SIGNS)
 def test_lecture_angles_at_and_next_to_the_lock(sign):
-    for stored, q in ((checks.LECTURE_AT_LOCK[sign], checks.QUAT_AT_LOCK[sign]),
-                      (checks.LECTURE_NEAR_LOCK[sign], checks.QUAT_NEAR_LOCK[sign])):
+    for stored, q in (
+        (checks.LECTURE_AT_LOCK[sign], checks.QUAT_AT_LOCK[sign]),
+        (checks.LECTURE_NEAR_LOCK[sign], checks.QUAT_NEAR_LOCK[sign]),
+    ):
         assert len(stored) == len(checks.NORMS_OF_A_UNIT_QUATERNION)
         for angles, norm in zip(stored, checks.NORMS_OF_A_UNIT_QUATERNION):
             assert_same(angles, lecture_angles(q / norm, normalise=False))
@@ -110,8 +123,10 @@ def test_lecture_angles_at_and_next_to_the_lock(sign):
 @pytest.mark.parametrize("sign", SIGNS)
 def test_this_machines_lecture_angles_are_among_the_stored(sign):
     """Whatever kernel computes |q| here, the slip a student makes on this machine is recognised by the hint."""
-    for stored, q in ((checks.LECTURE_AT_LOCK[sign], checks.QUAT_AT_LOCK[sign]),
-                      (checks.LECTURE_NEAR_LOCK[sign], checks.QUAT_NEAR_LOCK[sign])):
+    for stored, q in (
+        (checks.LECTURE_AT_LOCK[sign], checks.QUAT_AT_LOCK[sign]),
+        (checks.LECTURE_NEAR_LOCK[sign], checks.QUAT_NEAR_LOCK[sign]),
+    ):
         assert np.linalg.norm(q) in checks.NORMS_OF_A_UNIT_QUATERNION
         here = lecture_angles(q, normalise=True)
         assert min(np.max(np.abs(here - angles)) for angles in stored) <= 1e-12, f"{here!r} is not stored"
@@ -128,7 +143,7 @@ def test_rates_matrix_mistakes_at_the_finite_difference_attitude():
     E = rates_matrix(pitch, roll)
     assert_same(checks.RATES_COLUMNS_REVERSED, E[:, ::-1])
     assert_same(checks.RATES_TRANSPOSED, E.T)
-    Rx, Ry = Exp([roll, 0.0, 0.0]), Exp([0.0, pitch, 0.0])      # Rx(roll) where Rx(roll)ᵀ belongs
+    Rx, Ry = Exp([roll, 0.0, 0.0]), Exp([0.0, pitch, 0.0])  # Rx(roll) where Rx(roll)ᵀ belongs
     flipped = np.column_stack([Rx @ Ry.T @ [0.0, 0.0, 1.0], Rx @ [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])
     assert_same(checks.RATES_RX_NOT_TRANSPOSED, flipped)
 

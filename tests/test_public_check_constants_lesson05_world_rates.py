@@ -23,8 +23,11 @@ def world_rates(yaw, pitch):
 
 
 def test_the_answer_matches_finite_differences():
-    assert np.allclose(world_rates(checks.YAW, checks.PITCH),
-                       checks._world_rates_by_differences(checks.YAW, checks.PITCH, 0.4), atol=1e-8)
+    assert np.allclose(
+        world_rates(checks.YAW, checks.PITCH),
+        checks._world_rates_by_differences(checks.YAW, checks.PITCH, 0.4),
+        atol=1e-8,
+    )
 
 
 def test_the_slips():

@@ -15,8 +15,8 @@ from coursekit.lie import Exp, Log, quat_product, skew
 pytestmark = pytest.mark.blas_sensitive  # stored numbers of BLAS/LAPACK: run again under another kernel by .ci/run
 
 R, D = checks.R_SAMPLE, checks.D_SAMPLE
-P = np.array([0.5, -1.0, 2.0])                        # the point of the first-order check of jacobian_rotate_point
-W_INV = np.array([0.9, -1.2, 0.6])                     # the w of the first-order check of right_jacobian_inv_so3
+P = np.array([0.5, -1.0, 2.0])  # the point of the first-order check of jacobian_rotate_point
+W_INV = np.array([0.9, -1.2, 0.6])  # the w of the first-order check of right_jacobian_inv_so3
 
 
 def same(stored, computed, rel=1e-12):
@@ -31,22 +31,29 @@ def jr_closed_form(w):
     return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
 
 
-@pytest.mark.parametrize("name, slip", [
-    ("EXP_D_R_AT_SAMPLE", lambda: Exp(D) @ R),
-    ("R_EXP_D_AT_SAMPLE", lambda: R @ Exp(D)),
-    ("R_EXP_MINUS_D_AT_SAMPLE", lambda: R @ Exp(-D)),
-    ("EXP_MINUS_D_R_AT_SAMPLE", lambda: Exp(-D) @ R),
-    ("RT_EXP_D_AT_SAMPLE", lambda: R.T @ Exp(D)),
-    ("EXP_D_RT_AT_SAMPLE", lambda: Exp(D) @ R.T),
-    ("JRP_SIGN_FLIPPED", lambda: R @ skew(P)),
-    ("JRP_TRANSPOSED", lambda: (-R @ skew(P)).T),
-    ("JRP_FACTORS_SWAPPED", lambda: -skew(P) @ R),
-    ("JR_AT_W", lambda: jr_closed_form(W_INV)),
-    ("JR_INV_FIRST_ORDER_AT_W", lambda: np.eye(3) + 0.5 * skew(W_INV)),
-    ("JR_INV_TINY", lambda: np.eye(3) + 0.5 * skew(1e-9 * np.array([0.0, 0.6, 0.8]))),
-    ("QUAT_NOT_NORMALISED", lambda: quat_product([np.cos(0.4), np.sin(0.4), 0.0, 0.0],
-                                                 np.concatenate([[1.0], np.array([0.6, -0.8, 0.5]) / 2.0]))),
-])
+@pytest.mark.parametrize(
+    "name, slip",
+    [
+        ("EXP_D_R_AT_SAMPLE", lambda: Exp(D) @ R),
+        ("R_EXP_D_AT_SAMPLE", lambda: R @ Exp(D)),
+        ("R_EXP_MINUS_D_AT_SAMPLE", lambda: R @ Exp(-D)),
+        ("EXP_MINUS_D_R_AT_SAMPLE", lambda: Exp(-D) @ R),
+        ("RT_EXP_D_AT_SAMPLE", lambda: R.T @ Exp(D)),
+        ("EXP_D_RT_AT_SAMPLE", lambda: Exp(D) @ R.T),
+        ("JRP_SIGN_FLIPPED", lambda: R @ skew(P)),
+        ("JRP_TRANSPOSED", lambda: (-R @ skew(P)).T),
+        ("JRP_FACTORS_SWAPPED", lambda: -skew(P) @ R),
+        ("JR_AT_W", lambda: jr_closed_form(W_INV)),
+        ("JR_INV_FIRST_ORDER_AT_W", lambda: np.eye(3) + 0.5 * skew(W_INV)),
+        ("JR_INV_TINY", lambda: np.eye(3) + 0.5 * skew(1e-9 * np.array([0.0, 0.6, 0.8]))),
+        (
+            "QUAT_NOT_NORMALISED",
+            lambda: quat_product(
+                [np.cos(0.4), np.sin(0.4), 0.0, 0.0], np.concatenate([[1.0], np.array([0.6, -0.8, 0.5]) / 2.0])
+            ),
+        ),
+    ],
+)
 def test_stored_slip_matches_its_definition(name, slip):
     same(getattr(checks, name), slip())
 
@@ -64,11 +71,15 @@ def test_boxplus_slips_at_the_quarter_turns_are_the_products_they_name():
     same(left[3], Exp(d) @ QX.T)
 
 
-@pytest.mark.parametrize("table, truth", [
-    ("RIGHT_SLIPS_AT_SAMPLE", lambda: R @ Exp(D)), ("LEFT_SLIPS_AT_SAMPLE", lambda: Exp(D) @ R),
-    ("RIGHT_SLIPS_AT_QUARTER", lambda: checks.QUARTER_TURN_X @ checks.QUARTER_TURN_Z),
-    ("LEFT_SLIPS_AT_QUARTER", lambda: checks.QUARTER_TURN_Z @ checks.QUARTER_TURN_X),
-])
+@pytest.mark.parametrize(
+    "table, truth",
+    [
+        ("RIGHT_SLIPS_AT_SAMPLE", lambda: R @ Exp(D)),
+        ("LEFT_SLIPS_AT_SAMPLE", lambda: Exp(D) @ R),
+        ("RIGHT_SLIPS_AT_QUARTER", lambda: checks.QUARTER_TURN_X @ checks.QUARTER_TURN_Z),
+        ("LEFT_SLIPS_AT_QUARTER", lambda: checks.QUARTER_TURN_Z @ checks.QUARTER_TURN_X),
+    ],
+)
 def test_no_boxplus_slip_is_the_right_answer(table, truth):
     for value, hint in getattr(checks, table):
         assert np.max(np.abs(np.asarray(value) - truth())) > 1e-3, hint
@@ -76,8 +87,9 @@ def test_no_boxplus_slip_is_the_right_answer(table, truth):
 
 def test_jr_at_w_is_the_jacobian_measured_by_central_differences():
     h = 1e-6
-    measured = np.column_stack([(Log(Exp(W_INV).T @ Exp(W_INV + h * e)) - Log(Exp(W_INV).T @ Exp(W_INV - h * e)))
-                                / (2 * h) for e in np.eye(3)])
+    measured = np.column_stack(
+        [(Log(Exp(W_INV).T @ Exp(W_INV + h * e)) - Log(Exp(W_INV).T @ Exp(W_INV - h * e))) / (2 * h) for e in np.eye(3)]
+    )
     assert np.max(np.abs(checks.JR_AT_W - measured)) < 1e-8
 
 
@@ -86,7 +98,7 @@ def test_tiny_angle_series_and_naive_coefficient(theta):
     w = theta * np.array([0.6, 0.0, 0.8])
     series, naive = checks.JR_TINY[theta]
     same(series, np.eye(3) - 0.5 * skew(w) + skew(w) @ skew(w) / 6.0)
-    assert naive == -(1.0 - np.cos(theta)) / theta**2          # exactly what the closed form computes in floats
+    assert naive == -(1.0 - np.cos(theta)) / theta**2  # exactly what the closed form computes in floats
 
 
 def test_the_boxplus_fixture_of_numerical_jacobian_is_the_right_perturbation():
@@ -98,17 +110,20 @@ def test_the_boxplus_fixture_of_numerical_jacobian_is_the_right_perturbation():
 def test_fixed_step_is_read_off_the_moves_of_the_students_function():
     """The step hint watches the student's own function: a fixed forward step of 1e-12 is named, the lecture's
     relative steps and central differences are not."""
+
     def fixed(h):
         def numerical_jacobian(f, x, boxplus=None):
             x = np.asarray(x, dtype=float)
             f0 = np.asarray(f(x), dtype=float)
             return np.column_stack([(np.asarray(f(x + h * e), dtype=float) - f0) / h for e in np.eye(x.size)])
+
         return numerical_jacobian
 
     def central(f, x, boxplus=None):
         x = np.asarray(x, dtype=float)
-        return np.column_stack([(np.asarray(f(x + 1e-6 * e)) - np.asarray(f(x - 1e-6 * e))) / 2e-6
-                                for e in np.eye(x.size)])
+        return np.column_stack(
+            [(np.asarray(f(x + 1e-6 * e)) - np.asarray(f(x - 1e-6 * e))) / 2e-6 for e in np.eye(x.size)]
+        )
 
     x = np.array([1.2, -3.0, 2.5])
     for h in (1e-2, 1e-12, 1e-15):

@@ -84,7 +84,7 @@ def test_logs_of_the_hand_written_poses(name):
     same(expm(twist_matrix(xi)), T)
     W = skew(phi)
     same(checks.RHO_C_CONSTANT[name], (np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3])
-    assert np.max(np.abs(checks.RHO_C_CONSTANT[name] - xi[:3])) > 1e-3       # the slip is not the answer
+    assert np.max(np.abs(checks.RHO_C_CONSTANT[name] - xi[:3])) > 1e-3  # the slip is not the answer
 
 
 def test_make_pose_transposed_block():
@@ -121,9 +121,13 @@ def test_transform_points_slips():
 
 
 def test_homogeneous_slips():
-    for P_h, slips in ((np.array([2.0, 4.0, 6.0, 2.0]), checks.DEHOMOGENEOUS_SLIPS_ONE),
-                       (np.array([[2.0, 4.0, 6.0, 2.0], [1.0, -1.0, 0.5, 0.5], [3.0, 0.0, 0.0, 1.0]]),
-                        checks.DEHOMOGENEOUS_SLIPS_ROWS)):
+    for P_h, slips in (
+        (np.array([2.0, 4.0, 6.0, 2.0]), checks.DEHOMOGENEOUS_SLIPS_ONE),
+        (
+            np.array([[2.0, 4.0, 6.0, 2.0], [1.0, -1.0, 0.5, 0.5], [3.0, 0.0, 0.0, 1.0]]),
+            checks.DEHOMOGENEOUS_SLIPS_ROWS,
+        ),
+    ):
         computed = [P_h[..., :3], P_h[..., 1:] / P_h[..., :1], P_h[..., :3] * P_h[..., 3:]]
         for (value, _), c in zip(slips, computed):
             same(value, c)

@@ -29,9 +29,10 @@ def test_the_slips():
     Rs, w = [exp(v) for v in checks.VECTORS], checks.WEIGHTS
     assert np.allclose(checks.UNWEIGHTED, geodesic_mean(Rs, np.ones(3)), atol=1e-14)
     U, _, Vt = np.linalg.svd(sum(wi * R for wi, R in zip(w, Rs)))
-    assert np.allclose(checks.WEIGHTED_CHORDAL, U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt,
-                       atol=1e-14)
+    assert np.allclose(
+        checks.WEIGHTED_CHORDAL, U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt, atol=1e-14
+    )
     assert np.allclose(checks.ONE_STEP, geodesic_mean(Rs, w, steps=1), atol=1e-14)
     assert np.allclose(checks.SQUARED_WEIGHTS, geodesic_mean(Rs, w**2), atol=1e-14)
     M = geodesic_mean(Rs, w)
-    assert np.linalg.norm(sum(wi * log(M.T @ R) for wi, R in zip(w, Rs))) < 1e-13   # the answer balances
+    assert np.linalg.norm(sum(wi * log(M.T @ R) for wi, R in zip(w, Rs))) < 1e-13  # the answer balances

@@ -56,8 +56,7 @@ def test_a_wrong_answer_gets_a_hint(kit, capsys):
     with pytest.raises(CheckFailed):
         coursekit.check("rot_z", rot_z_transposed)
     out = capsys.readouterr().out
-    assert "✗" in out and "transpose" in out and "hidden checks" not in out.lower().replace(
-        "the hidden checks run", "")
+    assert "✗" in out and "transpose" in out and "hidden checks" not in out.lower().replace("the hidden checks run", "")
 
 
 def test_a_crashing_answer_is_reported_not_raised_raw(kit, capsys):

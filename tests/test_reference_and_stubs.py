@@ -34,7 +34,7 @@ def test_every_exercise_has_hidden_checks(tmp_path):
 def test_a_failed_prerequisite_is_named(tmp_path):
     """An exercise that calls another, broken exercise of its lesson says so in its notes."""
     broken_rot_z = "def rot_z(a):\n    return 2.0 * np.eye(3)\n"
-    uses_rot_z = ("def compose(R_ab, R_bc):\n    return np.asarray(R_ab) @ np.asarray(R_bc) @ rot_z(0.1)\n")
+    uses_rot_z = "def compose(R_ab, R_bc):\n    return np.asarray(R_ab) @ np.asarray(R_bc) @ rot_z(0.1)\n"
     folder = build_submission(tmp_path / "s", {"rot_z": broken_rot_z, "compose": uses_rot_z}, lessons=("01",))
     compose = next(e for e in grade(folder, lessons=("01",)).exercises if e.name == "compose")
     assert compose.points < compose.max_points

@@ -61,10 +61,13 @@ def _leaks(blocks, pairs, run=2, public=frozenset()):
     found = []
     for block in blocks:
         for start in range(len(block) - run + 1):
-            lines = block[start:start + run]
+            lines = block[start : start + run]
             steps = list(zip(lines, lines[1:]))
-            if all(_distinctive(line) for line in lines) and all(step in pairs for step in steps) \
-                    and not all(step in public for step in steps):
+            if (
+                all(_distinctive(line) for line in lines)
+                and all(step in pairs for step in steps)
+                and not all(step in public for step in steps)
+            ):
                 found.append(" / ".join(lines))
     return found
 
@@ -87,8 +90,11 @@ def test_no_solution_code_in_course():
 def test_no_hidden_test_code_in_course():
     """No run of three distinctive lines of a hidden test appears in course/ (beyond public coursekit code)."""
     pairs, public = _course_line_pairs(), _course_line_pairs(COURSE / "coursekit")
-    found = [f"{path.name}: {leak}" for path in sorted(HIDDEN_SUITE.glob("test_*.py"))
-             for leak in _leaks(_blocks(path.read_text(encoding="utf-8")), pairs, run=3, public=public)]
+    found = [
+        f"{path.name}: {leak}"
+        for path in sorted(HIDDEN_SUITE.glob("test_*.py"))
+        for leak in _leaks(_blocks(path.read_text(encoding="utf-8")), pairs, run=3, public=public)
+    ]
     assert not found, "hidden test lines in course/:\n" + "\n".join(found)
 
 

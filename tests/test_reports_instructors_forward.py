@@ -38,8 +38,9 @@ due = 2026-01-20T12:00:00
 
 
 def _run(*args):
-    return subprocess.run([sys.executable, "-m", "autograder", *args], cwd=PROJECT_ROOT, capture_output=True,
-                          text=True, timeout=900)
+    return subprocess.run(
+        [sys.executable, "-m", "autograder", *args], cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=900
+    )
 
 
 def _rows(out):
@@ -57,7 +58,7 @@ def build_class(root):
     build_submission(root / "dan", {MISTAKE.exercise: MISTAKE.source}, lessons=LESSONS)
     eve = build_submission(root / "eve", lessons=(FIRST.number,))
     assignment = eve / f"lesson{FIRST.number}"  # nbgrader's layout: the time nbgrader recorded sits beside
-    assignment.mkdir()                          # the assignment's folder, the one trusted place for it
+    assignment.mkdir()  # the assignment's folder, the one trusted place for it
     (eve / FIRST.filename).rename(assignment / FIRST.filename)
     (assignment / "timestamp.txt").write_text("2026-01-17 20:00:00.000000 UTC", encoding="utf-8")
     roster = root.parent / "roster.csv"
@@ -73,8 +74,19 @@ def graded(tmp_path_factory):
     config = root / "course.toml"
     config.write_text(CONFIG, encoding="utf-8")
     out = root / "out"
-    run = _run("grade", str(root / "class"), "--out", str(out), "--lessons", *LESSONS, "--roster", str(roster),
-               "--config", str(config), "--no-nbval")
+    run = _run(
+        "grade",
+        str(root / "class"),
+        "--out",
+        str(out),
+        "--lessons",
+        *LESSONS,
+        "--roster",
+        str(roster),
+        "--config",
+        str(config),
+        "--no-nbval",
+    )
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
     status = _run("status", "--out", str(out), "--roster", str(roster))
     assert status.returncode == 0, status.stdout[-2000:] + status.stderr[-2000:]
@@ -93,7 +105,7 @@ def _section(page, lesson):
     """The part of a feedback page about ``lesson``."""
     start = page.index(f'id="lesson-{lesson.number}"')
     end = page.find('id="lesson-', start + 1)
-    return page[start:end if end > 0 else len(page)]
+    return page[start : end if end > 0 else len(page)]
 
 
 class Table(HTMLParser):
@@ -150,8 +162,10 @@ def test_late_students_penalties_and_due_dates_in_the_course_timezone(graded):
         assert f"{FIRST.number} −30%, {SECOND.number} −30%" in _line(text, "ana")
         assert f"{FIRST.number} −20%" in _line(text, "eve") and f"{SECOND.number} −" not in _line(text, "eve")
         assert "−" not in _line(text, "zoe")
-        assert (f"due: lesson {FIRST.number} 2026-01-15 23:59 CET, lesson {SECOND.number} 2026-01-20 12:00 CET; "
-                "5 of 6 students lost points for lateness") in text
+        assert (
+            f"due: lesson {FIRST.number} 2026-01-15 23:59 CET, lesson {SECOND.number} 2026-01-20 12:00 CET; "
+            "5 of 6 students lost points for lateness"
+        ) in text
     assert float(_rows(out)["eve"]["score"]) == round(FIRST.points * 0.8, 2)
     report = _page(out, "report.html")
     assert f"lesson {FIRST.number} 2026-01-15 23:59 CET" in report and "Late: 5 of 6 students." in report
@@ -165,8 +179,18 @@ def test_ignore_mtimes_takes_lateness_from_timestamp_files_only(graded, tmp_path
     for student in ("ana", "eve"):
         shutil.copytree(root / "class" / student, copy / student)  # copy2: the file times are kept
     out = tmp_path / "out"
-    run = _run("grade", str(copy), "--out", str(out), "--lessons", *LESSONS, "--config", str(config),
-               "--no-nbval", "--ignore-mtimes")
+    run = _run(
+        "grade",
+        str(copy),
+        "--out",
+        str(out),
+        "--lessons",
+        *LESSONS,
+        "--config",
+        str(config),
+        "--no-nbval",
+        "--ignore-mtimes",
+    )
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
     rows = _rows(out)
     assert rows["ana"]["late"] == "" and rows["ana"]["timestamp"] == ""
@@ -209,8 +233,12 @@ def test_class_report_lists_students_with_links_late_and_missing_lessons(graded)
     assert students["zoe"][0][1] is None  # no submission, no page
     most = FIRST.points + SECOND.points
     assert [cell[0] for cell in students["ana"][1:]] == [
-        f"{round(0.7 * most, 2):g} / {most:g}", "70%", "graded", f"{FIRST.number} −30%, {SECOND.number} −30%",
-        "none"]
+        f"{round(0.7 * most, 2):g} / {most:g}",
+        "70%",
+        "graded",
+        f"{FIRST.number} −30%, {SECOND.number} −30%",
+        "none",
+    ]
     assert students["cy"][5][0] == f"{FIRST.number} (unreadable)"
     assert students["eve"][5][0] == SECOND.number and students["zoe"][5][0] == "everything"
 
@@ -218,8 +246,8 @@ def test_class_report_lists_students_with_links_late_and_missing_lessons(graded)
 def test_class_report_counts_stubs_apart_from_mistakes(graded):
     report = _page(graded[0], "report.html")
     rows = {}
-    section = report[report.index("<h2>Exercises</h2>"):]
-    section = section[:section.find("<h2>", 5)] if "<h2>" in section[5:] else section  # later sections: not ours
+    section = report[report.index("<h2>Exercises</h2>") :]
+    section = section[: section.find("<h2>", 5)] if "<h2>" in section[5:] else section  # later sections: not ours
     for row in section.split("<tr>")[2:]:
         name = row.split("<code>")[1].split("</code>")[0]
         rows[name] = row
@@ -239,13 +267,19 @@ def test_class_report_sorts_by_score_without_a_server(graded, tmp_path):
     if not Path(chromium).exists():
         pytest.skip("Chromium is not installed")
     report = _page(graded[0], "report.html")
-    press = ('<script>var b = document.querySelectorAll("table.sortable th button")[1]; b.click(); b.click();'
-             "</script></body>")
+    press = (
+        '<script>var b = document.querySelectorAll("table.sortable th button")[1]; b.click(); b.click();'
+        "</script></body>"
+    )
     pressed = graded[0] / "report-pressed.html"  # beside the report, as an instructor opens it
     pressed.write_text(report.replace("</body>", press), encoding="utf-8")
     try:
-        dom = subprocess.run([chromium, "--headless", "--no-sandbox", "--disable-gpu", "--dump-dom",
-                              pressed.as_uri()], capture_output=True, text=True, timeout=120).stdout
+        dom = subprocess.run(
+            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--dump-dom", pressed.as_uri()],
+            capture_output=True,
+            text=True,
+            timeout=120,
+        ).stdout
     finally:
         pressed.unlink()
     students, heads = _students(dom)
@@ -263,14 +297,24 @@ def test_notebook_run_sentences_are_grammatical():
     from autograder.reports.feedback import feedback_html
 
     def lesson(number, run):
-        return LessonResult(number=number, title="", notebook=f"{number}.ipynb", status="graded", run=run,
-                            exercises=[ExerciseResult(name=f"f{number}", lesson=number, max_points=1, points=1)])
+        return LessonResult(
+            number=number,
+            title="",
+            notebook=f"{number}.ipynb",
+            status="graded",
+            run=run,
+            exercises=[ExerciseResult(name=f"f{number}", lesson=number, max_points=1, points=1)],
+        )
 
-    runs = {"01": NotebookRun("passed", 1, 1), "02": NotebookRun("failed", 1, 0, ["cell 4 raised ValueError"]),
-            "03": not_run_for_lost_points(1)}
+    runs = {
+        "01": NotebookRun("passed", 1, 1),
+        "02": NotebookRun("failed", 1, 0, ["cell 4 raised ValueError"]),
+        "03": not_run_for_lost_points(1),
+    }
     page = feedback_html(StudentResult("ana", "graded", lessons=[lesson(n, r) for n, r in runs.items()]))
-    assert ("Your answers, placed in the reference notebook, ran top to bottom and reproduced its printed "
-            "outputs.") in page
+    assert (
+        "Your answers, placed in the reference notebook, ran top to bottom and reproduced its printed outputs."
+    ) in page
     assert "Your answers, placed in the reference notebook, did not run cleanly:" in page
     assert "cell 4 raised ValueError" in page
     assert "Your answers were not run in the reference notebook:" in page

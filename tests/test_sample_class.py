@@ -39,9 +39,9 @@ def test_gradebook_columns(run):
     header = (out / "grades.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     assert header[:4] == ["student_id", "score", "max_score", "status"]
     lessons = [f"lesson_{lesson.number}" for lesson in THIS_COURSE.catalog.graded_lessons]
-    assert header[4:4 + len(lessons)] == lessons
+    assert header[4 : 4 + len(lessons)] == lessons
     start = 4 + len(lessons)
-    assert header[start:start + len(_maximum())] == list(_maximum())
+    assert header[start : start + len(_maximum())] == list(_maximum())
     assert len(rows) >= 8
 
 
@@ -128,14 +128,19 @@ def test_full_isolation_is_quiet(run):
 def test_class_report_says_what_is_worth_a_look(run):
     out, _, _ = run
     report = (out / "report.html").read_text(encoding="utf-8")
-    look = report[report.index("<h2>Worth a look</h2>"):]
-    look = look[:look.index("</table>")]
+    look = report[report.index("<h2>Worth a look</h2>") :]
+    look = look[: look.index("</table>")]
     assert "<code>hugo</code></td><td>tampering" in look and "check cell was edited" in look
     assert "<code>ivy</code></td><td>timeout" in look and "<code>ivy</code></td><td>crash" in look
     assert "<code>ada</code>" not in look and "<code>ben</code>" not in look
     assert "Check the grader" not in report  # every stage worked for the class
-    status = subprocess.run([sys.executable, "-m", "autograder", "status", "--out", str(out)], cwd=PROJECT_ROOT,
-                            capture_output=True, text=True, timeout=120).stdout
+    status = subprocess.run(
+        [sys.executable, "-m", "autograder", "status", "--out", str(out)],
+        cwd=PROJECT_ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    ).stdout
     assert "not valid JSON" in status  # kim's problem itself, under her row
 
 
@@ -146,18 +151,24 @@ def test_verdicts_match_the_golden_gradebook(run):
 
     out, _, _ = run
     changed = record_golden.differences(record_golden.read_golden(), record_golden.verdicts(out / "grades.csv"))
-    assert not changed, ("verdicts moved:\n" + "\n".join(changed[:40]) +
-                         "\n(re-record with `python -m tests.record_golden` only if the change is intended)")
+    assert not changed, (
+        "verdicts moved:\n"
+        + "\n".join(changed[:40])
+        + "\n(re-record with `python -m tests.record_golden` only if the change is intended)"
+    )
 
 
 def test_similar_answers_are_in_the_class_report_and_never_in_a_feedback_page(run):
     out, stdout, _ = run
     report = (out / "report.html").read_text(encoding="utf-8")
-    section = report[report.index("<h2>Similar answers</h2>"):]
+    section = report[report.index("<h2>Similar answers</h2>") :]
     assert "no answer was sent anywhere" in section and "<mark>" in section
     with open(out / "similar_answers.csv", newline="", encoding="utf-8") as handle:
-        pairs = {(row["first"], row["second"], row["exercise"]) for row in csv.DictReader(handle)
-                 if row["kind"] == "students"}
+        pairs = {
+            (row["first"], row["second"], row["exercise"])
+            for row in csv.DictReader(handle)
+            if row["kind"] == "students"
+        }
     assert {("ivy", "kim", "quat_slerp"), ("ivy", "kim", "matrix_to_euler_zyx")} <= pairs
     assert "similar answers:" in stdout
     for page in (out / "feedback").glob("*.html"):

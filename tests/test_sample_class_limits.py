@@ -39,10 +39,16 @@ def test_limits_mode_is_loud_everywhere(limits_run):
     out, stdout, rows = limits_run
     assert stdout.splitlines()[0].startswith("No PATH given")
     assert "RESOURCE LIMITS ONLY" in stdout.splitlines()[1]
-    status = subprocess.run([sys.executable, "-m", "autograder", "status", "--out", str(out)],
-                            cwd=PROJECT_ROOT, capture_output=True, text=True, timeout=120)
+    status = subprocess.run(
+        [sys.executable, "-m", "autograder", "status", "--out", str(out)],
+        cwd=PROJECT_ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert status.returncode == 0 and status.stdout.startswith(
-        f"WARNING: {len(rows)} of {len(rows)} students were graded with resource limits only")
+        f"WARNING: {len(rows)} of {len(rows)} students were graded with resource limits only"
+    )
     assert "resource limits only" in (out / "report.html").read_text(encoding="utf-8")
     for page in (out / "feedback").glob("*.html"):
         assert "isolated by resource limits only" in page.read_text(encoding="utf-8"), page.name

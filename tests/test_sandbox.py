@@ -75,16 +75,22 @@ def test_os_exit_during_a_call_costs_only_that_call(make_box):
 
 
 def test_exit_at_import_is_reported_and_skipped(make_box):
-    program = {"01": LessonProgram(setup="import numpy as np", cells=[
-        ("first", "import sys\nsys.exit(0)"), ("second", "def ok():\n    return 3")])}
+    program = {
+        "01": LessonProgram(
+            setup="import numpy as np",
+            cells=[("first", "import sys\nsys.exit(0)"), ("second", "def ok():\n    return 3")],
+        )
+    }
     with make_box("", program=program) as box:
         assert box.call("01", "ok") == 3
         assert [o.ok for o in box.outcomes] == [True, False, True]
 
 
 def test_prints_are_capped_and_do_not_break_the_protocol(make_box):
-    with make_box("import sys, os\ndef noisy():\n    print('x' * 10_000_000)\n    os.write(1, b'garbage\\n')\n"
-              "    sys.__stdout__.write('more garbage\\n')\n    return 5") as box:
+    with make_box(
+        "import sys, os\ndef noisy():\n    print('x' * 10_000_000)\n    os.write(1, b'garbage\\n')\n"
+        "    sys.__stdout__.write('more garbage\\n')\n    return 5"
+    ) as box:
         assert _call(box, "noisy", timeout=10) == 5
         assert len(box.last_stdout) < 10_000
 
@@ -114,8 +120,10 @@ def test_project_files_are_out_of_reach(make_box):
 
 @pytest.mark.skipif(not NAMESPACES, reason="bubblewrap is not available: limits-only sandbox")
 def test_no_network(make_box):
-    with make_box("import socket\ndef dial():\n    s = socket.socket()\n    s.settimeout(2)\n"
-              "    s.connect(('1.1.1.1', 80))\n    return 'connected'") as box:
+    with make_box(
+        "import socket\ndef dial():\n    s = socket.socket()\n    s.settimeout(2)\n"
+        "    s.connect(('1.1.1.1', 80))\n    return 'connected'"
+    ) as box:
         with pytest.raises(StudentError) as error:
             _call(box, "dial")
     assert "OSError" in error.value.message or "Error" in error.value.message
@@ -130,8 +138,9 @@ def test_runs_as_an_unprivileged_user(make_box):
 def _namespaces_allowed():
     """Can this machine create namespaces at all? (A plain bwrap, none of our arguments.)"""
     flags = ["--unshare-pid", "--unshare-net"] if os.geteuid() == 0 else ["--unshare-all"]
-    probe = subprocess.run([launcher.bwrap_executable(), *flags, "--ro-bind", "/", "/", "true"],
-                           capture_output=True, timeout=30)
+    probe = subprocess.run(
+        [launcher.bwrap_executable(), *flags, "--ro-bind", "/", "/", "true"], capture_output=True, timeout=30
+    )
     return probe.returncode == 0
 
 
@@ -161,18 +170,22 @@ def test_limits_mode_maps_sandbox_paths_to_real_folders(tmp_path):
     assert launcher.outside_path(sandbox, sandbox, scratch) == sandbox  # already real: unchanged
     assert launcher.outside_path("/sandboxes", sandbox, scratch) == "/sandboxes"
     python_in_a_tmp_checkout = "/tmp/clone/.venv/bin/python"
-    assert launcher.outside_path(python_in_a_tmp_checkout, sandbox, scratch, inside=("/sandbox",)) \
+    assert (
+        launcher.outside_path(python_in_a_tmp_checkout, sandbox, scratch, inside=("/sandbox",))
         == python_in_a_tmp_checkout
+    )
 
 
 @pytest.mark.skipif(not NAMESPACES, reason="bubblewrap is not available: limits-only sandbox")
 def test_tmp_is_the_only_writable_place(make_box):
     """As root or as an ordinary user (whose sandbox user owns bubblewrap's / and /dev): only /tmp."""
-    probe = ("import os\ndef writable():\n    found = []\n"
-             "    for folder in ('/', '/dev', '/dev/shm', '/sandbox', '/usr', '/tmp'):\n"
-             "        try:\n            with open(os.path.join(folder, 'probe'), 'w') as handle:\n"
-             "                handle.write('x')\n            found.append(folder)\n"
-             "        except OSError:\n            pass\n    return found")
+    probe = (
+        "import os\ndef writable():\n    found = []\n"
+        "    for folder in ('/', '/dev', '/dev/shm', '/sandbox', '/usr', '/tmp'):\n"
+        "        try:\n            with open(os.path.join(folder, 'probe'), 'w') as handle:\n"
+        "                handle.write('x')\n            found.append(folder)\n"
+        "        except OSError:\n            pass\n    return found"
+    )
     with make_box(probe) as box:
         assert _call(box, "writable") == ["/tmp"]
 

@@ -35,8 +35,14 @@ TRANSPOSED = ("[[c, -s], [s, c]]", "[[c, s], [-s, c]]")  # rot2's reference, and
 
 def autograder(*args, timeout=600, env=None):
     """``python -m autograder ARGS`` from the project root; the finished process (text output)."""
-    return subprocess.run([sys.executable, "-m", "autograder", *map(str, args)], cwd=PROJECT_ROOT, env=env,
-                          capture_output=True, text=True, timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "autograder", *map(str, args)],
+        cwd=PROJECT_ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+    )
 
 
 def ok(run):
@@ -82,7 +88,11 @@ def _points(row, exercise):
 def test_the_walkthrough_writes_a_course_the_grader_reads(course):
     assert course.title == "Turning the plane" and course.handout == "turning-the-plane"
     assert [(e.lesson, e.name, e.points) for e in course.catalog.exercises] == [
-        ("01", "rot2", 2.0), ("01", "rotate2", 2.0), ("02", "angle_of", 2.0), ("02", "angle_difference", 2.0)]
+        ("01", "rot2", 2.0),
+        ("01", "rotate2", 2.0),
+        ("02", "angle_of", 2.0),
+        ("02", "angle_difference", 2.0),
+    ]
     assert ok(autograder("release", "--check", "--course", course.root)).strip().endswith("in sync.")
     assert "0 master(s) changed" in ok(autograder("record", "--course", course.root))
 
@@ -106,12 +116,14 @@ def test_a_class_is_graded_against_the_second_course(course, klass, tmp_path):
 def test_dask_workers_grade_the_course_they_are_given(course, klass, tmp_path):
     local, cluster = tmp_path / "local", tmp_path / "cluster"
     ok(autograder("grade", klass, "--course", course.root, "--out", local, "--jobs", "2", "--no-nbval"))
-    run = ok(autograder("grade", klass, "--course", course.root, "--out", cluster, "--cluster", "local:1",
-                        "--no-nbval"))
+    run = ok(
+        autograder("grade", klass, "--course", course.root, "--out", cluster, "--cluster", "local:1", "--no-nbval")
+    )
     assert "cluster: 1 worker(s) ready" in run
     keep = ("student_id", "score", "max_score", "status", "rot2", "rotate2", "angle_of", "angle_difference")
-    assert ({s: {k: row[k] for k in keep} for s, row in _grades(cluster).items()}
-            == {s: {k: row[k] for k in keep} for s, row in _grades(local).items()})
+    assert {s: {k: row[k] for k in keep} for s, row in _grades(cluster).items()} == {
+        s: {k: row[k] for k in keep} for s, row in _grades(local).items()
+    }
 
 
 def test_the_book_shows_the_second_course(course, tmp_path):
@@ -126,18 +138,31 @@ def test_the_handout_holds_the_second_course_and_no_answer(course, tmp_path):
     with zipfile.ZipFile(tmp_path / "plane.zip") as archive:
         names = archive.namelist()
         texts = {name: archive.read(name).decode("utf-8") for name in names}
-    assert {"turning-the-plane/01_rotation_matrices.ipynb", "turning-the-plane/coursekit/watching.py",
-            "turning-the-plane/README.md"} <= set(names)
+    assert {
+        "turning-the-plane/01_rotation_matrices.ipynb",
+        "turning-the-plane/coursekit/watching.py",
+        "turning-the-plane/README.md",
+    } <= set(names)
     assert texts["turning-the-plane/README.md"].startswith("# Turning the plane")
     assert "A short Jupyter course on rotations in the plane" in texts["turning-the-plane/README.md"]
-    answers = {name: [line.strip() for line in source.splitlines() if line.strip().startswith("return ")]
-               for name, source in answer_sources(course.solutions).items()}
+    answers = {
+        name: [line.strip() for line in source.splitlines() if line.strip().startswith("return ")]
+        for name, source in answer_sources(course.solutions).items()
+    }
     assert sorted(answers) == ["angle_difference", "angle_of", "rot2", "rotate2"] and all(answers.values())
-    handed_out = [cell for name, text in texts.items() if name.endswith(".ipynb")
-                  for cell in nbformat.reads(text, as_version=4).cells if cells.is_answer_cell(cell)]
+    handed_out = [
+        cell
+        for name, text in texts.items()
+        if name.endswith(".ipynb")
+        for cell in nbformat.reads(text, as_version=4).cells
+        if cells.is_answer_cell(cell)
+    ]
     assert sorted(cells.grade_id(cell) for cell in handed_out) == sorted(answers)
-    assert not [cells.grade_id(cell) for cell in handed_out
-                if any(line in cell.source for line in answers[cells.grade_id(cell)] + ["BEGIN SOLUTION"])]
+    assert not [
+        cells.grade_id(cell)
+        for cell in handed_out
+        if any(line in cell.source for line in answers[cells.grade_id(cell)] + ["BEGIN SOLUTION"])
+    ]
 
 
 def test_the_gradescope_bundle_carries_the_course_it_grades(course, klass, tmp_path):
@@ -169,7 +194,11 @@ def test_the_grader_does_not_know_the_second_course():
     """Nothing in autograder/ names the second course's exercises but the template that writes it."""
     writer = {PACKAGE / "authoring" / "new_course.py"}
     template = PACKAGE / "authoring" / "course_template"
-    found = [str(path.relative_to(PACKAGE)) for path in PACKAGE.rglob("*.py")
-             if path not in writer and template not in path.parents
-             and any(name in path.read_text(encoding="utf-8") for name in ("rotate2", "angle_difference"))]
+    found = [
+        str(path.relative_to(PACKAGE))
+        for path in PACKAGE.rglob("*.py")
+        if path not in writer
+        and template not in path.parents
+        and any(name in path.read_text(encoding="utf-8") for name in ("rotate2", "angle_difference"))
+    ]
     assert not found

@@ -21,7 +21,9 @@ from support import THIS_COURSE
 
 def _lesson(points):
     shell = LessonResult(number="01", title="t", notebook="01.ipynb", status="graded")
-    shell.exercises = [ExerciseResult(name=f"e{i}", lesson="01", max_points=2.0, points=p) for i, p in enumerate(points)]
+    shell.exercises = [
+        ExerciseResult(name=f"e{i}", lesson="01", max_points=2.0, points=p) for i, p in enumerate(points)
+    ]
     return shell
 
 
@@ -47,8 +49,9 @@ def test_award_is_unchanged_for_lessons_that_ran():
     partial.run = NotebookRun(status="passed", max_points=1.0)
     nbval_stage.award(partial)
     assert partial.run.points == 0.0
-    assert partial.run.failures == ["the notebook ran, but the point needs every exercise of the lesson "
-                                    "to pass its hidden checks"]
+    assert partial.run.failures == [
+        "the notebook ran, but the point needs every exercise of the lesson to pass its hidden checks"
+    ]
 
 
 def test_nbval_gets_only_the_lessons_with_full_hidden_marks(tmp_path, monkeypatch):
@@ -56,17 +59,21 @@ def test_nbval_gets_only_the_lessons_with_full_hidden_marks(tmp_path, monkeypatc
     catalog = THIS_COURSE.catalog
     first, second = catalog.graded_lessons[0], catalog.graded_lessons[1]
     folder = tmp_path / "student"
-    build_submission(folder, {exercise.name: STUB for exercise in second.exercises},
-                     lessons=[first.number, second.number])
+    build_submission(
+        folder, {exercise.name: STUB for exercise in second.exercises}, lessons=[first.number, second.number]
+    )
     asked = []
 
     def fake_run_notebooks(folder, lessons, options, catalog, slot=None):
         asked.extend(shell.number for shell, _, _ in lessons)
-        return {shell.number: NotebookRun(status="passed", max_points=options.notebook_points)
-                for shell, _, _ in lessons}
+        return {
+            shell.number: NotebookRun(status="passed", max_points=options.notebook_points) for shell, _, _ in lessons
+        }
 
     monkeypatch.setattr(grading, "run_notebooks", fake_run_notebooks)
-    result = grading.grade_student("s", folder, THIS_COURSE, grading.GradingOptions(lessons=(first.number, second.number)))
+    result = grading.grade_student(
+        "s", folder, THIS_COURSE, grading.GradingOptions(lessons=(first.number, second.number))
+    )
     runs = {lesson.number: lesson.run for lesson in result.lessons}
     assert asked == [first.number]
     assert (runs[first.number].status, runs[first.number].points) == ("passed", 1.0)
@@ -81,7 +88,7 @@ def test_class_report_counts_notebooks_run_and_not_run():
         return StudentResult(student_id=status, status="graded", lessons=[lesson])
 
     html = class_report_html([student("passed"), student("failed"), student("skipped")], THIS_COURSE.catalog)
-    row = html[html.index("Notebook stage"):]
+    row = html[html.index("Notebook stage") :]
     assert '<tr><td>01</td><td class="num">1 / 2</td><td class="num">2</td><td class="num">1</td></tr>' in row
 
 
@@ -90,5 +97,8 @@ def test_the_benchmark_class_keeps_its_golden_verdicts(tmp_path):
 
     graded = record_golden.verdicts(record_golden.grade_benchmark_class(tmp_path))
     changed = record_golden.differences(record_golden.read_golden(record_golden.BENCHMARK_GOLDEN), graded)
-    assert not changed, ("verdicts moved on the benchmark's class:\n" + "\n".join(changed[:30])
-                         + "\n(re-record with `python -m tests.record_golden` only if the change is intended)")
+    assert not changed, (
+        "verdicts moved on the benchmark's class:\n"
+        + "\n".join(changed[:30])
+        + "\n(re-record with `python -m tests.record_golden` only if the change is intended)"
+    )

@@ -27,8 +27,9 @@ EXERCISES = [e.name for e in THIS_COURSE.catalog.lesson("01").exercises]
 
 def _execute(folder):
     nb = nbformat.read(str(folder / LESSON), as_version=4)
-    NotebookClient(nb, timeout=120, allow_errors=True, kernel_name="python3",
-                   resources={"metadata": {"path": str(folder)}}).execute()
+    NotebookClient(
+        nb, timeout=120, allow_errors=True, kernel_name="python3", resources={"metadata": {"path": str(folder)}}
+    ).execute()
     return nb
 
 
@@ -56,7 +57,7 @@ def test_a_failing_check_is_one_line_that_names_the_exercise(released):
     checks = [c for c in released.cells if cells.is_check_cell(c)]
     assert checks
     for cell in checks:
-        name = cells.grade_id(cell)[len(cells.CHECK_PREFIX):]
+        name = cells.grade_id(cell)[len(cells.CHECK_PREFIX) :]
         (error,) = _errors(cell)
         assert error["ename"] == "NotWrittenYet" and len(error["traceback"]) == 1, error["traceback"][:3]
         assert f"write {name} next" in error["traceback"][0]
@@ -76,8 +77,9 @@ def test_the_hand_in_cell_lists_what_is_left(released, solved):
 
 
 def test_every_cell_that_reaches_a_stub_says_so_in_one_line(released):
-    reached = [c for c in released.cells if _errors(c) and not cells.is_check_cell(c)
-               and c.get("id") != "ready-to-hand-in"]
+    reached = [
+        c for c in released.cells if _errors(c) and not cells.is_check_cell(c) and c.get("id") != "ready-to-hand-in"
+    ]
     assert reached, "no worked example or figure of lesson 01 calls an exercise: the test would hold nothing"
     for cell in reached:
         (error,) = _errors(cell)
@@ -89,15 +91,18 @@ def test_every_cell_that_reaches_a_stub_says_so_in_one_line(released):
 def test_only_a_stub_gets_the_one_line(tmp_path):
     """A NotImplementedError from a library, or raised where no stub is, keeps IPython's traceback."""
     shutil.copytree(SOLUTIONS / "coursekit", tmp_path / "coursekit")
-    nb = nbformat.v4.new_notebook(cells=[
-        nbformat.v4.new_code_cell("import coursekit\nimport numpy as np"),
-        nbformat.v4.new_code_cell("def rot_x(angle):\n    raise NotImplementedError('not written yet')"),
-        nbformat.v4.new_code_cell("[rot_x(a) for a in np.linspace(0, 1, 3)]"),
-        nbformat.v4.new_code_cell("import numbers\nnumbers.Complex.real.fget(1j)"),  # raised in numbers.py
-        nbformat.v4.new_code_cell("raise NotImplementedError('typed at the top level')"),
-    ])
-    NotebookClient(nb, timeout=60, allow_errors=True, kernel_name="python3",
-                   resources={"metadata": {"path": str(tmp_path)}}).execute()
+    nb = nbformat.v4.new_notebook(
+        cells=[
+            nbformat.v4.new_code_cell("import coursekit\nimport numpy as np"),
+            nbformat.v4.new_code_cell("def rot_x(angle):\n    raise NotImplementedError('not written yet')"),
+            nbformat.v4.new_code_cell("[rot_x(a) for a in np.linspace(0, 1, 3)]"),
+            nbformat.v4.new_code_cell("import numbers\nnumbers.Complex.real.fget(1j)"),  # raised in numbers.py
+            nbformat.v4.new_code_cell("raise NotImplementedError('typed at the top level')"),
+        ]
+    )
+    NotebookClient(
+        nb, timeout=60, allow_errors=True, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}
+    ).execute()
     (stub,) = _errors(nb.cells[2])
     assert len(stub["traceback"]) == 1 and "rot_x is not written yet: write rot_x" in stub["traceback"][0]
     for cell in nb.cells[3:]:
@@ -115,7 +120,8 @@ def test_every_lesson_ends_with_its_hand_in_cell():
         cell = nb.cells[ids.index("ready-to-hand-in")]
         assert f'ready_to_hand_in("{lesson.number}")' in cells.source_text(cell)
         assert cells.is_hand_in_cell(cell) and cell.metadata.get("editable") is False, lesson.filename
-        assert lesson.hand_in_points == GradingOptions().notebook_points, \
+        assert lesson.hand_in_points == GradingOptions().notebook_points, (
             f"{lesson.filename}: the hand-in cell (the notebook point in nbgrader) is not worth the notebook point"
-        later = [c for c in nb.cells[ids.index("ready-to-hand-in") + 1:] if c.cell_type == "code"]
+        )
+        later = [c for c in nb.cells[ids.index("ready-to-hand-in") + 1 :] if c.cell_type == "code"]
         assert not later, f"{lesson.filename}: code after the hand-in cell"

@@ -51,8 +51,9 @@ def test_every_lesson_of_the_floor_run_ran_clean(floor_run):
     summary = json.loads((floor_run / "summary.json").read_text(encoding="utf-8"))
     module = student_floor.student_install()
     assert tuple(int(part) for part in summary["python"].split(".")[:2]) >= module.PYTHON_FLOOR
-    assert {name: summary["versions"][name] for name, *_ in module.PACKAGES} == \
-        {name: floor for name, floor, *_ in module.PACKAGES}, "the run did not use the floors"
+    assert {name: summary["versions"][name] for name, *_ in module.PACKAGES} == {
+        name: floor for name, floor, *_ in module.PACKAGES
+    }, "the run did not use the floors"
     errors = {name: run["errors"] for name, run in summary["lessons"].items() if run["errors"]}
     assert not errors, errors
 
@@ -65,8 +66,9 @@ def test_notebooks_last_run_under_the_floors_grade_as_the_reference_answers(floo
         shutil.copy(floor_run / "executed" / catalog[number].filename, student / catalog[number].filename)
     result = grade(student, lessons=LESSONS, nbval=True)
     assert [lesson.number for lesson in result.lessons] == list(LESSONS)
-    assert points_by_exercise(result) == {exercise.name: (exercise.max_points, exercise.max_points)
-                                         for exercise in result.exercises}, "an exercise lost points"
+    assert points_by_exercise(result) == {
+        exercise.name: (exercise.max_points, exercise.max_points) for exercise in result.exercises
+    }, "an exercise lost points"
     runs = {lesson.number: (lesson.run.status, lesson.run.points, lesson.run.max_points) for lesson in result.lessons}
     assert all(status == "passed" and points == top for status, points, top in runs.values()), runs
     assert result.score == result.max_score > 0

@@ -39,9 +39,23 @@ def resolve(python, platform, requirements, timeout=TIMEOUT):
     """``(ok, seconds, the end of pip's complaint)`` for one Python version on one platform; ``ok`` is
     None when pip gave no answer within ``timeout`` seconds."""
     with tempfile.TemporaryDirectory() as target:
-        command = [sys.executable, "-m", "pip", "install", "--dry-run", "--quiet", "--ignore-installed",
-                   "--disable-pip-version-check", "--only-binary=:all:", "--python-version", python,
-                   "--target", target, "-r", str(requirements)]
+        command = [
+            sys.executable,
+            "-m",
+            "pip",
+            "install",
+            "--dry-run",
+            "--quiet",
+            "--ignore-installed",
+            "--disable-pip-version-check",
+            "--only-binary=:all:",
+            "--python-version",
+            python,
+            "--target",
+            target,
+            "-r",
+            str(requirements),
+        ]
         for tag in PLATFORMS[platform]:
             command += ["--platform", tag]
         start = time.monotonic()
@@ -66,8 +80,10 @@ def _cases():
 if __name__ != "__main__":
     import pytest
 
-    @pytest.mark.skipif(os.environ.get("STUDENT_INSTALL_MATRIX") != "1",
-                        reason="network-heavy: set STUDENT_INSTALL_MATRIX=1 (.ci/run runs it in the background)")
+    @pytest.mark.skipif(
+        os.environ.get("STUDENT_INSTALL_MATRIX") != "1",
+        reason="network-heavy: set STUDENT_INSTALL_MATRIX=1 (.ci/run runs it in the background)",
+    )
     @pytest.mark.parametrize(("python", "platform"), _cases())
     def test_the_student_list_resolves_from_wheels(python, platform, tmp_path):
         ok, _, complaint = resolve(python, platform, _requirements_file(tmp_path))

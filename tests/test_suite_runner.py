@@ -33,14 +33,20 @@ from support import THIS_COURSE
 
 FAULTS = {
     # hangs for angles above 5 rad (the checks use angles in [-2π, 2π])
-    "rot_z": ("def rot_z(a):\n    while a > 5.0:\n        pass\n    c, s = np.cos(a), np.sin(a)\n"
-              "    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])"),
+    "rot_z": (
+        "def rot_z(a):\n    while a > 5.0:\n        pass\n    c, s = np.cos(a), np.sin(a)\n"
+        "    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])"
+    ),
     # kills its own process for angles below -5 rad
-    "rot_y": ("import os\n\ndef rot_y(a):\n    if a < -5.0:\n        os._exit(3)\n    c, s = np.cos(a), np.sin(a)\n"
-              "    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])"),
+    "rot_y": (
+        "import os\n\ndef rot_y(a):\n    if a < -5.0:\n        os._exit(3)\n    c, s = np.cos(a), np.sin(a)\n"
+        "    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])"
+    ),
     # right, and chatty
-    "rot_x": ("def rot_x(a):\n    print('rot_x of', round(a, 3))\n    c, s = np.cos(a), np.sin(a)\n"
-              "    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])"),
+    "rot_x": (
+        "def rot_x(a):\n    print('rot_x of', round(a, 3))\n    c, s = np.cos(a), np.sin(a)\n"
+        "    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])"
+    ),
 }
 
 
@@ -67,8 +73,9 @@ SUBMISSIONS = {
     "alternatives-1": lambda folder: build_submission(folder, _nth_of_kind("alternative", 0)),
     "alternatives-2": lambda folder: build_submission(folder, _nth_of_kind("alternative", 1)),
     "faults": lambda folder: build_submission(folder, FAULTS, lessons=("01",)),
-    "lesson 05 missing": lambda folder: _without(build_submission(folder, lessons=("04", "05", "06")),
-                                                 "05_euler_angles.ipynb"),
+    "lesson 05 missing": lambda folder: _without(
+        build_submission(folder, lessons=("04", "05", "06")), "05_euler_angles.ipynb"
+    ),
 }
 
 # short, so the faults' endless loops cost little; not 1 s: on a loaded CI machine a correct alternative that
@@ -77,8 +84,11 @@ OPTIONS = GradingOptions(nbval=False, limits=Limits(call_timeout=3.0))
 
 
 def _as_rows(result):
-    return [(c.exercise, c.description, c.weight, c.passed, c.reason, c.hint, c.printed)
-            for e in result.exercises for c in e.checks], result.problems
+    return [
+        (c.exercise, c.description, c.weight, c.passed, c.reason, c.hint, c.printed)
+        for e in result.exercises
+        for c in e.checks
+    ], result.problems
 
 
 @pytest.mark.parametrize("name", sorted(SUBMISSIONS))
@@ -112,8 +122,12 @@ def _count_unrun(monkeypatch):
 
 def test_answers_equal_to_the_references_bit_for_bit_are_passed_without_running(tmp_path, monkeypatch):
     counts = _count_unrun(monkeypatch)
-    result = grade_student("ada", build_submission(tmp_path / "ada", lessons=("01", "02")), THIS_COURSE,
-                           GradingOptions(nbval=False, lessons=("01", "02")))
+    result = grade_student(
+        "ada",
+        build_submission(tmp_path / "ada", lessons=("01", "02")),
+        THIS_COURSE,
+        GradingOptions(nbval=False, lessons=("01", "02")),
+    )
     assert result.score == result.max_score
     # rot_z and friends return the same bits as the reference's; a few results differ from the
     # reference's run in this process in the last bit (BLAS on differently aligned memory): those run
@@ -121,8 +135,10 @@ def test_answers_equal_to_the_references_bit_for_bit_are_passed_without_running(
 
 
 def test_an_answer_one_rounding_away_from_the_reference_runs_its_tests_and_passes(tmp_path, monkeypatch):
-    nudged = ("def rot_z(a):\n    c, s = np.cos(a), np.sin(a)\n"
-              "    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) * (1.0 + 2.0 ** -52)")
+    nudged = (
+        "def rot_z(a):\n    c, s = np.cos(a), np.sin(a)\n"
+        "    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) * (1.0 + 2.0 ** -52)"
+    )
     folder = build_submission(tmp_path / "nudged", {"rot_z": nudged}, lessons=("01",))
     counts = _count_unrun(monkeypatch)
     result = grade_student("nudged", folder, THIS_COURSE, GradingOptions(nbval=False, lessons=("01",)))
@@ -143,15 +159,22 @@ def test_recording_is_deterministic(tmp_path, monkeypatch):
     from autograder.grading import suite, transcript_cache
 
     monkeypatch.setenv("AUTOGRADER_CACHE", str(tmp_path))
-    record = ("from autograder.grading import suite; from autograder.lessons.paths import this_course; "
-              "course = this_course(); suite.transcripts_for(course.reference, course)")
+    record = (
+        "from autograder.grading import suite; from autograder.lessons.paths import this_course; "
+        "course = this_course(); suite.transcripts_for(course.reference, course)"
+    )
     subprocess.run([sys.executable, "-c", record], cwd=PROJECT_ROOT, check=True, timeout=600)
     first, _ = transcript_cache.load(THIS_COURSE)
     suite.single_threaded_blas()
     second = suite._record_transcripts(THIS_COURSE.reference, THIS_COURSE.catalog, suite.hidden_tests(THIS_COURSE)[0])
     assert first.keys() == second.keys()
-    differ = [k for k in first if first[k].calls != second[k].calls or first[k].results != second[k].results
-              or not (first[k].passed and second[k].passed)]
+    differ = [
+        k
+        for k in first
+        if first[k].calls != second[k].calls
+        or first[k].results != second[k].results
+        or not (first[k].passed and second[k].passed)
+    ]
     assert not differ, differ[:5]
     assert sum(len(t.calls) for t in first.values()) > 1000
     assert np.mean([len(t.calls) for t in first.values()]) > 5
@@ -169,7 +192,7 @@ class _AnsweringSandbox:
         pass
 
     def call_batch(self, calls, timeouts, budget):
-        return [{"ok": True, "stdout": "", "text": value} for value in self.values[:len(calls)]]
+        return [{"ok": True, "stdout": "", "text": value} for value in self.values[: len(calls)]]
 
 
 def _passes_unrun(transcript, values):
@@ -184,7 +207,7 @@ def test_only_the_references_exact_values_pass_a_test_unrun_and_never_where_it_r
     recorder.call("01", "halve", [3.0])
     plain.passed = True
     assert _passes_unrun(plain, [1.5])  # exactly the reference's value for every call
-    assert not _passes_unrun(plain, [1.5 + 2 ** -51])  # the last bits differ: the test runs
+    assert not _passes_unrun(plain, [1.5 + 2**-51])  # the last bits differ: the test runs
 
     raising = recorder.start()
     assert recorder.call("01", "halve", [3.0]) == 1.5
@@ -221,7 +244,7 @@ def test_values_are_learned_only_from_a_test_that_passed_on_exactly_its_batch():
     recorder.call("01", "halve", [3.0])
     recorder.call("01", "halve", [5.0])
     recorded.passed = True
-    sandbox_values = [1.5 + 2 ** -51, 2.5]
+    sandbox_values = [1.5 + 2**-51, 2.5]
 
     assert not _run_on_batch(recorded, sandbox_values, [3.0, 5.0]).note_if_passed(False)  # it failed
     assert not _run_on_batch(recorded, sandbox_values, [3.0]).note_if_passed(True)  # a call left over
@@ -232,7 +255,7 @@ def test_values_are_learned_only_from_a_test_that_passed_on_exactly_its_batch():
     assert _run_on_batch(recorded, sandbox_values, [3.0, 5.0]).note_if_passed(True)
     assert _passes_unrun(recorded, sandbox_values)  # now known to pass, bit for bit
     assert _passes_unrun(recorded, [1.5, 2.5])  # the reference's own values still do
-    assert not _passes_unrun(recorded, [1.5 + 2 ** -51, 2.5 + 2 ** -51])  # anything else runs the test
+    assert not _passes_unrun(recorded, [1.5 + 2**-51, 2.5 + 2**-51])  # anything else runs the test
 
 
 def test_a_student_whose_code_is_the_references_runs_almost_no_test_once_learned(tmp_path, monkeypatch):

@@ -23,9 +23,18 @@ def fresh(tmp_path, monkeypatch):
 
 
 def _sample():
-    return {"t::a": Transcript(calls=['{"x": 1}'], keys=[("01", "rot_z")], timeouts=[None], results=['0.5'],
-                               passed=True, also_passing=[['0.5000000000000001']], complete=True),
-            "t::b": Transcript(calls=[], keys=[], timeouts=[], results=[], passed=False, complete=False)}
+    return {
+        "t::a": Transcript(
+            calls=['{"x": 1}'],
+            keys=[("01", "rot_z")],
+            timeouts=[None],
+            results=["0.5"],
+            passed=True,
+            also_passing=[["0.5000000000000001"]],
+            complete=True,
+        ),
+        "t::b": Transcript(calls=[], keys=[], timeouts=[], results=[], passed=False, complete=False),
+    }
 
 
 def test_a_saved_transcript_loads_back_field_for_field(fresh):
@@ -46,8 +55,15 @@ def test_the_file_name_follows_the_kernel_and_the_content(fresh, monkeypatch):
     assert transcript_cache.path(THIS_COURSE) != first
 
 
-@pytest.mark.parametrize("text", ["", "{not json", '{"format": 0, "learned": [], "transcripts": {}}',
-                                  '{"format": 1, "learned": [], "transcripts": {"t": {"calls": 3}}}'])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "",
+        "{not json",
+        '{"format": 0, "learned": [], "transcripts": {}}',
+        '{"format": 1, "learned": [], "transcripts": {"t": {"calls": 3}}}',
+    ],
+)
 def test_a_damaged_or_foreign_file_is_never_used(fresh, text):
     transcript_cache.path(THIS_COURSE).parent.mkdir(parents=True)
     transcript_cache.path(THIS_COURSE).write_text(text, encoding="utf-8")

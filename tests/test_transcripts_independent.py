@@ -79,10 +79,15 @@ def test_no_kept_input_is_an_answer_the_test_got_earlier(recorded):
         suite._call_test(test, proxy, _Watching(reference, from_ref))
         inputs = [_arrays(wire.loads(text)["args"]) for text in kept.calls]
         for number, arguments in enumerate(inputs):
-            answers = [p for result in kept.results[:number] if result is not None
-                       for a in _arrays(wire.loads(result)) for p in _pieces(a)]
+            answers = [
+                p
+                for result in kept.results[:number]
+                if result is not None
+                for a in _arrays(wire.loads(result))
+                for p in _pieces(a)
+            ]
             answers += [p for a in from_ref for p in _pieces(a)]
-            own = [a for earlier in inputs[:number + 1] for a in earlier]
+            own = [a for earlier in inputs[: number + 1] for a in earlier]
             for argument in arguments:
                 same = lambda p: argument.shape == p.shape and np.array_equal(argument, p)  # noqa: E731
                 # an answer that equals one of the test's own inputs (compose(R, I) = R) proves nothing

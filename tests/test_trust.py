@@ -19,8 +19,9 @@ from autograder.sandbox import launcher
 from support import build_submission
 
 LESSON = "01"
-IGNORED = shutil.ignore_patterns(".git", ".venv", "__pycache__", ".pytest_cache", "grading-output",
-                                 "test-artifacts", "benchmark-output", "*.pyc")
+IGNORED = shutil.ignore_patterns(
+    ".git", ".venv", "__pycache__", ".pytest_cache", "grading-output", "test-artifacts", "benchmark-output", "*.pyc"
+)
 
 
 def _copy_project(target):
@@ -34,14 +35,24 @@ def _grade(project, submissions, out, *extra, sandbox=None, cache=None):
         env["AUTOGRADER_SANDBOX"] = sandbox
     if cache:
         env["AUTOGRADER_CACHE"] = str(cache)
-    return subprocess.run([sys.executable, "-m", "autograder", "grade", str(submissions), "--out", str(out),
-                           "--lessons", LESSON, *extra], cwd=project, capture_output=True, text=True,
-                          timeout=900, env=env)
+    return subprocess.run(
+        [sys.executable, "-m", "autograder", "grade", str(submissions), "--out", str(out), "--lessons", LESSON, *extra],
+        cwd=project,
+        capture_output=True,
+        text=True,
+        timeout=900,
+        env=env,
+    )
 
 
 def _status(project, out):
-    return subprocess.run([sys.executable, "-m", "autograder", "status", "--out", str(out)], cwd=project,
-                          capture_output=True, text=True, timeout=120).stdout
+    return subprocess.run(
+        [sys.executable, "-m", "autograder", "status", "--out", str(out)],
+        cwd=project,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    ).stdout
 
 
 @pytest.fixture(scope="module")
@@ -58,11 +69,21 @@ def _snapshot(out):
 
 BREAKAGES = {
     # the notebook stage cannot run: nbval is handed an option it does not know
-    "nbval": ("autograder/sandbox/child/nbval_runner.py", '"--nbval-lax",', '"--nbval-lax", "--no-such-option",',
-              (), "notebook stage (nbval)"),
+    "nbval": (
+        "autograder/sandbox/child/nbval_runner.py",
+        '"--nbval-lax",',
+        '"--nbval-lax", "--no-such-option",',
+        (),
+        "notebook stage (nbval)",
+    ),
     # the sandbox's worker cannot start: it imports a module its Python does not have
-    "sandbox": ("autograder/sandbox/child/worker.py", "import numpy  # noqa", "import numpy_missing  # noqa",
-                ("--no-nbval",), "hidden suite"),
+    "sandbox": (
+        "autograder/sandbox/child/worker.py",
+        "import numpy  # noqa",
+        "import numpy_missing  # noqa",
+        ("--no-nbval",),
+        "hidden suite",
+    ),
 }
 
 

@@ -21,7 +21,7 @@ from support import THIS_COURSE
 
 pytestmark = pytest.mark.skipif(not warm.enabled(), reason="warm slots need the namespace sandbox")
 
-LEAVE_EVERYTHING = r'''
+LEAVE_EVERYTHING = r"""
 import ctypes, os, time
 
 def leave():
@@ -61,9 +61,9 @@ def leave():
     time.sleep(0.1)
     os.chmod("/tmp", 0)
     return made
-'''
+"""
 
-LOOK_AROUND = r'''
+LOOK_AROUND = r"""
 import ctypes, os
 
 def _ppid(pid):
@@ -98,9 +98,9 @@ def look():
     return {"others": sorted(set(processes) - chain - {1}), "tmp": sorted(p for p in tmp if len(p) < 200),
             "deep": sum(len(p) >= 200 for p in tmp), "ipc": ipc,
             "tmp_writable": os.access("/tmp", os.W_OK), "queue": queue, "key": key}
-'''
+"""
 
-REACH_FOR_THE_ZYGOTE = r'''
+REACH_FOR_THE_ZYGOTE = r"""
 import ctypes, os, stat
 
 def reach():
@@ -127,7 +127,7 @@ def reach():
         except OSError:  # the folder listing's own descriptor, closed by now
             pass
     return found
-'''
+"""
 
 
 def _program(source):
@@ -188,9 +188,11 @@ def test_student_code_cannot_reach_the_zygote(slot):
 
 def test_student_code_cannot_kill_the_zygote(slot):
     """It is PID 1 of the sandbox (and root, when the grader is): signals from student code never reach it."""
-    attack = ("import os, signal, time\ndef attack():\n    for number in (signal.SIGKILL, signal.SIGSTOP, signal.SIGTERM):\n"
-              "        for target in (os.getppid(), -1):\n            try:\n                os.kill(target, number)\n"
-              "            except OSError:\n                pass\n    time.sleep(0.3)\n    return os.getppid()")
+    attack = (
+        "import os, signal, time\ndef attack():\n    for number in (signal.SIGKILL, signal.SIGSTOP, signal.SIGTERM):\n"
+        "        for target in (os.getppid(), -1):\n            try:\n                os.kill(target, number)\n"
+        "            except OSError:\n                pass\n    time.sleep(0.3)\n    return os.getppid()"
+    )
     with StudentSandbox(support=THIS_COURSE.support, program=_program(attack), slot=slot) as box:
         try:
             assert box.call("01", "attack") == 1
@@ -221,14 +223,20 @@ def test_a_slot_that_dies_costs_one_call_and_the_pool_replaces_it():
         pool.repair(0)
         replaced = pool.slots[0]
         assert replaced.alive()
-        with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=replaced) as box:
+        with StudentSandbox(
+            support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=replaced
+        ) as box:
             assert box.call("01", "f") == 1
             assert isinstance(box.process, warm.WarmWorker)
 
 
 def test_a_slot_with_other_limits_is_not_used(slot):
-    with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot,
-                        limits=launcher.Limits(memory_bytes=2**30)) as box:
+    with StudentSandbox(
+        support=THIS_COURSE.support,
+        program=_program("def f():\n    return 1"),
+        slot=slot,
+        limits=launcher.Limits(memory_bytes=2**30),
+    ) as box:
         assert box.call("01", "f") == 1
         assert not isinstance(box.process, warm.WarmWorker)
 
@@ -264,6 +272,7 @@ def test_a_slot_that_cannot_start_leaves_its_graders_cold(monkeypatch):
 
 def test_a_worker_that_does_not_start_leaves_the_student_cold(slot, monkeypatch):
     """A slot whose workers die before saying hello (before any student code) is dropped, not the student."""
+
     def stillborn(self, direct=False):
         worker = original(self, direct)
         worker.stdout.close()
@@ -290,7 +299,7 @@ def test_each_forked_grader_is_handed_a_slot_no_other_running_grader_has(tmp_pat
         with StudentSandbox(support=THIS_COURSE.support, program=_program("def f():\n    return 1"), slot=slot) as box:
             assert box.call("01", "f") == 1
             assert isinstance(box.process, warm.WarmWorker)
-        with open(item, "w") as out:       # which slot, and while this grader was running
+        with open(item, "w") as out:  # which slot, and while this grader was running
             out.write(f"{slot.index} {time.monotonic()}")
         time.sleep(0.3)
         with open(item, "a") as out:
@@ -303,6 +312,6 @@ def test_each_forked_grader_is_handed_a_slot_no_other_running_grader_has(tmp_pat
     assert problems == [None] * 4, problems
     runs = [tuple(map(float, open(item).read().split())) for item in items]
     for first, (slot_a, start_a, end_a) in enumerate(runs):
-        for slot_b, start_b, end_b in runs[first + 1:]:
+        for slot_b, start_b, end_b in runs[first + 1 :]:
             overlapping = start_a < end_b and start_b < end_a
             assert not (overlapping and slot_a == slot_b), runs

@@ -44,9 +44,11 @@ def test_a_function_that_leaves_its_arguments_alone_changes_nothing():
 
 
 def test_direct_calls_into_the_library_are_delegation_and_indirect_ones_are_not():
-    namespace = _main("from coursekit.lie import Exp as E\n"
-                      "def exp_so3(w):\n    return E(w)\n"
-                      "def shown(w):\n    from coursekit.plotting import np as _\n    return np.eye(3)")
+    namespace = _main(
+        "from coursekit.lie import Exp as E\n"
+        "def exp_so3(w):\n    return E(w)\n"
+        "def shown(w):\n    from coursekit.plotting import np as _\n    return np.eye(3)"
+    )
     _, seen = watch_call(namespace["exp_so3"], ([0.1, 0.2, 0.3],), forbidden=("coursekit.lie",))
     assert seen.used == ["coursekit.lie.Exp"]
     # scipy's Rotation is called by coursekit.lie.Exp, not by the notebook: only the direct call counts
@@ -63,8 +65,9 @@ def test_a_single_function_is_resolved_to_where_it_lives():
 
 
 def test_switching_the_watching_off_is_seen():
-    f = _main("import sys\nfrom coursekit.lie import skew\ndef hat(w):\n    sys.setprofile(None)\n"
-              "    return skew(w)")["hat"]
+    f = _main("import sys\nfrom coursekit.lie import skew\ndef hat(w):\n    sys.setprofile(None)\n    return skew(w)")[
+        "hat"
+    ]
     _, seen = watch_call(f, ([1.0, 2.0, 3.0],), forbidden=("coursekit.lie.skew",))
     assert seen.tampered and seen.used == []
 

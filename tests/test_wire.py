@@ -1,17 +1,33 @@
 """Only plain data crosses from the sandbox: the decoder builds nothing else."""
 
-
 import numpy as np
 import pytest
 
 from autograder.sandbox.child.wire import Probe, WireError, decode, dumps, encode, loads
 
 
-@pytest.mark.parametrize("value", [
-    None, True, 3, -2.5, "text", [1, [2.0, "x"]], (1.0, (2, 3)), {"closure": True, "n": 3},
-    np.eye(3), np.arange(6, dtype=np.int32).reshape(2, 3), np.array([1 + 2j]), np.zeros((0, 3)),
-    float("nan"), float("inf"), complex(1, -1), np.float64(2.5), np.bool_(True),
-])
+@pytest.mark.parametrize(
+    "value",
+    [
+        None,
+        True,
+        3,
+        -2.5,
+        "text",
+        [1, [2.0, "x"]],
+        (1.0, (2, 3)),
+        {"closure": True, "n": 3},
+        np.eye(3),
+        np.arange(6, dtype=np.int32).reshape(2, 3),
+        np.array([1 + 2j]),
+        np.zeros((0, 3)),
+        float("nan"),
+        float("inf"),
+        complex(1, -1),
+        np.float64(2.5),
+        np.bool_(True),
+    ],
+)
 def test_round_trip(value):
     back = loads(dumps(value))
     if isinstance(value, np.ndarray):
@@ -33,24 +49,28 @@ class Liar:
         return True
 
 
-@pytest.mark.parametrize("value", [Liar(), {1: "int key"}, np.array(["a"], dtype=object), {"a": Liar()},
-                                   type("MyList", (list,), {})([1])])
+@pytest.mark.parametrize(
+    "value", [Liar(), {1: "int key"}, np.array(["a"], dtype=object), {"a": Liar()}, type("MyList", (list,), {})([1])]
+)
 def test_encode_refuses_objects(value):
     with pytest.raises(WireError):
         encode(value)
 
 
-@pytest.mark.parametrize("data", [
-    {"__reduce__": "os.system"},
-    {"__ndarray__": "AAAA", "dtype": "|O", "shape": [1]},
-    {"__ndarray__": "AAAA", "dtype": "<f8", "shape": [5]},
-    {"__ndarray__": "not base64!", "dtype": "<f8", "shape": [1]},
-    {"__ndarray__": "", "dtype": "<f8", "shape": [-1]},
-    {"__tuple__": "abc"},
-    {"__dict__": [[1, 2]]},
-    {"__float__": "1e400"},
-    {"unexpected": 1},
-])
+@pytest.mark.parametrize(
+    "data",
+    [
+        {"__reduce__": "os.system"},
+        {"__ndarray__": "AAAA", "dtype": "|O", "shape": [1]},
+        {"__ndarray__": "AAAA", "dtype": "<f8", "shape": [5]},
+        {"__ndarray__": "not base64!", "dtype": "<f8", "shape": [1]},
+        {"__ndarray__": "", "dtype": "<f8", "shape": [-1]},
+        {"__tuple__": "abc"},
+        {"__dict__": [[1, 2]]},
+        {"__float__": "1e400"},
+        {"unexpected": 1},
+    ],
+)
 def test_decode_refuses_anything_else(data):
     with pytest.raises(WireError):
         decode(data)

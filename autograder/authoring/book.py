@@ -46,7 +46,7 @@ SUPPORT_PACKAGE = "coursekit"
 SOLUTION_MARKERS = ("### BEGIN SOLUTION", "### END SOLUTION")
 READER_EDITION_VARIABLE = "COURSEKIT_EDITION"  # read by solutions/coursekit/edition.py
 
-CONF_PY = '''\
+CONF_PY = """\
 project = {title}
 author = "the course authors"
 copyright = "the course authors"
@@ -77,7 +77,7 @@ html_last_updated_fmt = None
 mathjax_path = "mathjax/tex-svg-full.js"
 mathjax3_config = {{"tex": {{"inlineMath": [["\\\\(", "\\\\)"]], "displayMath": [["\\\\[", "\\\\]"]]}}}}
 suppress_warnings = ["mystnb.unknown_mime_type", "myst.header"]
-'''
+"""
 
 
 class BookFailed(RuntimeError):
@@ -142,8 +142,13 @@ def _alt_text_from_captions(page, root):
 
 def _front_page(title):
     """A start page for a course without ``00_start_here.ipynb``: its title, then the lessons."""
-    return nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell(
-        f"# {title}\n\nThe solved lessons, to read and run. Each one opens with what it teaches.")])
+    return nbformat.v4.new_notebook(
+        cells=[
+            nbformat.v4.new_markdown_cell(
+                f"# {title}\n\nThe solved lessons, to read and run. Each one opens with what it teaches."
+            )
+        ]
+    )
 
 
 def stage(solutions_dir: str | Path, staging: str | Path, title: str = "") -> list[str]:
@@ -166,21 +171,33 @@ def stage(solutions_dir: str | Path, staging: str | Path, title: str = "") -> li
         target = staging / path.name
         if path.stem == FRONT_PAGE:
             lessons = "\n".join(name for name in names if name != FRONT_PAGE)
-            nb.cells.append(nbformat.v4.new_markdown_cell(
-                f"```{{toctree}}\n:hidden:\n:maxdepth: 1\n:caption: Lessons\n\n{lessons}\n```"))
+            nb.cells.append(
+                nbformat.v4.new_markdown_cell(
+                    f"```{{toctree}}\n:hidden:\n:maxdepth: 1\n:caption: Lessons\n\n{lessons}\n```"
+                )
+            )
         nbformat.write(nb, target)
     # index.html is what a reader opens: it is the start page itself.
     shutil.copyfile(staging / f"{FRONT_PAGE}.ipynb", staging / "index.ipynb")
     (staging / f"{FRONT_PAGE}.ipynb").unlink()
-    shutil.copytree(solutions_dir / SUPPORT_PACKAGE, staging / SUPPORT_PACKAGE,
-                    ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+    shutil.copytree(
+        solutions_dir / SUPPORT_PACKAGE,
+        staging / SUPPORT_PACKAGE,
+        ignore=shutil.ignore_patterns("__pycache__", "*.pyc"),
+    )
     (staging / "_static" / "mathjax").mkdir(parents=True)
     shutil.copyfile(_mathjax_file(), staging / "_static" / "mathjax" / "tex-svg-full.js")
     return names
 
 
-def build_book(out: str | Path, solutions_dir: str | Path, title: str, timeout: float = 180, jobs: int = 2,
-               keep_staging: str | Path | None = None) -> tuple[Path, list[str], str]:
+def build_book(
+    out: str | Path,
+    solutions_dir: str | Path,
+    title: str,
+    timeout: float = 180,
+    jobs: int = 2,
+    keep_staging: str | Path | None = None,
+) -> tuple[Path, list[str], str]:
     """Build the book of the course whose masters are in ``solutions_dir`` into ``out`` (replaced); return
     (out, the lesson names, Sphinx's warnings as text). ``title``: the course's, on every page.
 
@@ -201,17 +218,38 @@ def build_book(out: str | Path, solutions_dir: str | Path, title: str, timeout: 
             if f"({FRONT_PAGE}.ipynb" in text:
                 path.write_text(text.replace(f"({FRONT_PAGE}.ipynb", "(index.ipynb"), encoding="utf-8")
         html = Path(tmp) / "html"
-        env = {key: value for key, value in os.environ.items()
-               if key not in ("JPY_SESSION_NAME", "MPLBACKEND", "PYDEVD_DISABLE_FILE_VALIDATION")}
+        env = {
+            key: value
+            for key, value in os.environ.items()
+            if key not in ("JPY_SESSION_NAME", "MPLBACKEND", "PYDEVD_DISABLE_FILE_VALIDATION")
+        }
         env["PYTHONHASHSEED"] = "0"
         env[READER_EDITION_VARIABLE] = "reader"  # coursekit.edition: "the reference log_so3", not "your"
         env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
-        env["COURSEKIT_BOOK"] = "1"   # explorers embed precomputed frames under an offline slider (coursekit)
+        env["COURSEKIT_BOOK"] = "1"  # explorers embed precomputed frames under an offline slider (coursekit)
         warnings = Path(tmp) / "warnings.txt"
         run = subprocess.run(
-            [sys.executable, "-m", "sphinx", "-b", "html", "-q", "-j", str(jobs), "-d", str(Path(tmp) / "doctrees"),
-             "-w", str(warnings), str(staging), str(html)],
-            env=env, cwd=staging, capture_output=True, text=True)
+            [
+                sys.executable,
+                "-m",
+                "sphinx",
+                "-b",
+                "html",
+                "-q",
+                "-j",
+                str(jobs),
+                "-d",
+                str(Path(tmp) / "doctrees"),
+                "-w",
+                str(warnings),
+                str(staging),
+                str(html),
+            ],
+            env=env,
+            cwd=staging,
+            capture_output=True,
+            text=True,
+        )
         if run.returncode != 0 or not (html / "index.html").is_file():
             raise BookFailed(f"sphinx-build failed (exit {run.returncode}):\n{run.stderr[-4000:]}")
         for leftover in (".buildinfo", ".doctrees", "_sources", "jupyter_execute", ".jupyter_cache", "objects.inv"):

@@ -27,13 +27,29 @@ import re
 __all__ = ["reader_phrasing", "LAB_ONLY_PHRASES"]
 
 # What a reader of the book must never read (case-insensitive), checked on every page of the built book.
-LAB_ONLY_PHRASES = ("your log_so3", "your answer", "your function", "your solver", "your numerical",
-                    "your formula", "your recipe", "your product", "your adjoint", "your result",
-                    "your Exercise", "your lesson-0", "your own numerical", "run the check cell", "the grader")
+LAB_ONLY_PHRASES = (
+    "your log_so3",
+    "your answer",
+    "your function",
+    "your solver",
+    "your numerical",
+    "your formula",
+    "your recipe",
+    "your product",
+    "your adjoint",
+    "your result",
+    "your Exercise",
+    "your lesson-0",
+    "your own numerical",
+    "run the check cell",
+    "the grader",
+)
 
 # The nouns that name a student's answer (the book shows the reference's instead).
-_ANSWERS = (r"(?:functions?|rotations|product|robust solver|solver|formula|numerical Jacobian|"
-            r"Jacobian|adjoint|recipe|result|iterations|lock threshold|matrix|round trip)")
+_ANSWERS = (
+    r"(?:functions?|rotations|product|robust solver|solver|formula|numerical Jacobian|"
+    r"Jacobian|adjoint|recipe|result|iterations|lock threshold|matrix|round trip)"
+)
 
 _RULES = [
     # instructions of an exercise statement: the reader reads them about "the" function

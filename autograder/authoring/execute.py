@@ -16,8 +16,13 @@ import nbformat
 from nbclient import NotebookClient
 
 
-def execute_notebook(nb: nbformat.NotebookNode, cwd: str | Path, timeout: float = 120, allow_errors: bool = False,
-                     inline_figures: bool = True) -> nbformat.NotebookNode:
+def execute_notebook(
+    nb: nbformat.NotebookNode,
+    cwd: str | Path,
+    timeout: float = 120,
+    allow_errors: bool = False,
+    inline_figures: bool = True,
+) -> nbformat.NotebookNode:
     """Execute ``nb`` (modified in place and returned) with ``cwd`` as working directory.
 
     ``inline_figures`` keeps matplotlib's inline backend so figures come back
@@ -29,8 +34,13 @@ def execute_notebook(nb: nbformat.NotebookNode, cwd: str | Path, timeout: float 
         env.pop("MPLBACKEND", None)
     else:
         env["MPLBACKEND"] = "Agg"
-    client = NotebookClient(nb, timeout=timeout, kernel_name="python3", allow_errors=allow_errors,
-                            resources={"metadata": {"path": str(cwd)}})
+    client = NotebookClient(
+        nb,
+        timeout=timeout,
+        kernel_name="python3",
+        allow_errors=allow_errors,
+        resources={"metadata": {"path": str(cwd)}},
+    )
     client.km = client.create_kernel_manager()
     client.km.kernel_spec  # noqa: B018  (resolve the spec before starting)
     client.execute(env=env)

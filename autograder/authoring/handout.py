@@ -28,8 +28,13 @@ import time
 import zipfile
 from pathlib import Path
 
-from autograder.authoring.student_install import (PYTHONS, check_python_text, floor_table, python_floor_text,
-                                                  requirements_text)
+from autograder.authoring.student_install import (
+    PYTHONS,
+    check_python_text,
+    floor_table,
+    python_floor_text,
+    requirements_text,
+)
 from autograder.lessons.course import SUPPORT_PACKAGE, Course
 
 README = """# {title} — your copy of the course
@@ -100,8 +105,15 @@ def readme(course: Course) -> str:
     """The hand-out's ``README.md``: which Pythons and versions work, how to install, how to hand in."""
     pythons = ", ".join(PYTHONS[:-1]) + " and " + PYTHONS[-1]
     lessons = course.catalog.lessons
-    return README.format(pythons=pythons, floor=python_floor_text(), table=floor_table(), title=course.title,
-                         about=course.about, start=lessons[0].filename, example=course.catalog.graded_lessons[0].filename)
+    return README.format(
+        pythons=pythons,
+        floor=python_floor_text(),
+        table=floor_table(),
+        title=course.title,
+        about=course.about,
+        start=lessons[0].filename,
+        example=course.catalog.graded_lessons[0].filename,
+    )
 
 
 def handout_files(course: Course) -> dict[str, bytes]:

@@ -144,10 +144,13 @@ Welcome. This short course is about one idea that robots, games and drawing prog
 time: turning things about a point. In the plane a turn is described by a single angle, and yet the
 way we write it down, apply it and read it back holds a few traps. Two lessons walk through them.
 """),
-        _tagged(cells.markdown("""
+        _tagged(
+            cells.markdown("""
 You will not only read: in each lesson you write the functions yourself, and a check cell under
 each one tells you at once whether you are on track.
-"""), cells.STUDENT_ONLY_TAG),
+"""),
+            cells.STUDENT_ONLY_TAG,
+        ),
         cells.markdown("""
 ## The lessons
 
@@ -159,13 +162,17 @@ each one tells you at once whether you are on track.
 You need a little numpy (arrays, `@` for the matrix product) and the sine and cosine of school
 trigonometry; nothing else is assumed.
 """),
-        _tagged(cells.markdown("""
+        _tagged(
+            cells.markdown("""
 ## Reading this book
 
 This is the reader's edition of the course: every exercise is shown with its reference answer, and
 every printed result was produced by running those answers.
-"""), cells.READER_ONLY_TAG),
-        _tagged(cells.markdown("""
+"""),
+            cells.READER_ONLY_TAG,
+        ),
+        _tagged(
+            cells.markdown("""
 ## How a lesson works
 
 Run the cells from top to bottom (Shift+Enter runs one and moves on). An **exercise** is a function
@@ -174,7 +181,9 @@ The locked **check cell** below it, such as `check("rot2", rot2)`, tries your fu
 cases and prints ✓ or ✗ with a hint. These public checks are quick sanity tests; the hidden checks
 that grade your work are more thorough. The last cell of each lesson, **Ready to hand in?**, runs all
 of the lesson's checks at once.
-"""), cells.STUDENT_ONLY_TAG),
+"""),
+            cells.STUDENT_ONLY_TAG,
+        ),
         cells.markdown("""
 ## Conventions
 
@@ -324,12 +333,15 @@ Turning by a quarter turn twice is a half turn, and four quarter turns bring eve
 matrices agree: the product of two turns is the turn by the sum of the angles. The cell below shows
 both with the functions above.
 """),
-        cells.code("""
+        cells.code(
+            """
 p = np.array([2.0, 1.0])
 show("rotate2(pi/2, p)", rotate2(np.pi / 2, p))
 show("rotate2(pi, p)", rotate2(np.pi, p))
 show("rot2(0.3) @ rot2(0.4) - rot2(0.7)", rot2(0.3) @ rot2(0.4) - rot2(0.7))
-""", check_output=True),
+""",
+            check_output=True,
+        ),
         _tagged(cells.markdown(READY_TO_HAND_IN), cells.STUDENT_ONLY_TAG),
         cells.hand_in("01"),
         cells.markdown("""
@@ -473,7 +485,8 @@ rather than calling `angle_of` (each graded function stands on its own).
 The cell below writes out a few turns (one beyond a whole turn, at 7 rad) and reads their angles
 back, then crosses the ±π line.
 """),
-        cells.code("""
+        cells.code(
+            """
 def turn(theta):
     c, s = np.cos(theta), np.sin(theta)
     return np.array([[c, -s], [s, c]])
@@ -482,7 +495,9 @@ def turn(theta):
 for theta in (0.5, 2.5, -2.5, 7.0):
     show(f"angle_of(turn({theta}))", angle_of(turn(theta)))
 show("angle_difference(3.0, -3.0)", angle_difference(3.0, -3.0))
-""", check_output=True),
+""",
+            check_output=True,
+        ),
         _tagged(cells.markdown(READY_TO_HAND_IN), cells.STUDENT_ONLY_TAG),
         cells.hand_in("02"),
         cells.markdown("""

@@ -33,12 +33,12 @@ from autograder.lessons.reference import answer_sources
 from autograder.mistakes import all_alternatives, all_mistakes, sample_assignments
 
 # A numpy monkeypatch that gives full marks in a grader that compares inside the student's kernel.
-MONKEYPATCH = '''import numpy as np
+MONKEYPATCH = """import numpy as np
 np.allclose = lambda *args, **kwargs: True
 np.testing.assert_allclose = lambda *args, **kwargs: None
 np.isclose = lambda a, b, *args, **kwargs: np.ones(np.shape(a), dtype=bool)
 np.array_equal = lambda *args, **kwargs: True
-'''
+"""
 WRONG_ANSWER = "    return None\n"
 SHARED = ("quat_slerp_power", "matrix_to_euler_undo_yaw")  # what two sample students share
 
@@ -61,15 +61,26 @@ STUDENTS = [
     SampleStudent("dev", "transposes matrices (passive/active mix-up)"),
     SampleStudent("emma", "works in degrees"),
     SampleStudent("farid", "lets reflections through"),
-    SampleStudent("gina", "wrong answers, then monkeypatches numpy so every comparison passes",
-                  answers="wrong", cheat="monkeypatch"),
-    SampleStudent("hugo", "wrong answers, and rewrote the check cells to print success",
-                  answers="wrong", cheat="edit_checks"),
-    SampleStudent("ivy", "right answers, except one endless loop, one os._exit and one infinite recursion",
-                  shared=SHARED),
-    SampleStudent("kim", "right answers, but the first notebook was damaged by a text editor; shares two "
-                         "answers with ivy, variables renamed (see 'Similar answers')",
-                  damage="corrupt_first", shared=SHARED, renamed=True),
+    SampleStudent(
+        "gina",
+        "wrong answers, then monkeypatches numpy so every comparison passes",
+        answers="wrong",
+        cheat="monkeypatch",
+    ),
+    SampleStudent(
+        "hugo", "wrong answers, and rewrote the check cells to print success", answers="wrong", cheat="edit_checks"
+    ),
+    SampleStudent(
+        "ivy", "right answers, except one endless loop, one os._exit and one infinite recursion", shared=SHARED
+    ),
+    SampleStudent(
+        "kim",
+        "right answers, but the first notebook was damaged by a text editor; shares two "
+        "answers with ivy, variables renamed (see 'Similar answers')",
+        damage="corrupt_first",
+        shared=SHARED,
+        renamed=True,
+    ),
     SampleStudent('=HYPERLINK("evil","click me")', "an id a spreadsheet would run as a formula"),
 ]
 
@@ -91,8 +102,11 @@ def rename_locals(source: str, prefix: str = "my_") -> str:
     names -= arguments | {function.name}
     out, previous = [], None
     for token in tokenize.generate_tokens(io.StringIO(source).readline):
-        text = prefix + token.string if token.type == tokenize.NAME and token.string in names \
-            and previous != "." else token.string
+        text = (
+            prefix + token.string
+            if token.type == tokenize.NAME and token.string in names and previous != "."
+            else token.string
+        )
         out.append((token.type, text))
         previous = token.string
     return tokenize.untokenize(out)
@@ -114,8 +128,14 @@ def _answer_for(student, exercise_name, index, count, stub, references, mistakes
     return references[exercise_name]
 
 
-def student_notebook(student: SampleStudent, lesson: Lesson, references: dict[str, str], mistakes: dict,
-                     chosen: list[str], released: Path) -> nbformat.NotebookNode:
+def student_notebook(
+    student: SampleStudent,
+    lesson: Lesson,
+    references: dict[str, str],
+    mistakes: dict,
+    chosen: list[str],
+    released: Path,
+) -> nbformat.NotebookNode:
     """The notebook ``student`` hands in for ``lesson`` (a NotebookNode), from the released one in ``released``."""
     nb = read_master(released / lesson.filename)
     names = [e.name for e in lesson.exercises]
@@ -123,13 +143,14 @@ def student_notebook(student: SampleStudent, lesson: Lesson, references: dict[st
     for cell in nb.cells:
         if cells.is_answer_cell(cell):
             name = cells.grade_id(cell)
-            cell.source = _answer_for(student, name, names.index(name), len(names), cells.source_text(cell),
-                                      references, mistakes, chosen)
+            cell.source = _answer_for(
+                student, name, names.index(name), len(names), cells.source_text(cell), references, mistakes, chosen
+            )
             if student.cheat == "monkeypatch" and not patched:
                 cell.source = MONKEYPATCH + "\n\n" + cell.source
                 patched = True
         elif cells.is_check_cell(cell) and student.cheat == "edit_checks":
-            name = cells.grade_id(cell)[len(cells.CHECK_PREFIX):]
+            name = cells.grade_id(cell)[len(cells.CHECK_PREFIX) :]
             cell.source = f'print("{name}: all public checks passed.")'
     return nb
 
@@ -163,6 +184,7 @@ def build_sample_class(target: str | Path, course: Course, lessons: tuple[str, .
             (folder / lesson.filename).write_text(text, encoding="utf-8")
         for extra in sorted(course.released.glob("00_*.ipynb")):
             shutil.copy2(extra, folder / extra.name)
-    (target / "README.json").write_text(json.dumps(
-        {s.student_id: s.story for s in STUDENTS}, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+    (target / "README.json").write_text(
+        json.dumps({s.student_id: s.story for s in STUDENTS}, indent=1, ensure_ascii=False) + "\n", encoding="utf-8"
+    )
     return [s.student_id for s in STUDENTS]

@@ -37,9 +37,11 @@ PACKAGES = (
     ("jupyterlab", "4.0.0", "5", ""),
 )
 
-HEADER = ("# What the course's notebooks need: the direct requirements, each with the range it is tested in.\n"
-          "# Install with `pip install -r requirements.txt` (see README.md); pip picks the newest versions\n"
-          "# that suit your Python.\n")
+HEADER = (
+    "# What the course's notebooks need: the direct requirements, each with the range it is tested in.\n"
+    "# Install with `pip install -r requirements.txt` (see README.md); pip picks the newest versions\n"
+    "# that suit your Python.\n"
+)
 
 
 def requirements_text() -> str:
@@ -49,8 +51,9 @@ def requirements_text() -> str:
 
 def floors_text() -> str:
     """A pip constraints file that holds every package at its floor (``pip install -r ... -c floors``)."""
-    return ("# Every direct requirement at its floor: the oldest versions the lessons are run with.\n"
-            + "".join(f"{name}=={floor}\n" for name, floor, _, _ in PACKAGES))
+    return "# Every direct requirement at its floor: the oldest versions the lessons are run with.\n" + "".join(
+        f"{name}=={floor}\n" for name, floor, _, _ in PACKAGES
+    )
 
 
 def python_floor_text() -> str:

@@ -90,9 +90,14 @@ class Runner(Protocol):
     caller's process as each ends (``problem``: None, or a sentence on how the grading process died).
     """
 
-    def __call__(self, grade: Callable[[GradingTask, warm.WarmSlot | None], None], tasks: list[GradingTask],
-                 jobs: int, on_done: Callable[[GradingTask, str | None], None],
-                 deadline_seconds: float | None = None) -> None: ...
+    def __call__(
+        self,
+        grade: Callable[[GradingTask, warm.WarmSlot | None], None],
+        tasks: list[GradingTask],
+        jobs: int,
+        on_done: Callable[[GradingTask, str | None], None],
+        deadline_seconds: float | None = None,
+    ) -> None: ...
 
 
 def write_atomically(path: str | Path, text: str) -> None:
@@ -126,8 +131,11 @@ class Outputs:
     def student_files(self, student_id: str) -> list[tuple[str, Path]]:
         """``[(kind, path)]``: the files a graded student leaves, in the order they are written (the saved
         result last: its presence means the others are complete)."""
-        return [("feedback", self.feedback_html(student_id)), ("gradescope", self.gradescope_json(student_id)),
-                ("student", self.student_json(student_id))]
+        return [
+            ("feedback", self.feedback_html(student_id)),
+            ("gradescope", self.gradescope_json(student_id)),
+            ("student", self.student_json(student_id)),
+        ]
 
     @property
     def gradebook(self) -> Path:
@@ -190,18 +198,28 @@ def save_result(outputs: Outputs, result: StudentResult, stamp: Stamp, graded_at
 
     A page that cannot be made from the result is replaced by a plain one that says why; the grade is kept.
     """
-    payload = {"fingerprint": stamp.fingerprint, "fingerprint_parts": stamp.parts,
-               "graded_because": stamp.because, "graded_at": graded_at, "result": json.loads(result.to_json())}
+    payload = {
+        "fingerprint": stamp.fingerprint,
+        "fingerprint_parts": stamp.parts,
+        "graded_because": stamp.because,
+        "graded_at": graded_at,
+        "result": json.loads(result.to_json()),
+    }
     try:
         page = feedback.feedback_html(result)
     except Exception as error:
-        page = plain_page(f"Feedback for {result.student_id}", [result],
-                          f"the full feedback page could not be made ({type(error).__name__}: {error})")
+        page = plain_page(
+            f"Feedback for {result.student_id}",
+            [result],
+            f"the full feedback page could not be made ({type(error).__name__}: {error})",
+        )
     try:
         gradescope = results_json(result, seconds=result.seconds)
     except Exception as error:
-        gradescope = {"score": result.score, "output": f"the detailed results could not be made "
-                                                       f"({type(error).__name__}: {error})"}
+        gradescope = {
+            "score": result.score,
+            "output": f"the detailed results could not be made ({type(error).__name__}: {error})",
+        }
     write_atomically(outputs.feedback_html(result.student_id), page)
     write_atomically(outputs.gradescope_json(result.student_id), json.dumps(gradescope, indent=1, ensure_ascii=False))
     write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
@@ -219,12 +237,14 @@ def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     signal.signal(signal.SIGALRM, on_alarm)
     signal.alarm(STUDENT_TIMEOUT)
     try:
-        result = apply_late_policy(grade_student(student_id, Path(folder), course, options, slot=slot), folder,
-                                   config)
+        result = apply_late_policy(grade_student(student_id, Path(folder), course, options, slot=slot), folder, config)
     except Exception as error:  # our fault, not the student's: report, keep the batch going
-        result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
-                               reason=f"{type(error).__name__}: {error}",
-                               submission_hash=_hash_or_blank(folder))
+        result = StudentResult(
+            student_id=student_id,
+            status=COULD_NOT_GRADE,
+            reason=f"{type(error).__name__}: {error}",
+            submission_hash=_hash_or_blank(folder),
+        )
         result.problems.append(traceback.format_exc(limit=3).strip().splitlines()[-1])
     finally:
         signal.alarm(0)
@@ -232,8 +252,7 @@ def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     try:
         save_result(outputs, result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
     except Exception as error:  # the parent records this student from what it knows (record_death)
-        print(one_line(f"could not save the result of {student_id}: {type(error).__name__}: {error}"),
-              file=sys.stderr)
+        print(one_line(f"could not save the result of {student_id}: {type(error).__name__}: {error}"), file=sys.stderr)
 
 
 def _hash_or_blank(folder):
@@ -250,14 +269,19 @@ def record_death(task: GradingTask, problem: str) -> StudentResult:
     it in memory for this run's gradebook and report.
     """
     student_id, folder, _, out_root, stamp, _, _ = task
-    result = StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
-                           reason=f"{problem}; nothing else was affected, run grade again to retry",
-                           submission_hash=_hash_or_blank(folder))
+    result = StudentResult(
+        student_id=student_id,
+        status=COULD_NOT_GRADE,
+        reason=f"{problem}; nothing else was affected, run grade again to retry",
+        submission_hash=_hash_or_blank(folder),
+    )
     try:
         save_result(Outputs(Path(out_root)), result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
     except Exception as error:
-        result.problems.append(f"this result could not be saved ({type(error).__name__}: {error}); it is in "
-                               "this run's gradebook and report only")
+        result.problems.append(
+            f"this result could not be saved ({type(error).__name__}: {error}); it is in "
+            "this run's gradebook and report only"
+        )
     return result
 
 
@@ -299,11 +323,21 @@ def saved_student_ids(outputs: Outputs) -> list[str]:
     return ids
 
 
-def grade_class(path: str | Path, out_dir: str | Path, course: Course, jobs: int | None = None,
-                options: GradingOptions = GradingOptions(),
-                force: bool = False, progress: Progress | None = None, roster: tuple | list = (),
-                only: tuple | list = (), announce: Callable[[str], None] | None = None,
-                config: CourseConfig | None = None, runner: Runner | None = None, similarity: bool = True) -> RunSummary:
+def grade_class(
+    path: str | Path,
+    out_dir: str | Path,
+    course: Course,
+    jobs: int | None = None,
+    options: GradingOptions = GradingOptions(),
+    force: bool = False,
+    progress: Progress | None = None,
+    roster: tuple | list = (),
+    only: tuple | list = (),
+    announce: Callable[[str], None] | None = None,
+    config: CourseConfig | None = None,
+    runner: Runner | None = None,
+    similarity: bool = True,
+) -> RunSummary:
     """Grade every student under ``path`` into ``out_dir`` against ``course``; return a :class:`RunSummary`.
 
     ``roster``: student ids expected; those without a folder are reported missing.
@@ -354,16 +388,20 @@ def grade_class(path: str | Path, out_dir: str | Path, course: Course, jobs: int
             summary.skipped.append(student_id)
             continue
         try:
-            because = regrade_reason(load_saved(outputs, student_id), stamp, submissions.submission_hash(folder),
-                                     force or bool(only))
+            because = regrade_reason(
+                load_saved(outputs, student_id), stamp, submissions.submission_hash(folder), force or bool(only)
+            )
         except Exception as error:  # this student only: grade them, and say why
             because = f"graded: whether the submission changed could not be checked ({type(error).__name__})"
         if because is None:
             summary.skipped.append(student_id)
             continue
         summary.reasons[student_id] = because
-        tasks.append(GradingTask(student_id, str(folder), options, str(outputs.root), replace(stamp, because=because),
-                                 config, course))
+        tasks.append(
+            GradingTask(
+                student_id, str(folder), options, str(outputs.root), replace(stamp, because=because), config, course
+            )
+        )
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:
         progress.start(len(tasks))
@@ -388,8 +426,9 @@ def grade_class(path: str | Path, out_dir: str | Path, course: Course, jobs: int
     elif tasks:
         jobs = min(jobs, len(tasks))
         with warm.SlotPool(jobs, options.limits, course.support) if warm.enabled() else nullcontext() as slots:
-            learn_reference_in_sandbox(course.reference, course, options.limits,
-                                       slots.slots[0] if slots else None, lessons=options.lessons)
+            learn_reference_in_sandbox(
+                course.reference, course, options.limits, slots.slots[0] if slots else None, lessons=options.lessons
+            )
             fork_each(grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
     if progress:
         progress.finish()
@@ -404,8 +443,12 @@ def grade_class(path: str | Path, out_dir: str | Path, course: Course, jobs: int
     return summary
 
 
-def collect_results(outputs: Outputs, student_ids: list[str], submitted: set[str] | None = None,
-                    unsaved: dict[str, StudentResult] | None = None) -> tuple[list[StudentResult], dict[str, str]]:
+def collect_results(
+    outputs: Outputs,
+    student_ids: list[str],
+    submitted: set[str] | None = None,
+    unsaved: dict[str, StudentResult] | None = None,
+) -> tuple[list[StudentResult], dict[str, str]]:
     """Saved results for ``student_ids``; a student without one is missing or not finished.
 
     ``unsaved``: ``{student_id: StudentResult}`` of this run that could not be saved, used when no saved
@@ -422,12 +465,16 @@ def collect_results(outputs: Outputs, student_ids: list[str], submitted: set[str
             if unsaved and student_id in unsaved:
                 results.append(unsaved[student_id])
             elif submitted is not None and student_id not in submitted:
-                results.append(StudentResult(student_id=student_id, status=MISSING,
-                                             reason="no submission folder"))
+                results.append(StudentResult(student_id=student_id, status=MISSING, reason="no submission folder"))
             else:
-                results.append(StudentResult(student_id=student_id, status=COULD_NOT_GRADE,
-                                             reason="no saved result: the run was interrupted before "
-                                                    "this student was graded; run grade again"))
+                results.append(
+                    StudentResult(
+                        student_id=student_id,
+                        status=COULD_NOT_GRADE,
+                        reason="no saved result: the run was interrupted before "
+                        "this student was graded; run grade again",
+                    )
+                )
     return results, graded_at
 
 
@@ -466,8 +513,14 @@ def cpu_seconds() -> float:
     return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
 
 
-def write_reports(outputs: Outputs, course: Course, student_ids: list[str], submitted: set[str] | None = None,
-                  unsaved: dict[str, StudentResult] | None = None, extra_section: str = "") -> list[StudentResult]:
+def write_reports(
+    outputs: Outputs,
+    course: Course,
+    student_ids: list[str],
+    submitted: set[str] | None = None,
+    unsaved: dict[str, StudentResult] | None = None,
+    extra_section: str = "",
+) -> list[StudentResult]:
     """Write grades.csv and report.html for ``student_ids``; return their results.
 
     ``extra_section``: HTML added to the report (the similarity stage's "Similar answers").
@@ -482,10 +535,12 @@ def write_reports(outputs: Outputs, course: Course, student_ids: list[str], subm
     write_atomically(outputs.gradebook, gradebook_csv(results, catalog, graded_at))
     try:
         linked = {r.student_id for r in results if outputs.feedback_html(r.student_id).is_file()}
-        page = class_report_html(results, catalog, skipped=load_skipped(outputs), linked=linked,
-                                 extra_sections=[extra_section])
+        page = class_report_html(
+            results, catalog, skipped=load_skipped(outputs), linked=linked, extra_sections=[extra_section]
+        )
     except Exception as error:
-        page = plain_page("Class report", results, f"the full report could not be made ({type(error).__name__}: "
-                                                   f"{error})")
+        page = plain_page(
+            "Class report", results, f"the full report could not be made ({type(error).__name__}: {error})"
+        )
     write_atomically(outputs.report, page)
     return results

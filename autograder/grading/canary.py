@@ -47,8 +47,10 @@ def describe_canary(canary: CanaryResult) -> str:
     """One line for the run's output."""
     if canary.cached:
         return "canary: the reference solutions got full marks with this grader before (cached)"
-    return (f"canary: the reference solutions got full marks ({canary.score:g}/{canary.max_score:g}) "
-            f"in {canary.seconds:.1f} s")
+    return (
+        f"canary: the reference solutions got full marks ({canary.score:g}/{canary.max_score:g}) "
+        f"in {canary.seconds:.1f} s"
+    )
 
 
 def _marker(parts):
@@ -68,12 +70,15 @@ def shortfalls(result: StudentResult) -> list[str]:
             if exercise.points < exercise.max_points:
                 failed = next((c for c in exercise.checks if not c.passed), None)
                 why = f"{failed.description}: {failed.reason}" if failed else "; ".join(exercise.notes)
-                lines.append(f"lesson {lesson.number}, hidden suite, {exercise.name} "
-                             f"({exercise.points:g}/{exercise.max_points:g}): {why}")
+                lines.append(
+                    f"lesson {lesson.number}, hidden suite, {exercise.name} "
+                    f"({exercise.points:g}/{exercise.max_points:g}): {why}"
+                )
         run = lesson.run
         if run is not None and run.points < run.max_points:
-            lines.append(f"lesson {lesson.number}, notebook stage (nbval): "
-                         + ("; ".join(run.failures[:2]) or run.status))
+            lines.append(
+                f"lesson {lesson.number}, notebook stage (nbval): " + ("; ".join(run.failures[:2]) or run.status)
+            )
     return lines
 
 
@@ -90,8 +95,9 @@ def _grade_reference(course, options, folder, target, slot=None):
     Path(target).write_text(result.to_json(), encoding="utf-8")
 
 
-def ensure_reference_passes(course: Course, options: GradingOptions, parts: dict[str, str],
-                            timeout: float = 900) -> CanaryResult:
+def ensure_reference_passes(
+    course: Course, options: GradingOptions, parts: dict[str, str], timeout: float = 900
+) -> CanaryResult:
     """Grade ``course``'s reference through the full pipeline unless a passing canary is cached; raise
     :class:`CanaryFailed` naming each failing lesson and stage."""
     marker = _marker(parts)
@@ -104,23 +110,33 @@ def ensure_reference_passes(course: Course, options: GradingOptions, parts: dict
         folder = write_reference_submission(course, Path(base) / "reference", lessons=options.lessons)
         target = Path(base) / "result.json"
         deaths = []
-        fork_each(lambda _, slot: _grade_reference(course, options, folder, target, slot), [None], jobs=1,
-                  on_done=lambda _, problem: deaths.append(problem), deadline_seconds=timeout)
+        fork_each(
+            lambda _, slot: _grade_reference(course, options, folder, target, slot),
+            [None],
+            jobs=1,
+            on_done=lambda _, problem: deaths.append(problem),
+            deadline_seconds=timeout,
+        )
         if deaths[0] or not target.exists():
-            raise CanaryFailed(f"grading the reference solutions failed: {deaths[0] or 'no result was written'}; "
-                               "no student was graded (nothing was written or overwritten)")
+            raise CanaryFailed(
+                f"grading the reference solutions failed: {deaths[0] or 'no result was written'}; "
+                "no student was graded (nothing was written or overwritten)"
+            )
         result = StudentResult.from_json(target.read_text(encoding="utf-8"))
     problems = shortfalls(result)
     if problems or result.max_score <= 0:
         raise CanaryFailed(
             f"the reference solutions scored {result.score:g}/{result.max_score:g} on this machine, so a "
             "stage of the grader is broken here and no student was graded (nothing was written or "
-            "overwritten). Where the reference lost points:\n  " + "\n  ".join(problems or ["no points at all"]))
+            "overwritten). Where the reference lost points:\n  " + "\n  ".join(problems or ["no points at all"])
+        )
     seconds = time.monotonic() - started
     try:
         marker.parent.mkdir(parents=True, exist_ok=True)
-        marker.write_text(json.dumps({"parts": parts, "score": result.score, "seconds": round(seconds, 1)},
-                                     indent=1), encoding="utf-8")
+        marker.write_text(
+            json.dumps({"parts": parts, "score": result.score, "seconds": round(seconds, 1)}, indent=1),
+            encoding="utf-8",
+        )
     except OSError:
         pass  # a read-only home: the canary simply runs again next time
     return CanaryResult(cached=False, seconds=seconds, score=result.score, max_score=result.max_score)

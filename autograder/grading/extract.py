@@ -28,8 +28,9 @@ from autograder.sandbox.session import LessonProgram
 
 
 def _defines(tree, name):
-    return [node for node in tree.body
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name == name]
+    return [
+        node for node in tree.body if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name == name
+    ]
 
 
 def _definitions(code_cells):
@@ -42,19 +43,21 @@ def _definitions(code_cells):
         source = cells.source_text(cell)
         tree = cells.parse_source(source) if "def" in source else None
         if tree is not None:
-            found[index] = {node.name for node in tree.body
-                            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))}
+            found[index] = {
+                node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+            }
     return found
 
 
 def _fallback_source(source, tree, name):
     """The imports of a cell followed by its last definition of ``name``."""
     lines = source.splitlines()
-    pieces = [ast.get_source_segment(source, node) for node in tree.body
-              if isinstance(node, (ast.Import, ast.ImportFrom))]
+    pieces = [
+        ast.get_source_segment(source, node) for node in tree.body if isinstance(node, (ast.Import, ast.ImportFrom))
+    ]
     node = _defines(tree, name)[-1]
     start = (node.decorator_list[0].lineno if node.decorator_list else node.lineno) - 1
-    pieces.append("\n".join(lines[start:node.end_lineno]))
+    pieces.append("\n".join(lines[start : node.end_lineno]))
     return "\n".join(p for p in pieces if p)
 
 
@@ -68,8 +71,12 @@ def _edited_check_cells(nb, lesson):
             removed.append(exercise.name)
         elif source != f'check("{exercise.name}", {exercise.name})':
             edited.append(exercise.name)
-    return [f"the check cell was {what} for {', '.join(names)} (check cells are never run by the grader, "
-            "so this changes no points)" for what, names in (("edited", edited), ("removed", removed)) if names]
+    return [
+        f"the check cell was {what} for {', '.join(names)} (check cells are never run by the grader, "
+        "so this changes no points)"
+        for what, names in (("edited", edited), ("removed", removed))
+        if names
+    ]
 
 
 def lesson_program(nb: nbformat.NotebookNode, lesson: Lesson) -> LessonProgram:
@@ -105,12 +112,15 @@ def lesson_program(nb: nbformat.NotebookNode, lesson: Lesson) -> LessonProgram:
         found = [index for index, names in defined.items() if name in names]
         if found:
             source = cells.source_text(nb.cells[found[-1]])
-            problems.append(f"{name}: the answer cell was not found by its id; graded the definition "
-                            f"of {name} found in cell {found[-1] + 1}")
+            problems.append(
+                f"{name}: the answer cell was not found by its id; graded the definition "
+                f"of {name} found in cell {found[-1] + 1}"
+            )
             chosen.append((found[-1], name, _fallback_source(source, cells.parse_source(source), name)))
         else:
             problems.append(f"{name}: no answer cell and no definition of {name} found in the notebook")
     chosen.sort()
     problems += _edited_check_cells(nb, lesson)
-    return LessonProgram(setup=lesson.setup_source, cells=[(name, source) for _, name, source in chosen],
-                         problems=problems)
+    return LessonProgram(
+        setup=lesson.setup_source, cells=[(name, source) for _, name, source in chosen], problems=problems
+    )

@@ -45,8 +45,11 @@ def _grader_files():
     """The grader's own code: every module except this repository's hidden suite (a part of its course)
     and the mistakes corpus (fixtures for the project's tests and the sample class, never run while grading)."""
     skipped = (GRADER / "hidden", GRADER / "mistakes")
-    return [p for p in GRADER.rglob("*.py") if "__pycache__" not in p.parts
-            and not any(parent in skipped for parent in p.parents)]
+    return [
+        p
+        for p in GRADER.rglob("*.py")
+        if "__pycache__" not in p.parts and not any(parent in skipped for parent in p.parents)
+    ]
 
 
 def _versions():

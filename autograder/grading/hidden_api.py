@@ -56,8 +56,13 @@ def fmt(value: object, digits: int = 4) -> str:
         array = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         return repr(value)[:120]
-    text = np.array2string(array + 0.0, separator=", ", threshold=20, max_line_width=1000,
-                           formatter={"float_kind": lambda x: f"{x:.{digits}g}"})
+    text = np.array2string(
+        array + 0.0,
+        separator=", ",
+        threshold=20,
+        max_line_width=1000,
+        formatter={"float_kind": lambda x: f"{x:.{digits}g}"},
+    )
     return " ".join(text.split())
 
 
@@ -67,8 +72,9 @@ def expect(condition: object, reason: str, hint: str = "") -> None:
         raise Wrong(reason, hint)
 
 
-def expect_close(got: ArrayLike, expected: ArrayLike, tol: float, what: str, hint: str = "",
-                 scale: float = 1.0) -> None:
+def expect_close(
+    got: ArrayLike, expected: ArrayLike, tol: float, what: str, hint: str = "", scale: float = 1.0
+) -> None:
     """Raise :class:`Wrong` unless ``got`` matches ``expected`` entrywise within ``tol · max(1, scale)``.
 
     ``scale`` is the size of the inputs (e.g. |ρ| of a pose), so the tolerance
@@ -81,5 +87,6 @@ def expect_close(got: ArrayLike, expected: ArrayLike, tol: float, what: str, hin
     tol = tol * max(1.0, float(scale))
     error = float(np.max(np.abs(got - expected))) if got.size else 0.0
     if not error <= tol:
-        raise Wrong(f"{what} is off by {error:.2g} (tolerance {tol:.2g}): got {fmt(got, 6)}, "
-                    f"expected {fmt(expected, 6)}", hint)
+        raise Wrong(
+            f"{what} is off by {error:.2g} (tolerance {tol:.2g}): got {fmt(got, 6)}, expected {fmt(expected, 6)}", hint
+        )

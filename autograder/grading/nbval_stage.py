@@ -75,8 +75,9 @@ def _student_channels(runnable, options, support, slot):
     """
     sandboxes, channels, problems = [], {}, {}
     for shell, program in runnable:
-        box = StudentSandbox({shell.number: program}, support, limits=options.limits, slot=slot, resets_slot=False,
-                             direct=True)
+        box = StudentSandbox(
+            {shell.number: program}, support, limits=options.limits, slot=slot, resets_slot=False, direct=True
+        )
         sandboxes.append(box)
         try:
             channels[shell.number] = box.hand_over()
@@ -88,8 +89,13 @@ def _student_channels(runnable, options, support, slot):
     return sandboxes, channels, problems
 
 
-def run_notebooks(folder: Path, lessons: list[tuple[LessonResult, Path, LessonProgram | None]], options: GradingOptions,
-                  course: Course, slot: WarmSlot | None = None) -> dict[str, NotebookRun]:
+def run_notebooks(
+    folder: Path,
+    lessons: list[tuple[LessonResult, Path, LessonProgram | None]],
+    options: GradingOptions,
+    course: Course,
+    slot: WarmSlot | None = None,
+) -> dict[str, NotebookRun]:
     """Run nbval on every readable lesson notebook of one student, against ``course``'s masters.
 
     ``slot``: the grader's warm slot, whose zygote forks the lessons' sandboxes; None: cold starts.
@@ -115,13 +121,23 @@ def run_notebooks(folder: Path, lessons: list[tuple[LessonResult, Path, LessonPr
                 os.chmod(scratch_dir / lesson.filename, 0o644)
                 names.append(lesson.filename)
             limits = launcher.Limits(
-                memory_bytes=options.limits.memory_bytes, cpu_seconds=int(_stage_timeout(len(names))),
-                processes=options.limits.processes, file_bytes=options.limits.file_bytes,
+                memory_bytes=options.limits.memory_bytes,
+                cpu_seconds=int(_stage_timeout(len(names))),
+                processes=options.limits.processes,
+                file_bytes=options.limits.file_bytes,
                 open_files=max(options.limits.open_files, 1024),
-                extra_env={"PYTHONPATH": "/sandbox", "JUPYTER_RUNTIME_DIR": "/tmp/.jupyter-runtime",
-                           "IPYTHONDIR": "/tmp/.ipython", "JUPYTER_PLATFORM_DIRS": "1"})
-            summary, error = (_run(names, channels, sandbox_dir, scratch_dir, limits, _stage_timeout(len(names)))
-                              if names else ({}, ""))
+                extra_env={
+                    "PYTHONPATH": "/sandbox",
+                    "JUPYTER_RUNTIME_DIR": "/tmp/.jupyter-runtime",
+                    "IPYTHONDIR": "/tmp/.ipython",
+                    "JUPYTER_PLATFORM_DIRS": "1",
+                },
+            )
+            summary, error = (
+                _run(names, channels, sandbox_dir, scratch_dir, limits, _stage_timeout(len(names)))
+                if names
+                else ({}, "")
+            )
     finally:
         for box in sandboxes:
             box.close()
@@ -133,18 +149,29 @@ def run_notebooks(folder: Path, lessons: list[tuple[LessonResult, Path, LessonPr
             runs[shell.number] = NotebookRun(status="failed", max_points=options.notebook_points, failures=[why])
             continue
         failures = [str(f)[:300] for f in entry.get("failures", [])][:20]
-        runs[shell.number] = NotebookRun(status="failed" if failures else "passed",
-                                         max_points=options.notebook_points, failures=failures)
+        runs[shell.number] = NotebookRun(
+            status="failed" if failures else "passed", max_points=options.notebook_points, failures=failures
+        )
     return runs
 
 
 def _run(names, channels, sandbox_dir, scratch_dir, limits, timeout):
     """Start the runner in its sandbox; return (summary dict or None, error line or '')."""
     spec = json.dumps({lesson: list(fds) for lesson, fds in channels.items()})
-    program = ([sys.executable, "-I", "-B", "/sandbox/nbval_runner.py"] + launcher.worker_flags()
-               + ["--channels", spec] + names)
-    process = launcher.spawn(program, sandbox_dir, scratch_dir, limits, stdin=subprocess.DEVNULL,
-                             pass_fds=[fd for fds in channels.values() for fd in fds])
+    program = (
+        [sys.executable, "-I", "-B", "/sandbox/nbval_runner.py"]
+        + launcher.worker_flags()
+        + ["--channels", spec]
+        + names
+    )
+    process = launcher.spawn(
+        program,
+        sandbox_dir,
+        scratch_dir,
+        limits,
+        stdin=subprocess.DEVNULL,
+        pass_fds=[fd for fds in channels.values() for fd in fds],
+    )
     deadline = time.monotonic() + timeout
     output = b""
     try:
@@ -184,8 +211,7 @@ def full_hidden_marks(lesson_result: LessonResult) -> bool:
 
 def not_run_for_lost_points(max_points: float) -> NotebookRun:
     """The run of a lesson that lost hidden points: nbval is not started, the point is 0 whatever it says."""
-    return NotebookRun(status="skipped", max_points=max_points,
-                       failures=[f"not run: {NEEDS_FULL_MARKS}"])
+    return NotebookRun(status="skipped", max_points=max_points, failures=[f"not run: {NEEDS_FULL_MARKS}"])
 
 
 def award(lesson_result: LessonResult) -> None:

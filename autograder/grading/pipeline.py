@@ -20,8 +20,16 @@ from pathlib import Path
 from autograder.grading import extract, submissions
 from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
 from autograder.grading.options import GradingOptions
-from autograder.grading.results import (COULD_NOT_GRADE, GRADED, GRADED_WITH_PROBLEMS, MISSING, ExerciseResult,
-                                        LessonResult, NotebookRun, StudentResult)
+from autograder.grading.results import (
+    COULD_NOT_GRADE,
+    GRADED,
+    GRADED_WITH_PROBLEMS,
+    MISSING,
+    ExerciseResult,
+    LessonResult,
+    NotebookRun,
+    StudentResult,
+)
 from autograder.grading.suite import StudentProxy, run_hidden_suite
 from autograder.lessons import cells
 from autograder.lessons.course import Course
@@ -29,8 +37,6 @@ from autograder.lessons.notebook_files import UnreadableNotebook, read_submissio
 from autograder.sandbox import launcher
 from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
 from autograder.sandbox.warm import WarmSlot
-
-
 
 
 def _score(max_points, checks):
@@ -60,8 +66,10 @@ def _note_failed_prerequisites(shell, program):
             continue
         used = _calls_to_other_exercises(sources[exercise.name], lost - {exercise.name})
         for other in sorted(used):
-            exercise.notes.append(f"your {exercise.name} calls your {other}, which also lost points: "
-                                  f"fix {other} first, its mistake may be the cause here")
+            exercise.notes.append(
+                f"your {exercise.name} calls your {other}, which also lost points: "
+                f"fix {other} first, its mistake may be the cause here"
+            )
 
 
 def _read_lessons(folder, course, only=()):
@@ -71,8 +79,11 @@ def _read_lessons(folder, course, only=()):
     catalog = course.catalog
     files = submissions.match_lessons(folder, catalog, course.released)
     notes = [files.notes[number] for number in sorted(files.notes) if not only or number in only]
-    notes += [f"{path.relative_to(folder)} was not graded: " + (files.unreadable.get(path) or "it holds no exercise "
-              "of the course (no answer cell and no exercise function)") for path in files.unmatched]
+    notes += [
+        f"{path.relative_to(folder)} was not graded: "
+        + (files.unreadable.get(path) or "it holds no exercise of the course (no answer cell and no exercise function)")
+        for path in files.unmatched
+    ]
     found = []
     for lesson in catalog.graded_lessons:
         if only and lesson.number not in only:
@@ -97,8 +108,13 @@ def _read_lessons(folder, course, only=()):
     return found, notes, [item.line() for item in files.skipped]
 
 
-def grade_student(student_id: str, folder: Path, course: Course, options: GradingOptions = GradingOptions(),
-                  slot: WarmSlot | None = None) -> StudentResult:
+def grade_student(
+    student_id: str,
+    folder: Path,
+    course: Course,
+    options: GradingOptions = GradingOptions(),
+    slot: WarmSlot | None = None,
+) -> StudentResult:
     """Grade the submission in ``folder`` against ``course``; never raises for anything the student did.
 
     ``slot``: the warm slot (:class:`~autograder.sandbox.warm.WarmSlot`) this grader process was
@@ -106,21 +122,26 @@ def grade_student(student_id: str, folder: Path, course: Course, options: Gradin
     """
     started = time.monotonic()
     catalog, reference = course.catalog, course.reference
-    result = StudentResult(student_id=student_id, status=GRADED,
-                           submission_hash=submissions.submission_hash(folder),
-                           isolation=launcher.isolation()[0])
+    result = StudentResult(
+        student_id=student_id,
+        status=GRADED,
+        submission_hash=submissions.submission_hash(folder),
+        isolation=launcher.isolation()[0],
+    )
     lessons, file_notes, result.skipped = _read_lessons(folder, course, options.lessons)
     result.problems.extend(file_notes)
     programs = {shell.number: program for shell, _, program in lessons if program is not None}
-    unavailable = {shell.number: f"{shell.notebook}: {shell.reason}" for shell, _, program in lessons
-                   if program is None}
+    unavailable = {
+        shell.number: f"{shell.notebook}: {shell.reason}" for shell, _, program in lessons if program is None
+    }
 
     checks, suite_problems = [], []
     with StudentSandbox(programs, course.support, limits=options.limits, slot=slot) as sandbox:
         proxy = StudentProxy(sandbox, catalog, unavailable)
         try:
-            checks, suite_problems = run_hidden_suite(proxy, reference, course,
-                                                      lessons=[shell.number for shell, _, _ in lessons])
+            checks, suite_problems = run_hidden_suite(
+                proxy, reference, course, lessons=[shell.number for shell, _, _ in lessons]
+            )
         except StudentError as error:  # e.g. the sandbox crashed too many times
             result.problems.append(f"grading stopped early: {error.message}")
         except SandboxUnavailable as error:  # nothing of the student's ran: no grade rather than a zero
@@ -136,8 +157,13 @@ def grade_student(student_id: str, folder: Path, course: Course, options: Gradin
             result.problems.append(f"lesson {shell.number}: {shell.reason}")
         for exercise in lesson.exercises:
             own = [c for c in checks if c.exercise == exercise.name]
-            entry = ExerciseResult(name=exercise.name, lesson=lesson.number, max_points=exercise.points,
-                                   points=_score(exercise.points, own), checks=own)
+            entry = ExerciseResult(
+                name=exercise.name,
+                lesson=lesson.number,
+                max_points=exercise.points,
+                points=_score(exercise.points, own),
+                checks=own,
+            )
             outcome = outcomes.get((lesson.number, exercise.name))
             if outcome is not None and not outcome.ok:
                 entry.notes.append(f"running the answer cell failed: {outcome.message}")
@@ -153,8 +179,11 @@ def grade_student(student_id: str, folder: Path, course: Course, options: Gradin
     if options.nbval and result.status != COULD_NOT_GRADE:
         # The notebook point needs full hidden marks on the lesson (nbval_stage.award), so nbval
         # runs only where it can still change the grade; the other lessons say why it did not run.
-        worth_running = [(shell, path, program) for shell, path, program in lessons
-                         if program is not None and full_hidden_marks(shell)]
+        worth_running = [
+            (shell, path, program)
+            for shell, path, program in lessons
+            if program is not None and full_hidden_marks(shell)
+        ]
         stage_failed = ""
         try:
             runs = run_notebooks(folder, worth_running, options, course, slot=slot) if worth_running else {}
@@ -165,8 +194,10 @@ def grade_student(student_id: str, folder: Path, course: Course, options: Gradin
                 shell.run = not_run_for_lost_points(options.notebook_points)
             else:
                 shell.run = runs.get(shell.number) or NotebookRun(
-                    status="failed", max_points=options.notebook_points,
-                    failures=[shell.reason or stage_failed or "the notebook stage did not run"])
+                    status="failed",
+                    max_points=options.notebook_points,
+                    failures=[shell.reason or stage_failed or "the notebook stage did not run"],
+                )
             award(shell)
 
     result.problems.extend(suite_problems)

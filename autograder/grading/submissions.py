@@ -41,8 +41,14 @@ from dateutil import parser as date_parser
 
 from autograder.lessons import cells
 from autograder.lessons.catalog import Catalog
-from autograder.lessons.notebook_files import (MAX_NOTEBOOK_BYTES, UnreadableNotebook, file_kind, read_master,
-                                               read_regular_file, read_submission)
+from autograder.lessons.notebook_files import (
+    MAX_NOTEBOOK_BYTES,
+    UnreadableNotebook,
+    file_kind,
+    read_master,
+    read_regular_file,
+    read_submission,
+)
 
 MAX_DEPTH = 2  # folders searched below a student's folder
 MAX_ENTRIES = 10_000  # entries looked at in one student's folder, all levels together
@@ -139,7 +145,9 @@ def _is_folder(entry):
         return False
 
 
-def scan_folder(folder: Path, wanted: Callable[[str], bool] = is_notebook_name, max_files: int = MAX_NOTEBOOKS) -> Found:
+def scan_folder(
+    folder: Path, wanted: Callable[[str], bool] = is_notebook_name, max_files: int = MAX_NOTEBOOKS
+) -> Found:
     """The files of a student's ``folder`` that ``wanted(name)`` accepts, and everything skipped, with why.
 
     The walk is iterative and bounded: :data:`MAX_DEPTH` folders down, :data:`MAX_ENTRIES` entries and
@@ -167,9 +175,14 @@ def scan_folder(folder: Path, wanted: Callable[[str], bool] = is_notebook_name, 
             continue
         budget -= len(entries)
         if passed_over:
-            found.skipped.append(Skipped(relative or "./", f"more than {MAX_ENTRIES:,} entries in the submission: "
-                                                          f"past them only notebooks and folders were looked at, "
-                                                          f"{passed_over:,} other entries were not"))
+            found.skipped.append(
+                Skipped(
+                    relative or "./",
+                    f"more than {MAX_ENTRIES:,} entries in the submission: "
+                    f"past them only notebooks and folders were looked at, "
+                    f"{passed_over:,} other entries were not",
+                )
+            )
         subfolders = []
         for entry in entries:
             name = f"{relative}{entry.name}"
@@ -186,14 +199,14 @@ def scan_folder(folder: Path, wanted: Callable[[str], bool] = is_notebook_name, 
                 if depth < MAX_DEPTH:
                     subfolders.append(Path(entry.path))
                 else:
-                    found.skipped.append(Skipped(name + "/", f"deeper than {MAX_DEPTH} folders below the "
-                                                             "student's folder, not searched"))
+                    found.skipped.append(
+                        Skipped(name + "/", f"deeper than {MAX_DEPTH} folders below the student's folder, not searched")
+                    )
             elif wanted(entry.name):
                 if len(found.files) < max_files:
                     found.files.append(Path(entry.path))
                 else:
-                    found.skipped.append(Skipped(name, f"not read: at most {max_files} notebooks are read "
-                                                       "per student"))
+                    found.skipped.append(Skipped(name, f"not read: at most {max_files} notebooks are read per student"))
             elif is_link:
                 found.skipped.append(Skipped(name, "a symbolic link, not followed"))
         stack.extend((sub, depth + 1) for sub in reversed(subfolders))
@@ -294,8 +307,13 @@ def _name_matches(path, lesson):
     return path.name == lesson.filename or path.name.startswith(lesson.number + "_")
 
 
-def match_lessons(folder: Path, catalog: Catalog, released: Path, notebooks: list[Path] | None = None,
-                  read: Callable[[Path], nbformat.NotebookNode] | None = None) -> LessonFiles:
+def match_lessons(
+    folder: Path,
+    catalog: Catalog,
+    released: Path,
+    notebooks: list[Path] | None = None,
+    read: Callable[[Path], nbformat.NotebookNode] | None = None,
+) -> LessonFiles:
     """Match the notebooks of one student's ``folder`` to ``catalog``'s graded lessons, by content.
 
     ``released``: the folder of the released notebooks (``course.released``), whose answer cells tell
@@ -353,8 +371,10 @@ def match_lessons(folder: Path, catalog: Catalog, released: Path, notebooks: lis
         claimed.update(c[3] for c in candidates)
         if len(candidates) > 1:
             others = ", ".join(f"{c[3].relative_to(folder)} ({_work(c[0])})" for c in candidates[1:])
-            files.notes[lesson.number] = (f"several notebooks hold lesson {lesson.number}: graded "
-                                          f"{best[3].relative_to(folder)} ({_work(best[0])}); not graded: {others}")
+            files.notes[lesson.number] = (
+                f"several notebooks hold lesson {lesson.number}: graded "
+                f"{best[3].relative_to(folder)} ({_work(best[0])}); not graded: {others}"
+            )
     ungraded = {lesson.filename for lesson in catalog.lessons if not lesson.exercises}
     files.unmatched = [p for p in notebooks if p not in claimed and p.name not in ungraded]
     return files

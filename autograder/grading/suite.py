@@ -53,13 +53,14 @@ PRINTED_KEEP = 2000  # characters of a check's printed output kept for the feedb
 class SuiteError(RuntimeError):
     """The hidden suite itself could not run: an infrastructure failure, never a zero."""
 
+
 HINTS = {
     "not_implemented": "replace the line `raise NotImplementedError(...)` with your code",
     "timeout": "look for a loop that never ends, or a huge loop that numpy could do at once",
     "crash": "the process running your code stopped: look for os._exit, sys.exit, "
-             "unbounded recursion or a huge allocation",
+    "unbounded recursion or a huge allocation",
     "missing": "keep your code in the exercise's answer cell, under the same function name; "
-               "helper functions must be defined in that cell too",
+    "helper functions must be defined in that cell too",
     "bad_value": "return numpy arrays, numbers, tuples, lists or dicts",
 }
 CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its arguments in place
@@ -84,10 +85,17 @@ def contract_results(proxy: StudentProxy, tests: list[HiddenTest]) -> list[Check
     for exercise, (names, check) in proxy.changed.items():
         weight = sum(t.weight for t in tests if t.exercise == exercise) * CONTRACT_SHARE / (1 - CONTRACT_SHARE)
         where = f" (seen in the check “{check}”)" if check else ""
-        results.append(CheckResult(
-            exercise=exercise, description="leaves its arguments unchanged", weight=weight, passed=False,
-            reason=f"{exercise} changed its argument{'s' if len(names) > 1 else ''} {', '.join(names)} "
-                   f"in place{where}", hint=_contracts().CHANGED_HINT))
+        results.append(
+            CheckResult(
+                exercise=exercise,
+                description="leaves its arguments unchanged",
+                weight=weight,
+                passed=False,
+                reason=f"{exercise} changed its argument{'s' if len(names) > 1 else ''} {', '.join(names)} "
+                f"in place{where}",
+                hint=_contracts().CHANGED_HINT,
+            )
+        )
     return results
 
 
@@ -164,8 +172,10 @@ def _explain(error):
         return _first_line(error.message), hint
     if isinstance(error, AssertionError):
         return _first_line(str(error).splitlines()[0] if str(error) else "a check failed"), ""
-    return (_first_line(f"the result could not be checked ({type(error).__name__}: {error})"),
-            "is the return value of the documented type and shape?")
+    return (
+        _first_line(f"the result could not be checked ({type(error).__name__}: {error})"),
+        "is the return value of the documented type and shape?",
+    )
 
 
 @dataclass(frozen=True)
@@ -215,11 +225,26 @@ SUITE_INI = Path(__file__).with_name("hidden_suite.ini")  # the ``exercise`` mar
 def _pytest_args(files, course):
     return [str(f) for f in files] + [
         # no conftest.py: the fixtures are the grader's own, and a conftest above the course folder is not ours
-        "-c", str(SUITE_INI), "--rootdir", str(course.root), "--noconftest", "-p", "autograder.grading.hidden_fixtures",
-        "-p", "no:cacheprovider", "-p", "no:terminal", "-p", "no:warnings",
+        "-c",
+        str(SUITE_INI),
+        "--rootdir",
+        str(course.root),
+        "--noconftest",
+        "-p",
+        "autograder.grading.hidden_fixtures",
+        "-p",
+        "no:cacheprovider",
+        "-p",
+        "no:terminal",
+        "-p",
+        "no:warnings",
         # these two end every session with gc.collect() several times (~0.2 s a student) to find
         # exceptions nobody reads here
-        "-p", "no:unraisableexception", "-p", "no:threadexception"]
+        "-p",
+        "no:unraisableexception",
+        "-p",
+        "no:threadexception",
+    ]
 
 
 def _describe(item):
@@ -258,13 +283,22 @@ def hidden_tests(course: Course) -> tuple[list[HiddenTest], list[str]]:
         params = dict(callspec.params) if callspec is not None else {}
         unknown = set(item.fixturenames) - set(FIXTURES) - set(params)
         if unknown:
-            raise SuiteError(f"hidden test {item.nodeid} asks for fixtures {sorted(unknown)}; "
-                             f"the grader's runner provides {', '.join(FIXTURES)}")
-        tests.append(HiddenTest(
-            nodeid=item.nodeid, lesson=item.path.stem.split("_")[1], function=item.function,
-            fixtures=tuple(n for n in FIXTURES if n in item.fixturenames), params=params,
-            exercise=mark.kwargs["name"], weight=mark.kwargs.get("weight", 1.0),
-            description=_describe(item)))
+            raise SuiteError(
+                f"hidden test {item.nodeid} asks for fixtures {sorted(unknown)}; "
+                f"the grader's runner provides {', '.join(FIXTURES)}"
+            )
+        tests.append(
+            HiddenTest(
+                nodeid=item.nodeid,
+                lesson=item.path.stem.split("_")[1],
+                function=item.function,
+                fixtures=tuple(n for n in FIXTURES if n in item.fixturenames),
+                params=params,
+                exercise=mark.kwargs["name"],
+                weight=mark.kwargs.get("weight", 1.0),
+                description=_describe(item),
+            )
+        )
     return tests, problems
 
 
@@ -330,13 +364,21 @@ def _record_transcripts(reference, catalog, tests):
 def reference_programs(course: Course) -> dict[str, LessonProgram]:
     """``{lesson: LessonProgram}`` of the reference solutions: each master's setup and answer cells."""
     sources, catalog = answer_sources(course.solutions), course.catalog
-    return {lesson.number: LessonProgram(setup=lesson.setup_source,
-                                         cells=[(e.name, sources[e.name]) for e in lesson.exercises])
-            for lesson in catalog.graded_lessons}
+    return {
+        lesson.number: LessonProgram(
+            setup=lesson.setup_source, cells=[(e.name, sources[e.name]) for e in lesson.exercises]
+        )
+        for lesson in catalog.graded_lessons
+    }
 
 
-def learn_reference_in_sandbox(reference: object, course: Course, limits: launcher.Limits | None = None,
-                               slot: WarmSlot | None = None, lessons: tuple[str, ...] = ()) -> int:
+def learn_reference_in_sandbox(
+    reference: object,
+    course: Course,
+    limits: launcher.Limits | None = None,
+    slot: WarmSlot | None = None,
+    lessons: tuple[str, ...] = (),
+) -> int:
     """Run the hidden tests of ``lessons`` (all when empty) once on the reference solutions in a sandbox,
     as a student; return how many tests taught a new passing list of values.
 
@@ -404,8 +446,9 @@ def _printed_text(parts):
     return printed
 
 
-def run_hidden_suite(proxy: StudentProxy, reference: object, course: Course,
-                     lessons: list[str] | None = None) -> tuple[list[CheckResult], list[str]]:
+def run_hidden_suite(
+    proxy: StudentProxy, reference: object, course: Course, lessons: list[str] | None = None
+) -> tuple[list[CheckResult], list[str]]:
     """Run ``course``'s hidden suite for one student; return (list of CheckResult, problems).
 
     ``lessons``: only run the tests of these lesson numbers (default all).
@@ -428,9 +471,17 @@ def run_hidden_suite(proxy: StudentProxy, reference: object, course: Course,
             else:
                 passed, reason, hint = _call_test(test, proxy, reference)
             replay.stop()
-            results.append(CheckResult(exercise=test.exercise, description=test.description, weight=test.weight,
-                                       passed=passed, reason=reason, hint=hint,
-                                       printed=_printed_text(proxy.printed)))
+            results.append(
+                CheckResult(
+                    exercise=test.exercise,
+                    description=test.description,
+                    weight=test.weight,
+                    passed=passed,
+                    reason=reason,
+                    hint=hint,
+                    printed=_printed_text(proxy.printed),
+                )
+            )
     finally:
         proxy._replay = None
     return results + contract_results(proxy, tests), list(problems)
@@ -480,13 +531,25 @@ class _Collector:
         reason, hint = ("", "")
         if report.failed and call.excinfo is not None:
             reason, hint = _explain(call.excinfo.value)
-        self.results.append(CheckResult(
-            exercise=mark.kwargs["name"], description=_describe(item), weight=mark.kwargs.get("weight", 1.0),
-            passed=report.passed, reason=reason, hint=hint, printed=_printed_text(self.proxy.printed)))
+        self.results.append(
+            CheckResult(
+                exercise=mark.kwargs["name"],
+                description=_describe(item),
+                weight=mark.kwargs.get("weight", 1.0),
+                passed=report.passed,
+                reason=reason,
+                hint=hint,
+                printed=_printed_text(self.proxy.printed),
+            )
+        )
 
 
-_BLAS_THREAD_SETTERS = ("scipy_openblas_set_num_threads64_", "scipy_openblas_set_num_threads",
-                        "openblas_set_num_threads64_", "openblas_set_num_threads")
+_BLAS_THREAD_SETTERS = (
+    "scipy_openblas_set_num_threads64_",
+    "scipy_openblas_set_num_threads",
+    "openblas_set_num_threads64_",
+    "openblas_set_num_threads",
+)
 
 
 def single_threaded_blas() -> int:
@@ -532,8 +595,9 @@ def preload_hidden_suite(course: Course) -> None:
     gc.freeze()
 
 
-def run_hidden_suite_with_pytest(proxy: StudentProxy, reference: object, course: Course,
-                                 lessons: list[str] | None = None) -> tuple[list[CheckResult], list[str]]:
+def run_hidden_suite_with_pytest(
+    proxy: StudentProxy, reference: object, course: Course, lessons: list[str] | None = None
+) -> tuple[list[CheckResult], list[str]]:
     """:func:`run_hidden_suite` as a plain ``pytest.main`` run, call by call: the yardstick of the fast runner.
 
     Same arguments and results; about twice the CPU time.
@@ -549,7 +613,8 @@ def run_hidden_suite_with_pytest(proxy: StudentProxy, reference: object, course:
         course.use_support_package()
         code = pytest.main(_pytest_args(files, course), plugins=[collector])
     if code not in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) or not collector.results:
-        raise SuiteError(f"the hidden suite did not run (pytest exit status {int(code)}, "
-                         f"{len(collector.results)} checks collected)")
+        raise SuiteError(
+            f"the hidden suite did not run (pytest exit status {int(code)}, {len(collector.results)} checks collected)"
+        )
     tests = [t for t in hidden_tests(course)[0] if lessons is None or t.lesson in lessons]
     return collector.results + contract_results(proxy, tests), collector.problems

@@ -53,8 +53,14 @@ def _cpu_model():
 
 def key(course: Course) -> str:
     """A digest of everything the reference's transcripts depend on (see the module's docstring)."""
-    parts = dict(content_parts(course), format=FORMAT, machine=platform.machine(), cpu=_cpu_model(),
-                 kernel=os.environ.get("OPENBLAS_CORETYPE", ""), l2=os.environ.get("OPENBLAS_L2_SIZE", ""))
+    parts = dict(
+        content_parts(course),
+        format=FORMAT,
+        machine=platform.machine(),
+        cpu=_cpu_model(),
+        kernel=os.environ.get("OPENBLAS_CORETYPE", ""),
+        l2=os.environ.get("OPENBLAS_L2_SIZE", ""),
+    )
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:20]
 
 
@@ -66,8 +72,11 @@ def path(course: Course) -> Path:
 def save(course: Course, transcripts: dict[str, Transcript], learned: set[str] | tuple = ()) -> None:
     """Write ``{nodeid: Transcript}`` and the lessons already learned in a sandbox, atomically; never raises."""
     target = path(course)
-    document = {"format": FORMAT, "learned": sorted(learned),
-                "transcripts": {nodeid: vars(t) for nodeid, t in transcripts.items()}}
+    document = {
+        "format": FORMAT,
+        "learned": sorted(learned),
+        "transcripts": {nodeid: vars(t) for nodeid, t in transcripts.items()},
+    }
     tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
     try:
         target.parent.mkdir(parents=True, exist_ok=True)

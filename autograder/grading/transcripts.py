@@ -77,8 +77,9 @@ class Transcript:
             self.complete = False
 
 
-def call_text(lesson: str, name: str, args: tuple | list, kwargs: dict, timeout: float | None,
-              forbid: tuple = ()) -> str:
+def call_text(
+    lesson: str, name: str, args: tuple | list, kwargs: dict, timeout: float | None, forbid: tuple = ()
+) -> str:
     """The wire text that identifies one call (raises :class:`wire.WireError` for non-data arguments)."""
     request = call_request(lesson, name, args, kwargs, timeout, forbid)
     del request["op"]
@@ -165,13 +166,22 @@ class ReferenceRecorder:
         self.transcript = Transcript(calls=[], keys=[], timeouts=[], results=[])
         return self.transcript
 
-    def call(self, lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, timeout: float | None = None,
-             forbid: tuple = ()) -> object:
+    def call(
+        self,
+        lesson: str,
+        name: str,
+        args: tuple = (),
+        kwargs: dict | None = None,
+        timeout: float | None = None,
+        forbid: tuple = (),
+    ) -> object:
         text = call_text(lesson, name, args, kwargs, timeout, forbid)
         request = wire.loads(text)  # the arguments exactly as the sandbox would receive them
         try:
-            value = getattr(self.reference, name)(*[_materialize(a) for a in request["args"]],
-                                                  **{k: _materialize(v) for k, v in request["kwargs"].items()})
+            value = getattr(self.reference, name)(
+                *[_materialize(a) for a in request["args"]],
+                **{k: _materialize(v) for k, v in request["kwargs"].items()},
+            )
             result = wire.dumps(value)
         except Exception as error:
             # noted with no value, so no replay can pass this test unrun; the test sees what a
@@ -217,9 +227,13 @@ class Replay:
     def _answers(self):
         """The batch's values as wire text, when every recorded call was made and returned one; else None."""
         transcript = self._transcript
-        if transcript is None or len(self._replies) != len(transcript.calls) or not all(
-                reply["ok"] and not reply.get("changed") and not reply.get("delegated")
-                for reply in self._replies):
+        if (
+            transcript is None
+            or len(self._replies) != len(transcript.calls)
+            or not all(
+                reply["ok"] and not reply.get("changed") and not reply.get("delegated") for reply in self._replies
+            )
+        ):
             return None
         return [reply["text"] for reply in self._replies]
 
@@ -227,8 +241,12 @@ class Replay:
         """True when every recorded call returned, bit for bit, values with which the test passed before:
         the reference's (:attr:`Transcript.results`) or a list in :attr:`Transcript.also_passing`."""
         answers = self._answers()
-        return (answers is not None and self._transcript.passed and self._transcript.complete
-                and (answers == self._transcript.results or answers in self._transcript.also_passing))
+        return (
+            answers is not None
+            and self._transcript.passed
+            and self._transcript.complete
+            and (answers == self._transcript.results or answers in self._transcript.also_passing)
+        )
 
     def note_if_passed(self, passed: bool) -> bool:
         """After the test ran on the batch: if it passed, and every call it made was answered from the
@@ -245,7 +263,9 @@ class Replay:
         """What the batch's calls printed, in order (as the proxy would have collected it)."""
         return [str(reply.get("stdout", "")) for reply in self._replies if reply.get("stdout")]
 
-    def call(self, lesson: str, name: str, args: tuple, kwargs: dict, timeout: float | None, forbid: tuple = ()) -> object:
+    def call(
+        self, lesson: str, name: str, args: tuple, kwargs: dict, timeout: float | None, forbid: tuple = ()
+    ) -> object:
         """The call's value: from the batch while calls follow the recording, else from the sandbox."""
         if self._transcript is not None and self._next < len(self._replies):
             try:

@@ -24,8 +24,8 @@ from scipy.spatial.transform import Rotation
 from autograder.sandbox.child.wire import Probe  # noqa: F401  (callable arguments, by name)
 from autograder.sandbox.session import StudentError
 from autograder.grading.hidden_api import Wrong, exercise, expect, expect_close, fmt  # noqa: F401  (for the tests)
-from coursekit.diagnose import (ALLCLOSE_HINT, LISTS_HINT, rotation_hint, rotation_problem,  # noqa: F401  (for the tests)
-                                shape_problem)
+from coursekit.diagnose import LISTS_HINT, shape_problem
+from coursekit.diagnose import ALLCLOSE_HINT, rotation_hint, rotation_problem  # noqa: F401  (for the tests)
 
 
 def expect_array(value, shape, what):
@@ -59,8 +59,10 @@ def expect_bool(value, what):
     """``value`` as a Python bool, or :class:`Wrong` if it is not a boolean."""
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
-    raise Wrong(f"{what} returned {value!r} ({type(value).__name__}), not True or False",
-                "return a bool: wrap numpy's result in bool(...)")
+    raise Wrong(
+        f"{what} returned {value!r} ({type(value).__name__}), not True or False",
+        "return a bool: wrap numpy's result in bool(...)",
+    )
 
 
 def random_rotations(count, seed):

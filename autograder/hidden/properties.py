@@ -46,10 +46,16 @@ except ImportError:  # an older Hypothesis, which has no local constants to turn
 from autograder.grading.hidden_api import Wrong
 
 EXAMPLES = 24  # drawn values per property, after the explicit ones (which hit every decade already)
-SETTINGS = dict(derandomize=True, database=None, deadline=None, suppress_health_check=list(HealthCheck),
-                phases=(Phase.explicit, Phase.generate, Phase.shrink), report_multiple_bugs=False,
-                print_blob=False)
-DECADES = tuple(10.0 ** -k for k in range(12, -1, -1))  # 1e-12 … 1
+SETTINGS = dict(
+    derandomize=True,
+    database=None,
+    deadline=None,
+    suppress_health_check=list(HealthCheck),
+    phases=(Phase.explicit, Phase.generate, Phase.shrink),
+    report_multiple_bugs=False,
+    print_blob=False,
+)
+DECADES = tuple(10.0**-k for k in range(12, -1, -1))  # 1e-12 … 1
 
 
 def for_all(strategy, check, examples=EXAMPLES, explicit=()):
@@ -58,6 +64,7 @@ def for_all(strategy, check, examples=EXAMPLES, explicit=()):
     A failure (any exception: :class:`Wrong`, a student's error) is shrunk by
     Hypothesis to its simplest input and raised as it was raised for that input.
     """
+
     @settings(max_examples=examples, **SETTINGS)
     @given(strategy)
     def run(value):
@@ -107,10 +114,9 @@ def _signed(magnitudes, sign):
 
 def angles(low=1e-12, high=math.pi, sign=True, near_pi=True, zero=True):
     """Angles with magnitudes log-uniform in [low, high], both signs; 0 and just below/above π too."""
-    parts = [st.floats(math.log10(low), math.log10(high)).map(lambda e: 10.0 ** e)]
+    parts = [st.floats(math.log10(low), math.log10(high)).map(lambda e: 10.0**e)]
     if near_pi:
-        parts.append(st.floats(-9.0, -3.0).flatmap(
-            lambda e: st.sampled_from([math.pi - 10.0 ** e, math.pi + 10.0 ** e])))
+        parts.append(st.floats(-9.0, -3.0).flatmap(lambda e: st.sampled_from([math.pi - 10.0**e, math.pi + 10.0**e])))
     magnitudes = st.one_of(*parts)
     angle = _signed(magnitudes, sign)
     return st.one_of(st.just(0.0), angle) if zero else angle
@@ -118,10 +124,18 @@ def angles(low=1e-12, high=math.pi, sign=True, near_pi=True, zero=True):
 
 def unit_vectors():
     """Random unit 3-vectors (any direction; axes and diagonals among them)."""
-    special = [(1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0), (0.0, 0.0, -1.0), (1.0, 1.0, 1.0),
-               (-1.0, 1.0, 0.0), (0.6, 0.0, -0.8)]
-    raw = st.one_of(st.sampled_from(special),
-                    st.tuples(*[st.floats(-1.0, 1.0)] * 3).filter(lambda v: sum(x * x for x in v) > 1e-2))
+    special = [
+        (1.0, 0.0, 0.0),
+        (0.0, 1.0, 0.0),
+        (0.0, 0.0, 1.0),
+        (0.0, 0.0, -1.0),
+        (1.0, 1.0, 1.0),
+        (-1.0, 1.0, 0.0),
+        (0.6, 0.0, -0.8),
+    ]
+    raw = st.one_of(
+        st.sampled_from(special), st.tuples(*[st.floats(-1.0, 1.0)] * 3).filter(lambda v: sum(x * x for x in v) > 1e-2)
+    )
     return raw.map(lambda v: np.asarray(v, dtype=float) / np.linalg.norm(v))
 
 
@@ -139,10 +153,12 @@ def rotations(**kwargs):
 
 def quaternions(near_unit=False):
     """Unit quaternions ``[w, x, y, z]`` from both hemispheres (scaled by 1 ± 1e-6 when ``near_unit``)."""
+
     def make(pair):
         (axis, angle), sign = pair
         q = sign * np.concatenate([[math.cos(angle / 2)], math.sin(angle / 2) * axis])
         return q
+
     unit = st.tuples(st.tuples(unit_vectors(), angles(sign=False)), st.sampled_from([1.0, -1.0])).map(make)
     if not near_unit:
         return unit
@@ -152,8 +168,7 @@ def quaternions(near_unit=False):
 def pitches():
     """Pitch angles in [-π/2, π/2]: generic ones, exactly ±π/2, and within 1e-12 … 1e-3 of ±π/2."""
     half = math.pi / 2
-    near = st.tuples(st.floats(-12.0, -3.0), st.sampled_from([1.0, -1.0])).map(
-        lambda p: p[1] * (half - 10.0 ** p[0]))
+    near = st.tuples(st.floats(-12.0, -3.0), st.sampled_from([1.0, -1.0])).map(lambda p: p[1] * (half - 10.0 ** p[0]))
     return st.one_of(st.floats(-half, half), st.sampled_from([half, -half]), near)
 
 
@@ -176,8 +191,8 @@ def decade_edges(low=1e-12, high=1.0, factors=(0.97, 0.5)):
     so a branch whose series is too short shows its largest error (0.97e-3, 0.5e-3, 0.97e-4, ...)."""
     found = []
     exponent = round(math.log10(high))
-    while 10.0 ** exponent >= low:
-        found += [f * 10.0 ** exponent for f in factors]
+    while 10.0**exponent >= low:
+        found += [f * 10.0**exponent for f in factors]
         exponent -= 1
     return found
 

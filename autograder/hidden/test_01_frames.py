@@ -24,8 +24,20 @@ from coursekit.diagnose import FLOAT32_HINT, SERIES_HINT, close, float32_roundin
 
 from autograder.sandbox.session import StudentError
 
-from .helpers import (ALLCLOSE_HINT, Wrong, exercise, expect, expect_array, expect_bool, expect_close,
-                      expect_same_with_lists, fmt, random_angles, random_rotations, rotation_problem)
+from .helpers import (
+    ALLCLOSE_HINT,
+    Wrong,
+    exercise,
+    expect,
+    expect_array,
+    expect_bool,
+    expect_close,
+    expect_same_with_lists,
+    fmt,
+    random_angles,
+    random_rotations,
+    rotation_problem,
+)
 
 TOL = 1e-9
 SPECIAL_ANGLES = [0.0, np.pi / 2, -np.pi / 2, np.pi, 2 * np.pi, 1e-9, 10 * np.pi + 0.3, -7.0]
@@ -50,7 +62,7 @@ def _first_match(got, candidates, otherwise=""):
 
 
 DEGREES_HINT = "looks like the angle was taken in degrees: the course works in radians (np.cos takes radians)"
-SAME_SIGN_HINT = (hints.BOTH_SINES_HAVE_SAME_HINT)
+SAME_SIGN_HINT = hints.BOTH_SINES_HAVE_SAME_HINT
 
 
 # ---------------------------------------------------------------- rot2d
@@ -61,13 +73,17 @@ def _rot2d(theta):
 
 def _rot2d_hint(got, theta):
     c, s = np.cos(theta), np.sin(theta)
-    return _first_match(got, [
-        (_rot2d(theta).T, "looks like the transpose (a clockwise turn): the minus sign belongs on the upper sine"),
-        (_rot2d(np.deg2rad(theta)), DEGREES_HINT),
-        (np.array([[s, -c], [c, s]]), hints.SINE_COSINE_SWAPPED_COS_HINT),
-        (np.array([[c, s], [s, c]]), SAME_SIGN_HINT),
-        (np.array([[c, -s], [-s, c]]), SAME_SIGN_HINT)],
-        "compare entry by entry with [[cos θ, -sin θ], [sin θ, cos θ]]")
+    return _first_match(
+        got,
+        [
+            (_rot2d(theta).T, "looks like the transpose (a clockwise turn): the minus sign belongs on the upper sine"),
+            (_rot2d(np.deg2rad(theta)), DEGREES_HINT),
+            (np.array([[s, -c], [c, s]]), hints.SINE_COSINE_SWAPPED_COS_HINT),
+            (np.array([[c, s], [s, c]]), SAME_SIGN_HINT),
+            (np.array([[c, -s], [-s, c]]), SAME_SIGN_HINT),
+        ],
+        "compare entry by entry with [[cos θ, -sin θ], [sin θ, cos θ]]",
+    )
 
 
 @exercise("rot2d", weight=3)
@@ -83,7 +99,9 @@ def test_rot2d_composes_angles(student):
     """rot2d(a) @ rot2d(b) equals rot2d(a + b)"""
     for a, b in zip(random_angles(5, seed=102), random_angles(5, seed=103)):
         got = expect_array(student.rot2d(a + b), (2, 2), "rot2d(a + b)")
-        product = expect_array(student.rot2d(a), (2, 2), "rot2d(a)") @ expect_array(student.rot2d(b), (2, 2), "rot2d(b)")
+        product = expect_array(student.rot2d(a), (2, 2), "rot2d(a)") @ expect_array(
+            student.rot2d(b), (2, 2), "rot2d(b)"
+        )
         expect_close(got, product, TOL, f"rot2d({a + b:.3f}) vs rot2d({a:.3f}) @ rot2d({b:.3f})")
 
 
@@ -94,7 +112,7 @@ def test_rot2d_accepts_integers(student):
 
 
 # Every decade of angle, both signs, after a generic one (a float32 answer fails there first).
-DECADE_ANGLES = [0.9] + [sign * 10.0 ** -k for k in range(9) for sign in (1.0, -1.0)]
+DECADE_ANGLES = [0.9] + [sign * 10.0**-k for k in range(9) for sign in (1.0, -1.0)]
 PRECISION = 1e-12
 
 
@@ -130,31 +148,46 @@ def _elementary_hint(got, axis_name, angle):
     axis = "xyz".index(axis_name)
     expected = _elementary(axis_name, angle)
     i, j = [k for k in range(3) if k != axis]
-    s = expected[j, i] if axis != 1 else expected[i, j]         # +sin a, wherever it sits
+    s = expected[j, i] if axis != 1 else expected[i, j]  # +sin a, wherever it sits
     both_plus, both_minus = expected.copy(), expected.copy()
     both_plus[i, j] = both_plus[j, i] = s
     both_minus[i, j] = both_minus[j, i] = -s
     corner_zero = expected.copy()
     corner_zero[axis, axis] = 0.0
-    candidates = [(expected.T, "looks like the transpose (the inverse rotation): the minus sign is on the wrong sine"
-                   + (" (for rot_y it sits in the bottom-left)" if axis_name == "y" else "")),
-                  (_elementary(axis_name, np.deg2rad(angle)), DEGREES_HINT),
-                  (both_plus, SAME_SIGN_HINT), (both_minus, SAME_SIGN_HINT),
-                  (corner_zero, f"the diagonal entry of the {axis_name} axis is 0: it must be 1 "
-                                "(the axis does not move)")]
+    candidates = [
+        (
+            expected.T,
+            "looks like the transpose (the inverse rotation): the minus sign is on the wrong sine"
+            + (" (for rot_y it sits in the bottom-left)" if axis_name == "y" else ""),
+        ),
+        (_elementary(axis_name, np.deg2rad(angle)), DEGREES_HINT),
+        (both_plus, SAME_SIGN_HINT),
+        (both_minus, SAME_SIGN_HINT),
+        (corner_zero, f"the diagonal entry of the {axis_name} axis is 0: it must be 1 (the axis does not move)"),
+    ]
     for other in "xyz".replace(axis_name, ""):
-        candidates.append((_elementary(other, angle), f"this is a rotation about {other}, not {axis_name}: the "
-                           f"cos/sin block of rot_{axis_name} sits in the rows and columns of the other two axes"))
-    return _first_match(got, candidates, f"compare entry by entry with the rotation about {axis_name} by the angle "
-                                         f"(scipy: Rotation.from_euler('{axis_name}', a).as_matrix())")
+        candidates.append(
+            (
+                _elementary(other, angle),
+                f"this is a rotation about {other}, not {axis_name}: the "
+                f"cos/sin block of rot_{axis_name} sits in the rows and columns of the other two axes",
+            )
+        )
+    return _first_match(
+        got,
+        candidates,
+        f"compare entry by entry with the rotation about {axis_name} by the angle "
+        f"(scipy: Rotation.from_euler('{axis_name}', a).as_matrix())",
+    )
 
 
 def _check_elementary(student, name, axis_name, seed):
     function = getattr(student, name)
     for angle in list(random_angles(15, seed=seed)) + SPECIAL_ANGLES:
         got = expect_array(function(angle), (3, 3), f"{name}({angle:.4g})")
-        expect_close(got, _elementary(axis_name, angle), TOL, f"{name}({angle:.4g})",
-                     _elementary_hint(got, axis_name, angle))
+        expect_close(
+            got, _elementary(axis_name, angle), TOL, f"{name}({angle:.4g})", _elementary_hint(got, axis_name, angle)
+        )
 
 
 def _check_axis_fixed(student, name, axis):
@@ -162,8 +195,13 @@ def _check_axis_fixed(student, name, axis):
     e = np.eye(3)[axis]
     for angle in random_angles(6, seed=200 + axis):
         R = expect_array(function(angle), (3, 3), f"{name}({angle:.3f})")
-        expect_close(R @ e, e, TOL, f"{name}({angle:.3f}) applied to its own axis",
-                     "the rotation axis must not move: its row and column are the unit vector")
+        expect_close(
+            R @ e,
+            e,
+            TOL,
+            f"{name}({angle:.3f}) applied to its own axis",
+            "the rotation axis must not move: its row and column are the unit vector",
+        )
         problem = rotation_problem(R)
         expect(problem is None, f"{name}({angle:.3f}): {problem}")
 
@@ -172,8 +210,12 @@ def _check_additive(student, name):
     function = getattr(student, name)
     for a, b in zip(random_angles(5, seed=301), random_angles(5, seed=302)):
         product = expect_array(function(a), (3, 3), name) @ expect_array(function(b), (3, 3), name)
-        expect_close(expect_array(function(a + b), (3, 3), name), product, TOL,
-                     f"{name}(a + b) vs {name}(a) @ {name}(b) for a={a:.3f}, b={b:.3f}")
+        expect_close(
+            expect_array(function(a + b), (3, 3), name),
+            product,
+            TOL,
+            f"{name}(a + b) vs {name}(a) @ {name}(b) for a={a:.3f}, b={b:.3f}",
+        )
 
 
 @exercise("rot_x", weight=3)
@@ -249,7 +291,7 @@ def test_rot_z_every_decade(student):
 
 
 # ---------------------------------------------------------------- is_rotation_matrix
-SHAPE_HINT = (hints.CHECK_M_S_SHAPE_HINT)
+SHAPE_HINT = hints.CHECK_M_S_SHAPE_HINT
 
 
 def _is_rotation_verdict(student, M, what="is_rotation_matrix", **kwargs):
@@ -280,8 +322,11 @@ def test_is_rotation_matrix_accepts_rotations(student):
     candidates = list(random_rotations(20, seed=121)) + [np.eye(3), _rot2d(0.4)]
     for index, R in enumerate(candidates):
         verdict = _is_rotation_verdict(student, R)
-        expect(verdict, f"rejected a valid rotation (#{index}): {fmt(R)}",
-               "compare with a tolerance: rounding makes RᵀR differ from I by ~1e-16")
+        expect(
+            verdict,
+            f"rejected a valid rotation (#{index}): {fmt(R)}",
+            "compare with a tolerance: rounding makes RᵀR differ from I by ~1e-16",
+        )
 
 
 @exercise("is_rotation_matrix", weight=2)
@@ -290,8 +335,11 @@ def test_is_rotation_matrix_rejects_reflections(student):
     mirror = np.diag([1.0, 1.0, -1.0])
     for index, R in enumerate(random_rotations(10, seed=122)):
         verdict = _is_rotation_verdict(student, R @ mirror)
-        expect(not verdict, f"accepted a reflection (#{index}, det = -1)",
-               "orthogonality is not enough: also require det(M) > 0")
+        expect(
+            not verdict,
+            f"accepted a reflection (#{index}, det = -1)",
+            "orthogonality is not enough: also require det(M) > 0",
+        )
 
 
 @exercise("is_rotation_matrix", weight=2)
@@ -299,15 +347,22 @@ def test_is_rotation_matrix_rejects_non_orthogonal(student):
     """rejects scaled, sheared and noisy matrices"""
     R = random_rotations(1, seed=123)[0]
     noise = np.random.default_rng(124).normal(size=(3, 3))
-    cases = {"2·R": 2.0 * R, "a shear": np.array([[1.0, 0.3, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]),
-             "R + 1e-6 noise": R + 1e-6 * noise, "the zero matrix": np.zeros((3, 3)),
-             "R with its columns scaled by (1, 1, 1.001)": R @ np.diag([1.0, 1.0, 1.001]),
-             "diag(1, 1, 1 + 1e-6)": np.diag([1.0, 1.0, 1.0 + 1e-6]),
-             "R with its last column stretched by 1e-6": R @ np.diag([1.0, 1.0, 1.0 + 1e-6])}
+    cases = {
+        "2·R": 2.0 * R,
+        "a shear": np.array([[1.0, 0.3, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]),
+        "R + 1e-6 noise": R + 1e-6 * noise,
+        "the zero matrix": np.zeros((3, 3)),
+        "R with its columns scaled by (1, 1, 1.001)": R @ np.diag([1.0, 1.0, 1.001]),
+        "diag(1, 1, 1 + 1e-6)": np.diag([1.0, 1.0, 1.0 + 1e-6]),
+        "R with its last column stretched by 1e-6": R @ np.diag([1.0, 1.0, 1.0 + 1e-6]),
+    }
     for name, M in cases.items():
         verdict = _is_rotation_verdict(student, M)
-        expect(not verdict, f"accepted {name} (max |MᵀM - I| = {np.max(np.abs(M.T @ M - np.eye(3))):.2g}, "
-               f"tol = {TOL:g})", _accepted_hint(M))
+        expect(
+            not verdict,
+            f"accepted {name} (max |MᵀM - I| = {np.max(np.abs(M.T @ M - np.eye(3))):.2g}, tol = {TOL:g})",
+            _accepted_hint(M),
+        )
 
 
 @exercise("is_rotation_matrix", weight=1)
@@ -318,24 +373,31 @@ def test_is_rotation_matrix_respects_tol(student):
     M = R + 1e-6 * noise
     gap = np.max(np.abs(M.T @ M - np.eye(3)))
     ignores_tol = "the verdict does not follow the tol argument: compare with tol, not a fixed number"
-    expect(_is_rotation_verdict(student, R + 1e-13 * noise),
-           "rejected a rotation with 1e-13 rounding noise at the default tol=1e-9",
-           "compare with a tolerance: rounding makes MᵀM differ from I by ~1e-16")
+    expect(
+        _is_rotation_verdict(student, R + 1e-13 * noise),
+        "rejected a rotation with 1e-13 rounding noise at the default tol=1e-9",
+        "compare with a tolerance: rounding makes MᵀM differ from I by ~1e-16",
+    )
     if not _is_rotation_verdict(student, M, tol=1e-4):
         still = not _is_rotation_verdict(student, M, tol=0.1)
-        raise Wrong(f"rejected R + 1e-6 noise (max |MᵀM - I| = {gap:.2g}) with tol=1e-4",
-                    ignores_tol if still else "")
+        raise Wrong(f"rejected R + 1e-6 noise (max |MᵀM - I| = {gap:.2g}) with tol=1e-4", ignores_tol if still else "")
     if _is_rotation_verdict(student, M, tol=1e-8):
         still = _is_rotation_verdict(student, M, tol=1e-15)
-        raise Wrong(f"accepted R + 1e-6 noise (max |MᵀM - I| = {gap:.2g}) with tol=1e-8",
-                    ignores_tol if still else _accepted_hint(M, 1e-8))
+        raise Wrong(
+            f"accepted R + 1e-6 noise (max |MᵀM - I| = {gap:.2g}) with tol=1e-8",
+            ignores_tol if still else _accepted_hint(M, 1e-8),
+        )
 
 
 @exercise("is_rotation_matrix", weight=1)
 def test_is_rotation_matrix_bad_input(student):
     """returns False, without crashing, for wrong shapes and NaN"""
-    cases = {"a 3×4 matrix": np.eye(4)[:3], "a vector": np.ones(3),
-             "a matrix with NaN": np.full((3, 3), np.nan), "a nested list 3×2": [[1.0, 0.0]] * 3}
+    cases = {
+        "a 3×4 matrix": np.eye(4)[:3],
+        "a vector": np.ones(3),
+        "a matrix with NaN": np.full((3, 3), np.nan),
+        "a nested list 3×2": [[1.0, 0.0]] * 3,
+    }
     for name, M in cases.items():
         verdict = _is_rotation_verdict(student, M, f"is_rotation_matrix({name})")
         expect(not verdict, f"accepted {name}", "check the shape and that the entries are finite first")
@@ -368,32 +430,40 @@ def _rotate_rows(student, R, P):
         if error.kind != "exception":
             raise
         if "broadcast" in error.message:
-            hint = (hints.NUMPY_COULD_BROADCAST_R_HINT)
+            hint = hints.NUMPY_COULD_BROADCAST_R_HINT
         elif "matmul" in error.message:
             hint = hints.ONE_POINT_NOT_ROWS_HINT
         else:
             hint = "the points are the rows of P: P @ R.T rotates each of them"
         raise Wrong(f"rotate_point(R, P) for {count} points: {error}", hint) from None
     got = expect_array(value, (count, 3), f"rotate_point(R, P) for {count} points")
-    hint = _first_match(got, [(P @ R, "looks like P @ R, which rotates each row by R.T (the inverse): for rows use "
-                                      "P @ R.T")] + ([(R @ P, SQUARE_BATCH_HINT)] if count == 3 else []))
+    hint = _first_match(
+        got,
+        [(P @ R, "looks like P @ R, which rotates each row by R.T (the inverse): for rows use P @ R.T")]
+        + ([(R @ P, SQUARE_BATCH_HINT)] if count == 3 else []),
+    )
     expect_close(got, (R @ P.T).T, TOL, f"rotate_point(R, P) for {count} points", hint)
 
 
 @exercise("rotate_point", weight=1)
 def test_rotate_point_accepts_lists(student):
     """accepts plain Python lists"""
-    expect_same_with_lists(student.rotate_point, (random_rotations(1, seed=135)[0], [1.0, 2.0, 3.0]), (3,),
-                           "rotate_point(R, p)")
+    expect_same_with_lists(
+        student.rotate_point, (random_rotations(1, seed=135)[0], [1.0, 2.0, 3.0]), (3,), "rotate_point(R, p)"
+    )
 
 
 # ---------------------------------------------------------------- compose
 def _compose_hint(got, A, B):
-    return _first_match(got, [
-        (B @ A, "the order is reversed: R_ac = R_ab @ R_bc"),
-        (A * B, hints.ELEMENTWISE_PRODUCT_HINT),
-        (A.T @ B, hints.FIRST_FACTOR_TRANSPOSED_HINT)],
-        "R_ac = R_ab @ R_bc, the matrix product in this order")
+    return _first_match(
+        got,
+        [
+            (B @ A, "the order is reversed: R_ac = R_ab @ R_bc"),
+            (A * B, hints.ELEMENTWISE_PRODUCT_HINT),
+            (A.T @ B, hints.FIRST_FACTOR_TRANSPOSED_HINT),
+        ],
+        "R_ac = R_ab @ R_bc, the matrix product in this order",
+    )
 
 
 @exercise("compose", weight=3)
@@ -423,11 +493,15 @@ def test_compose_accepts_lists(student):
 
 # ---------------------------------------------------------------- invert_rotation
 def _inverse_hint(got, R):
-    return _first_match(got, [
-        (R, "returned R itself: the inverse is the transpose"),
-        (-R, hints.NEGATED_NOT_TRANSPOSED_HINT),
-        (R[::-1], hints.REVERSED_ORDER_ROWS_R_HINT)],
-        "the inverse of a rotation is its transpose: R_ba = R_ab.T")
+    return _first_match(
+        got,
+        [
+            (R, "returned R itself: the inverse is the transpose"),
+            (-R, hints.NEGATED_NOT_TRANSPOSED_HINT),
+            (R[::-1], hints.REVERSED_ORDER_ROWS_R_HINT),
+        ],
+        "the inverse of a rotation is its transpose: R_ba = R_ab.T",
+    )
 
 
 @exercise("invert_rotation", weight=3)
@@ -449,8 +523,7 @@ def test_invert_rotation_undoes(student):
 @exercise("invert_rotation", weight=1)
 def test_invert_rotation_leaves_input_alone(student):
     """returns a new matrix and works on lists"""
-    expect_same_with_lists(student.invert_rotation, (random_rotations(1, seed=153)[0],), (3, 3),
-                           "invert_rotation(R)")
+    expect_same_with_lists(student.invert_rotation, (random_rotations(1, seed=153)[0],), (3, 3), "invert_rotation(R)")
 
 
 # ---------------------------------------------------------------- nearest_rotation
@@ -464,14 +537,22 @@ def _nearest_hint(got, M, otherwise="R = U Vᵀ from the SVD M = U Σ Vᵀ (with
     U, _, Vt = np.linalg.svd(M)
     Q, upper = np.linalg.qr(M)
     Q = Q @ np.diag(np.sign(np.diag(upper)))
-    candidates = [(_nearest(M).T, "looks like V Uᵀ, the transpose of the answer: R = U Vᵀ"),
-                  (M / np.linalg.norm(M, axis=0), hints.DIVIDING_EACH_COLUMN_LENGTH_HINT),
-                  (Q * np.sign(np.linalg.det(Q)), hints.QR_NOT_NEAREST_HINT)]
+    candidates = [
+        (_nearest(M).T, "looks like V Uᵀ, the transpose of the answer: R = U Vᵀ"),
+        (M / np.linalg.norm(M, axis=0), hints.DIVIDING_EACH_COLUMN_LENGTH_HINT),
+        (Q * np.sign(np.linalg.det(Q)), hints.QR_NOT_NEAREST_HINT),
+    ]
     if np.linalg.det(U @ Vt) < 0:
-        candidates.insert(0, (U @ Vt, "U Vᵀ is a reflection here (det -1): when det(U Vᵀ) < 0, flip the last column "
-                                      "of U (use diag(1, 1, det(U Vᵀ)))"))
+        candidates.insert(
+            0,
+            (
+                U @ Vt,
+                "U Vᵀ is a reflection here (det -1): when det(U Vᵀ) < 0, flip the last column "
+                "of U (use diag(1, 1, det(U Vᵀ)))",
+            ),
+        )
         flip = np.diag([1.0, 1.0, -1.0])
-        for wrong_side in (flip @ U @ Vt, U @ Vt @ flip):   # det +1, but not the nearest rotation
+        for wrong_side in (flip @ U @ Vt, U @ Vt @ flip):  # det +1, but not the nearest rotation
             candidates.append((wrong_side, hints.SIGN_FIX_GOES_BETWEEN_HINT))
     return _first_match(got, candidates, otherwise)
 
@@ -502,11 +583,14 @@ def test_nearest_rotation_never_reflects(student):
     rng = np.random.default_rng(164)
     mirror = np.diag([1.0, 1.0, -1.0])
     for R in random_rotations(10, seed=165):
-        M = R @ mirror @ np.diag(rng.uniform(0.5, 2.0, 3)) + 0.1 * rng.normal(size=(3, 3))   # det(U Vᵀ) = -1
+        M = R @ mirror @ np.diag(rng.uniform(0.5, 2.0, 3)) + 0.1 * rng.normal(size=(3, 3))  # det(U Vᵀ) = -1
         got = expect_array(student.nearest_rotation(M), (3, 3), "nearest_rotation(M)")
         det = np.linalg.det(got)
-        expect(det > 0, f"returned a matrix with det = {det:.3f} for a mirror-like M",
-               _nearest_hint(got, M, "the result must be a rotation, det = +1"))
+        expect(
+            det > 0,
+            f"returned a matrix with det = {det:.3f} for a mirror-like M",
+            _nearest_hint(got, M, "the result must be a rotation, det = +1"),
+        )
         expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M) for a mirror-like M", _nearest_hint(got, M))
 
 

@@ -14,7 +14,7 @@ from coursekit.diagnose import explains
 
 from .helpers import exercise, expect, expect_array, expect_same_with_lists, fmt, random_rotations
 
-ANGLES = (1.0, 2.5, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 3.0, np.pi - 1e-9)      # generic turns first
+ANGLES = (1.0, 2.5, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 3.0, np.pi - 1e-9)  # generic turns first
 SPINS = (1.0, 30.0, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 1e3, 5.0)
 
 
@@ -27,15 +27,20 @@ def _vee(W):
 
 
 def _hint(got, R, R_dot, omega_b):
-    slips = [(_vee(R_dot @ R.T), "that is the world rate ω_w (Ṙ Rᵀ = [ω_w]×); the gyroscope's rate is in body axes, "
-                                 "ω_b = Rᵀ ω_w"),
-             (-omega_b, "the opposite spin: Rᵀ Ṙ and Ṙᵀ R are negatives of each other"),
-             (_vee(R_dot), "Ṙ alone is not skew-symmetric: it still holds the attitude R"),
-             (R.T @ omega_b, hints.RATE_TURNED_INTO_BODY_HINT)]
+    slips = [
+        (
+            _vee(R_dot @ R.T),
+            "that is the world rate ω_w (Ṙ Rᵀ = [ω_w]×); the gyroscope's rate is in body axes, ω_b = Rᵀ ω_w",
+        ),
+        (-omega_b, "the opposite spin: Rᵀ Ṙ and Ṙᵀ R are negatives of each other"),
+        (_vee(R_dot), "Ṙ alone is not skew-symmetric: it still holds the attitude R"),
+        (R.T @ omega_b, hints.RATE_TURNED_INTO_BODY_HINT),
+    ]
     size = np.linalg.norm(omega_b)
     for candidate, hint in slips:
-        if np.max(np.abs(candidate - omega_b)) > 1e-6 * size and explains(got / size, candidate / size, omega_b / size,
-                                                                         floor=1e-12):
+        if np.max(np.abs(candidate - omega_b)) > 1e-6 * size and explains(
+            got / size, candidate / size, omega_b / size, floor=1e-12
+        ):
             return hint
     return "Ṙ = [R ω_b]× R = R [ω_b]× R ᵀ R: solve for [ω_b]×, then read ω_b off it"
 
@@ -51,9 +56,12 @@ def test_body_rate_every_angle_and_spin(student):
         R_dot = R @ _skew(omega_b)
         got = expect_array(student.body_angular_velocity(R, R_dot), (3,), "body_angular_velocity(R, Ṙ)")
         error = np.max(np.abs(got - omega_b))
-        expect(error <= 1e-12 * size, f"for a turn of {angle:.3g} rad spinning at {size:g} rad/s the body rate is "
-               f"off by {error:.2g} (tolerance {1e-12 * size:.2g}): got {fmt(got, 6)}, expected {fmt(omega_b, 6)}",
-               _hint(got, R, R_dot, omega_b))
+        expect(
+            error <= 1e-12 * size,
+            f"for a turn of {angle:.3g} rad spinning at {size:g} rad/s the body rate is "
+            f"off by {error:.2g} (tolerance {1e-12 * size:.2g}): got {fmt(got, 6)}, expected {fmt(omega_b, 6)}",
+            _hint(got, R, R_dot, omega_b),
+        )
 
 
 @exercise("body_angular_velocity", weight=1)
@@ -63,14 +71,17 @@ def test_body_rate_of_a_world_spin(student):
         R_dot = _skew(omega_w) @ R
         got = expect_array(student.body_angular_velocity(R, R_dot), (3,), "body_angular_velocity(R, Ṙ)")
         expected = R.T @ omega_w
-        expect(np.max(np.abs(got - expected)) <= 1e-12 * (1.0 + np.linalg.norm(omega_w)),
-               f"for a world spin {fmt(omega_w)} rad/s got {fmt(got)}, expected Rᵀ ω_w = {fmt(expected)}",
-               _hint(got, R, R_dot, expected))
+        expect(
+            np.max(np.abs(got - expected)) <= 1e-12 * (1.0 + np.linalg.norm(omega_w)),
+            f"for a world spin {fmt(omega_w)} rad/s got {fmt(got)}, expected Rᵀ ω_w = {fmt(expected)}",
+            _hint(got, R, R_dot, expected),
+        )
 
 
 @exercise("body_angular_velocity", weight=1)
 def test_body_rate_accepts_lists(student):
     """gives the same answer for plain lists as for arrays"""
     R = random_rotations(1, 3120)[0]
-    expect_same_with_lists(student.body_angular_velocity, (R, R @ _skew([0.3, -1.2, 0.5])), (3,),
-                           "body_angular_velocity(R, Ṙ)")
+    expect_same_with_lists(
+        student.body_angular_velocity, (R, R @ _skew([0.3, -1.2, 0.5])), (3,), "body_angular_velocity(R, Ṙ)"
+    )

@@ -29,8 +29,18 @@ from coursekit.checks.lesson03 import COLUMN_HINT, REAL_AXIS_HINT, column_logs, 
 from coursekit.diagnose import explains
 
 from .properties import angle_text, decade_vectors, expect_within, for_all, given_forms, rotation_vectors
-from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
-                      random_rotations, rotation_problem, shape_problem)
+from .helpers import (
+    Wrong,
+    exercise,
+    expect,
+    expect_array,
+    expect_close,
+    expect_same_with_lists,
+    fmt,
+    random_rotations,
+    rotation_problem,
+    shape_problem,
+)
 
 TOL = 1e-12
 EXP_TOL = 1e-14  # exp_so3's promise at every angle: each entry within 1e-14 (scipy's own error is ~3e-16)
@@ -53,8 +63,19 @@ def _unit_axes(count, seed):
 
 def _special_axes():
     """Axes where a naive near-π branch tends to fail: equal components, zeros, negative largest entries."""
-    axes = [DIAGONAL, -DIAGONAL, [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0],
-            [1.0, -1.0, 0.0], [0.6, 0.0, -0.8], [-0.48, 0.6, -0.64], [1.0, 1.0, -1.0], [-2.0, 1.0, 2.0]]
+    axes = [
+        DIAGONAL,
+        -DIAGONAL,
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, 0.0, -1.0],
+        [1.0, -1.0, 0.0],
+        [0.6, 0.0, -0.8],
+        [-0.48, 0.6, -0.64],
+        [1.0, 1.0, -1.0],
+        [-2.0, 1.0, 2.0],
+    ]
     return [np.asarray(a, dtype=float) / np.linalg.norm(a) for a in axes]
 
 
@@ -88,8 +109,10 @@ def _hat_hint(W, w):
         return hints.W_SITS_DIAGONAL_W_HINT
     for order in ((2, 1, 0), (1, 0, 2), (0, 2, 1), (1, 2, 0), (2, 0, 1)):
         if explains(W, _skew(np.asarray(w, dtype=float)[list(order)]), truth):
-            return ("the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3 "
-                    "(W = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]])")
+            return (
+                "the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3 "
+                "(W = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]])"
+            )
     if np.max(np.abs(W + W.T)) > 0.0:
         return "not skew-symmetric: [w]× has zeros on the diagonal and W[j, i] = -W[i, j]"
     return hints.COMPARE_ENTRY_ENTRY_W3_HINT
@@ -120,8 +143,9 @@ def test_hat_layout(student):
 @exercise("hat", weight=1)
 def test_hat_accepts_lists_and_zero(student):
     """accepts lists and integers; hat(0) is the zero matrix"""
-    expect_close(expect_array(student.hat([0, 0, 0]), (3, 3), "hat([0, 0, 0])"), np.zeros((3, 3)), 0.0,
-                 "hat([0, 0, 0])")
+    expect_close(
+        expect_array(student.hat([0, 0, 0]), (3, 3), "hat([0, 0, 0])"), np.zeros((3, 3)), 0.0, "hat([0, 0, 0])"
+    )
     expect_same_with_lists(student.hat, ([1.0, 0.0, 0.0],), (3, 3), "hat([1, 0, 0])", lists=([1, 0, 0],))
 
 
@@ -145,8 +169,9 @@ def test_vee_is_linear(student):
     W = 2.5 * _skew(x) - 0.75 * _skew(y)
     combined = expect_array(student.vee(W), (3,), "vee(2.5 A - 0.75 B)")
     if not np.max(np.abs(combined - (2.5 * x - 0.75 * y))) <= TOL:
-        expect_close(combined, 2.5 * x - 0.75 * y, TOL, "vee(2.5 [x]× - 0.75 [y]×)",
-                     vee_hint(combined, W, 2.5 * x - 0.75 * y))
+        expect_close(
+            combined, 2.5 * x - 0.75 * y, TOL, "vee(2.5 [x]× - 0.75 [y]×)", vee_hint(combined, W, 2.5 * x - 0.75 * y)
+        )
 
 
 @exercise("vee", weight=1)
@@ -200,10 +225,16 @@ def test_bracket_alternating(student):
     A, B = rng.normal(size=(2, 3, 3))
     same = expect_array(student.bracket(A, A), (3, 3), "bracket(A, A)")
     if not np.max(np.abs(same)) <= 1e-12:
-        hint = ("that is AA + AA: " if explains(same, 2 * A @ A, np.zeros((3, 3))) else
-                "that is AA: " if explains(same, A @ A, np.zeros((3, 3))) else "")
-        expect_close(same, np.zeros((3, 3)), 1e-12, "bracket(A, A)",
-                     hint + "the bracket of a matrix with itself is AA - AA = 0")
+        hint = (
+            "that is AA + AA: "
+            if explains(same, 2 * A @ A, np.zeros((3, 3)))
+            else "that is AA: "
+            if explains(same, A @ A, np.zeros((3, 3)))
+            else ""
+        )
+        expect_close(
+            same, np.zeros((3, 3)), 1e-12, "bracket(A, A)", hint + "the bracket of a matrix with itself is AA - AA = 0"
+        )
     ab = expect_array(student.bracket(A, B), (3, 3), "bracket(A, B)")
     ba = expect_array(student.bracket(B, A), (3, 3), "bracket(B, A)")
     expect_close(ab, -ba, 1e-12, "bracket(A, B) + bracket(B, A)")
@@ -212,6 +243,7 @@ def test_bracket_alternating(student):
 # ---------------------------------------------------------------- exp_series
 def _series_hint(student_value, W, n):
     """Recognise the usual slips by computing what each returns (neighbouring partial sums, W ** k, no 1/k!)."""
+
     def partial(first, last, factorial=True):
         term, total = np.eye(W.shape[0]), np.zeros_like(W)
         for k in range(last + 1):
@@ -219,6 +251,7 @@ def _series_hint(student_value, W, n):
                 total = total + term
             term = term @ W / (k + 1 if factorial else 1)
         return total
+
     truth = partial(0, n - 1)
     if explains(student_value, partial(1, n), truth) or explains(student_value, partial(1, n - 1), truth):
         return hints.IDENTITY_TERM_MISSING_SUM_HINT
@@ -226,7 +259,7 @@ def _series_hint(student_value, W, n):
         return hints.ONE_TERM_TOO_MANY_HINT
     if n >= 2 and explains(student_value, partial(0, n - 2), truth):
         return hints.ONE_TERM_TOO_FEW_HINT
-    entrywise = sum(W ** k / np.prod(np.arange(1, k + 1)) for k in range(n))
+    entrywise = sum(W**k / np.prod(np.arange(1, k + 1)) for k in range(n))
     if explains(student_value, entrywise, truth):
         return hints.ENTRYWISE_POWER_HINT
     if explains(student_value, partial(0, n - 1, factorial=False), truth):
@@ -272,8 +305,10 @@ def _exp_hint(got, expected, w):
     w = np.asarray(w, dtype=float)
     angle = float(np.linalg.norm(w))
     if 0.0 < angle and np.array_equal(got, np.eye(3)):
-        return ("returned exactly I for a tiny angle: R - I ≈ [w]× is the whole rotation; "
-                "use the Taylor coefficients sin θ/θ ≈ 1 - θ²/6, (1 - cos θ)/θ² ≈ 1/2 - θ²/24")
+        return (
+            "returned exactly I for a tiny angle: R - I ≈ [w]× is the whole rotation; "
+            "use the Taylor coefficients sin θ/θ ≈ 1 - θ²/6, (1 - cos θ)/θ² ≈ 1/2 - θ²/24"
+        )
     if explains(got, expected.T, expected):
         return "looks like the inverse rotation: check the sign of the sin θ term (R = I + sin θ K + ...)"
     if angle > 0.0:
@@ -313,9 +348,12 @@ def test_exp_so3_special_angles(student):
             what = f"exp_so3(w) at θ = {angle:.3g} about {fmt(axis, 3)}"
             if 0.0 < angle < 1e-4:
                 error = float(np.max(np.abs(got - expected)))
-                expect(error <= 1e-15, f"{what} is off by {error:.2g} (tolerance 1e-15): (R - I)/θ = "
-                       f"{fmt((got - np.eye(3)) / angle)}, expected {fmt((expected - np.eye(3)) / angle)}",
-                       _exp_hint(got, expected, w))
+                expect(
+                    error <= 1e-15,
+                    f"{what} is off by {error:.2g} (tolerance 1e-15): (R - I)/θ = "
+                    f"{fmt((got - np.eye(3)) / angle)}, expected {fmt((expected - np.eye(3)) / angle)}",
+                    _exp_hint(got, expected, w),
+                )
             else:
                 expect_close(got, expected, TOL, what, _exp_hint(got, expected, w))
 
@@ -323,12 +361,14 @@ def test_exp_so3_special_angles(student):
 @exercise("exp_so3", weight=2)
 def test_exp_so3_every_decade(student):
     """exact to 1e-14 at every angle from 1e-12 to π (each decade, just below each power of ten), lists too"""
+
     def check(case):
         w, given = case
         got = expect_array(student.exp_so3(given), (3, 3), "exp_so3(w)")
         expected = _exp(w)
-        expect_within(got, expected, EXP_TOL, "exp_so3(w)", angle_text(np.linalg.norm(w)),
-                      lambda: _exp_hint(got, expected, w))
+        expect_within(
+            got, expected, EXP_TOL, "exp_so3(w)", angle_text(np.linalg.norm(w)), lambda: _exp_hint(got, expected, w)
+        )
 
     for_all(given_forms(rotation_vectors()), check, explicit=decade_vectors())
 
@@ -371,8 +411,10 @@ def _log_hint(got, R, expected):
     angle = float(np.linalg.norm(expected))
     if not np.all(np.isfinite(got)):
         if abs(c) > 1.0:
-            return (f"NaN: (tr R - 1)/2 = 1 {'+' if c > 0 else '-'} {abs(c) - 1.0:.1e} is just outside [-1, 1] "
-                    "by rounding, and arccos of it is NaN: clip it first (or use atan2)")
+            return (
+                f"NaN: (tr R - 1)/2 = 1 {'+' if c > 0 else '-'} {abs(c) - 1.0:.1e} is just outside [-1, 1] "
+                "by rounding, and arccos of it is NaN: clip it first (or use atan2)"
+            )
         if angle < 1e-3:
             return hints.NAN_AT_ZERO_ANGLE_HINT
         if angle > 3.0 and weak_column(R):
@@ -388,18 +430,25 @@ def _log_hint(got, R, expected):
     if explains(got, 2.0 * expected, expected):
         return hints.TWICE_ROTATION_VECTOR_VEE_HINT
     if angle < 0.5 and explains(got, a, expected):
-        return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle ** 3 / 6:.1e}: you dropped the θ²/6 term, "
-                "keep θ/sin θ ≈ 1 + θ²/6 for small θ")
+        return (
+            f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle**3 / 6:.1e}: you dropped the θ²/6 term, "
+            "keep θ/sin θ ≈ 1 + θ²/6 for small θ"
+        )
     if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
             return hints.RETURNED_ZERO_TINY_ROTATION_HINT
-        return (f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
-                "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
+        return (
+            f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
+            "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
+        )
     no_branch = [t / np.sin(t) * a for t in (theta, theta_acos) if np.sin(t) != 0.0]
     if any(explains(got, candidate, expected) for candidate in no_branch) or (
-            angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
-        return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
-                "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ")
+        angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle
+    ):
+        return (
+            f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
+            "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ"
+        )
     if angle > 3.0 and any(explains(got, candidate, expected) for candidate in column_logs(R, theta, a)):
         return COLUMN_HINT
     if angle > 3.0:
@@ -421,8 +470,9 @@ def test_log_so3_random(student):
     for R in random_rotations(40, seed=314):
         got = _log(student, R, "log_so3(R)")
         expected = Rotation.from_matrix(R).as_rotvec()
-        expect_close(got, expected, 1e-10, f"log_so3(R) (angle {np.linalg.norm(expected):.3f})",
-                     _log_hint(got, R, expected))
+        expect_close(
+            got, expected, 1e-10, f"log_so3(R) (angle {np.linalg.norm(expected):.3f})", _log_hint(got, R, expected)
+        )
         expect_close(_exp(got), R, 1e-10, "Exp(log_so3(R)) vs R")
 
 
@@ -433,17 +483,20 @@ def test_log_so3_small_angles(student):
     expect_close(got, np.zeros(3), 1e-15, "log_so3(I)", _log_hint(got, np.eye(3), np.zeros(3)))
     for index, P in enumerate(_nearly_identities()):
         got = _log(student, P, "log_so3(R Rᵀ)")
-        expect(np.linalg.norm(got) <= 1e-12,
-               f"log_so3 of an identity up to rounding (trace = 3 + {np.trace(P) - 3:.1e}) returned {fmt(got)}",
-               "an identity up to rounding must give (almost) zero: (tr R - 1)/2 is just above 1 here; "
-               "clip it to [-1, 1] before arccos, or use atan2")
+        expect(
+            np.linalg.norm(got) <= 1e-12,
+            f"log_so3 of an identity up to rounding (trace = 3 + {np.trace(P) - 3:.1e}) returned {fmt(got)}",
+            "an identity up to rounding must give (almost) zero: (tr R - 1)/2 is just above 1 here; "
+            "clip it to [-1, 1] before arccos, or use atan2",
+        )
     for angle in (1e-12, 1e-8, 1e-5, 1e-3):
         for axis in _special_axes()[:4] + list(_unit_axes(4, seed=315)):
             w = angle * axis
             R = _exp(w)
             got = _log(student, R, f"log_so3(R) at θ = {angle:g}")
-            expect_close(got, w, 1e-15 + 1e-10 * angle, f"log_so3(R) at θ = {angle:g} about {fmt(axis, 3)}",
-                         _log_hint(got, R, w))
+            expect_close(
+                got, w, 1e-15 + 1e-10 * angle, f"log_so3(R) at θ = {angle:g} about {fmt(axis, 3)}", _log_hint(got, R, w)
+            )
 
 
 @exercise("log_so3", weight=3)
@@ -465,8 +518,13 @@ def test_log_so3_exactly_pi(student):
         for how, R in _half_turn_matrices(axis):
             got = _log(student, R, f"log_so3 of a half turn ({how})")
             best = w if np.linalg.norm(got - w) <= np.linalg.norm(got + w) else -w
-            expect_close(got, best, 1e-10, f"log_so3 of the half turn about {fmt(axis, 3)} ({how}), "
-                         "either sign accepted", _log_hint(got, R, best))
+            expect_close(
+                got,
+                best,
+                1e-10,
+                f"log_so3 of the half turn about {fmt(axis, 3)} ({how}), either sign accepted",
+                _log_hint(got, R, best),
+            )
 
 
 @exercise("log_so3", weight=2)
@@ -505,8 +563,10 @@ def _theta_hint(theta, R, true_angle):
     if explains(theta, theta_acos, true_angle):
         if theta_acos == 0.0:
             return "arccos loses tiny angles (here it rounds θ to 0): use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
-        return (f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
-                "use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
+        return (
+            f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
+            "use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
+        )
     return hints.ANGLE_FORMULA_HINT
 
 
@@ -514,8 +574,10 @@ def _axis_hint(u, R, axis):
     """Name the slip behind a wrong axis u from axis_angle(R) (``axis`` the right unit axis, sign included)."""
     a, _, _, _ = _log_parts(R)
     if np.linalg.norm(a) <= 1e-9 and (np.linalg.norm(a) == 0.0 or abs(abs(u @ a) / np.linalg.norm(a) - 1.0) <= 1e-6):
-        return ("at θ = π, R - Rᵀ is zero up to rounding and carries no axis: take u from (R + I)/2, "
-                "the column with the largest diagonal entry (sign from R - Rᵀ just below π)")
+        return (
+            "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: take u from (R + I)/2, "
+            "the column with the largest diagonal entry (sign from R - Rᵀ just below π)"
+        )
     if explains(u, -axis, axis):
         return hints.U_POINTS_WRONG_WAY_HINT
     return "u = vee(R - Rᵀ)/(2 sin θ) away from π; near π take it from (R + Rᵀ)/2, with its sign from R - Rᵀ"
@@ -528,20 +590,32 @@ def _axis_angle(student, R, what):
     true_angle = float(np.linalg.norm(Rotation.from_matrix(R).as_rotvec()))
     _, c, _, _ = _log_parts(R)
     if shape_problem(value[1], ()) == "returned NaN or inf values":
-        raise Wrong(f"{what}: θ is {value[1]} (the true angle is {true_angle:.3g})",
-                    f"(tr R - 1)/2 = 1 + {c - 1.0:.1e} is just above 1 by rounding, so arccos gives NaN: "
-                    "clip (tr R - 1)/2 to [-1, 1] before arccos (or use atan2)" if abs(c) > 1.0 else
-                    "θ must be a number: θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
+        raise Wrong(
+            f"{what}: θ is {value[1]} (the true angle is {true_angle:.3g})",
+            f"(tr R - 1)/2 = 1 + {c - 1.0:.1e} is just above 1 by rounding, so arccos gives NaN: "
+            "clip (tr R - 1)/2 to [-1, 1] before arccos (or use atan2)"
+            if abs(c) > 1.0
+            else "θ must be a number: θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)",
+        )
     theta = float(expect_array(value[1], (), f"{what}: theta"))
     if shape_problem(value[0], (3,)) == "returned NaN or inf values":
-        raise Wrong(f"{what}: u is {fmt(np.asarray(value[0], dtype=float))} at θ = {theta:.3g}",
-                    hints.AXIS_AT_ZERO_ANGLE_HINT
-                    if true_angle <= 1e-12 else "look for a division by a vanishing sin θ or norm")
+        raise Wrong(
+            f"{what}: u is {fmt(np.asarray(value[0], dtype=float))} at θ = {theta:.3g}",
+            hints.AXIS_AT_ZERO_ANGLE_HINT
+            if true_angle <= 1e-12
+            else "look for a division by a vanishing sin θ or norm",
+        )
     u = expect_array(value[0], (3,), f"{what}: u")
-    expect(abs(np.linalg.norm(u) - 1.0) <= 1e-12, f"{what}: |u| = {np.linalg.norm(u):.6g}, not 1",
-           "u must be a unit vector: normalise it (at θ = 0 return [1, 0, 0])")
-    expect(-1e-15 <= theta <= np.pi + 1e-12, f"{what}: θ = {theta:.6g} is outside [0, π]",
-           _theta_hint(theta, R, true_angle))
+    expect(
+        abs(np.linalg.norm(u) - 1.0) <= 1e-12,
+        f"{what}: |u| = {np.linalg.norm(u):.6g}, not 1",
+        "u must be a unit vector: normalise it (at θ = 0 return [1, 0, 0])",
+    )
+    expect(
+        -1e-15 <= theta <= np.pi + 1e-12,
+        f"{what}: θ = {theta:.6g} is outside [0, π]",
+        _theta_hint(theta, R, true_angle),
+    )
     return u, theta
 
 
@@ -564,9 +638,11 @@ def test_axis_angle_identity(student):
         u, theta = _axis_angle(student, P, f"axis_angle(identity #{index})")
         expect(theta <= 1e-12, f"axis_angle of an identity (#{index}) gave θ = {theta:.3g}")
     u, theta = _axis_angle(student, np.eye(3).astype(int).tolist(), "axis_angle([[1, 0, 0], [0, 1, 0], [0, 0, 1]])")
-    expect(np.array_equal(u, [1.0, 0.0, 0.0]) and theta == 0.0,
-           f"axis_angle of the identity gave u = {fmt(u)}, θ = {theta:.3g}; the docstring names u = [1, 0, 0]",
-           "at θ = 0 every axis is valid: return the one the docstring names, [1, 0, 0], and θ = 0")
+    expect(
+        np.array_equal(u, [1.0, 0.0, 0.0]) and theta == 0.0,
+        f"axis_angle of the identity gave u = {fmt(u)}, θ = {theta:.3g}; the docstring names u = [1, 0, 0]",
+        "at θ = 0 every axis is valid: return the one the docstring names, [1, 0, 0], and θ = 0",
+    )
 
 
 @exercise("axis_angle", weight=1)
@@ -586,17 +662,28 @@ def test_axis_angle_near_and_at_pi(student):
     for axis in _special_axes():
         R = _exp((np.pi - 1e-9) * axis)
         u, theta = _axis_angle(student, R, "axis_angle at θ = π - 1e-9")
-        expect_close(theta * u, (np.pi - 1e-9) * axis, 1e-8, f"θ u at θ = π - 1e-9 about {fmt(axis, 3)}",
-                     _theta_hint(theta, R, np.pi - 1e-9) if abs(theta - (np.pi - 1e-9)) > 1e-9
-                     else _axis_hint(u, R, axis))
+        expect_close(
+            theta * u,
+            (np.pi - 1e-9) * axis,
+            1e-8,
+            f"θ u at θ = π - 1e-9 about {fmt(axis, 3)}",
+            _theta_hint(theta, R, np.pi - 1e-9) if abs(theta - (np.pi - 1e-9)) > 1e-9 else _axis_hint(u, R, axis),
+        )
         for how, R in _half_turn_matrices(axis):
             u, theta = _axis_angle(student, R, f"axis_angle of a half turn ({how})")
-            expect(abs(theta - np.pi) <= 1e-10, f"θ of the half turn about {fmt(axis, 3)} ({how}) is "
-                   f"{theta:.12f}, off by {abs(theta - np.pi):.2g} from π (tolerance 1e-10)",
-                   _theta_hint(theta, R, np.pi))
+            expect(
+                abs(theta - np.pi) <= 1e-10,
+                f"θ of the half turn about {fmt(axis, 3)} ({how}) is "
+                f"{theta:.12f}, off by {abs(theta - np.pi):.2g} from π (tolerance 1e-10)",
+                _theta_hint(theta, R, np.pi),
+            )
             error = min(np.max(np.abs(u - axis)), np.max(np.abs(u + axis)))
-            expect(error <= 1e-10, f"u of the half turn about {fmt(axis, 3)} ({how}) is {fmt(u)}, off by "
-                   f"{error:.2g} from ± the axis (tolerance 1e-10)", _axis_hint(u, R, axis if u @ axis >= 0 else -axis))
+            expect(
+                error <= 1e-10,
+                f"u of the half turn about {fmt(axis, 3)} ({how}) is {fmt(u)}, off by "
+                f"{error:.2g} from ± the axis (tolerance 1e-10)",
+                _axis_hint(u, R, axis if u @ axis >= 0 else -axis),
+            )
 
 
 # ---------------------------------------------------------------- axis_from_eigen
@@ -615,27 +702,35 @@ def _eigen_hint(u, R):
     axis = unit(vectors[:, k])
     candidates = [
         (unit(vectors[k]), hints.ROW_EIGENVECTOR_MATRIX_EIGENVECTORS_HINT),
-        (unit(vectors[:, 0]), f"that is the first eigenvector, whose eigenvalue is {values[0]:.3g}, not 1: "
-                              "take k = argmin |λ - 1|"),
+        (
+            unit(vectors[:, 0]),
+            f"that is the first eigenvector, whose eigenvalue is {values[0]:.3g}, not 1: take k = argmin |λ - 1|",
+        ),
         (np.linalg.svd(R)[2][-1], hints.SVD_NULL_SPACE_R_HINT),
-        (np.linalg.eigh(R)[1][:, int(np.argmin(np.abs(np.linalg.eigh(R)[0] - 1.0)))],
-         hints.NP_LINALG_EIGH_ASSUMES_HINT),
+        (
+            np.linalg.eigh(R)[1][:, int(np.argmin(np.abs(np.linalg.eigh(R)[0] - 1.0)))],
+            hints.NP_LINALG_EIGH_ASSUMES_HINT,
+        ),
     ]
     for candidate, hint in candidates:
         if same_line(candidate) and not same_line(axis):
             return hint
-    return ("u must be the eigenvector of the eigenvalue 1: the column vectors[:, k] of np.linalg.eig's second "
-            "result, with k = argmin |λ - 1|")
+    return (
+        "u must be the eigenvector of the eigenvalue 1: the column vectors[:, k] of np.linalg.eig's second "
+        "result, with k = argmin |λ - 1|"
+    )
 
 
 def _eigen_axis(student, R, what):
     value = student.axis_from_eigen(R)
     array = np.asarray(value)
-    expect(not np.iscomplexobj(array), f"{what} returned a complex vector (dtype {array.dtype})",
-           REAL_AXIS_HINT)
+    expect(not np.iscomplexobj(array), f"{what} returned a complex vector (dtype {array.dtype})", REAL_AXIS_HINT)
     u = expect_array(value, (3,), what)
-    expect(abs(np.linalg.norm(u) - 1.0) <= 1e-9, f"{what}: |u| = {np.linalg.norm(u):.6g}, not 1",
-           "normalise the eigenvector")
+    expect(
+        abs(np.linalg.norm(u) - 1.0) <= 1e-9,
+        f"{what}: |u| = {np.linalg.norm(u):.6g}, not 1",
+        "normalise the eigenvector",
+    )
     return u
 
 
@@ -647,8 +742,11 @@ def test_axis_from_eigen_random(student):
         R = _exp(angle * axis)
         u = _eigen_axis(student, R, "axis_from_eigen(R)")
         moved = float(np.max(np.abs(R @ u - u)))
-        expect(moved <= 1e-9, f"R u ≠ u for u = {fmt(u)} (θ = {angle:.3f}): |R u - u| is up to {moved:.2g}",
-               _eigen_hint(u, R))
+        expect(
+            moved <= 1e-9,
+            f"R u ≠ u for u = {fmt(u)} (θ = {angle:.3f}): |R u - u| is up to {moved:.2g}",
+            _eigen_hint(u, R),
+        )
         expect(abs(abs(u @ axis) - 1.0) <= 1e-9, f"u = {fmt(u)} is not ± the axis {fmt(axis)}", _eigen_hint(u, R))
 
 
@@ -658,8 +756,11 @@ def test_axis_from_eigen_half_turns(student):
     for axis in _special_axes()[:6]:
         R = 2.0 * np.outer(axis, axis) - np.eye(3)
         u = _eigen_axis(student, R, "axis_from_eigen(half turn)")
-        expect(abs(abs(u @ axis) - 1.0) <= 1e-9, f"half turn about {fmt(axis, 3)}: got {fmt(u)}, "
-               f"|R u - u| = {np.max(np.abs(R @ u - u)):.2g}", _eigen_hint(u, R))
+        expect(
+            abs(abs(u @ axis) - 1.0) <= 1e-9,
+            f"half turn about {fmt(axis, 3)}: got {fmt(u)}, |R u - u| = {np.max(np.abs(R @ u - u)):.2g}",
+            _eigen_hint(u, R),
+        )
 
 
 @exercise("axis_from_eigen", weight=1)

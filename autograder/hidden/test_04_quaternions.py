@@ -29,18 +29,41 @@ from coursekit import hints
 from coursekit.diagnose import close, quaternion_hint, same_rotation_quat
 
 from .properties import angles, expect_within, for_all, quaternions, unit_vectors
-from .helpers import (LISTS_HINT, Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt,
-                      rotation_hint, rotation_problem, shape_problem)
+from .helpers import (
+    LISTS_HINT,
+    Wrong,
+    exercise,
+    expect,
+    expect_array,
+    expect_close,
+    expect_same_with_lists,
+    fmt,
+    rotation_hint,
+    rotation_problem,
+    shape_problem,
+)
 
 TOL = 1e-9
 SLERP_TOL = 2e-15  # quat_slerp for turns Ω from 1e-12 to π between q0 and q1: each component within 2e-15
 ONE = np.array([1.0, 0.0, 0.0, 0.0])
-UNITS = {"1": ONE, "i": np.array([0.0, 1.0, 0.0, 0.0]), "j": np.array([0.0, 0.0, 1.0, 0.0]),
-         "k": np.array([0.0, 0.0, 0.0, 1.0])}
+UNITS = {
+    "1": ONE,
+    "i": np.array([0.0, 1.0, 0.0, 0.0]),
+    "j": np.array([0.0, 0.0, 1.0, 0.0]),
+    "k": np.array([0.0, 0.0, 0.0, 1.0]),
+}
 # Hamilton's table: (a, b) -> (sign, unit) of a ⊗ b
-TABLE = {("i", "j"): (1, "k"), ("j", "k"): (1, "i"), ("k", "i"): (1, "j"),
-         ("j", "i"): (-1, "k"), ("k", "j"): (-1, "i"), ("i", "k"): (-1, "j"),
-         ("i", "i"): (-1, "1"), ("j", "j"): (-1, "1"), ("k", "k"): (-1, "1")}
+TABLE = {
+    ("i", "j"): (1, "k"),
+    ("j", "k"): (1, "i"),
+    ("k", "i"): (1, "j"),
+    ("j", "i"): (-1, "k"),
+    ("k", "j"): (-1, "i"),
+    ("i", "k"): (-1, "j"),
+    ("i", "i"): (-1, "1"),
+    ("j", "j"): (-1, "1"),
+    ("k", "k"): (-1, "1"),
+}
 
 
 def unit_quats(count, seed):
@@ -70,8 +93,11 @@ def expect_same_rotation(got, expected, tol, what, hint=""):
     got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
     if not same_rotation_quat(got, expected, tol):
         error = min(np.max(np.abs(got - expected)), np.max(np.abs(got + expected)))
-        raise Wrong(f"{what} is off by {error:.2g} even up to sign (tolerance {tol:g}): "
-                    f"got {fmt(got)}, expected ±{fmt(expected)}", hint or quaternion_hint(got, expected) or "")
+        raise Wrong(
+            f"{what} is off by {error:.2g} even up to sign (tolerance {tol:g}): "
+            f"got {fmt(got)}, expected ±{fmt(expected)}",
+            hint or quaternion_hint(got, expected) or "",
+        )
 
 
 def rotation_of_pi(axis):
@@ -83,7 +109,7 @@ def rotation_of_pi(axis):
 # ---------------------------------------------------------------- quat_multiply
 PRODUCT_HINTS = {
     "swapped": "this is q ⊗ p: the sign of the cross product p_v × q_v is flipped (the JPL product, ij = -k), "
-               "or the factors are swapped",
+    "or the factors are swapped",
     "no_cross": "the cross product is missing: the vector part is p_w q_v + q_w p_v + p_v × q_v",
     "dot_plus": "the scalar part is p_w q_w - p_v · q_v (minus the dot product)",
     "elementwise": hints.MULTIPLIED_ENTRY_ENTRY_EVERY_HINT,
@@ -96,11 +122,13 @@ def product_hint(got, p, q, ref, tol, up_to_sign=False):
     """The hint for the one typical wrong product that ``got`` equals, else an honest general one."""
     p, q = np.asarray(p, dtype=float), np.asarray(q, dtype=float)
     exact = np.asarray(ref.quat_multiply(p, q), dtype=float)
-    candidates = {"swapped": np.asarray(ref.quat_multiply(q, p), dtype=float),
-                  "no_cross": exact - np.concatenate([[0.0], np.cross(p[1:], q[1:])]),
-                  "dot_plus": exact + np.concatenate([[2.0 * (p[1:] @ q[1:])], np.zeros(3)]),
-                  "elementwise": p * q,
-                  "normalised": exact / np.linalg.norm(exact)}
+    candidates = {
+        "swapped": np.asarray(ref.quat_multiply(q, p), dtype=float),
+        "no_cross": exact - np.concatenate([[0.0], np.cross(p[1:], q[1:])]),
+        "dot_plus": exact + np.concatenate([[2.0 * (p[1:] @ q[1:])], np.zeros(3)]),
+        "elementwise": p * q,
+        "normalised": exact / np.linalg.norm(exact),
+    }
     same = same_rotation_quat if up_to_sign else close
     matches = [key for key, value in candidates.items() if not close(value, exact, tol) and same(got, value, tol)]
     return PRODUCT_HINTS[matches[0]] if len(matches) == 1 else PRODUCT_GENERIC
@@ -113,8 +141,13 @@ def test_quat_multiply_matches_scipy(student, ref):
         got = expect_array(student.quat_multiply(p, q), (4,), "quat_multiply(p, q)")
         expected = (scipy_rotation(p) * scipy_rotation(q)).as_quat(scalar_first=True)
         if not same_rotation_quat(got, expected, TOL):
-            expect_same_rotation(got, expected, TOL, "quat_multiply(p, q) as a rotation",
-                                 product_hint(got, p, q, ref, 1e-6, up_to_sign=True))
+            expect_same_rotation(
+                got,
+                expected,
+                TOL,
+                "quat_multiply(p, q) as a rotation",
+                product_hint(got, p, q, ref, 1e-6, up_to_sign=True),
+            )
 
 
 @exercise("quat_multiply", weight=2)
@@ -125,8 +158,13 @@ def test_quat_multiply_exact_general(student, ref):
         expected = ref.quat_multiply(p, q)
         scale = np.linalg.norm(p) * np.linalg.norm(q)
         if not close(got, expected, TOL * scale):
-            expect_close(got, expected, TOL * scale, f"quat_multiply(p, q) with |p| |q| = {scale:.3g}",
-                         product_hint(got, p, q, ref, 1e-9 * scale))
+            expect_close(
+                got,
+                expected,
+                TOL * scale,
+                f"quat_multiply(p, q) with |p| |q| = {scale:.3g}",
+                product_hint(got, p, q, ref, 1e-9 * scale),
+            )
 
 
 @exercise("quat_multiply", weight=1)
@@ -161,8 +199,10 @@ def product_matrix_hint(M, q, name, ref, tol):
     no_minus[0, 1:] = q[1:]
     candidates = [
         (other(q), f"this is [{letter}]_{theirs}: in [{letter}]_{mine} the [v]× block has a {sign} sign"),
-        (exact.T, f"looks like the transpose of [{letter}]_{mine}: row i holds the coefficients of component i "
-                  "of p ⊗ q"),
+        (
+            exact.T,
+            f"looks like the transpose of [{letter}]_{mine}: row i holds the coefficients of component i of p ⊗ q",
+        ),
         (no_minus, hints.FIRST_ROW_W_X_HINT),
         (own(np.roll(q, 1)), f"{letter} was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"),
     ]
@@ -183,16 +223,26 @@ def _check_product_matrix(student, ref, name, seed):
             factor = q
         scale = np.linalg.norm(p) * np.linalg.norm(q)
         if not close(got, expected, TOL * scale):
-            expect_close(got, expected, TOL * scale, what,
-                         product_matrix_hint(M, factor, name, ref, 1e-9 * np.linalg.norm(factor)))
+            expect_close(
+                got,
+                expected,
+                TOL * scale,
+                what,
+                product_matrix_hint(M, factor, name, ref, 1e-9 * np.linalg.norm(factor)),
+            )
 
 
 def _check_orthogonal(student, name, seed):
     function = getattr(student, name)
     for q in unit_quats(6, seed=seed):
         M = expect_array(function(q), (4, 4), f"{name}(q)")
-        expect_close(M.T @ M, np.eye(4), TOL, f"{name}(q)ᵀ {name}(q) for a unit q",
-                     "the four columns must be orthonormal: compare each sign with the matrix in §4")
+        expect_close(
+            M.T @ M,
+            np.eye(4),
+            TOL,
+            f"{name}(q)ᵀ {name}(q) for a unit q",
+            "the four columns must be orthonormal: compare each sign with the matrix in §4",
+        )
     for q in general_quats(4, seed=seed + 1):
         M = expect_array(function(q), (4, 4), f"{name}(q)")
         expect_close(M.T @ M, (q @ q) * np.eye(4), TOL * (q @ q), f"{name}(q)ᵀ {name}(q) for |q|² = {q @ q:.3g}")
@@ -206,8 +256,13 @@ def _check_scipy(student, ref, name, seed):
         got = M @ (b if name == "quat_left" else a)
         expected = (scipy_rotation(a) * scipy_rotation(b)).as_quat(scalar_first=True)
         if not same_rotation_quat(got, expected, TOL):
-            expect_same_rotation(got, expected, TOL, f"the composition a ⊗ b through {name}",
-                                 product_matrix_hint(M, factor, name, ref, 1e-9))
+            expect_same_rotation(
+                got,
+                expected,
+                TOL,
+                f"the composition a ⊗ b through {name}",
+                product_matrix_hint(M, factor, name, ref, 1e-9),
+            )
 
 
 @exercise("quat_left", weight=3)
@@ -253,9 +308,15 @@ def test_quat_conjugate_values(student):
     for q in general_quats(20, seed=431):
         got = expect_array(student.quat_conjugate(q), (4,), "quat_conjugate(q)")
         tol = TOL * np.linalg.norm(q)
-        hint = ("negated the scalar instead of the vector part" if close(got, -conj(q), tol) else
-                hints.RETURNED_Q_UNCHANGED_NEGATE_HINT if close(got, q, tol) else
-                hints.RETURNED_Q_KEEP_SCALAR_HINT if close(got, -q, tol) else "")
+        hint = (
+            "negated the scalar instead of the vector part"
+            if close(got, -conj(q), tol)
+            else hints.RETURNED_Q_UNCHANGED_NEGATE_HINT
+            if close(got, q, tol)
+            else hints.RETURNED_Q_KEEP_SCALAR_HINT
+            if close(got, -q, tol)
+            else ""
+        )
         expect_close(got, conj(q), tol, "quat_conjugate(q)", hint)
 
 
@@ -265,8 +326,11 @@ def test_quat_conjugate_is_inverse_rotation(student):
     for q in unit_quats(8, seed=432):
         got = expect_array(student.quat_conjugate(q), (4,), "quat_conjugate(q)")
         expected = scipy_rotation(q).inv().as_quat(scalar_first=True)
-        hint = ("this is the rotation of q itself (q and -q are one rotation), not its inverse: "
-                "q* = [w, -x, -y, -z]" if same_rotation_quat(got, q, TOL) else "")
+        hint = (
+            "this is the rotation of q itself (q and -q are one rotation), not its inverse: q* = [w, -x, -y, -z]"
+            if same_rotation_quat(got, q, TOL)
+            else ""
+        )
         expect_same_rotation(got, expected, TOL, "quat_conjugate(q) as a rotation", hint)
 
 
@@ -282,14 +346,18 @@ def inverse_hint(got, q):
     q = np.asarray(q, dtype=float)
     n2 = q @ q
     exact = conj(q) / n2
-    candidates = [(conj(q), "returned the conjugate: divide it by |q|²"),
-                  (conj(q) / np.sqrt(n2), "divided by |q|, not by |q|²"),
-                  (-q / n2, hints.RETURNED_Q_Q_ONLY_HINT)]
+    candidates = [
+        (conj(q), "returned the conjugate: divide it by |q|²"),
+        (conj(q) / np.sqrt(n2), "divided by |q|, not by |q|²"),
+        (-q / n2, hints.RETURNED_Q_Q_ONLY_HINT),
+    ]
     if np.all(q != 0.0):
         candidates.append((1.0 / q, hints.TOOK_Q_ENTRY_ENTRY_HINT))
-    matches = [hint for value, hint in candidates
-               if not close(value, exact, 1e-9 * np.max(np.abs(exact)))
-               and close(got, value, 1e-9 * np.max(np.abs(value)))]
+    matches = [
+        hint
+        for value, hint in candidates
+        if not close(value, exact, 1e-9 * np.max(np.abs(exact))) and close(got, value, 1e-9 * np.max(np.abs(value)))
+    ]
     return matches[0] if len(matches) == 1 else ""
 
 
@@ -300,8 +368,9 @@ def test_quat_inverse_non_unit(student):
         got = expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)")
         n2 = q @ q
         if not close(got, conj(q) / n2, TOL / n2):
-            expect_close(got, conj(q) / n2, TOL / n2, f"quat_inverse(q) for |q| = {np.sqrt(n2):.3g}",
-                         inverse_hint(got, q))
+            expect_close(
+                got, conj(q) / n2, TOL / n2, f"quat_inverse(q) for |q| = {np.sqrt(n2):.3g}", inverse_hint(got, q)
+            )
 
 
 @exercise("quat_inverse", weight=2)
@@ -324,8 +393,9 @@ def test_quat_inverse_unit(student):
         got = expect_array(student.quat_inverse(q), (4,), "quat_inverse(q)")
         if not close(got, conj(q), TOL):
             expect_close(got, conj(q), TOL, "quat_inverse(q) for a unit q", inverse_hint(got, q))
-    expect_same_with_lists(student.quat_inverse, ([1.0, 2.0, -2.0, 4.0],), (4,), "quat_inverse([1, 2, -2, 4])",
-                           lists=([1, 2, -2, 4],))
+    expect_same_with_lists(
+        student.quat_inverse, ([1.0, 2.0, -2.0, 4.0],), (4,), "quat_inverse([1, 2, -2, 4])", lists=([1, 2, -2, 4],)
+    )
 
 
 # ---------------------------------------------------------------- quat_from_axis_angle
@@ -348,13 +418,13 @@ def axis_angle_hint(got, axis, theta, up_to_sign=False, tol=1e-9):
     exact = quat(np.cos(theta / 2), np.sin(theta / 2), u)
     half_degrees = np.deg2rad(theta) / 2
     candidates = [
-        (quat(np.cos(theta), np.sin(theta), u),
-         "this is the rotation by 2θ: the quaternion uses the half angle, [cos(θ/2), u sin(θ/2)]"),
+        (
+            quat(np.cos(theta), np.sin(theta), u),
+            "this is the rotation by 2θ: the quaternion uses the half angle, [cos(θ/2), u sin(θ/2)]",
+        ),
         (quat(np.cos(half_degrees), np.sin(half_degrees), u), "looks like degrees: the course works in radians"),
-        (quat(np.sin(theta / 2), np.cos(theta / 2), u),
-         hints.SIN_COS_SWAPPED_SCALAR_HINT),
-         (quat(np.cos(theta / 2), np.sin(theta / 2), axis),
-          hints.DIVIDE_U_NORM_FIRST_HINT),
+        (quat(np.sin(theta / 2), np.cos(theta / 2), u), hints.SIN_COS_SWAPPED_SCALAR_HINT),
+        (quat(np.cos(theta / 2), np.sin(theta / 2), axis), hints.DIVIDE_U_NORM_FIRST_HINT),
     ]
     same = same_rotation_quat if up_to_sign else close
     matches = [hint for value, hint in candidates if not same(value, exact, tol) and same(got, value, tol)]
@@ -372,8 +442,13 @@ def test_quat_from_axis_angle_matches_scipy(student):
         got = expect_array(student.quat_from_axis_angle(u, theta), (4,), f"quat_from_axis_angle(u, {theta:.4g})")
         expected = Rotation.from_rotvec(theta * u).as_quat(scalar_first=True)
         if not same_rotation_quat(got, expected, TOL):
-            expect_same_rotation(got, expected, TOL, f"quat_from_axis_angle(u, {theta:.4g})",
-                                 axis_angle_hint(got, u, theta, up_to_sign=True, tol=1e-6))
+            expect_same_rotation(
+                got,
+                expected,
+                TOL,
+                f"quat_from_axis_angle(u, {theta:.4g})",
+                axis_angle_hint(got, u, theta, up_to_sign=True, tol=1e-6),
+            )
 
 
 @exercise("quat_from_axis_angle", weight=1)
@@ -397,9 +472,14 @@ def test_quat_from_axis_angle_normalises_axis(student):
         u = np.asarray(axis) / np.linalg.norm(axis)
         expected = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
         if not close(got, expected, TOL):
-            expect_close(got, expected, TOL, f"quat_from_axis_angle({axis}, {theta})",
-                         axis_angle_hint(got, axis, theta)
-                         or "expected [cos(θ/2), u sin(θ/2)] with the unit axis u = axis / |axis|")
+            expect_close(
+                got,
+                expected,
+                TOL,
+                f"quat_from_axis_angle({axis}, {theta})",
+                axis_angle_hint(got, axis, theta)
+                or "expected [cos(θ/2), u sin(θ/2)] with the unit axis u = axis / |axis|",
+            )
 
 
 # ---------------------------------------------------------------- quat_rotate
@@ -409,12 +489,13 @@ def rotate_hint(got, q, v, ref, tol):
     exact = scipy_rotation(q).apply(v)
     no_conjugate = ref.quat_multiply(ref.quat_multiply(q, np.concatenate([[0.0], v])), q)[1:]
     candidates = [
-        (scipy_rotation(q).inv().apply(v),
-         "rotated the opposite way: the sandwich is q ⊗ [0, v] ⊗ q*, with the conjugate on the right"),
+        (
+            scipy_rotation(q).inv().apply(v),
+            "rotated the opposite way: the sandwich is q ⊗ [0, v] ⊗ q*, with the conjugate on the right",
+        ),
         (Rotation.from_quat(q).apply(v), hints.SCALAR_LAST_HINT),
         (no_conjugate, hints.CONJUGATE_MISSING_Q_V_HINT),
-        (v + 2.0 * q[0] * np.cross(q[1:], v),
-         hints.SECOND_ORDER_TERM_MISSING_HINT),
+        (v + 2.0 * q[0] * np.cross(q[1:], v), hints.SECOND_ORDER_TERM_MISSING_HINT),
     ]
     matches = [hint for value, hint in candidates if not close(value, exact, tol) and close(got, value, tol)]
     return matches[0] if len(matches) == 1 else ""
@@ -428,8 +509,13 @@ def test_quat_rotate_matches_scipy(student, ref):
         got = expect_array(student.quat_rotate(q, v), (3,), "quat_rotate(q, v)")
         tol = TOL * 3.0 * np.linalg.norm(v)
         if not close(got, scipy_rotation(q).apply(v), tol):
-            expect_close(got, scipy_rotation(q).apply(v), tol, "quat_rotate(q, v)",
-                         rotate_hint(got, q, v, ref, 1e-6 * np.linalg.norm(v)))
+            expect_close(
+                got,
+                scipy_rotation(q).apply(v),
+                tol,
+                "quat_rotate(q, v)",
+                rotate_hint(got, q, v, ref, 1e-6 * np.linalg.norm(v)),
+            )
 
 
 @exercise("quat_rotate", weight=1)
@@ -454,8 +540,9 @@ def test_quat_rotate_axis_and_lists(student, ref):
         got = expect_array(student.quat_rotate(q.tolist(), (2.0 * u).tolist()), (3,), "quat_rotate(q, axis)")
         if not close(got, 2.0 * u, TOL * 2.0):
             with_arrays = expect_array(student.quat_rotate(q, 2.0 * u), (3,), "quat_rotate(q, axis)")
-            hint = (LISTS_HINT if close(with_arrays, 2.0 * u, TOL * 2.0) else
-                    rotate_hint(got, q, 2.0 * u, ref, 1e-6 * 2.0))
+            hint = (
+                LISTS_HINT if close(with_arrays, 2.0 * u, TOL * 2.0) else rotate_hint(got, q, 2.0 * u, ref, 1e-6 * 2.0)
+            )
             expect_close(got, 2.0 * u, TOL * 2.0, "quat_rotate(q, 2u) along the axis u", hint)
 
 
@@ -494,8 +581,9 @@ def test_quat_to_matrix_scalar_last_oracle(student):
         wxyz = np.concatenate([xyzw[3:], xyzw[:3]])
         got = expect_array(student.quat_to_matrix(wxyz), (3, 3), "quat_to_matrix(q)")
         if not close(got, Rotation.from_quat(xyzw).as_matrix(), TOL):
-            expect_close(got, Rotation.from_quat(xyzw).as_matrix(), TOL, "quat_to_matrix([w, x, y, z])",
-                         matrix_hint(got, wxyz))
+            expect_close(
+                got, Rotation.from_quat(xyzw).as_matrix(), TOL, "quat_to_matrix([w, x, y, z])", matrix_hint(got, wxyz)
+            )
 
 
 @exercise("quat_to_matrix", weight=1)
@@ -508,8 +596,13 @@ def test_quat_to_matrix_edge_cases(student):
         u = rng.normal(size=3)
         u /= np.linalg.norm(u)
         got = expect_array(student.quat_to_matrix(np.concatenate([[0.0], u])), (3, 3), "quat_to_matrix")
-        expect_close(got, rotation_of_pi(u), TOL, "quat_to_matrix([0, u]), a half turn",
-                     matrix_hint(got, np.concatenate([[0.0], u])))
+        expect_close(
+            got,
+            rotation_of_pi(u),
+            TOL,
+            "quat_to_matrix([0, u]), a half turn",
+            matrix_hint(got, np.concatenate([[0.0], u])),
+        )
     for q in unit_quats(4, seed=474):
         a = expect_array(student.quat_to_matrix(q), (3, 3), "quat_to_matrix(q)")
         b = expect_array(student.quat_to_matrix(-q), (3, 3), "quat_to_matrix(-q)")
@@ -520,7 +613,7 @@ def test_quat_to_matrix_edge_cases(student):
 
 # ---------------------------------------------------------------- matrix_to_quat
 SHEPPERD = "start from the largest of w², x², y², z² (Shepperd's method)"
-NAN_NEAR_PI_HINT = ("NaN or inf near θ = π, where w = cos(θ/2) → 0: dividing by 4w fails there; " + SHEPPERD)
+NAN_NEAR_PI_HINT = "NaN or inf near θ = π, where w = cos(θ/2) → 0: dividing by 4w fails there; " + SHEPPERD
 
 
 def naive_hint(got, expected):
@@ -529,8 +622,10 @@ def naive_hint(got, expected):
     length = np.linalg.norm(got)
     if abs(expected[0]) > 0.1 or abs(length - 1.0) <= TOL / 2 or not same_rotation_quat(got / length, expected, 1e-6):
         return ""
-    return (f"|q| = 1 {'+' if length > 1 else '-'} {abs(length - 1.0):.2g}: near θ = π the trace formula "
-            f"w = ½√(1 + tr R) loses accuracy, and dividing by 4w carries the error into x, y, z; " + SHEPPERD)
+    return (
+        f"|q| = 1 {'+' if length > 1 else '-'} {abs(length - 1.0):.2g}: near θ = π the trace formula "
+        f"w = ½√(1 + tr R) loses accuracy, and dividing by 4w carries the error into x, y, z; " + SHEPPERD
+    )
 
 
 def m2q_array(value, what, near_pi):
@@ -575,8 +670,9 @@ def test_matrix_to_quat_exactly_pi(student):
     axes = [np.eye(3)[k] for k in range(3)] + [rng.normal(size=3) for _ in range(4)]
     for axis in axes:
         u = axis / np.linalg.norm(axis)
-        got = m2q_array(student.matrix_to_quat(rotation_of_pi(u)), f"matrix_to_quat at θ = π about {fmt(u)}",
-                        near_pi=True)
+        got = m2q_array(
+            student.matrix_to_quat(rotation_of_pi(u)), f"matrix_to_quat at θ = π about {fmt(u)}", near_pi=True
+        )
         expected = np.concatenate([[0.0], u])
         expect_same_rotation(got, expected, TOL, f"matrix_to_quat at θ = π about {fmt(u)}", m2q_hint(got, expected))
 
@@ -590,10 +686,14 @@ def test_matrix_to_quat_canonical_sign(student):
         u /= np.linalg.norm(u)
         q = np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
         canonical = q if q[0] >= 0 else -q
-        got = m2q_array(student.matrix_to_quat(scipy_rotation(q).as_matrix()), "matrix_to_quat(R)",
-                        near_pi=abs(theta - np.pi) < 0.1)
-        hint = ("q and -q are the same rotation; the canonical choice has w >= 0: negate q when w < 0"
-                if close(got, -canonical, 1e-9) else m2q_hint(got, canonical))
+        got = m2q_array(
+            student.matrix_to_quat(scipy_rotation(q).as_matrix()), "matrix_to_quat(R)", near_pi=abs(theta - np.pi) < 0.1
+        )
+        hint = (
+            "q and -q are the same rotation; the canonical choice has w >= 0: negate q when w < 0"
+            if close(got, -canonical, 1e-9)
+            else m2q_hint(got, canonical)
+        )
         expect_close(got, canonical, TOL, f"matrix_to_quat(R) for a turn by {theta:.4g} rad", hint)
 
 
@@ -619,9 +719,11 @@ def test_matrix_to_quat_one_component_small(student):
     for q in _one_component_small(486):
         R = scipy_rotation(q).as_matrix()
         got = m2q_array(student.matrix_to_quat(R), f"matrix_to_quat(R) for q = {fmt(q)}", near_pi=False)
-        hint = m2q_hint(got, q) or ("the pivot must be the largest of w², x², y², z², read from the trace and the "
-                                    "diagonal R[0, 0], R[1, 1], R[2, 2] (Shepperd's method); a small pivot divides "
-                                    "by a vanishing number")
+        hint = m2q_hint(got, q) or (
+            "the pivot must be the largest of w², x², y², z², read from the trace and the "
+            "diagonal R[0, 0], R[1, 1], R[2, 2] (Shepperd's method); a small pivot divides "
+            "by a vanishing number"
+        )
         if q[0] == 0.0:  # w = 0: q and -q both have w >= 0, either is the answer
             expect_same_rotation(got, q, TOL, f"matrix_to_quat(R) for q = {fmt(q)}", hint)
         else:  # the docstring's w >= 0 holds at w = 1e-8 too
@@ -635,23 +737,29 @@ def test_matrix_to_quat_identity_and_norm(student):
     expect_close(got, ONE, TOL, "matrix_to_quat(I)", quaternion_hint(got, ONE) or "")
     for R in Rotation.random(5, random_state=485).as_matrix():
         got = expect_array(student.matrix_to_quat(R.tolist()), (4,), "matrix_to_quat(R as a list)")
-        expect(abs(np.linalg.norm(got) - 1.0) <= TOL, f"|matrix_to_quat(R)| = {np.linalg.norm(got):.12f}",
-               "scale the result to unit length")
+        expect(
+            abs(np.linalg.norm(got) - 1.0) <= TOL,
+            f"|matrix_to_quat(R)| = {np.linalg.norm(got):.12f}",
+            "scale the result to unit length",
+        )
 
 
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz
 def layout_hint(got, q, to_end):
     """The hint for the one typical wrong reordering of ``q`` (one quaternion or a stack) that ``got`` equals."""
     q = np.asarray(q, dtype=float)
-    shift, where, index = ((-1, "end", "q[..., 1:] and q[..., :1]") if to_end else
-                           (1, "front", "q[..., 3:] and q[..., :3]"))
+    shift, where, index = (
+        (-1, "end", "q[..., 1:] and q[..., :1]") if to_end else (1, "front", "q[..., 3:] and q[..., :3]")
+    )
     exact = np.roll(q, shift, axis=-1)
     candidates = [
         (q[..., ::-1], hints.ARRAY_REVERSED_ONLY_SCALAR_HINT),
         (q, f"returned q unchanged: the scalar must move to the {where}"),
         (np.roll(q, -shift, axis=-1), f"rolled the wrong way: the scalar must move to the {where}"),
-        (np.roll(q.ravel(), shift).reshape(q.shape),
-         f"the whole stack was rolled as one flat array: roll along the last axis (axis=-1) or index {index}"),
+        (
+            np.roll(q.ravel(), shift).reshape(q.shape),
+            f"the whole stack was rolled as one flat array: roll along the last axis (axis=-1) or index {index}",
+        ),
     ]
     matches = [hint for value, hint in candidates if not close(value, exact, 0.0) and close(got, value, 0.0)]
     return matches[0] if len(matches) == 1 else ""
@@ -663,8 +771,12 @@ def test_wxyz_to_xyzw_values(student):
     for q in unit_quats(10, seed=491):
         got = expect_array(student.wxyz_to_xyzw(q), (4,), "wxyz_to_xyzw(q)")
         expect_close(got, np.concatenate([q[1:], q[:1]]), 0.0, "wxyz_to_xyzw(q)", layout_hint(got, q, to_end=True))
-        expect_close(Rotation.from_quat(got).as_matrix(), scipy_rotation(q).as_matrix(), TOL,
-                     "scipy's Rotation.from_quat(wxyz_to_xyzw(q))")
+        expect_close(
+            Rotation.from_quat(got).as_matrix(),
+            scipy_rotation(q).as_matrix(),
+            TOL,
+            "scipy's Rotation.from_quat(wxyz_to_xyzw(q))",
+        )
 
 
 @exercise("wxyz_to_xyzw", weight=1)
@@ -672,8 +784,13 @@ def test_wxyz_to_xyzw_stack(student):
     """converts a stack of shape (N, 4) row by row, and accepts lists"""
     stack = general_quats(5, seed=492)
     got = expect_array(student.wxyz_to_xyzw(stack), (5, 4), "wxyz_to_xyzw(stack of 5)")
-    expect_close(got, np.concatenate([stack[:, 1:], stack[:, :1]], axis=1), 0.0, "wxyz_to_xyzw(stack)",
-                 layout_hint(got, stack, to_end=True))
+    expect_close(
+        got,
+        np.concatenate([stack[:, 1:], stack[:, :1]], axis=1),
+        0.0,
+        "wxyz_to_xyzw(stack)",
+        layout_hint(got, stack, to_end=True),
+    )
     got = expect_array(student.wxyz_to_xyzw([1.0, 2.0, 3.0, 4.0]), (4,), "wxyz_to_xyzw(list)")
     expect_close(got, [2.0, 3.0, 4.0, 1.0], 0.0, "wxyz_to_xyzw([1, 2, 3, 4])")
 
@@ -681,14 +798,19 @@ def test_wxyz_to_xyzw_stack(student):
 @exercise("xyzw_to_wxyz", weight=3)
 def test_xyzw_to_wxyz_values(student):
     """moves the scalar to the front; scipy's scalar-last output becomes scalar_first=True's"""
-    quats = Rotation.random(10, random_state=493).as_quat(canonical=True)   # scipy's layout: [x, y, z, w]
-    quats[1::2] *= -1.0                                                    # both hemispheres
+    quats = Rotation.random(10, random_state=493).as_quat(canonical=True)  # scipy's layout: [x, y, z, w]
+    quats[1::2] *= -1.0  # both hemispheres
     for xyzw in quats:
         got = expect_array(student.xyzw_to_wxyz(xyzw), (4,), "xyzw_to_wxyz(q)")
-        expect_close(got, np.concatenate([xyzw[3:], xyzw[:3]]), 0.0, "xyzw_to_wxyz(q)",
-                     layout_hint(got, xyzw, to_end=False))
-        expect_close(scipy_rotation(got).as_matrix(), Rotation.from_quat(xyzw).as_matrix(), TOL,
-                     "Rotation.from_quat(xyzw_to_wxyz(q), scalar_first=True)")
+        expect_close(
+            got, np.concatenate([xyzw[3:], xyzw[:3]]), 0.0, "xyzw_to_wxyz(q)", layout_hint(got, xyzw, to_end=False)
+        )
+        expect_close(
+            scipy_rotation(got).as_matrix(),
+            Rotation.from_quat(xyzw).as_matrix(),
+            TOL,
+            "Rotation.from_quat(xyzw_to_wxyz(q), scalar_first=True)",
+        )
 
 
 @exercise("xyzw_to_wxyz", weight=1)
@@ -696,8 +818,13 @@ def test_xyzw_to_wxyz_stack(student):
     """converts a stack of shape (N, 4) row by row, and accepts lists"""
     stack = general_quats(5, seed=494)
     got = expect_array(student.xyzw_to_wxyz(stack), (5, 4), "xyzw_to_wxyz(stack of 5)")
-    expect_close(got, np.concatenate([stack[:, 3:], stack[:, :3]], axis=1), 0.0, "xyzw_to_wxyz(stack)",
-                 layout_hint(got, stack, to_end=False))
+    expect_close(
+        got,
+        np.concatenate([stack[:, 3:], stack[:, :3]], axis=1),
+        0.0,
+        "xyzw_to_wxyz(stack)",
+        layout_hint(got, stack, to_end=False),
+    )
     got = expect_array(student.xyzw_to_wxyz([2.0, 3.0, 4.0, 1.0]), (4,), "xyzw_to_wxyz(list)")
     expect_close(got, [1.0, 2.0, 3.0, 4.0], 0.0, "xyzw_to_wxyz([2, 3, 4, 1])")
 
@@ -714,7 +841,7 @@ def long_arc(q0, q1, t):
     return (np.sin((1 - t) * omega) * q0 + np.sin(t * omega) * q1) / np.sin(omega)
 
 
-NLERP_HINT = (hints.CONSTANT_SPEED_NORMALISED_LINEAR_HINT)
+NLERP_HINT = hints.CONSTANT_SPEED_NORMALISED_LINEAR_HINT
 
 
 def nlerp(q0, q1, t):
@@ -728,8 +855,10 @@ def angle_between(a, b):
 
 
 LONG_ARC_HINT = "took the longer arc: q1 and -q1 are one rotation; when q0 · q1 < 0, interpolate towards -q1"
-TINY_OMEGA_HINT = ("NaN or inf for (nearly) equal inputs: sin Ω = 0 there; when sin Ω is tiny, fall back to "
-                   "(normalised) linear interpolation")
+TINY_OMEGA_HINT = (
+    "NaN or inf for (nearly) equal inputs: sin Ω = 0 there; when sin Ω is tiny, fall back to "
+    "(normalised) linear interpolation"
+)
 
 
 def slerp_hint(got, q0, q1, t):
@@ -739,10 +868,13 @@ def slerp_hint(got, q0, q1, t):
     length = np.linalg.norm(got)
     if q0 @ q1 < 0 and abs(q0 @ q1) < 1.0 - 1e-12 and same_rotation_quat(got, long_arc(q0, q1, t), 1e-6):
         return LONG_ARC_HINT
-    if abs(length - 1.0) > 1e-12 and (close(got, (1 - t) * q0 + t * near, 1e-9)
-                                     or close(got, (1 - t) * q0 + t * q1, 1e-9)):
-        return (f"plain linear interpolation (1 - t) q0 + t q1 leaves the unit sphere (|result| = {length:.4f}): "
-                "use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω")
+    if abs(length - 1.0) > 1e-12 and (
+        close(got, (1 - t) * q0 + t * near, 1e-9) or close(got, (1 - t) * q0 + t * q1, 1e-9)
+    ):
+        return (
+            f"plain linear interpolation (1 - t) q0 + t q1 leaves the unit sphere (|result| = {length:.4f}): "
+            "use the weights sin((1 - t)Ω)/sin Ω and sin(tΩ)/sin Ω"
+        )
     if abs(length - 1.0) > 1e-6:
         return f"|result| = {length:.4f}: slerp stays on the unit sphere"
     if t != 0.5 and same_rotation_quat(got, nlerp(q0, q1, t), 1e-9):
@@ -753,8 +885,7 @@ def slerp_hint(got, q0, q1, t):
 def slerp_array(value, what, q0, q1):
     """``value`` as a (4,) array; NaN or inf for (nearly) equal or opposite inputs is the division by sin Ω."""
     if shape_problem(value, (4,)) == "returned NaN or inf values":
-        raise Wrong(f"{what} returned NaN or inf values",
-                    TINY_OMEGA_HINT if abs(np.dot(q0, q1)) > 1.0 - 1e-6 else "")
+        raise Wrong(f"{what} returned NaN or inf values", TINY_OMEGA_HINT if abs(np.dot(q0, q1)) > 1.0 - 1e-6 else "")
     return expect_array(value, (4,), what)
 
 
@@ -763,22 +894,31 @@ def test_quat_slerp_matches_scipy(student):
     """agrees with scipy's Slerp for 12 random pairs at t = 0.1 … 0.9 (half of them need the sign flip)"""
     for k, (q0, q1) in enumerate(zip(unit_quats(12, seed=501), unit_quats(12, seed=502))):
         if (q0 @ q1 < 0) != (k % 2 == 1):
-            q1 = -q1   # odd pairs have q0 · q1 < 0, even pairs q0 · q1 > 0
+            q1 = -q1  # odd pairs have q0 · q1 < 0, even pairs q0 · q1 > 0
         for t in (0.1, 0.25, 0.5, 0.75, 0.9):
             got = expect_array(student.quat_slerp(q0, q1, t), (4,), f"quat_slerp(q0, q1, {t})")
             if not same_rotation_quat(got, scipy_slerp(q0, q1, t), TOL):
-                expect_same_rotation(got, scipy_slerp(q0, q1, t), TOL, f"quat_slerp(q0, q1, {t})",
-                                     slerp_hint(got, q0, q1, t))
+                expect_same_rotation(
+                    got, scipy_slerp(q0, q1, t), TOL, f"quat_slerp(q0, q1, {t})", slerp_hint(got, q0, q1, t)
+                )
 
 
 @exercise("quat_slerp", weight=2)
 def test_quat_slerp_endpoints(student):
     """t = 0 gives q0 and t = 1 gives q1 (up to sign)"""
     for q0, q1 in zip(unit_quats(6, seed=503), unit_quats(6, seed=504)):
-        expect_same_rotation(expect_array(student.quat_slerp(q0, q1, 0.0), (4,), "quat_slerp(q0, q1, 0)"), q0,
-                             TOL, "quat_slerp(q0, q1, 0)")
-        expect_same_rotation(expect_array(student.quat_slerp(q0, q1, 1.0), (4,), "quat_slerp(q0, q1, 1)"), q1,
-                             TOL, "quat_slerp(q0, q1, 1)")
+        expect_same_rotation(
+            expect_array(student.quat_slerp(q0, q1, 0.0), (4,), "quat_slerp(q0, q1, 0)"),
+            q0,
+            TOL,
+            "quat_slerp(q0, q1, 0)",
+        )
+        expect_same_rotation(
+            expect_array(student.quat_slerp(q0, q1, 1.0), (4,), "quat_slerp(q0, q1, 1)"),
+            q1,
+            TOL,
+            "quat_slerp(q0, q1, 1)",
+        )
 
 
 @exercise("quat_slerp", weight=2)
@@ -786,26 +926,31 @@ def test_quat_slerp_shorter_arc(student):
     """turns at constant speed along the shorter arc, also for rotations almost π apart"""
     rng = np.random.default_rng(505)
     cases = []
-    for angle in (2.5, 3.0, np.pi - 0.02):          # rotation angle from q0 to q1
+    for angle in (2.5, 3.0, np.pi - 0.02):  # rotation angle from q0 to q1
         q0 = unit_quats(1, seed=int(rng.integers(1000)))[0]
         u = rng.normal(size=3)
         u /= np.linalg.norm(u)
         step = np.concatenate([[np.cos(angle / 2)], np.sin(angle / 2) * u])
         w, v = q0[0], q0[1:]
         q1 = np.concatenate([[w * step[0] - v @ step[1:]], w * step[1:] + step[0] * v + np.cross(v, step[1:])])
-        cases.append((q0, -q1 if q0 @ q1 > 0 else q1, angle))   # q1 handed over with q0 · q1 < 0
+        cases.append((q0, -q1 if q0 @ q1 > 0 else q1, angle))  # q1 handed over with q0 · q1 < 0
     for q0, q1, angle in cases:
         for t in (0.25, 0.5, 0.8):
             got = expect_array(student.quat_slerp(q0, q1, t), (4,), f"quat_slerp(q0, q1, {t})")
-            expect(abs(np.linalg.norm(got) - 1.0) <= 1e-9,
-                   f"|quat_slerp(q0, q1, {t})| = {np.linalg.norm(got):.6f}, off the unit sphere by "
-                   f"{abs(np.linalg.norm(got) - 1.0):.2g}",
-                   slerp_hint(got, q0, q1, t) or hints.SLERP_STAYS_UNIT_SPHERE_HINT)
+            expect(
+                abs(np.linalg.norm(got) - 1.0) <= 1e-9,
+                f"|quat_slerp(q0, q1, {t})| = {np.linalg.norm(got):.6f}, off the unit sphere by "
+                f"{abs(np.linalg.norm(got) - 1.0):.2g}",
+                slerp_hint(got, q0, q1, t) or hints.SLERP_STAYS_UNIT_SPHERE_HINT,
+            )
             turned = angle_between(q0, got)
             hint = slerp_hint(got, q0, q1, t) or (hints.CONSTANT_SPEED_TURN_Q0_HINT)
-            expect(abs(turned - t * angle) <= 1e-8,
-                   f"at t = {t} the result is {turned:.6f} rad from q0, off by {abs(turned - t * angle):.2g} from "
-                   f"t × {angle:.4f} = {t * angle:.6f}", hint)
+            expect(
+                abs(turned - t * angle) <= 1e-8,
+                f"at t = {t} the result is {turned:.6f} rad from q0, off by {abs(turned - t * angle):.2g} from "
+                f"t × {angle:.4f} = {t * angle:.6f}",
+                hint,
+            )
 
 
 def _turned(q, angle, axis):
@@ -819,25 +964,38 @@ def _turned(q, angle, axis):
 def test_quat_slerp_every_decade(student):
     """exact to 2e-15 for turns from q0 to q1 of 1e-12 to π rad (every decade), either sign of q1, t in [0, 1]
     (the endpoints too)"""
+
     def check(case):
         q0, angle, axis, sign, t = case
         q1 = sign * _turned(q0, angle, axis)
         got = expect_array(student.quat_slerp(q0, q1, t), (4,), "quat_slerp(q0, q1, t)")
-        expected = _turned(q0, t * angle, axis)             # t of the way along the shorter arc
+        expected = _turned(q0, t * angle, axis)  # t of the way along the shorter arc
         expected = expected if got @ expected >= 0 else -expected
-        expect_within(got, expected, SLERP_TOL, "quat_slerp(q0, q1, t)",
-                      f"Ω = {angle:.2g} between q0 and q1, t = {t:.3g}",
-                      lambda: slerp_hint(got, q0, q1, t))
+        expect_within(
+            got,
+            expected,
+            SLERP_TOL,
+            "quat_slerp(q0, q1, t)",
+            f"Ω = {angle:.2g} between q0 and q1, t = {t:.3g}",
+            lambda: slerp_hint(got, q0, q1, t),
+        )
 
     q0 = unit_quats(1, seed=508)[0]
     axis = np.array([2.0, -1.0, 2.0]) / 3.0
     # turns just below each decade, and turns whose half-angle Ω = acos|q0 · q1| is just below one (1.94 · 10⁻ᵏ):
     # a fallback threshold at a decade of either is tried where its error peaks
-    explicit = [(q0, 0.97 * 10.0 ** -k, axis, sign, t) for k in range(1, 12)
-                for sign, t in ((1.0, 0.3), (-1.0, 0.0))] + [(q0, 2.0, axis, 1.0, 1.0)] + \
-               [(q0, 1.94 * 10.0 ** -k, axis, 1.0, 0.3) for k in range(1, 12)]
-    cases = st.tuples(quaternions(), angles(sign=False, near_pi=False, zero=False), unit_vectors(),
-                      st.sampled_from([1.0, -1.0]), st.one_of(st.sampled_from([0.0, 1.0]), st.floats(0.0, 1.0)))
+    explicit = (
+        [(q0, 0.97 * 10.0**-k, axis, sign, t) for k in range(1, 12) for sign, t in ((1.0, 0.3), (-1.0, 0.0))]
+        + [(q0, 2.0, axis, 1.0, 1.0)]
+        + [(q0, 1.94 * 10.0**-k, axis, 1.0, 0.3) for k in range(1, 12)]
+    )
+    cases = st.tuples(
+        quaternions(),
+        angles(sign=False, near_pi=False, zero=False),
+        unit_vectors(),
+        st.sampled_from([1.0, -1.0]),
+        st.one_of(st.sampled_from([0.0, 1.0]), st.floats(0.0, 1.0)),
+    )
     for_all(cases, check, explicit=explicit)
 
 
@@ -854,12 +1012,18 @@ def test_quat_slerp_nearly_identical(student):
         q1 = np.concatenate([[w * step[0] - v @ step[1:]], w * step[1:] + step[0] * v + np.cross(v, step[1:])])
         for other, name in ((q1, "nearly identical"), (-q1, "nearly opposite")):
             for t in (0.3, 0.5):
-                got = slerp_array(student.quat_slerp(q0, other, t), f"quat_slerp for {name} inputs ({tiny:g} apart)",
-                                  q0, other)
+                got = slerp_array(
+                    student.quat_slerp(q0, other, t), f"quat_slerp for {name} inputs ({tiny:g} apart)", q0, other
+                )
                 if not same_rotation_quat(got, scipy_slerp(q0, other, t), 1e-8):
-                    expect_same_rotation(got, scipy_slerp(q0, other, t), 1e-8,
-                                         f"quat_slerp(q0, q1, {t}) for {name} inputs ({tiny:g} apart)",
-                                         slerp_hint(got, q0, other, t))
+                    expect_same_rotation(
+                        got,
+                        scipy_slerp(q0, other, t),
+                        1e-8,
+                        f"quat_slerp(q0, q1, {t}) for {name} inputs ({tiny:g} apart)",
+                        slerp_hint(got, q0, other, t),
+                    )
             if tiny == 0.0:
-                expect_same_with_lists(student.quat_slerp, (q0, other), (4,),
-                                       f"quat_slerp(q0, q1, 0.3) for {name} inputs", t=0.3)
+                expect_same_with_lists(
+                    student.quat_slerp, (q0, other), (4,), f"quat_slerp(q0, q1, 0.3) for {name} inputs", t=0.3
+                )

@@ -17,7 +17,7 @@ from coursekit.diagnose import explains
 
 from .helpers import exercise, expect, expect_array, expect_same_with_lists, fmt
 
-ANGLES = (1.0, 2.0, 0.3, 1e-12, 1e-9, 1e-6, 1e-3, 0.05, 3.0, np.pi - 1e-3, np.pi - 1e-6)   # generic turns first
+ANGLES = (1.0, 2.0, 0.3, 1e-12, 1e-9, 1e-6, 1e-3, 0.05, 3.0, np.pi - 1e-3, np.pi - 1e-6)  # generic turns first
 
 
 def _matrix(q):
@@ -52,14 +52,26 @@ def _slip_values(a, b):
     theta = np.arctan2(s, a_hat @ b_hat)
     u = axis / s
     raw = np.concatenate([[1.0 + a @ b], np.cross(a, b)])
-    return [(np.concatenate([[np.cos(theta)], np.sin(theta) * u]),
-             "the quaternion holds half the angle: [cos(θ/2), sin(θ/2) u]"),
-            (np.concatenate([[np.cos(theta / 2)], -np.sin(theta / 2) * u]),
-             "the axis points the wrong way: turn about a × b, not b × a"),
-            (raw / np.linalg.norm(raw), "only the directions count: normalise a and b first"),
-            (np.concatenate([[np.cos(np.arccos(np.clip(a_hat @ b_hat, -1, 1)) / 2)],
-                             np.sin(np.arccos(np.clip(a_hat @ b_hat, -1, 1)) / 2) * u]),
-             hints.ARCCOS_LOSES_SMALL_ANGLES_HINT)]
+    return [
+        (
+            np.concatenate([[np.cos(theta)], np.sin(theta) * u]),
+            "the quaternion holds half the angle: [cos(θ/2), sin(θ/2) u]",
+        ),
+        (
+            np.concatenate([[np.cos(theta / 2)], -np.sin(theta / 2) * u]),
+            "the axis points the wrong way: turn about a × b, not b × a",
+        ),
+        (raw / np.linalg.norm(raw), "only the directions count: normalise a and b first"),
+        (
+            np.concatenate(
+                [
+                    [np.cos(np.arccos(np.clip(a_hat @ b_hat, -1, 1)) / 2)],
+                    np.sin(np.arccos(np.clip(a_hat @ b_hat, -1, 1)) / 2) * u,
+                ]
+            ),
+            hints.ARCCOS_LOSES_SMALL_ANGLES_HINT,
+        ),
+    ]
 
 
 def _hint(got, a, b, truth):
@@ -82,12 +94,20 @@ def test_two_vectors_every_angle(student):
         expect(abs(np.linalg.norm(got) - 1.0) <= 1e-14, f"|q| = {np.linalg.norm(got):.15f} for θ = {theta:.3g}", hint)
         tol = 1e-14 if theta <= 3.0 else 1e-15 / (np.pi - theta)
         miss = np.linalg.norm(_matrix(got) @ a_hat - b_hat)
-        expect(miss <= tol, f"for θ = {theta:.3g} rad the rotation misses the direction of b by {miss:.2g} "
-               f"(tolerance {tol:.2g}): got {fmt(got, 6)}", hint)
+        expect(
+            miss <= tol,
+            f"for θ = {theta:.3g} rad the rotation misses the direction of b by {miss:.2g} "
+            f"(tolerance {tol:.2g}): got {fmt(got, 6)}",
+            hint,
+        )
         if theta <= 3.0:
             error = abs(_angle(got) - theta)
-            expect(error <= 1e-14, f"for θ = {theta:.3g} rad the rotation turns by {_angle(got):.15g} rad "
-                   f"(off by {error:.2g}): not the shortest turn", hint)
+            expect(
+                error <= 1e-14,
+                f"for θ = {theta:.3g} rad the rotation turns by {_angle(got):.15g} rad "
+                f"(off by {error:.2g}): not the shortest turn",
+                hint,
+            )
 
 
 @exercise("quat_from_two_vectors", weight=1)
@@ -96,21 +116,29 @@ def test_two_vectors_opposite_and_parallel(student):
     for a in ([1.0, 0.0, 0.0], [0.0, 0.0, -2.0], [1.0, 2.0, 3.0], [-0.3, 0.7, 0.1]):
         a = np.asarray(a)
         got = student.quat_from_two_vectors(a, -3.0 * a)
-        expect(np.shape(got) != (4,) or np.all(np.isfinite(np.asarray(got, dtype=float))),
-               f"for opposite directions ({fmt(a)} and its negative) got NaN",
-               "for opposite directions a × b is zero or rounding noise: take a half turn about any axis "
-               "perpendicular to a")
+        expect(
+            np.shape(got) != (4,) or np.all(np.isfinite(np.asarray(got, dtype=float))),
+            f"for opposite directions ({fmt(a)} and its negative) got NaN",
+            "for opposite directions a × b is zero or rounding noise: take a half turn about any axis "
+            "perpendicular to a",
+        )
         got = expect_array(got, (4,), "quat_from_two_vectors(a, -3a)")
         a_hat = a / np.linalg.norm(a)
         half_turn_wrong_axis = abs(np.linalg.norm(got) - 1.0) <= 1e-14 and abs(got[0]) <= 1e-14
-        expect(abs(np.linalg.norm(got) - 1.0) <= 1e-14 and np.linalg.norm(_matrix(got) @ a_hat + a_hat) <= 1e-14,
-               f"for opposite directions got {fmt(got, 6)}: not a unit half turn sending a to -a",
-               "for opposite directions a × b is zero or rounding noise: take a half turn about any axis "
-               "perpendicular to a" if half_turn_wrong_axis else
-               hints.OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT)
+        expect(
+            abs(np.linalg.norm(got) - 1.0) <= 1e-14 and np.linalg.norm(_matrix(got) @ a_hat + a_hat) <= 1e-14,
+            f"for opposite directions got {fmt(got, 6)}: not a unit half turn sending a to -a",
+            "for opposite directions a × b is zero or rounding noise: take a half turn about any axis "
+            "perpendicular to a"
+            if half_turn_wrong_axis
+            else hints.OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT,
+        )
         same = expect_array(student.quat_from_two_vectors(a, 0.25 * a), (4,), "quat_from_two_vectors(a, a/4)")
-        expect(np.max(np.abs(same - [1.0, 0.0, 0.0, 0.0])) <= 1e-15,
-               f"parallel directions gave {fmt(same, 6)}, not the identity", "when a × b = 0 and a · b > 0 no turn is needed")
+        expect(
+            np.max(np.abs(same - [1.0, 0.0, 0.0, 0.0])) <= 1e-15,
+            f"parallel directions gave {fmt(same, 6)}, not the identity",
+            "when a × b = 0 and a · b > 0 no turn is needed",
+        )
 
 
 @exercise("quat_from_two_vectors", weight=1)
@@ -123,13 +151,21 @@ def test_two_vectors_only_directions_count(student):
         truth = _truth(a, b, theta)
         # An answer that moves with the scale is blamed on normalisation only if it is right unscaled: an
         # inaccurate formula (arccos) also moves, because its rounding noise changes with the inputs' digits.
-        hint = ("only the directions count: normalise a and b first" if np.max(np.abs(base - truth)) <= 1e-14
-                else _hint(base, a, b, truth))
+        hint = (
+            "only the directions count: normalise a and b first"
+            if np.max(np.abs(base - truth)) <= 1e-14
+            else _hint(base, a, b, truth)
+        )
         for scale_a, scale_b in ((1e-8, 1.0), (1.0, 1e8), (1e5, 1e-5), (3.0, 0.5), (1.0, 1e-12), (1e-12, 1.0)):
-            got = expect_array(student.quat_from_two_vectors(scale_a * a, scale_b * b), (4,),
-                               "quat_from_two_vectors(c1 a, c2 b)")
-            expect(np.max(np.abs(got - base)) <= 1e-14, f"at θ = {theta:g} rad, scaling a by {scale_a:g} and b by "
-                   f"{scale_b:g} changed the answer by {np.max(np.abs(got - base)):.2g}", hint)
+            got = expect_array(
+                student.quat_from_two_vectors(scale_a * a, scale_b * b), (4,), "quat_from_two_vectors(c1 a, c2 b)"
+            )
+            expect(
+                np.max(np.abs(got - base)) <= 1e-14,
+                f"at θ = {theta:g} rad, scaling a by {scale_a:g} and b by "
+                f"{scale_b:g} changed the answer by {np.max(np.abs(got - base)):.2g}",
+                hint,
+            )
 
 
 @exercise("quat_from_two_vectors", weight=1)

@@ -73,8 +73,9 @@ def scipy_angles(R):
 def random_euler(count, seed):
     """(yaw, pitch, roll) rows with yaw, roll in (-π, π) and pitch in (-π/2, π/2)."""
     rng = np.random.default_rng(seed)
-    return np.column_stack([rng.uniform(-np.pi, np.pi, count), rng.uniform(-1.5, 1.5, count),
-                            rng.uniform(-np.pi, np.pi, count)])
+    return np.column_stack(
+        [rng.uniform(-np.pi, np.pi, count), rng.uniform(-1.5, 1.5, count), rng.uniform(-np.pi, np.pi, count)]
+    )
 
 
 def wrapped(difference):
@@ -100,31 +101,41 @@ def lock_matrices(seed):
     found = []
     for sign in (1.0, -1.0):
         R = product_matrix(0.4, sign * HALF_PI, -1.1)
-        R[2, 0] = np.nextafter(R[2, 0], 2.0 * R[2, 0])   # |R[2, 0]| = 1 + 2.2e-16, as rounding produces
+        R[2, 0] = np.nextafter(R[2, 0], 2.0 * R[2, 0])  # |R[2, 0]| = 1 + 2.2e-16, as rounding produces
         found.append((f"pitch = {'+' if sign > 0 else '-'}π/2 with |R[2, 0]| = 1 + 2e-16 (rounding)", R))
         for make in (product_matrix, scipy_matrix):
             yaw, roll = rng.uniform(-np.pi, np.pi, 2)
-            found.append((f"pitch = {'+' if sign > 0 else '-'}π/2, yaw = {yaw:.3f}, roll = {roll:.3f}",
-                          make(yaw, sign * HALF_PI, roll)))
+            found.append(
+                (
+                    f"pitch = {'+' if sign > 0 else '-'}π/2, yaw = {yaw:.3f}, roll = {roll:.3f}",
+                    make(yaw, sign * HALF_PI, roll),
+                )
+            )
     return found
 
 
 # ---------------------------------------------------------------- hints
-NAN_HINT = ("np.arcsin of a value a hair beyond ±1 (rounding) is nan: get pitch from "
-            "atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), or clip the argument to [-1, 1]")
+NAN_HINT = (
+    "np.arcsin of a value a hair beyond ±1 (rounding) is nan: get pitch from "
+    "atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), or clip the argument to [-1, 1]"
+)
 
 
-PITCH_SIGN_HINT = (hints.PITCH_TURNS_WRONG_WAY_HINT)
-MATRIX_GENERAL_HINT = ("R should be Rz(yaw) @ Ry(pitch) @ Rx(roll); compare each elementary rotation with "
-                       "a quarter turn (yaw = π/2 sends x to y, pitch = π/2 sends z to x, roll = π/2 sends y to z)")
+PITCH_SIGN_HINT = hints.PITCH_TURNS_WRONG_WAY_HINT
+MATRIX_GENERAL_HINT = (
+    "R should be Rz(yaw) @ Ry(pitch) @ Rx(roll); compare each elementary rotation with "
+    "a quarter turn (yaw = π/2 sends x to y, pitch = π/2 sends z to x, roll = π/2 sends y to z)"
+)
 
 
 def _matrix_hint(got, yaw, pitch, roll):
     """The mistake whose matrix ``got`` is (computed from the same angles), or a general hint."""
     candidates = [
-        (_rx(roll) @ _ry(pitch) @ _rz(yaw),
-         "looks like Rx(roll) @ Ry(pitch) @ Rz(yaw): the x-y-z order (scipy's extrinsic 'zyx'); "
-         "the course uses R = Rz(yaw) @ Ry(pitch) @ Rx(roll)"),
+        (
+            _rx(roll) @ _ry(pitch) @ _rz(yaw),
+            "looks like Rx(roll) @ Ry(pitch) @ Rz(yaw): the x-y-z order (scipy's extrinsic 'zyx'); "
+            "the course uses R = Rz(yaw) @ Ry(pitch) @ Rx(roll)",
+        ),
         (product_matrix(roll, pitch, yaw), hints.YAW_ROLL_SWAPPED_YAW_HINT),
         (product_matrix(yaw, -pitch, roll), PITCH_SIGN_HINT),
         (product_matrix(yaw, pitch, roll).T, "looks like the transpose (the inverse rotation)"),
@@ -151,23 +162,26 @@ def _angles_hint(got, R):
     if _rebuilds((roll, pitch, yaw), R, 1e-6):
         return "returned (roll, pitch, yaw): the order is (yaw, pitch, roll)"
     if np.max(np.abs(Rotation.from_euler("zyx", got).as_matrix() - R)) <= 1e-6:
-        return ("these are angles of the extrinsic sequence (scipy's lowercase 'zyx', R = Rx(c) Ry(b) Rz(a)); "
-                "the course uses intrinsic z-y-x, scipy's 'ZYX'")
+        return (
+            "these are angles of the extrinsic sequence (scipy's lowercase 'zyx', R = Rx(c) Ry(b) Rz(a)); "
+            "the course uses intrinsic z-y-x, scipy's 'ZYX'"
+        )
     if _rebuilds(np.deg2rad(got), R, 1e-6):
         return "looks like degrees: return radians"
     return ""
 
 
-ANGLES_GENERAL_HINT = (hints.ANGLES_MUST_SATISFY_R_HINT)
+ANGLES_GENERAL_HINT = hints.ANGLES_MUST_SATISFY_R_HINT
 
-NO_LOCK_BRANCH_HINT = (hints.NO_SEPARATE_GIMBAL_LOCK_HINT)
-ASIN_HINT = (hints.PITCH_ARCSIN_R_LOSES_HINT)
+NO_LOCK_BRANCH_HINT = hints.NO_SEPARATE_GIMBAL_LOCK_HINT
+ASIN_HINT = hints.PITCH_ARCSIN_R_LOSES_HINT
 
 
 def _naive_angles(R):
     """What the textbook formulas give without a lock branch: atan2 of the entries that vanish at the lock."""
-    return np.array([np.arctan2(R[1, 0], R[0, 0]), np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])),
-                     np.arctan2(R[2, 1], R[2, 2])])
+    return np.array(
+        [np.arctan2(R[1, 0], R[0, 0]), np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])), np.arctan2(R[2, 1], R[2, 2])]
+    )
 
 
 def _asin_pitch(R):
@@ -182,20 +196,30 @@ def _extraction_hint(got, R, eps=None):
         return hint
     good_pitch = float(np.arctan2(-R[2, 0], np.hypot(R[0, 0], R[1, 0])))
     asin = _asin_pitch(R)
-    if np.isfinite(asin) and abs(asin - good_pitch) > 1e-13 and abs(got[1] - asin) <= 1e-15 + 1e-3 * abs(asin - good_pitch):
+    if (
+        np.isfinite(asin)
+        and abs(asin - good_pitch) > 1e-13
+        and abs(got[1] - asin) <= 1e-15 + 1e-3 * abs(asin - good_pitch)
+    ):
         return ASIN_HINT
     naive = _naive_angles(R)
     if np.max(np.abs(wrapped(got - naive))) <= 1e-12:
         if eps is None:
             return NO_LOCK_BRANCH_HINT
-        return ("next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
-                "atan2 of them gives yaw and roll only to ~1e-16/cos(pitch); get yaw first, then roll from the "
-                "large entries (undo Rz(yaw): roll = atan2(s R[0, 2] - c R[1, 2], c R[1, 1] - s R[0, 1]))")
+        return (
+            "next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
+            "atan2 of them gives yaw and roll only to ~1e-16/cos(pitch); get yaw first, then roll from the "
+            "large entries (undo Rz(yaw): roll = atan2(s R[0, 2] - c R[1, 2], c R[1, 1] - s R[0, 1]))"
+        )
     if eps is not None and abs(got[2]) == 0.0:
-        return (f"treated a matrix {eps:g} rad from the lock as locked: only call it gimbal lock when "
-                "cos(pitch) is below about 1e-12")
-    return ("at and next to the lock: pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), a lock branch when "
-            "cos(pitch) < 1e-12 (roll = 0), and the roll from the large entries once the yaw is known")
+        return (
+            f"treated a matrix {eps:g} rad from the lock as locked: only call it gimbal lock when "
+            "cos(pitch) is below about 1e-12"
+        )
+    return (
+        "at and next to the lock: pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), a lock branch when "
+        "cos(pitch) < 1e-12 (roll = 0), and the roll from the large entries once the yaw is known"
+    )
 
 
 def _expect_angles(value, what):
@@ -209,11 +233,16 @@ def _expect_angles(value, what):
 def _expect_in_range(got, what):
     yaw, pitch, roll = got
     slack = 1e-12
-    expect(-np.pi - slack <= yaw <= np.pi + slack and -np.pi - slack <= roll <= np.pi + slack,
-           f"{what}: yaw = {yaw:.4f}, roll = {roll:.4f} outside (-π, π]",
-           "np.arctan2 already returns angles in [-π, π]: do not add offsets")
-    expect(-HALF_PI - slack <= pitch <= HALF_PI + slack, f"{what}: pitch = {pitch:.4f} outside [-π/2, π/2]",
-           "choose the solution with cos(pitch) >= 0")
+    expect(
+        -np.pi - slack <= yaw <= np.pi + slack and -np.pi - slack <= roll <= np.pi + slack,
+        f"{what}: yaw = {yaw:.4f}, roll = {roll:.4f} outside (-π, π]",
+        "np.arctan2 already returns angles in [-π, π]: do not add offsets",
+    )
+    expect(
+        -HALF_PI - slack <= pitch <= HALF_PI + slack,
+        f"{what}: pitch = {pitch:.4f} outside [-π/2, π/2]",
+        "choose the solution with cos(pitch) >= 0",
+    )
 
 
 # ---------------------------------------------------------------- euler_zyx_to_matrix
@@ -260,12 +289,18 @@ def test_matrix_to_euler_zyx_random(student):
         got = _expect_angles(student.matrix_to_euler_zyx(R), what)
         rebuilt = scipy_matrix(*got)
         error = float(np.max(np.abs(rebuilt - R)))
-        expect(error <= REBUILD_TOL, f"{what} = {fmt(got)} rebuilds R only to {error:.2g}",
-               _angles_hint(got, R) or ANGLES_GENERAL_HINT)
+        expect(
+            error <= REBUILD_TOL,
+            f"{what} = {fmt(got)} rebuilds R only to {error:.2g}",
+            _angles_hint(got, R) or ANGLES_GENERAL_HINT,
+        )
         _expect_in_range(got, what)
         difference = np.max(np.abs(wrapped(got - scipy_angles(R))))
-        expect(difference <= ANGLE_TOL, f"{what} = {fmt(got)} differs from scipy's {fmt(scipy_angles(R))}",
-               "keep pitch in [-π/2, π/2] (cos(pitch) >= 0)")
+        expect(
+            difference <= ANGLE_TOL,
+            f"{what} = {fmt(got)} differs from scipy's {fmt(scipy_angles(R))}",
+            "keep pitch in [-π/2, π/2] (cos(pitch) >= 0)",
+        )
 
 
 @exercise("matrix_to_euler_zyx", weight=1)
@@ -275,25 +310,35 @@ def test_matrix_to_euler_zyx_other_solution(student):
         R = scipy_matrix(yaw, pitch, roll)
         what = f"matrix_to_euler_zyx(R) for R built from ({yaw:.3f}, {pitch:.3f}, {roll:.3f})"
         got = _expect_angles(student.matrix_to_euler_zyx(R.tolist()), what)
-        expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the matrix rebuilt from {what}",
-                     _angles_hint(got, R) or ANGLES_GENERAL_HINT)
+        expect_close(
+            scipy_matrix(*got),
+            R,
+            REBUILD_TOL,
+            f"the matrix rebuilt from {what}",
+            _angles_hint(got, R) or ANGLES_GENERAL_HINT,
+        )
         _expect_in_range(got, what)
-
-
 
 
 @exercise("matrix_to_euler_zyx", weight=1)
 def test_matrix_to_euler_zyx_half_open_range(student):
     """yaw and roll lie in (-π, π]: half turns about z and x whose sines are -0.0 give π, never -π (at the
     gimbal lock too)"""
-    half_z = np.array([[-1.0, 0.0, 0.0], [-0.0, -1.0, 0.0], [0.0, 0.0, 1.0]])     # arctan2(-0.0, -1) = -π
-    half_x = np.array([[1.0, 0.0, -0.0], [0.0, -1.0, 0.0], [0.0, -0.0, -1.0]])    # roll from (-0.0, -1)
-    lock = np.array([[0.0, 0.0, -1.0], [0.0, -1.0, 0.0], [-1.0, 0.0, 0.0]])        # yaw π at pitch = π/2
-    for name, R, index in (("a half turn about z", half_z, 0), ("a half turn about x", half_x, 2),
-                           ("yaw π at the lock", lock, 0)):
+    half_z = np.array([[-1.0, 0.0, 0.0], [-0.0, -1.0, 0.0], [0.0, 0.0, 1.0]])  # arctan2(-0.0, -1) = -π
+    half_x = np.array([[1.0, 0.0, -0.0], [0.0, -1.0, 0.0], [0.0, -0.0, -1.0]])  # roll from (-0.0, -1)
+    lock = np.array([[0.0, 0.0, -1.0], [0.0, -1.0, 0.0], [-1.0, 0.0, 0.0]])  # yaw π at pitch = π/2
+    for name, R, index in (
+        ("a half turn about z", half_z, 0),
+        ("a half turn about x", half_x, 2),
+        ("yaw π at the lock", lock, 0),
+    ):
         got = _expect_angles(student.matrix_to_euler_zyx(R), f"matrix_to_euler_zyx({name})")
-        expect(got[index] == np.pi, f"matrix_to_euler_zyx({name}) gave {'yaw' if index == 0 else 'roll'} = "
-               f"{got[index]:.17g}, expected π (the range is (-π, π])", HALF_OPEN_HINT)
+        expect(
+            got[index] == np.pi,
+            f"matrix_to_euler_zyx({name}) gave {'yaw' if index == 0 else 'roll'} = "
+            f"{got[index]:.17g}, expected π (the range is (-π, π])",
+            HALF_OPEN_HINT,
+        )
 
 
 @exercise("matrix_to_euler_zyx", weight=2)
@@ -304,20 +349,27 @@ def test_matrix_to_euler_zyx_at_lock(student):
         got = _expect_angles(student.matrix_to_euler_zyx(R), what)
         yaw, pitch, roll = got
         expected_pitch = -np.sign(R[2, 0]) * HALF_PI
-        expect(abs(abs(pitch) - HALF_PI) <= 1e-12 and np.sign(pitch) == -np.sign(R[2, 0]),
-               f"{what}: pitch = {pitch:.17g} is off by {abs(pitch - expected_pitch):.2g} from "
-               f"{'-' if R[2, 0] > 0 else ''}π/2", _extraction_hint(got, R))
+        expect(
+            abs(abs(pitch) - HALF_PI) <= 1e-12 and np.sign(pitch) == -np.sign(R[2, 0]),
+            f"{what}: pitch = {pitch:.17g} is off by {abs(pitch - expected_pitch):.2g} from "
+            f"{'-' if R[2, 0] > 0 else ''}π/2",
+            _extraction_hint(got, R),
+        )
         rebuilt_error = float(np.max(np.abs(scipy_matrix(*got) - R)))
         if np.max(np.abs(wrapped(got - _naive_angles(R)))) <= 1e-12:
             roll_hint = NO_LOCK_BRANCH_HINT
         elif rebuilt_error <= REBUILD_TOL:
-            roll_hint = (hints.LOCK_ONLY_YAW_ROLL_HINT)
+            roll_hint = hints.LOCK_ONLY_YAW_ROLL_HINT
         else:
             roll_hint = _extraction_hint(got, R)
-        expect(abs(roll) <= 1e-12, f"{what}: roll = {roll:.4f}, expected 0 (the course's convention at the lock)",
-               roll_hint)
-        expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the matrix rebuilt from {what} = {fmt(got)}",
-                     _extraction_hint(got, R))
+        expect(
+            abs(roll) <= 1e-12,
+            f"{what}: roll = {roll:.4f}, expected 0 (the course's convention at the lock)",
+            roll_hint,
+        )
+        expect_close(
+            scipy_matrix(*got), R, REBUILD_TOL, f"the matrix rebuilt from {what} = {fmt(got)}", _extraction_hint(got, R)
+        )
 
 
 @exercise("matrix_to_euler_zyx", weight=2)
@@ -329,16 +381,25 @@ def test_matrix_to_euler_zyx_near_lock(student):
         what = f"matrix_to_euler_zyx(R) for pitch = {'+' if pitch > 0 else '-'}(π/2 - {eps:g})"
         got = _expect_angles(student.matrix_to_euler_zyx(R), what)
         error = float(np.max(np.abs(scipy_matrix(*got) - R)))
-        expect(error <= REBUILD_TOL, f"{what}: the angles {fmt(got)} rebuild R only to {error:.2g}",
-               _extraction_hint(got, R, eps))
+        expect(
+            error <= REBUILD_TOL,
+            f"{what}: the angles {fmt(got)} rebuild R only to {error:.2g}",
+            _extraction_hint(got, R, eps),
+        )
 
 
 # ---------------------------------------------------------------- euler_zyx_to_quat
 def _all_plus_quat(yaw, pitch, roll):
     """The z-y-x formula with every mixed product added (the minus signs lost)."""
     cy, sy, cp, sp, cr, sr = (f(a / 2) for a in (yaw, pitch, roll) for f in (np.cos, np.sin))
-    return np.array([cy * cp * cr + sy * sp * sr, cy * cp * sr + sy * sp * cr,
-                     cy * sp * cr + sy * cp * sr, sy * cp * cr + cy * sp * sr])
+    return np.array(
+        [
+            cy * cp * cr + sy * sp * sr,
+            cy * cp * sr + sy * sp * cr,
+            cy * sp * cr + sy * cp * sr,
+            sy * cp * cr + cy * sp * sr,
+        ]
+    )
 
 
 def _quat_hint(got, yaw, pitch, roll):
@@ -346,22 +407,25 @@ def _quat_hint(got, yaw, pitch, roll):
     expected = scipy_quat(yaw, pitch, roll)
     candidates = [
         (np.roll(expected, -1), "looks scalar-last [x, y, z, w]: the course puts the scalar first, [w, x, y, z]"),
-        (Rotation.from_euler("zyx", [yaw, pitch, roll]).as_quat(scalar_first=True),
-         "looks like q_x ⊗ q_y ⊗ q_z (scipy's extrinsic 'zyx'): the course uses q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll)"),
+        (
+            Rotation.from_euler("zyx", [yaw, pitch, roll]).as_quat(scalar_first=True),
+            "looks like q_x ⊗ q_y ⊗ q_z (scipy's extrinsic 'zyx'): the course uses q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll)",
+        ),
         (scipy_quat(2 * yaw, 2 * pitch, 2 * roll), "full angles: a quaternion uses half angles, cos(yaw / 2)"),
         (scipy_quat(roll, pitch, yaw), "yaw and roll are swapped"),
-        (_all_plus_quat(yaw, pitch, roll),
-         hints.MIXED_PRODUCTS_LOST_THEIR_HINT),
+        (_all_plus_quat(yaw, pitch, roll), hints.MIXED_PRODUCTS_LOST_THEIR_HINT),
     ]
     for candidate, hint in candidates:
         if min(np.max(np.abs(candidate - expected)), np.max(np.abs(candidate + expected))) <= 1e-6:
-            continue                                   # here the candidate is the right answer: no diagnosis
+            continue  # here the candidate is the right answer: no diagnosis
         if np.max(np.abs(got - candidate)) <= 1e-9 or np.max(np.abs(got + candidate)) <= 1e-9:
             return hint
     norm = np.linalg.norm(got)
     if abs(norm - 1.0) > 1e-6:
-        return (f"|q| = {norm:.4f}: a rotation quaternion has unit length; q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) "
-                "is a product of unit quaternions")
+        return (
+            f"|q| = {norm:.4f}: a rotation quaternion has unit length; q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) "
+            "is a product of unit quaternions"
+        )
     return "q = q_z(yaw) ⊗ q_y(pitch) ⊗ q_x(roll) with q_z(a) = [cos(a/2), 0, 0, sin(a/2)] and so on"
 
 
@@ -399,26 +463,34 @@ def test_euler_zyx_to_quat_unit_and_lock(student):
     for yaw, pitch, roll in [(0.6, HALF_PI, -0.2), (-1.7, -HALF_PI, 2.9), (1, 0, -1), (0, 0, 0)]:
         what = f"euler_zyx_to_quat({yaw:.3f}, {pitch:.3f}, {roll:.3f})"
         got = expect_array(student.euler_zyx_to_quat(yaw, pitch, roll), (4,), what)
-        expect(abs(np.linalg.norm(got) - 1.0) <= TOL,
-               f"{what} has |q| = {np.linalg.norm(got):.6f} (off by {abs(np.linalg.norm(got) - 1.0):.2g})",
-               _quat_hint(got, yaw, pitch, roll))
+        expect(
+            abs(np.linalg.norm(got) - 1.0) <= TOL,
+            f"{what} has |q| = {np.linalg.norm(got):.6f} (off by {abs(np.linalg.norm(got) - 1.0):.2g})",
+            _quat_hint(got, yaw, pitch, roll),
+        )
         _expect_same_quat(got, scipy_quat(yaw, pitch, roll), what, _quat_hint(got, yaw, pitch, roll))
 
 
 # ---------------------------------------------------------------- quat_to_euler_zyx
-QUAT_ASIN_HINT = ("the lecture's formulas lose digits next to the lock: asin(2(wy - xz)) near ±1, and the atan2 "
-                  "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums (w ± y, x + z, z - x) "
-                  "and atan2")
-QUAT_NO_LOCK_HINT = (hints.NO_GIMBAL_LOCK_BRANCH_HINT)
+QUAT_ASIN_HINT = (
+    "the lecture's formulas lose digits next to the lock: asin(2(wy - xz)) near ±1, and the atan2 "
+    "arguments for yaw and roll shrink like cos(pitch); use the half-angle sums (w ± y, x + z, z - x) "
+    "and atan2"
+)
+QUAT_NO_LOCK_HINT = hints.NO_GIMBAL_LOCK_BRANCH_HINT
 
 
 def _lecture_angles(q, normalise=True):
     """(yaw, pitch, roll) of the lecture's formulas with a clipped asin, from q (normalised first or not)."""
     q = np.asarray(q, dtype=float)
     w, x, y, z = q / np.linalg.norm(q) if normalise else q
-    return np.array([np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)),
-                     np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
-                     np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))])
+    return np.array(
+        [
+            np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)),
+            np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
+            np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y)),
+        ]
+    )
 
 
 def _quat_angles_hint(got, q, at_lock=False):
@@ -436,9 +508,11 @@ def _quat_angles_hint(got, q, at_lock=False):
         if np.max(np.abs(wrapped(got - lecture))) <= 1e-9:
             return QUAT_NO_LOCK_HINT if at_lock else QUAT_ASIN_HINT
     if not at_lock and got[2] == 0.0:
-        return (hints.TREATED_ROTATION_NEXT_LOCK_HINT)
-    return ("the angles must rebuild the rotation of q: pitch from the half-angle sums, "
-            "2 atan2(hypot(w + y, z - x), hypot(w - y, x + z)) - π/2, then yaw ± roll from 2 atan2 of the same sums")
+        return hints.TREATED_ROTATION_NEXT_LOCK_HINT
+    return (
+        "the angles must rebuild the rotation of q: pitch from the half-angle sums, "
+        "2 atan2(hypot(w + y, z - x), hypot(w - y, x + z)) - π/2, then yaw ± roll from 2 atan2 of the same sums"
+    )
 
 
 @exercise("quat_to_euler_zyx", weight=3)
@@ -450,8 +524,11 @@ def test_quat_to_euler_zyx_random(student):
         what = f"quat_to_euler_zyx(q) for random q #{index} = {fmt(q)}"
         got = _expect_angles(student.quat_to_euler_zyx(q), what)
         error = float(np.max(np.abs(scipy_matrix(*got) - R)))
-        expect(error <= REBUILD_TOL, f"{what}: the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
-               _quat_angles_hint(got, q))
+        expect(
+            error <= REBUILD_TOL,
+            f"{what}: the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
+            _quat_angles_hint(got, q),
+        )
         _expect_in_range(got, what)
         difference = np.max(np.abs(wrapped(got - scipy_angles(R))))
         expect(difference <= ANGLE_TOL, f"{what} = {fmt(got)} differs from scipy's {fmt(scipy_angles(R))}")
@@ -464,9 +541,11 @@ def test_quat_to_euler_zyx_sign(student):
         q = scipy_quat(yaw, pitch, roll)
         plus = _expect_angles(student.quat_to_euler_zyx(q), "quat_to_euler_zyx(q)")
         minus = _expect_angles(student.quat_to_euler_zyx(-q), "quat_to_euler_zyx(-q)")
-        expect(np.max(np.abs(wrapped(plus - minus))) <= ANGLE_TOL,
-               f"q = {fmt(q)} gives {fmt(plus)} but -q gives {fmt(minus)}",
-               "q and -q are the same rotation: bring yaw and roll into (-π, π] at the end")
+        expect(
+            np.max(np.abs(wrapped(plus - minus))) <= ANGLE_TOL,
+            f"q = {fmt(q)} gives {fmt(plus)} but -q gives {fmt(minus)}",
+            "q and -q are the same rotation: bring yaw and roll into (-π, π] at the end",
+        )
 
 
 @exercise("quat_to_euler_zyx", weight=1)
@@ -479,12 +558,14 @@ def test_quat_to_euler_zyx_normalises_and_half_open(student):
         for scale in (1e-8, 2.0, 1e8):
             got = _expect_angles(student.quat_to_euler_zyx(scale * q), f"quat_to_euler_zyx({scale:g} q)")
             error = float(np.max(np.abs(scipy_matrix(*got) - scipy_matrix(*unit))))
-            expect(error <= REBUILD_TOL, f"quat_to_euler_zyx({scale:g} q) gives {fmt(got)}, but q gives "
-                   f"{fmt(unit)} (the rotations differ by {error:.2g}) for pitch = {pitch:.9g}",
-                   hints.NON_UNIT_Q_STANDS_HINT)
+            expect(
+                error <= REBUILD_TOL,
+                f"quat_to_euler_zyx({scale:g} q) gives {fmt(got)}, but q gives "
+                f"{fmt(unit)} (the rotations differ by {error:.2g}) for pitch = {pitch:.9g}",
+                hints.NON_UNIT_Q_STANDS_HINT,
+            )
     got = _expect_angles(student.quat_to_euler_zyx([0.0, 0.0, 0.0, -1.0]), "quat_to_euler_zyx([0, 0, 0, -1])")
-    expect(got[0] == np.pi, f"quat_to_euler_zyx([0, 0, 0, -1]) gave yaw = {got[0]:.17g}, expected π",
-           HALF_OPEN_HINT)
+    expect(got[0] == np.pi, f"quat_to_euler_zyx([0, 0, 0, -1]) gave yaw = {got[0]:.17g}, expected π", HALF_OPEN_HINT)
 
 
 @exercise("quat_to_euler_zyx", weight=2)
@@ -499,13 +580,25 @@ def test_quat_to_euler_zyx_at_lock(student):
             what = f"quat_to_euler_zyx(q) at pitch = {'+' if sign > 0 else '-'}π/2 (q = {fmt(q, 6)})"
             got = _expect_angles(student.quat_to_euler_zyx(q), what)
             rebuilt_error = float(np.max(np.abs(scipy_matrix(*got) - R)))
-            expect(abs(got[2]) <= 1e-12, f"{what}: roll = {got[2]:.4f}, expected 0 (the course's convention)",
-                   hints.LOCK_ONLY_YAW_ROLL_DEFINED_HINT if rebuilt_error <= REBUILD_TOL
-                   else _quat_angles_hint(got, q, at_lock=True))
-            expect_close(scipy_matrix(*got), R, REBUILD_TOL, f"the rotation rebuilt from {what} = {fmt(got)}",
-                         _quat_angles_hint(got, q, at_lock=True))
-            expect(-np.pi < got[0] <= np.pi, f"{what}: yaw = {got[0]:.4f} is outside (-π, π]",
-                   "at the lock yaw is twice an atan2, which can leave (-π, π]: wrap it back into the range")
+            expect(
+                abs(got[2]) <= 1e-12,
+                f"{what}: roll = {got[2]:.4f}, expected 0 (the course's convention)",
+                hints.LOCK_ONLY_YAW_ROLL_DEFINED_HINT
+                if rebuilt_error <= REBUILD_TOL
+                else _quat_angles_hint(got, q, at_lock=True),
+            )
+            expect_close(
+                scipy_matrix(*got),
+                R,
+                REBUILD_TOL,
+                f"the rotation rebuilt from {what} = {fmt(got)}",
+                _quat_angles_hint(got, q, at_lock=True),
+            )
+            expect(
+                -np.pi < got[0] <= np.pi,
+                f"{what}: yaw = {got[0]:.4f} is outside (-π, π]",
+                "at the lock yaw is twice an atan2, which can leave (-π, π]: wrap it back into the range",
+            )
 
 
 @exercise("quat_to_euler_zyx", weight=1)
@@ -517,8 +610,11 @@ def test_quat_to_euler_zyx_near_lock(student):
         what = f"quat_to_euler_zyx(q) for pitch = {'+' if pitch > 0 else '-'}(π/2 - {eps:g})"
         got = _expect_angles(student.quat_to_euler_zyx(q), what)
         error = float(np.max(np.abs(scipy_matrix(*got) - R)))
-        expect(error <= REBUILD_TOL, f"{what}: the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
-               _quat_angles_hint(got, q))
+        expect(
+            error <= REBUILD_TOL,
+            f"{what}: the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
+            _quat_angles_hint(got, q),
+        )
 
 
 # ---------------------------------------------------------------- euler_rates_matrix
@@ -535,19 +631,26 @@ def _rates_hint(E, pitch, roll):
     right = np.array([[-sp, 0.0, 1.0], [cp * sr, cr, 0.0], [cp * cr, -sr, 0.0]])
     candidates = [
         (right[:, ::-1], hints.COLUMNS_ORDER_ROLL_PITCH_HINT),
-        (np.array([[-sp, 0.0, 1.0], [-cp * sr, cr, 0.0], [cp * cr, sr, 0.0]]),
-         hints.ROLL_SIGNS_FLIPPED_EXPRESS_HINT),
+        (np.array([[-sp, 0.0, 1.0], [-cp * sr, cr, 0.0], [cp * cr, sr, 0.0]]), hints.ROLL_SIGNS_FLIPPED_EXPRESS_HINT),
         (right.T, "looks like the transpose of E"),
-        (np.eye(3), "E = I treats the Euler-angle rates as body rates; they are not: yaw spins about the world z, "
-                    "pitch about the once-turned y, roll about the body x, each seen in the body frame"),
+        (
+            np.eye(3),
+            "E = I treats the Euler-angle rates as body rates; they are not: yaw spins about the world z, "
+            "pitch about the once-turned y, roll about the body x, each seen in the body frame",
+        ),
     ]
-    matching = [hint for candidate, hint in candidates
-                if np.max(np.abs(candidate - right)) > 1e-6 and np.max(np.abs(E - candidate)) <= 1e-6]
+    matching = [
+        hint
+        for candidate, hint in candidates
+        if np.max(np.abs(candidate - right)) > 1e-6 and np.max(np.abs(E - candidate)) <= 1e-6
+    ]
     if len(matching) == 1:
         return matching[0]
     # None, or several mistakes that coincide at these angles (at zero angles reversed columns are I).
-    return (f"E({pitch:.3g}, {roll:.3g}) should be {fmt(right, 3)}: its columns are the yaw, pitch and roll axes "
-            "seen in the body, Rx(roll)ᵀ Ry(pitch)ᵀ e_z, Rx(roll)ᵀ e_y, e_x")
+    return (
+        f"E({pitch:.3g}, {roll:.3g}) should be {fmt(right, 3)}: its columns are the yaw, pitch and roll axes "
+        "seen in the body, Rx(roll)ᵀ Ry(pitch)ᵀ e_z, Rx(roll)ᵀ e_y, e_x"
+    )
 
 
 @exercise("euler_rates_matrix", weight=3)
@@ -570,10 +673,13 @@ def test_euler_rates_matrix_determinant(student):
         what = f"euler_rates_matrix({pitch:.3f}, {roll:.3f})"
         E = expect_array(student.euler_rates_matrix(pitch, roll), (3, 3), what)
         det = np.linalg.det(E)
-        expect(abs(det + np.cos(pitch)) <= 1e-9,
-               f"det {what} = {det:.4f}, expected -cos(pitch) = {-np.cos(pitch):.4f} (off by {abs(det + np.cos(pitch)):.2g})",
-               _rates_hint(E, pitch, roll))
+        expect(
+            abs(det + np.cos(pitch)) <= 1e-9,
+            f"det {what} = {det:.4f}, expected -cos(pitch) = {-np.cos(pitch):.4f} (off by {abs(det + np.cos(pitch)):.2g})",
+            _rates_hint(E, pitch, roll),
+        )
     for pitch, null in [(HALF_PI, [1.0, 0.0, 1.0]), (-HALF_PI, [1.0, 0.0, -1.0])]:
         E = expect_array(student.euler_rates_matrix(pitch, 0.8), (3, 3), "euler_rates_matrix")
-        expect_close(E @ null, np.zeros(3), 1e-12, f"euler_rates_matrix({pitch:.4f}, 0.8) @ {null}",
-                     _rates_hint(E, pitch, 0.8))
+        expect_close(
+            E @ null, np.zeros(3), 1e-12, f"euler_rates_matrix({pitch:.4f}, 0.8) @ {null}", _rates_hint(E, pitch, 0.8)
+        )

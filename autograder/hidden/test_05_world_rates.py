@@ -15,8 +15,18 @@ from coursekit.diagnose import explains
 
 from .helpers import exercise, expect, expect_array, expect_close
 
-STATES = [(0.7, -0.4), (2.9, 1.2), (-3.0, -1.5), (1e-12, 1e-12), (1e-6, -1e-9), (0.3, np.pi / 2 - 1e-9),
-          (-2.2, -np.pi / 2 + 1e-12), (np.pi, 0.5), (-1.1, np.pi / 2), (1e-3, 0.9)]
+STATES = [
+    (0.7, -0.4),
+    (2.9, 1.2),
+    (-3.0, -1.5),
+    (1e-12, 1e-12),
+    (1e-6, -1e-9),
+    (0.3, np.pi / 2 - 1e-9),
+    (-2.2, -np.pi / 2 + 1e-12),
+    (np.pi, 0.5),
+    (-1.1, np.pi / 2),
+    (1e-3, 0.9),
+]
 
 
 def _rz(a):
@@ -47,13 +57,19 @@ def _by_differences(yaw, pitch, roll, h=1e-6):
 def _hint(got, yaw, pitch):
     ex, ey, ez = np.eye(3)
     truth = _world_rates(yaw, pitch)
-    slips = [(np.column_stack([ez, _rz(yaw).T @ ey, _ry(pitch).T @ _rz(yaw).T @ ex]),
-              "the axes were turned by transposes, as in the body-rate matrix: in world axes each Euler axis is "
-              "turned by the rotations to its left in Rz Ry Rx"),
-             (np.column_stack([ez, _rz(yaw) @ ey, _rz(yaw) @ ex]),
-              "the roll axis is the body x axis after the yaw and the pitch: Rz(ψ) Ry(θ) e_x"),
-             (_world_rates(0.0, pitch), "the yaw turns the pitch and roll axes about the vertical"),
-             (truth[:, ::-1], hints.COLUMNS_GO_ORDER_RATES_HINT)]
+    slips = [
+        (
+            np.column_stack([ez, _rz(yaw).T @ ey, _ry(pitch).T @ _rz(yaw).T @ ex]),
+            "the axes were turned by transposes, as in the body-rate matrix: in world axes each Euler axis is "
+            "turned by the rotations to its left in Rz Ry Rx",
+        ),
+        (
+            np.column_stack([ez, _rz(yaw) @ ey, _rz(yaw) @ ex]),
+            "the roll axis is the body x axis after the yaw and the pitch: Rz(ψ) Ry(θ) e_x",
+        ),
+        (_world_rates(0.0, pitch), "the yaw turns the pitch and roll axes about the vertical"),
+        (truth[:, ::-1], hints.COLUMNS_GO_ORDER_RATES_HINT),
+    ]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(got, candidate, truth, floor=1e-13):
             return hint
@@ -64,10 +80,12 @@ def _hint(got, yaw, pitch):
 def test_world_rates_everywhere(student):
     """equals [e_z, Rz(ψ) e_y, Rz(ψ) Ry(θ) e_x] to 1e-12 for 10 states: generic, tiny angles, next to and at the lock"""
     for yaw, pitch in STATES:
-        got = expect_array(student.euler_rates_matrix_world(yaw, pitch), (3, 3),
-                           f"euler_rates_matrix_world({yaw:.3g}, {pitch:.3g})")
-        expect_close(got, _world_rates(yaw, pitch), 1e-12, f"E_w at yaw {yaw:.3g}, pitch {pitch:.3g}",
-                     _hint(got, yaw, pitch))
+        got = expect_array(
+            student.euler_rates_matrix_world(yaw, pitch), (3, 3), f"euler_rates_matrix_world({yaw:.3g}, {pitch:.3g})"
+        )
+        expect_close(
+            got, _world_rates(yaw, pitch), 1e-12, f"E_w at yaw {yaw:.3g}, pitch {pitch:.3g}", _hint(got, yaw, pitch)
+        )
 
 
 @exercise("euler_rates_matrix_world", weight=1)
@@ -75,9 +93,13 @@ def test_world_rates_by_finite_differences(student):
     """E_w @ rates matches the world angular velocity of a moving attitude (central differences) to 1e-8, any roll"""
     for (yaw, pitch), roll in zip([(0.7, -0.4), (-2.5, 1.0), (1.9, 0.2)], (0.0, 2.2, -1.4)):
         got = expect_array(student.euler_rates_matrix_world(yaw, pitch), (3, 3), "euler_rates_matrix_world")
-        expect_close(got, _by_differences(yaw, pitch, roll), 1e-8,
-                     f"E_w against finite differences at yaw {yaw:g}, pitch {pitch:g}, roll {roll:g}",
-                     _hint(got, yaw, pitch))
+        expect_close(
+            got,
+            _by_differences(yaw, pitch, roll),
+            1e-8,
+            f"E_w against finite differences at yaw {yaw:g}, pitch {pitch:g}, roll {roll:g}",
+            _hint(got, yaw, pitch),
+        )
 
 
 @exercise("euler_rates_matrix_world", weight=1)
@@ -85,9 +107,14 @@ def test_world_rates_singularity(student):
     """det E_w = -cos(pitch) (to 1e-12) for 7 pitches, and at the lock the yaw and roll columns are parallel"""
     for pitch in (-1.5, -0.7, 0.0, 0.4, 1.2, np.pi / 2 - 1e-6, np.pi / 2):
         got = expect_array(student.euler_rates_matrix_world(0.6, pitch), (3, 3), "euler_rates_matrix_world")
-        expect(abs(np.linalg.det(got) + np.cos(pitch)) <= 1e-12,
-               f"det E_w = {np.linalg.det(got):.9f} at pitch {pitch:.6g}, expected {-np.cos(pitch):.9f}",
-               _hint(got, 0.6, pitch))
+        expect(
+            abs(np.linalg.det(got) + np.cos(pitch)) <= 1e-12,
+            f"det E_w = {np.linalg.det(got):.9f} at pitch {pitch:.6g}, expected {-np.cos(pitch):.9f}",
+            _hint(got, 0.6, pitch),
+        )
     lock = expect_array(student.euler_rates_matrix_world(0.6, np.pi / 2), (3, 3), "euler_rates_matrix_world at lock")
-    expect(np.linalg.norm(np.cross(lock[:, 0], lock[:, 2])) <= 1e-12,
-           "at the lock the yaw and roll axes should be the same vertical line", _hint(lock, 0.6, np.pi / 2))
+    expect(
+        np.linalg.norm(np.cross(lock[:, 0], lock[:, 2])) <= 1e-12,
+        "at the lock the yaw and roll axes should be the same vertical line",
+        _hint(lock, 0.6, np.pi / 2),
+    )

@@ -14,7 +14,7 @@ from coursekit.diagnose import explains
 
 from .helpers import exercise, expect_array, expect_close, expect_same_with_lists, random_rotations
 
-ANGLES = (1.0, 2.5, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 3.0, np.pi - 1e-9)       # generic turns first
+ANGLES = (1.0, 2.5, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 3.0, np.pi - 1e-9)  # generic turns first
 SIZES = (1.0, 10.0, 1e-6, 1e-3, 0.1, 1e3, 2.0, 50.0, 0.5)
 
 
@@ -25,13 +25,16 @@ def _skew(v):
 def _hint(J, R, p):
     truth = _skew(R.T @ p)
     size = np.linalg.norm(p)
-    slips = [(R.T @ _skew(p), hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT),
-             (-truth, "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ, and -[δ]× v = +[v]× δ"),
-             (_skew(p), hints.POINT_SEEN_BODY_RT_HINT),
-             (-R @ _skew(p), "-R [p]× is the Jacobian of R p (body to world); here the map is Rᵀ p_w")]
+    slips = [
+        (R.T @ _skew(p), hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT),
+        (-truth, "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ, and -[δ]× v = +[v]× δ"),
+        (_skew(p), hints.POINT_SEEN_BODY_RT_HINT),
+        (-R @ _skew(p), "-R [p]× is the Jacobian of R p (body to world); here the map is Rᵀ p_w"),
+    ]
     for candidate, hint in slips:
-        if np.max(np.abs(candidate - truth)) > 1e-9 * size and explains(J / size, candidate / size, truth / size,
-                                                                        floor=1e-13):
+        if np.max(np.abs(candidate - truth)) > 1e-9 * size and explains(
+            J / size, candidate / size, truth / size, floor=1e-13
+        ):
             return hint
     return "(R Exp(δ))ᵀ p_w ≈ (I - [δ]×) Rᵀ p_w = Rᵀ p_w + [Rᵀ p_w]× δ"
 
@@ -45,8 +48,14 @@ def test_point_to_body_exact(student):
         R = Rotation.from_rotvec(angle * axis / np.linalg.norm(axis)).as_matrix()
         p = size * p / np.linalg.norm(p)
         J = expect_array(student.jacobian_point_to_body(R, p), (3, 3), "jacobian_point_to_body(R, p_w)")
-        expect_close(J, _skew(R.T @ p), 1e-12, f"jacobian_point_to_body for a turn of {angle:.3g} rad and "
-                     f"|p_w| = {size:g} m", _hint(J, R, p), scale=size)
+        expect_close(
+            J,
+            _skew(R.T @ p),
+            1e-12,
+            f"jacobian_point_to_body for a turn of {angle:.3g} rad and |p_w| = {size:g} m",
+            _hint(J, R, p),
+            scale=size,
+        )
 
 
 @exercise("jacobian_point_to_body", weight=1)
@@ -57,15 +66,32 @@ def test_point_to_body_finite_differences(student):
         p = 3.0 * rng.normal(size=3)
         J = expect_array(student.jacobian_point_to_body(R, p), (3, 3), "jacobian_point_to_body(R, p_w)")
         h = 1e-6
-        numeric = np.column_stack([((R @ Rotation.from_rotvec(h * e).as_matrix()).T @ p
-                                    - (R @ Rotation.from_rotvec(-h * e).as_matrix()).T @ p) / (2 * h)
-                                   for e in np.eye(3)])
-        expect_close(J, numeric, 1e-8, "jacobian_point_to_body against finite differences", _hint(J, R, p),
-                     scale=1.0 + np.linalg.norm(p))
+        numeric = np.column_stack(
+            [
+                (
+                    (R @ Rotation.from_rotvec(h * e).as_matrix()).T @ p
+                    - (R @ Rotation.from_rotvec(-h * e).as_matrix()).T @ p
+                )
+                / (2 * h)
+                for e in np.eye(3)
+            ]
+        )
+        expect_close(
+            J,
+            numeric,
+            1e-8,
+            "jacobian_point_to_body against finite differences",
+            _hint(J, R, p),
+            scale=1.0 + np.linalg.norm(p),
+        )
 
 
 @exercise("jacobian_point_to_body", weight=1)
 def test_point_to_body_accepts_lists(student):
     """gives the same answer for plain lists as for arrays"""
-    expect_same_with_lists(student.jacobian_point_to_body, (random_rotations(1, 6320)[0], [0.3, -1.2, 2.0]), (3, 3),
-                           "jacobian_point_to_body(R, p_w)")
+    expect_same_with_lists(
+        student.jacobian_point_to_body,
+        (random_rotations(1, 6320)[0], [0.3, -1.2, 2.0]),
+        (3, 3),
+        "jacobian_point_to_body(R, p_w)",
+    )

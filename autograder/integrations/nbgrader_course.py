@@ -31,12 +31,12 @@ from autograder.lessons import cells
 from autograder.lessons.catalog import Lesson, load_catalog
 from autograder.lessons.course import SUPPORT_PACKAGE
 
-CONFIG = '''c = get_config()
+CONFIG = """c = get_config()
 c.CourseDirectory.root = {root!r}
 c.CourseDirectory.course_id = "rotations"
 c.ClearSolutions.code_stub = {{"python": {stub!r}}}
 c.ExecutePreprocessor.timeout = 120
-'''
+"""
 
 
 def assignment_name(lesson: Lesson) -> str:
@@ -58,8 +58,12 @@ def build_course(root: str | Path, solutions_dir: Path, lessons: list[str] | Non
         source = root / "source" / assignment_name(lesson)
         source.mkdir(parents=True, exist_ok=True)
         _write_student_master(Path(solutions_dir) / lesson.filename, source / lesson.filename)
-        shutil.copytree(Path(solutions_dir) / SUPPORT_PACKAGE, source / SUPPORT_PACKAGE,
-                        ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True)
+        shutil.copytree(
+            Path(solutions_dir) / SUPPORT_PACKAGE,
+            source / SUPPORT_PACKAGE,
+            ignore=shutil.ignore_patterns("__pycache__"),
+            dirs_exist_ok=True,
+        )
     return root
 
 
@@ -91,8 +95,9 @@ def with_environment_tools(env: dict[str, str] | None = None) -> dict[str, str]:
     return env
 
 
-def run_nbgrader(root: str | Path, *args: str, check: bool = True,
-                 env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
+def run_nbgrader(
+    root: str | Path, *args: str, check: bool = True, env: dict[str, str] | None = None
+) -> subprocess.CompletedProcess:
     """Run ``nbgrader ARGS`` in the course root with this Python; return the CompletedProcess."""
     command = [sys.executable, "-m", "nbgrader", *args]
     env = with_environment_tools(env)

@@ -74,12 +74,20 @@ def export_to_gradebook(results: list[StudentResult], database: str | os.PathLik
     url = _database_url(database)
     written = 0
     os.environ.update(with_environment_tools())
-    handed_in = {lesson.number for result in results if result.status not in (MISSING, COULD_NOT_GRADE)
-                 for lesson in result.lessons if lesson.status != "missing"}
+    handed_in = {
+        lesson.number
+        for result in results
+        if result.status not in (MISSING, COULD_NOT_GRADE)
+        for lesson in result.lessons
+        if lesson.status != "missing"
+    }
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # SQLAlchemy's notes about nbgrader's own models
-        structure = {lesson.number: _ensure_structure(url, lesson, course.released) for lesson in catalog.graded_lessons
-                     if lesson.number in handed_in}
+        structure = {
+            lesson.number: _ensure_structure(url, lesson, course.released)
+            for lesson in catalog.graded_lessons
+            if lesson.number in handed_in
+        }
         gradebook = Gradebook(url)
     with warnings.catch_warnings(), gradebook:
         warnings.simplefilter("ignore")

@@ -103,15 +103,21 @@ def lesson_from_notebook(path: Path, nb: nbformat.NotebookNode) -> Lesson:
                 raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")
             pending = cells.grade_id(cell)
         elif cells.is_check_cell(cell):
-            name = (cells.grade_id(cell) or "")[len(cells.CHECK_PREFIX):]
+            name = (cells.grade_id(cell) or "")[len(cells.CHECK_PREFIX) :]
             if name != pending:
                 raise CatalogError(f"{path}: check cell {cells.grade_id(cell)!r} does not follow its answer cell")
             exercises.append(Exercise(name=name, lesson=number, points=cells.points(cell)))
             pending = None
     if pending:
         raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")
-    return Lesson(number=number, filename=Path(path).name, title=title,
-                  exercises=tuple(exercises), setup_source=setup_source, hand_in_points=hand_in_points)
+    return Lesson(
+        number=number,
+        filename=Path(path).name,
+        title=title,
+        exercises=tuple(exercises),
+        setup_source=setup_source,
+        hand_in_points=hand_in_points,
+    )
 
 
 @lru_cache(maxsize=4)

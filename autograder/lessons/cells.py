@@ -129,8 +129,14 @@ def parse_source(source: str) -> ast.Module | None:
 
 # ---------------------------------------------------------------- constructors for authors
 def _meta(grade, solution, locked, cell_id, points_value=None):
-    meta = {"grade": grade, "grade_id": cell_id, "locked": locked,
-            "schema_version": NBGRADER_SCHEMA, "solution": solution, "task": False}
+    meta = {
+        "grade": grade,
+        "grade_id": cell_id,
+        "locked": locked,
+        "schema_version": NBGRADER_SCHEMA,
+        "solution": solution,
+        "task": False,
+    }
     if points_value is not None:
         meta["points"] = points_value
     return {"nbgrader": meta}

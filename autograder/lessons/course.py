@@ -90,17 +90,27 @@ class Course:
                 raise CourseError(f"{layout}: not valid TOML ({error})") from None
             unknown = set(settings) - set(DEFAULT_PARTS) - set(DESCRIPTION_KEYS)
             if unknown:
-                raise CourseError(f"{layout}: unknown keys {sorted(unknown)} in [course]; "
-                                  f"known: {', '.join(DESCRIPTION_KEYS + tuple(DEFAULT_PARTS))}")
+                raise CourseError(
+                    f"{layout}: unknown keys {sorted(unknown)} in [course]; "
+                    f"known: {', '.join(DESCRIPTION_KEYS + tuple(DEFAULT_PARTS))}"
+                )
         parts = {key: root / str(settings.get(key, default)) for key, default in DEFAULT_PARTS.items()}
         if not parts["solutions"].is_dir() or not any(parts["solutions"].glob("[0-9][0-9]_*.ipynb")):
-            raise CourseError(f"{root} is not a course folder: no masters {parts['solutions']}/NN_*.ipynb "
-                              f"(see docs/AUTHORING.md, 'Write your own course')")
+            raise CourseError(
+                f"{root} is not a course folder: no masters {parts['solutions']}/NN_*.ipynb "
+                f"(see docs/AUTHORING.md, 'Write your own course')"
+            )
         title = str(settings.get("title", root.name))
         handout = str(settings.get("handout") or re.sub(r"[^a-z0-9]+", "-", title.lower()).strip("-") or "course")
-        return cls(root=root, solutions=parts["solutions"], released=parts["released"],
-                   hidden_suite=parts["hidden"], title=title, about=str(settings.get("about", "")).strip(),
-                   handout=handout)
+        return cls(
+            root=root,
+            solutions=parts["solutions"],
+            released=parts["released"],
+            hidden_suite=parts["hidden"],
+            title=title,
+            about=str(settings.get("about", "")).strip(),
+            handout=handout,
+        )
 
     @property
     def support(self) -> Path:
@@ -129,8 +139,10 @@ class Course:
         if loaded is not None:
             where = Path(getattr(loaded, "__file__", "") or "").resolve().parent
             if where != self.support.resolve():
-                raise CourseError(f"this process already uses the coursekit of {where}; "
-                                  f"grade the course {self.root} in a process of its own")
+                raise CourseError(
+                    f"this process already uses the coursekit of {where}; "
+                    f"grade the course {self.root} in a process of its own"
+                )
             return
         if str(self.solutions) not in sys.path:
             sys.path.insert(0, str(self.solutions))

@@ -23,8 +23,9 @@ if TYPE_CHECKING:
     from autograder.lessons.course import Course
 
 
-def write_submission(course: Course, folder: str | Path, answers: dict[str, str],
-                     lessons: tuple[str, ...] = ()) -> Path:
+def write_submission(
+    course: Course, folder: str | Path, answers: dict[str, str], lessons: tuple[str, ...] = ()
+) -> Path:
     """Write ``course``'s released notebooks into ``folder`` with ``answers`` in their answer cells;
     return ``folder`` (a :class:`~pathlib.Path`).
 

@@ -40,9 +40,15 @@ def file_kind(mode: int) -> str:
     >>> file_kind(stat.S_IFIFO)
     'a FIFO (named pipe)'
     """
-    kinds = ((stat.S_ISLNK, "a symbolic link"), (stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
-             (stat.S_ISSOCK, "a socket"), (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
-             (stat.S_ISREG, "a regular file"))
+    kinds = (
+        (stat.S_ISLNK, "a symbolic link"),
+        (stat.S_ISDIR, "a folder"),
+        (stat.S_ISFIFO, "a FIFO (named pipe)"),
+        (stat.S_ISSOCK, "a socket"),
+        (stat.S_ISCHR, "a character device"),
+        (stat.S_ISBLK, "a block device"),
+        (stat.S_ISREG, "a regular file"),
+    )
     return next((words for test, words in kinds if test(mode)), "not a regular file")
 
 
@@ -95,8 +101,9 @@ class UnreadableNotebook(Exception):
     """A submitted notebook that cannot be graded; ``str(error)`` says why."""
 
 
-def read_submission(path: str | os.PathLike, root: str | os.PathLike | None = None,
-                    max_bytes: int = MAX_NOTEBOOK_BYTES) -> nbformat.NotebookNode:
+def read_submission(
+    path: str | os.PathLike, root: str | os.PathLike | None = None, max_bytes: int = MAX_NOTEBOOK_BYTES
+) -> nbformat.NotebookNode:
     """Read a student's notebook, or raise :class:`UnreadableNotebook`.
 
     Parameters
@@ -133,7 +140,8 @@ def read_submission(path: str | os.PathLike, root: str | os.PathLike | None = No
     if size > max_bytes or len(raw) > max_bytes:
         raise UnreadableNotebook(
             f"{path.name} is {max(size, len(raw)) / 2**20:.0f} MB, over the {max_bytes / 2**20:.0f} MB limit "
-            "(clear large outputs with Edit → Clear Outputs of All Cells, save, resubmit)")
+            "(clear large outputs with Edit → Clear Outputs of All Cells, save, resubmit)"
+        )
     return parse_notebook(raw, path.name)
 
 
@@ -154,8 +162,10 @@ def _nesting(data):
 
 
 def _damaged(name, what):
-    return UnreadableNotebook(f"{name} {what}; the file was damaged or not written by Jupyter "
-                              "(clear outputs, save it from Jupyter and resubmit)")
+    return UnreadableNotebook(
+        f"{name} {what}; the file was damaged or not written by Jupyter "
+        "(clear outputs, save it from Jupyter and resubmit)"
+    )
 
 
 def parse_notebook(raw: bytes, name: str = "notebook") -> nbformat.NotebookNode:
@@ -164,21 +174,26 @@ def parse_notebook(raw: bytes, name: str = "notebook") -> nbformat.NotebookNode:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as error:
         raise UnreadableNotebook(
-            f"{name} is not UTF-8 text (bad byte at position {error.start}); "
-            "was it saved by Jupyter?") from None
+            f"{name} is not UTF-8 text (bad byte at position {error.start}); was it saved by Jupyter?"
+        ) from None
     containers, items = raw.count(b"[") + raw.count(b"{"), raw.count(b",")
     if containers > MAX_CONTAINERS:  # counted on the bytes: what parsing would build is bounded before it starts
-        raise _damaged(name, f"holds {containers:,} JSON lists and objects (a notebook needs a few hundred, "
-                             f"at most {MAX_CONTAINERS:,} are read)")
+        raise _damaged(
+            name,
+            f"holds {containers:,} JSON lists and objects (a notebook needs a few hundred, "
+            f"at most {MAX_CONTAINERS:,} are read)",
+        )
     if items > MAX_ITEMS:
-        raise _damaged(name, f"holds {items:,} JSON values (a notebook needs a few thousand, at most "
-                             f"{MAX_ITEMS:,} are read)")
+        raise _damaged(
+            name, f"holds {items:,} JSON values (a notebook needs a few thousand, at most {MAX_ITEMS:,} are read)"
+        )
     try:
         data = json.loads(text)
     except json.JSONDecodeError as error:
         raise UnreadableNotebook(
             f"{name} is not valid JSON (line {error.lineno}, column {error.colno}: {error.msg}); "
-            "the file was damaged, perhaps by editing it as text") from None
+            "the file was damaged, perhaps by editing it as text"
+        ) from None
     except (RecursionError, MemoryError):
         raise _damaged(name, f"nests its JSON deeper than the {MAX_NESTING} levels read") from None
     if _nesting(data) > MAX_NESTING:
@@ -187,7 +202,8 @@ def parse_notebook(raw: bytes, name: str = "notebook") -> nbformat.NotebookNode:
         raise UnreadableNotebook(f"{name} is JSON but not a Jupyter notebook (no list of cells)")
     if data.get("nbformat") != 4:
         raise UnreadableNotebook(
-            f"{name} has notebook format {data.get('nbformat')!r}; save it with a current Jupyter (format 4)")
+            f"{name} has notebook format {data.get('nbformat')!r}; save it with a current Jupyter (format 4)"
+        )
     if not isinstance(data.get("metadata", {}), dict):
         data["metadata"] = {}
     if len(data["cells"]) > MAX_CELLS:

@@ -33,8 +33,7 @@ def lesson_namespace(master: nbformat.NotebookNode, label: str) -> dict:
     namespace = {"__name__": f"reference_{label}"}
     for cell in master.cells:
         if cells.is_setup_cell(cell) or cells.is_answer_cell(cell):
-            exec(compile(cells.source_text(cell), f"<reference {label} {cells.grade_id(cell)}>", "exec"),
-                 namespace)
+            exec(compile(cells.source_text(cell), f"<reference {label} {cells.grade_id(cell)}>", "exec"), namespace)
     return namespace
 
 
@@ -74,7 +73,8 @@ def answer_sources(solutions_dir: Path) -> dict[str, str]:
         for cell in read_master(Path(solutions_dir) / lesson.filename).cells:
             if cells.is_answer_cell(cell):
                 text = cells.source_text(cell)
-                kept = [line for line in text.splitlines()
-                        if line.strip() not in (cells.BEGIN_SOLUTION, cells.END_SOLUTION)]
+                kept = [
+                    line for line in text.splitlines() if line.strip() not in (cells.BEGIN_SOLUTION, cells.END_SOLUTION)
+                ]
                 sources[cells.grade_id(cell)] = "\n".join(kept)
     return sources

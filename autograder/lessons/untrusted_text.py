@@ -148,5 +148,5 @@ def safe_name(student_id: str, limit: int = NAME_LIMIT) -> str:
         name = f"%{name}"
     if len(name) > limit:
         digest = hashlib.sha256(str(student_id).encode("utf-8", "surrogatepass")).hexdigest()[:32]
-        name = f"{name[:limit - len(digest) - 1]}~{digest}"
+        name = f"{name[: limit - len(digest) - 1]}~{digest}"
     return name

@@ -29,7 +29,7 @@ class Mistake:
     description: str
     source: str
     kind: str = "mistake"  # "mistake": a wrong answer; "fault": crashes, hangs, exits
-    hint: str = ""         # a substring of the hint the hidden feedback must give it
+    hint: str = ""  # a substring of the hint the hidden feedback must give it
     public_hint: str = ""  # a substring of the hint the public check cell must print for it
     classic: bool = False  # misses the exercise's core idea: may earn at most half of its points
 

@@ -3,28 +3,62 @@
 from . import Alternative, Mistake
 
 MISTAKES = [
-    Mistake("point_to_body_left", "jacobian_point_to_body", "Rᵀ [p_w]×: the left-perturbation Jacobian", '''
+    Mistake(
+        "point_to_body_left",
+        "jacobian_point_to_body",
+        "Rᵀ [p_w]×: the left-perturbation Jacobian",
+        """
 def jacobian_point_to_body(R, p_w):
     return np.asarray(R, dtype=float).T @ skew(p_w)
-''', hint="belongs to the left perturbation", public_hint="belongs to the left perturbation", classic=True),
-    Mistake("point_to_body_sign", "jacobian_point_to_body", "-[Rᵀ p_w]×: the sign of Exp(-δ) lost", '''
+""",
+        hint="belongs to the left perturbation",
+        public_hint="belongs to the left perturbation",
+        classic=True,
+    ),
+    Mistake(
+        "point_to_body_sign",
+        "jacobian_point_to_body",
+        "-[Rᵀ p_w]×: the sign of Exp(-δ) lost",
+        """
 def jacobian_point_to_body(R, p_w):
     return -skew(np.asarray(R, dtype=float).T @ np.asarray(p_w, dtype=float))
-''', hint="(R Exp(δ))ᵀ = Exp(-δ) Rᵀ", public_hint="(R Exp(δ))ᵀ = Exp(-δ) Rᵀ"),
-    Mistake("point_to_body_no_R", "jacobian_point_to_body", "[p_w]×: forgets the attitude", '''
+""",
+        hint="(R Exp(δ))ᵀ = Exp(-δ) Rᵀ",
+        public_hint="(R Exp(δ))ᵀ = Exp(-δ) Rᵀ",
+    ),
+    Mistake(
+        "point_to_body_no_R",
+        "jacobian_point_to_body",
+        "[p_w]×: forgets the attitude",
+        """
 def jacobian_point_to_body(R, p_w):
     return skew(p_w)
-''', hint="R belongs in the answer", public_hint="R belongs in the answer"),
-    Mistake("point_to_body_forward", "jacobian_point_to_body", "-R [p]×: section 6's Jacobian copied", '''
+""",
+        hint="R belongs in the answer",
+        public_hint="R belongs in the answer",
+    ),
+    Mistake(
+        "point_to_body_forward",
+        "jacobian_point_to_body",
+        "-R [p]×: section 6's Jacobian copied",
+        """
 def jacobian_point_to_body(R, p_w):
     return -np.asarray(R, dtype=float) @ skew(p_w)
-''', hint="is the Jacobian of R p (body to world)", public_hint="is the Jacobian of R p (body to world)"),
+""",
+        hint="is the Jacobian of R p (body to world)",
+        public_hint="is the Jacobian of R p (body to world)",
+    ),
 ]
 
 ALTERNATIVES = [
-    Alternative("point_to_body_conjugated", "jacobian_point_to_body", "Rᵀ [p_w]× R, the same matrix by the adjoint", '''
+    Alternative(
+        "point_to_body_conjugated",
+        "jacobian_point_to_body",
+        "Rᵀ [p_w]× R, the same matrix by the adjoint",
+        """
 def jacobian_point_to_body(R, p_w):
     R = np.asarray(R, dtype=float)
     return R.T @ skew(p_w) @ R
-'''),
+""",
+    ),
 ]

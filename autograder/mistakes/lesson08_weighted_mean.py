@@ -2,7 +2,7 @@
 
 from . import Alternative, Mistake
 
-_ITERATION = '''
+_ITERATION = """
 def weighted_rotation_mean(Rs, weights):
     Rs = np.asarray(Rs, dtype=float)
     w = np.asarray(weights, dtype=float){extra}
@@ -13,28 +13,56 @@ def weighted_rotation_mean(Rs, weights):
         if np.linalg.norm(delta) < 1e-13:
             break
     return M
-'''
+"""
 
 MISTAKES = [
-    Mistake("weighted_mean_ignores_weights", "weighted_rotation_mean", "ignores the weights",
-            _ITERATION.format(extra="\n    w = np.ones(len(Rs))", steps=100),
-            hint="the weights were ignored", public_hint="the weights were ignored", classic=True),
-    Mistake("weighted_mean_chordal", "weighted_rotation_mean", "the weighted chordal mean", '''
+    Mistake(
+        "weighted_mean_ignores_weights",
+        "weighted_rotation_mean",
+        "ignores the weights",
+        _ITERATION.format(extra="\n    w = np.ones(len(Rs))", steps=100),
+        hint="the weights were ignored",
+        public_hint="the weights were ignored",
+        classic=True,
+    ),
+    Mistake(
+        "weighted_mean_chordal",
+        "weighted_rotation_mean",
+        "the weighted chordal mean",
+        """
 def weighted_rotation_mean(Rs, weights):
     Rs = np.asarray(Rs, dtype=float)
     w = np.asarray(weights, dtype=float)
     U, _, Vt = np.linalg.svd(np.einsum("i,ijk->jk", w, Rs))
     return U @ np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))]) @ Vt
-''', hint="weighted chordal mean", public_hint="weighted chordal mean"),
-    Mistake("weighted_mean_one_step", "weighted_rotation_mean", "stops after one weighted step",
-            _ITERATION.format(extra="", steps=1), hint="a single step from Rs[0]", public_hint="a single step from Rs[0]"),
-    Mistake("weighted_mean_squared_weights", "weighted_rotation_mean", "weights squared",
-            _ITERATION.format(extra="\n    w = w ** 2", steps=100),
-            hint="the weights were squared", public_hint="the weights were squared"),
+""",
+        hint="weighted chordal mean",
+        public_hint="weighted chordal mean",
+    ),
+    Mistake(
+        "weighted_mean_one_step",
+        "weighted_rotation_mean",
+        "stops after one weighted step",
+        _ITERATION.format(extra="", steps=1),
+        hint="a single step from Rs[0]",
+        public_hint="a single step from Rs[0]",
+    ),
+    Mistake(
+        "weighted_mean_squared_weights",
+        "weighted_rotation_mean",
+        "weights squared",
+        _ITERATION.format(extra="\n    w = w ** 2", steps=100),
+        hint="the weights were squared",
+        public_hint="the weights were squared",
+    ),
 ]
 
 ALTERNATIVES = [
-    Alternative("weighted_mean_from_chordal", "weighted_rotation_mean", "starts from the weighted chordal mean", '''
+    Alternative(
+        "weighted_mean_from_chordal",
+        "weighted_rotation_mean",
+        "starts from the weighted chordal mean",
+        """
 def weighted_rotation_mean(Rs, weights):
     Rs = [np.asarray(R, dtype=float) for R in Rs]
     w = [float(x) for x in weights]
@@ -46,7 +74,8 @@ def weighted_rotation_mean(Rs, weights):
         if np.linalg.norm(delta) < 1e-14:
             break
     return M
-'''),
+""",
+    ),
 ]
 
 SAMPLE = {"chloe": ["weighted_mean_ignores_weights"]}

@@ -17,52 +17,111 @@ mistakes from the lessons' lists in order, as it was.
 from . import Mistake
 
 MISTAKES = [
-    Mistake("rotate_point_in_place", "rotate_point", "writes the rotated point into the caller's array p_b", '''
+    Mistake(
+        "rotate_point_in_place",
+        "rotate_point",
+        "writes the rotated point into the caller's array p_b",
+        """
 def rotate_point(R_wb, p_b):
     p_b = np.asarray(p_b, dtype=float)
     p_b[...] = p_b @ np.asarray(R_wb, dtype=float).T
     return p_b
-''', hint="work on a copy", public_hint="work on a copy"),
-    Mistake("hat_delegates", "hat", "a one-line wrapper around coursekit.lie.skew", '''
+""",
+        hint="work on a copy",
+        public_hint="work on a copy",
+    ),
+    Mistake(
+        "hat_delegates",
+        "hat",
+        "a one-line wrapper around coursekit.lie.skew",
+        """
 def hat(w):
     from coursekit.lie import skew
     return skew(w)
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
-    Mistake("exp_so3_delegates", "exp_so3", "a one-line wrapper around coursekit.lie.Exp", '''
+""",
+        hint="write the exercise with numpy yourself",
+        public_hint="write the exercise with numpy yourself",
+    ),
+    Mistake(
+        "exp_so3_delegates",
+        "exp_so3",
+        "a one-line wrapper around coursekit.lie.Exp",
+        """
 def exp_so3(w):
     from coursekit.lie import Exp
     return Exp(w)
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
-    Mistake("log_so3_delegates", "log_so3", "scipy's Rotation does the work", '''
+""",
+        hint="write the exercise with numpy yourself",
+        public_hint="write the exercise with numpy yourself",
+    ),
+    Mistake(
+        "log_so3_delegates",
+        "log_so3",
+        "scipy's Rotation does the work",
+        """
 def log_so3(R):
     from scipy.spatial.transform import Rotation
     return Rotation.from_matrix(np.asarray(R, dtype=float)).as_rotvec()
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
-    Mistake("axis_from_eigen_complex", "axis_from_eigen", "np.linalg.eig's complex eigenvector returned as it comes "
-            "(dtype complex128, zero imaginary part)", '''
+""",
+        hint="write the exercise with numpy yourself",
+        public_hint="write the exercise with numpy yourself",
+    ),
+    Mistake(
+        "axis_from_eigen_complex",
+        "axis_from_eigen",
+        "np.linalg.eig's complex eigenvector returned as it comes (dtype complex128, zero imaginary part)",
+        """
 def axis_from_eigen(R):
     values, vectors = np.linalg.eig(np.asarray(R, dtype=float))
     u = vectors[:, int(np.argmin(np.abs(values - 1.0)))]
     return u / np.linalg.norm(u)
-''', hint="return np.real(...) of it", public_hint="return np.real(...) of it"),
-    Mistake("quat_conjugate_in_place", "quat_conjugate", "negates the caller's vector part in place", '''
+""",
+        hint="return np.real(...) of it",
+        public_hint="return np.real(...) of it",
+    ),
+    Mistake(
+        "quat_conjugate_in_place",
+        "quat_conjugate",
+        "negates the caller's vector part in place",
+        """
 def quat_conjugate(q):
     q = np.asarray(q, dtype=float)
     q[1:] *= -1
     return q
-''', hint="work on a copy", public_hint="work on a copy"),
-    Mistake("quat_from_axis_angle_normalises_in_place", "quat_from_axis_angle", "normalises the caller's axis in place", '''
+""",
+        hint="work on a copy",
+        public_hint="work on a copy",
+    ),
+    Mistake(
+        "quat_from_axis_angle_normalises_in_place",
+        "quat_from_axis_angle",
+        "normalises the caller's axis in place",
+        """
 def quat_from_axis_angle(u, theta):
     u = np.asarray(u, dtype=float)
     u /= np.linalg.norm(u)
     return np.concatenate([[np.cos(theta / 2)], np.sin(theta / 2) * u])
-''', hint="work on a copy", public_hint="work on a copy"),
-    Mistake("quat_multiply_delegates", "quat_multiply", "a one-line wrapper around coursekit.lie.quat_product", '''
+""",
+        hint="work on a copy",
+        public_hint="work on a copy",
+    ),
+    Mistake(
+        "quat_multiply_delegates",
+        "quat_multiply",
+        "a one-line wrapper around coursekit.lie.quat_product",
+        """
 def quat_multiply(p, q):
     from coursekit.lie import quat_product
     return quat_product(p, q)
-''', hint="write the exercise with numpy yourself", public_hint="write the exercise with numpy yourself"),
-    Mistake("align_gauss_newton_updates_R0", "align_gauss_newton", "iterates in the caller's R0 (np.asarray, then R[...] = ...)", '''
+""",
+        hint="write the exercise with numpy yourself",
+        public_hint="write the exercise with numpy yourself",
+    ),
+    Mistake(
+        "align_gauss_newton_updates_R0",
+        "align_gauss_newton",
+        "iterates in the caller's R0 (np.asarray, then R[...] = ...)",
+        """
 def align_gauss_newton(P, Q, R0, iters=10):
     P = np.asarray(P, dtype=float)
     Q = np.asarray(Q, dtype=float)
@@ -76,5 +135,8 @@ def align_gauss_newton(P, Q, R0, iters=10):
             g += J.T @ (R @ p - q)
         R[...] = R @ Exp(np.linalg.solve(H, -g))
     return R
-''', hint="work on a copy", public_hint="work on a copy"),
+""",
+        hint="work on a copy",
+        public_hint="work on a copy",
+    ),
 ]

@@ -82,8 +82,15 @@ class InProcessSandbox:
     def take_reply(self, lesson: str, name: str, reply: dict, timeout: float) -> object:
         return StudentSandbox.take_reply(self, lesson, name, reply, timeout)
 
-    def call(self, lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, timeout: float | None = None,
-             forbid: tuple = ()) -> object:
+    def call(
+        self,
+        lesson: str,
+        name: str,
+        args: tuple = (),
+        kwargs: dict | None = None,
+        timeout: float | None = None,
+        forbid: tuple = (),
+    ) -> object:
         from autograder.grading.transcripts import call_text
 
         timeout = self.limits.call_timeout if timeout is None else timeout
@@ -170,8 +177,9 @@ def _on_alarm(signum, frame):
     raise _Alarm()
 
 
-def run_public_checks(course: Course, exercise: str, source: str,
-                      sandbox: InProcessSandbox | None = None) -> tuple[bool, str]:
+def run_public_checks(
+    course: Course, exercise: str, source: str, sandbox: InProcessSandbox | None = None
+) -> tuple[bool, str]:
     """``(passed, printed)``: did every public check of ``exercise`` pass for the answer ``source``?
 
     The answer runs as the check cell would see it: after the lesson's setup cell

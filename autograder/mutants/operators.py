@@ -27,7 +27,7 @@ from dataclasses import dataclass
 FAMILIES = {
     "sign": "a flipped sign: a minus dropped or added, + for -",
     "drop_term": "a series term, a summand or a factor left out (first-order or one-term series, no normalisation, "
-                 "no half angle)",
+    "no half angle)",
     "small_constant": "a small constant (a small-angle threshold, a step) moved by decades, 1e-15 and 1e-8 … 1e-1",
     "comparison": "an off-by-one comparison (< for <=, > for >=) or a reversed one",
     "swap_args": "arguments swapped (arctan2(x, y), np.cross(b, a), zip(Q, P)) or the parts of a concatenation",
@@ -61,39 +61,73 @@ DELEGATIONS = {
     "exp_series": "def exp_series(W, n_terms):\n    from scipy.linalg import expm\n    return expm(np.asarray(W, dtype=float))\n",
     "exp_so3": "def exp_so3(w):\n    from coursekit.lie import Exp\n    return Exp(w)\n",
     "log_so3": "def log_so3(R):\n    from coursekit.lie import Log\n    return Log(R)\n",
-    "axis_angle": ("def axis_angle(R):\n    from coursekit.lie import Log\n    w = Log(R)\n"
-                   "    theta = float(np.linalg.norm(w))\n"
-                   "    return (w / theta if theta > 0 else np.array([1.0, 0.0, 0.0])), theta\n"),
+    "axis_angle": (
+        "def axis_angle(R):\n    from coursekit.lie import Log\n    w = Log(R)\n"
+        "    theta = float(np.linalg.norm(w))\n"
+        "    return (w / theta if theta > 0 else np.array([1.0, 0.0, 0.0])), theta\n"
+    ),
     "quat_multiply": "def quat_multiply(p, q):\n    from coursekit.lie import quat_product\n    return quat_product(p, q)\n",
-    "quat_rotate": ("def quat_rotate(q, v):\n    from scipy.spatial.transform import Rotation\n"
-                    "    return Rotation.from_quat(q, scalar_first=True).apply(np.asarray(v, dtype=float))\n"),
-    "quat_from_axis_angle": ("def quat_from_axis_angle(u, theta):\n    from scipy.spatial.transform import Rotation\n"
-                             "    u = np.asarray(u, dtype=float)\n"
-                             "    q = Rotation.from_rotvec(theta * u / np.linalg.norm(u)).as_quat(scalar_first=True)\n"
-                             "    return q if np.cos(theta / 2) * q[0] >= 0 else -q\n"),
-    "quat_to_matrix": ("def quat_to_matrix(q):\n    from scipy.spatial.transform import Rotation\n"
-                       "    return Rotation.from_quat(q, scalar_first=True).as_matrix()\n"),
-    "matrix_to_quat": ("def matrix_to_quat(R):\n    from scipy.spatial.transform import Rotation\n"
-                       "    q = Rotation.from_matrix(R).as_quat(scalar_first=True)\n    return q if q[0] >= 0 else -q\n"),
-    "quat_slerp": ("def quat_slerp(q0, q1, t):\n    from scipy.spatial.transform import Rotation, Slerp\n"
-                   "    q0 = np.asarray(q0, dtype=float)\n"
-                   "    turns = Rotation.from_quat([q0, np.asarray(q1, dtype=float)], scalar_first=True)\n"
-                   "    q = Slerp([0.0, 1.0], turns)([t]).as_quat(scalar_first=True)[0]\n"
-                   "    return q if q @ q0 >= 0 else -q\n"),
-    "euler_zyx_to_matrix": ("def euler_zyx_to_matrix(yaw, pitch, roll):\n    from scipy.spatial.transform import Rotation\n"
-                            "    return Rotation.from_euler('ZYX', [yaw, pitch, roll]).as_matrix()\n"),
-    "matrix_to_euler_zyx": ("def matrix_to_euler_zyx(R):\n    from scipy.spatial.transform import Rotation\n"
-                            "    yaw, pitch, roll = Rotation.from_matrix(R).as_euler('ZYX')\n"
-                            "    return float(yaw), float(pitch), float(roll)\n"),
-    "euler_zyx_to_quat": ("def euler_zyx_to_quat(yaw, pitch, roll):\n    from scipy.spatial.transform import Rotation\n"
-                          "    return Rotation.from_euler('ZYX', [yaw, pitch, roll]).as_quat(scalar_first=True)\n"),
-    "quat_to_euler_zyx": ("def quat_to_euler_zyx(q):\n    from scipy.spatial.transform import Rotation\n"
-                          "    yaw, pitch, roll = Rotation.from_quat(q, scalar_first=True).as_euler('ZYX')\n"
-                          "    return float(yaw), float(pitch), float(roll)\n"),
+    "quat_rotate": (
+        "def quat_rotate(q, v):\n    from scipy.spatial.transform import Rotation\n"
+        "    return Rotation.from_quat(q, scalar_first=True).apply(np.asarray(v, dtype=float))\n"
+    ),
+    "quat_from_axis_angle": (
+        "def quat_from_axis_angle(u, theta):\n    from scipy.spatial.transform import Rotation\n"
+        "    u = np.asarray(u, dtype=float)\n"
+        "    q = Rotation.from_rotvec(theta * u / np.linalg.norm(u)).as_quat(scalar_first=True)\n"
+        "    return q if np.cos(theta / 2) * q[0] >= 0 else -q\n"
+    ),
+    "quat_to_matrix": (
+        "def quat_to_matrix(q):\n    from scipy.spatial.transform import Rotation\n"
+        "    return Rotation.from_quat(q, scalar_first=True).as_matrix()\n"
+    ),
+    "matrix_to_quat": (
+        "def matrix_to_quat(R):\n    from scipy.spatial.transform import Rotation\n"
+        "    q = Rotation.from_matrix(R).as_quat(scalar_first=True)\n    return q if q[0] >= 0 else -q\n"
+    ),
+    "quat_slerp": (
+        "def quat_slerp(q0, q1, t):\n    from scipy.spatial.transform import Rotation, Slerp\n"
+        "    q0 = np.asarray(q0, dtype=float)\n"
+        "    turns = Rotation.from_quat([q0, np.asarray(q1, dtype=float)], scalar_first=True)\n"
+        "    q = Slerp([0.0, 1.0], turns)([t]).as_quat(scalar_first=True)[0]\n"
+        "    return q if q @ q0 >= 0 else -q\n"
+    ),
+    "euler_zyx_to_matrix": (
+        "def euler_zyx_to_matrix(yaw, pitch, roll):\n    from scipy.spatial.transform import Rotation\n"
+        "    return Rotation.from_euler('ZYX', [yaw, pitch, roll]).as_matrix()\n"
+    ),
+    "matrix_to_euler_zyx": (
+        "def matrix_to_euler_zyx(R):\n    from scipy.spatial.transform import Rotation\n"
+        "    yaw, pitch, roll = Rotation.from_matrix(R).as_euler('ZYX')\n"
+        "    return float(yaw), float(pitch), float(roll)\n"
+    ),
+    "euler_zyx_to_quat": (
+        "def euler_zyx_to_quat(yaw, pitch, roll):\n    from scipy.spatial.transform import Rotation\n"
+        "    return Rotation.from_euler('ZYX', [yaw, pitch, roll]).as_quat(scalar_first=True)\n"
+    ),
+    "quat_to_euler_zyx": (
+        "def quat_to_euler_zyx(q):\n    from scipy.spatial.transform import Rotation\n"
+        "    yaw, pitch, roll = Rotation.from_quat(q, scalar_first=True).as_euler('ZYX')\n"
+        "    return float(yaw), float(pitch), float(roll)\n"
+    ),
 }
 
-SYMMETRIC = {"hypot", "maximum", "minimum", "max", "min", "add", "multiply", "allclose", "isclose", "array_equal",
-             "dot", "outer", "full", "isfinite"}
+SYMMETRIC = {
+    "hypot",
+    "maximum",
+    "minimum",
+    "max",
+    "min",
+    "add",
+    "multiply",
+    "allclose",
+    "isclose",
+    "array_equal",
+    "dot",
+    "outer",
+    "full",
+    "isfinite",
+}
 TRIG = {"cos", "sin", "tan"}
 INVERSE_TRIG = {"arctan2", "arccos", "arcsin", "arctan"}
 DECADES = (1e-15, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1)
@@ -115,8 +149,9 @@ def _expr(text):
 
 
 def _np(name, *args, **keywords):
-    return ast.Call(func=_expr(f"np.{name}"), args=list(args),
-                    keywords=[ast.keyword(arg=k, value=v) for k, v in keywords.items()])
+    return ast.Call(
+        func=_expr(f"np.{name}"), args=list(args), keywords=[ast.keyword(arg=k, value=v) for k, v in keywords.items()]
+    )
 
 
 def _call_name(node):
@@ -191,8 +226,12 @@ def _swap_args(node, context):
         new.args[0], new.args[1] = new.args[1], new.args[0]
         if ast.dump(new) != ast.dump(node):
             yield Edit("swap_args", node, new)
-    if name in ("concatenate", "stack", "hstack", "vstack") and node.args and isinstance(node.args[0], ast.List) \
-            and len(node.args[0].elts) == 2:
+    if (
+        name in ("concatenate", "stack", "hstack", "vstack")
+        and node.args
+        and isinstance(node.args[0], ast.List)
+        and len(node.args[0].elts) == 2
+    ):
         new = _copy(node)
         new.args[0].elts.reverse()
         yield Edit("swap_args", node, new)
@@ -225,8 +264,12 @@ def _index(node, context):
     if not isinstance(node, ast.Subscript):
         return
     index = node.slice
-    if isinstance(index, ast.Tuple) and len(index.elts) == 2 and all(_is_number(e) for e in index.elts) \
-            and index.elts[0].value != index.elts[1].value:
+    if (
+        isinstance(index, ast.Tuple)
+        and len(index.elts) == 2
+        and all(_is_number(e) for e in index.elts)
+        and index.elts[0].value != index.elts[1].value
+    ):
         new = _copy(node)
         new.slice.elts.reverse()
         yield Edit("index", node, new)
@@ -265,7 +308,8 @@ def _float32(node, context):
     if name in ARRAY_MAKERS | {"eye", "zeros", "ones", "concatenate", "zeros_like"}:
         new = _copy(node)
         new.keywords = [k for k in new.keywords if k.arg != "dtype"] + [
-            ast.keyword(arg="dtype", value=_expr("np.float32"))]
+            ast.keyword(arg="dtype", value=_expr("np.float32"))
+        ]
         yield Edit("float32", node, new)
 
 
@@ -277,16 +321,24 @@ def _integer_lists(node, context):
 
 
 def _lists(node, context):
-    if _call_name(node) in ARRAY_MAKERS and node.args and isinstance(node.args[0], ast.Name) \
-            and node.args[0].id in context.parameters:
+    if (
+        _call_name(node) in ARRAY_MAKERS
+        and node.args
+        and isinstance(node.args[0], ast.Name)
+        and node.args[0].id in context.parameters
+    ):
         yield Edit("lists", node, _copy(node.args[0]))
 
 
 def _in_place_expression(node, context):
     if _call_name(node).endswith("copy") and isinstance(node.func, ast.Attribute) and not node.args:
         yield Edit("in_place", node, _copy(node.func.value))
-    if _call_name(node) == "array" and node.args and isinstance(node.args[0], ast.Name) \
-            and node.args[0].id in context.parameters:
+    if (
+        _call_name(node) == "array"
+        and node.args
+        and isinstance(node.args[0], ast.Name)
+        and node.args[0].id in context.parameters
+    ):
         new = _copy(node)
         new.func = _expr("np.asarray")
         yield Edit("in_place", node, new)
@@ -300,27 +352,55 @@ def _in_place_statement(statement, context):
     array): x = x OP e → x OP= e; return x OP e → x OP= e; return x; -x[s] → x[s] *= -1 first."""
     if isinstance(statement, ast.Assign) and len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Name):
         value, name = statement.value, statement.targets[0].id
-        if isinstance(value, ast.BinOp) and isinstance(value.op, AUGMENTABLE) and isinstance(value.left, ast.Name) \
-                and value.left.id == name and name in context.parameters:
-            yield Edit("in_place", statement, ast.AugAssign(target=ast.Name(name, ast.Store()), op=type(value.op)(),
-                                                            value=_copy(value.right)))
-    if isinstance(statement, ast.Return) and isinstance(statement.value, ast.BinOp) \
-            and isinstance(statement.value.op, AUGMENTABLE) and isinstance(statement.value.left, ast.Name) \
-            and statement.value.left.id in context.parameters:
+        if (
+            isinstance(value, ast.BinOp)
+            and isinstance(value.op, AUGMENTABLE)
+            and isinstance(value.left, ast.Name)
+            and value.left.id == name
+            and name in context.parameters
+        ):
+            yield Edit(
+                "in_place",
+                statement,
+                ast.AugAssign(target=ast.Name(name, ast.Store()), op=type(value.op)(), value=_copy(value.right)),
+            )
+    if (
+        isinstance(statement, ast.Return)
+        and isinstance(statement.value, ast.BinOp)
+        and isinstance(statement.value.op, AUGMENTABLE)
+        and isinstance(statement.value.left, ast.Name)
+        and statement.value.left.id in context.parameters
+    ):
         name = statement.value.left.id
-        yield Edit("in_place", statement, [
-            ast.AugAssign(target=ast.Name(name, ast.Store()), op=type(statement.value.op)(),
-                          value=_copy(statement.value.right)),
-            ast.Return(value=ast.Name(name, ast.Load()))])
+        yield Edit(
+            "in_place",
+            statement,
+            [
+                ast.AugAssign(
+                    target=ast.Name(name, ast.Store()),
+                    op=type(statement.value.op)(),
+                    value=_copy(statement.value.right),
+                ),
+                ast.Return(value=ast.Name(name, ast.Load())),
+            ],
+        )
     for node in ast.walk(statement):
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) and isinstance(node.operand, ast.Subscript) \
-                and isinstance(node.operand.value, ast.Name) and node.operand.value.id in context.parameters:
+        if (
+            isinstance(node, ast.UnaryOp)
+            and isinstance(node.op, ast.USub)
+            and isinstance(node.operand, ast.Subscript)
+            and isinstance(node.operand.value, ast.Name)
+            and node.operand.value.id in context.parameters
+        ):
             target = _copy(node.operand)
             target.ctx = ast.Store()
             new_statement = _replace(statement, node, _copy(node.operand))
-            yield Edit("in_place", statement, [
-                ast.AugAssign(target=target, op=ast.Mult(), value=ast.Constant(-1)), new_statement],
-                what=f"{ast.unparse(node)} negated in place")
+            yield Edit(
+                "in_place",
+                statement,
+                [ast.AugAssign(target=target, op=ast.Mult(), value=ast.Constant(-1)), new_statement],
+                what=f"{ast.unparse(node)} negated in place",
+            )
 
 
 def _sign_det(node, context):
@@ -360,15 +440,19 @@ def _small_angle(node, context):
 def _range(node, context):
     if _call_name(node) == "range" and len(node.args) == 1:
         n = node.args[0]
-        for variant in (ast.BinOp(_copy(n), ast.Sub(), ast.Constant(1)), ast.BinOp(_copy(n), ast.Add(), ast.Constant(1))):
+        for variant in (
+            ast.BinOp(_copy(n), ast.Sub(), ast.Constant(1)),
+            ast.BinOp(_copy(n), ast.Add(), ast.Constant(1)),
+        ):
             yield Edit("range", node, ast.Call(func=_copy(node.func), args=[variant], keywords=[]))
         yield Edit("range", node, ast.Call(func=_copy(node.func), args=[ast.Constant(1), _copy(n)], keywords=[]))
 
 
 def _init(node, context):
     if _call_name(node) == "zeros_like" and node.args:
-        yield Edit("init", node, ast.Call(func=ast.Attribute(_copy(node.args[0]), "copy", ast.Load()), args=[],
-                                          keywords=[]))
+        yield Edit(
+            "init", node, ast.Call(func=ast.Attribute(_copy(node.args[0]), "copy", ast.Load()), args=[], keywords=[])
+        )
 
 
 def _name_swap(node, context):
@@ -379,30 +463,66 @@ def _name_swap(node, context):
 
 
 def _nan_blind(node, context):
-    if isinstance(node, ast.Compare) and len(node.ops) == 1 and isinstance(node.ops[0], (ast.LtE, ast.Lt)) \
-            and any(isinstance(n, ast.Name) and n.id == "tol" for n in ast.walk(node.comparators[0])):
-        flipped = ast.Compare(left=_copy(node.left), ops=[ast.Gt() if isinstance(node.ops[0], ast.LtE) else ast.GtE()],
-                              comparators=[_copy(node.comparators[0])])
+    if (
+        isinstance(node, ast.Compare)
+        and len(node.ops) == 1
+        and isinstance(node.ops[0], (ast.LtE, ast.Lt))
+        and any(isinstance(n, ast.Name) and n.id == "tol" for n in ast.walk(node.comparators[0]))
+    ):
+        flipped = ast.Compare(
+            left=_copy(node.left),
+            ops=[ast.Gt() if isinstance(node.ops[0], ast.LtE) else ast.GtE()],
+            comparators=[_copy(node.comparators[0])],
+        )
         yield Edit("nan_blind", node, ast.UnaryOp(ast.Not(), flipped))
 
 
 def _relative_tolerance(node, context):
-    if _call_name(node) == "abs" and len(node.args) == 1 and isinstance(node.args[0], ast.BinOp) \
-            and isinstance(node.args[0].op, ast.Sub):
+    if (
+        _call_name(node) == "abs"
+        and len(node.args) == 1
+        and isinstance(node.args[0], ast.BinOp)
+        and isinstance(node.args[0].op, ast.Sub)
+    ):
         rtol = ast.BinOp(ast.Constant(1e-05), ast.Mult(), _np("abs", _copy(node.args[0].right)))
         yield Edit("relative_tolerance", node, ast.BinOp(_copy(node), ast.Sub(), rtol))
 
 
 def _unwrap(node, context):
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in context.helpers \
-            and len(node.args) == 1:
+    if (
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Name)
+        and node.func.id in context.helpers
+        and len(node.args) == 1
+    ):
         yield Edit("unwrap", node, _copy(node.args[0]))
 
 
-EXPRESSION_OPERATORS = (_sign, _drop_term, _small_constant, _comparison, _swap_args, _matmul, _index, _degrees,
-                        _float32, _integer_lists, _lists, _in_place_expression, _sign_det, _abs_real, _branch,
-                        _clip_removed, _small_angle, _range, _init, _name_swap, _nan_blind, _relative_tolerance,
-                        _unwrap)
+EXPRESSION_OPERATORS = (
+    _sign,
+    _drop_term,
+    _small_constant,
+    _comparison,
+    _swap_args,
+    _matmul,
+    _index,
+    _degrees,
+    _float32,
+    _integer_lists,
+    _lists,
+    _in_place_expression,
+    _sign_det,
+    _abs_real,
+    _branch,
+    _clip_removed,
+    _small_angle,
+    _range,
+    _init,
+    _name_swap,
+    _nan_blind,
+    _relative_tolerance,
+    _unwrap,
+)
 
 
 # ---------------------------------------------------------------- statement operators
@@ -417,10 +537,18 @@ def _early_returns(function, context):
     first = 1 if body and _docstring(body[0]) else 0
     for position, statement in enumerate(body[:-1]):
         rest = body[position:-1]
-        if position > first and needed <= known and not all(_is_conversion(s, context) for s in rest) \
-                and not isinstance(statement, (ast.FunctionDef, ast.Expr)):
-            yield Edit("early_return", statement, [_copy(last), _copy(statement)],
-                       what=f"return before `{ast.unparse(statement).splitlines()[0]}`")
+        if (
+            position > first
+            and needed <= known
+            and not all(_is_conversion(s, context) for s in rest)
+            and not isinstance(statement, (ast.FunctionDef, ast.Expr))
+        ):
+            yield Edit(
+                "early_return",
+                statement,
+                [_copy(last), _copy(statement)],
+                what=f"return before `{ast.unparse(statement).splitlines()[0]}`",
+            )
         for node in ast.walk(statement):
             if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
                 known.add(node.id)
@@ -428,9 +556,13 @@ def _early_returns(function, context):
 
 def _is_conversion(statement, context):
     """``x = np.asarray(x, ...)`` for a parameter x: skipping it is the ``lists`` family, not an early return."""
-    return (isinstance(statement, ast.Assign) and len(statement.targets) == 1
-            and isinstance(statement.targets[0], ast.Name) and statement.targets[0].id in context.parameters
-            and _call_name(statement.value) in ARRAY_MAKERS)
+    return (
+        isinstance(statement, ast.Assign)
+        and len(statement.targets) == 1
+        and isinstance(statement.targets[0], ast.Name)
+        and statement.targets[0].id in context.parameters
+        and _call_name(statement.value) in ARRAY_MAKERS
+    )
 
 
 def _nlerp(statement, context):
@@ -470,8 +602,7 @@ def _replace_many(tree, pairs):
 
 
 def _docstring(node):
-    return (isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant)
-            and isinstance(node.value.value, str))
+    return isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str)
 
 
 def edits(tree: ast.Module, exercise: str, known_globals: tuple[str, ...] = ("np",)) -> list[Edit]:
@@ -481,9 +612,11 @@ def edits(tree: ast.Module, exercise: str, known_globals: tuple[str, ...] = ("np
     if main is None:
         return []
     nested = [f for f in ast.walk(main) if isinstance(f, ast.FunctionDef) and f is not main]
-    context = Context(parameters=tuple(a.arg for a in main.args.args),
-                      helpers={f.name for f in nested if len(f.args.args) == 1},
-                      globals=set(known_globals) | {f.name for f in nested})
+    context = Context(
+        parameters=tuple(a.arg for a in main.args.args),
+        helpers={f.name for f in nested if len(f.args.args) == 1},
+        globals=set(known_globals) | {f.name for f in nested},
+    )
     found = []
     for statement in main.body:
         if _docstring(statement):

@@ -61,12 +61,29 @@ def grade_mutant(course: Course, mutant: Mutant) -> Outcome:
         hidden = grade_hidden(course, mutant.exercise, mutant.source, sandbox)
         public_passed, printed = run_public_checks(course, mutant.exercise, mutant.source, sandbox)
     except Exception as error:  # noqa: BLE001 (one mutant's trouble is reported, the run goes on)
-        return Outcome(mutant.key, mutant.exercise, mutant.family, mutant.description, False, False,
-                       error=f"{type(error).__name__}: {error}")
+        return Outcome(
+            mutant.key,
+            mutant.exercise,
+            mutant.family,
+            mutant.description,
+            False,
+            False,
+            error=f"{type(error).__name__}: {error}",
+        )
     lines = [line.strip() for line in printed.splitlines() if line.strip().startswith(("✗", "hint:"))]
-    return Outcome(mutant.key, mutant.exercise, mutant.family, mutant.description, hidden.killed, not public_passed,
-                   hidden.points, hidden.max_points, [(reason, hint) for _, reason, hint in hidden.failed], lines,
-                   hidden.elsewhere)
+    return Outcome(
+        mutant.key,
+        mutant.exercise,
+        mutant.family,
+        mutant.description,
+        hidden.killed,
+        not public_passed,
+        hidden.points,
+        hidden.max_points,
+        [(reason, hint) for _, reason, hint in hidden.failed],
+        lines,
+        hidden.elsewhere,
+    )
 
 
 def _preload(course):
@@ -83,8 +100,9 @@ def _preload(course):
     import coursekit.checks  # noqa: F401  (importing registers every lesson's checks)
 
 
-def grade_all(course: Course, mutants: list[Mutant], jobs: int | None = None,
-              progress: Callable[[int, int], None] | None = None) -> list[Outcome]:
+def grade_all(
+    course: Course, mutants: list[Mutant], jobs: int | None = None, progress: Callable[[int, int], None] | None = None
+) -> list[Outcome]:
     """Outcomes of ``mutants``, in their order; ``jobs`` forked processes (default: the cores, at most 2)."""
     _preload(course)
     jobs = jobs or min(2, os.cpu_count() or 1)
@@ -153,13 +171,30 @@ def table(outcomes: list[Outcome], exercises: list[str]) -> tuple[list[Row], Row
 
 def format_table(rows: list[Row], total: Row, markdown: bool = False) -> str:
     """The table as text (or as a Markdown table for the README)."""
-    header = ["exercise", "mutants", "equivalent", "killed by hidden", "killed by public", "survivors",
-              "hidden kill rate", "public / hidden", "targets"]
+    header = [
+        "exercise",
+        "mutants",
+        "equivalent",
+        "killed by hidden",
+        "killed by public",
+        "survivors",
+        "hidden kill rate",
+        "public / hidden",
+        "targets",
+    ]
     lines = []
     for row in rows + [total]:
-        cells = [row.exercise, str(row.mutants), str(row.equivalent), str(row.hidden),
-                 str(row.public) + (f" (+{row.public_only})" if row.public_only else ""), str(len(row.survivors)),
-                 f"{100 * row.hidden_rate:.1f}%", f"{100 * row.public_rate:.1f}%", "met" if row.meets else "MISSED"]
+        cells = [
+            row.exercise,
+            str(row.mutants),
+            str(row.equivalent),
+            str(row.hidden),
+            str(row.public) + (f" (+{row.public_only})" if row.public_only else ""),
+            str(len(row.survivors)),
+            f"{100 * row.hidden_rate:.1f}%",
+            f"{100 * row.public_rate:.1f}%",
+            "met" if row.meets else "MISSED",
+        ]
         lines.append(cells)
     if markdown:
         out = ["| " + " | ".join(header) + " |", "|" + " --- |" * len(header)]
@@ -177,41 +212,59 @@ def stale_equivalents(mutants: list[Mutant]) -> list[str]:
     return sorted(key for key in EQUIVALENT if key not in keys)
 
 
-def main(course: Course, exercises: list[str] | None = None, lessons: list[str] | None = None, jobs: int | None = None,
-         markdown: bool = False, show_survivors: bool = True, out: Callable[[str], None] = print,
-         save: str | None = None) -> int:
+def main(
+    course: Course,
+    exercises: list[str] | None = None,
+    lessons: list[str] | None = None,
+    jobs: int | None = None,
+    markdown: bool = False,
+    show_survivors: bool = True,
+    out: Callable[[str], None] = print,
+    save: str | None = None,
+) -> int:
     """Generate, grade and report; return 0 when every exercise meets both targets, else 1.
 
     ``save``: a path to write every outcome to, as JSON (for reading survivors and hints at leisure).
     """
     started = time.monotonic()
     mutants = all_mutants(course, exercises, lessons)
-    names = [e.name for e in course.catalog.exercises
-             if (not exercises or e.name in exercises) and (not lessons or e.lesson in lessons)]
-    out(f"{len(mutants)} mutants of {len(names)} exercises, graded by the hidden suite and the public checks "
-        f"({jobs or min(2, os.cpu_count() or 1)} processes)")
+    names = [
+        e.name
+        for e in course.catalog.exercises
+        if (not exercises or e.name in exercises) and (not lessons or e.lesson in lessons)
+    ]
+    out(
+        f"{len(mutants)} mutants of {len(names)} exercises, graded by the hidden suite and the public checks "
+        f"({jobs or min(2, os.cpu_count() or 1)} processes)"
+    )
     outcomes = grade_all(course, mutants, jobs)
     if save:
         import dataclasses
         import json
         from pathlib import Path
 
-        Path(save).write_text(json.dumps([dict(dataclasses.asdict(o), source=m.source)
-                                          for o, m in zip(outcomes, mutants)], indent=1), encoding="utf-8")
+        Path(save).write_text(
+            json.dumps([dict(dataclasses.asdict(o), source=m.source) for o, m in zip(outcomes, mutants)], indent=1),
+            encoding="utf-8",
+        )
     rows, total = table(outcomes, names)
     out(format_table(rows, total, markdown))
     if show_survivors and total.survivors:
         out("\nSurvivors (non-equivalent mutants that keep full hidden marks):")
         for outcome in total.survivors:
             public = "killed by public" if outcome.public_killed else "passes public"
-            out(f"  {outcome.key}  [{outcome.family}] {outcome.description}  ({public})"
-                + (f"  grading failed: {outcome.error}" if outcome.error else ""))
+            out(
+                f"  {outcome.key}  [{outcome.family}] {outcome.description}  ({public})"
+                + (f"  grading failed: {outcome.error}" if outcome.error else "")
+            )
     wrongly = [o for o in outcomes if o.equivalent and (o.hidden_killed or o.public_killed)]
     if wrongly:
         out("\nListed as equivalent (correct answers) but losing points or failing a public check:")
         for outcome in wrongly:
-            out(f"  {outcome.key}  [{outcome.family}] {outcome.description}  "
-                f"(hidden {outcome.points:g}/{outcome.max_points:g}, public {'✗' if outcome.public_killed else '✓'})")
+            out(
+                f"  {outcome.key}  [{outcome.family}] {outcome.description}  "
+                f"(hidden {outcome.points:g}/{outcome.max_points:g}, public {'✗' if outcome.public_killed else '✓'})"
+            )
     spilled = [o for o in outcomes if o.elsewhere]
     for outcome in spilled:
         out(f"  {outcome.key} also cost points on {', '.join(outcome.elsewhere)}")

@@ -26,12 +26,30 @@ from dataclasses import dataclass
 from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 
 KINDS = {
-    "tampering": ("does not match the request", "forged", "return numbers, numpy arrays",
-                  "the check cell was edited", "the check cell was removed"),
-    "timeout": ("did not return within", "did not finish within", "time budget", "took longer than",
-                "did not finish in time"),
-    "crash": ("crashed", "was killed", "exited with status", "segmentation fault", "used up its CPU time",
-              "kernel had stopped", "killed by", "ended without a result"),
+    "tampering": (
+        "does not match the request",
+        "forged",
+        "return numbers, numpy arrays",
+        "the check cell was edited",
+        "the check cell was removed",
+    ),
+    "timeout": (
+        "did not return within",
+        "did not finish within",
+        "time budget",
+        "took longer than",
+        "did not finish in time",
+    ),
+    "crash": (
+        "crashed",
+        "was killed",
+        "exited with status",
+        "segmentation fault",
+        "used up its CPU time",
+        "kernel had stopped",
+        "killed by",
+        "ended without a result",
+    ),
 }
 MOST = 0.5  # a stage that failed for more than this share of the students who reached it
 
@@ -94,8 +112,12 @@ def stage_warnings(results: list[StudentResult]) -> list[StageWarning]:
     failed = [r for r in graded if r.status == COULD_NOT_GRADE]
     if len(graded) >= 2 and len(failed) > MOST * len(graded):
         reasons = Counter(r.reason for r in failed).most_common(1)[0][0]
-        warnings.append(StageWarning(f"{len(failed)} of {len(graded)} students could not be graded at all "
-                                     f"(most often: {reasons}): check the grading machine before trusting this run."))
+        warnings.append(
+            StageWarning(
+                f"{len(failed)} of {len(graded)} students could not be graded at all "
+                f"(most often: {reasons}): check the grading machine before trusting this run."
+            )
+        )
     reached, setup_failed, notebook_failed = Counter(), Counter(), Counter()
     eligible = Counter()
     for result in graded:
@@ -112,11 +134,17 @@ def stage_warnings(results: list[StudentResult]) -> list[StageWarning]:
                     notebook_failed[lesson.number] += 1
     for number in sorted(reached):
         if reached[number] >= 2 and setup_failed[number] > MOST * reached[number]:
-            warnings.append(StageWarning(
-                f"lesson {number}: the lesson's setup cell failed in the sandbox for {setup_failed[number]} of "
-                f"{reached[number]} students: a grader or environment problem, not the students'."))
+            warnings.append(
+                StageWarning(
+                    f"lesson {number}: the lesson's setup cell failed in the sandbox for {setup_failed[number]} of "
+                    f"{reached[number]} students: a grader or environment problem, not the students'."
+                )
+            )
         if eligible[number] >= 2 and notebook_failed[number] > MOST * eligible[number]:
-            warnings.append(StageWarning(
-                f"lesson {number}: the notebook stage failed for {notebook_failed[number]} of {eligible[number]} "
-                "students who had full hidden marks: look at their feedback pages before trusting these points."))
+            warnings.append(
+                StageWarning(
+                    f"lesson {number}: the notebook stage failed for {notebook_failed[number]} of {eligible[number]} "
+                    "students who had full hidden marks: look at their feedback pages before trusting these points."
+                )
+            )
     return warnings

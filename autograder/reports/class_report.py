@@ -85,8 +85,9 @@ def exercise_summary(graded: list[StudentResult], catalog: Catalog) -> list[tupl
     one reason, counted once in the last item instead."""
     rows = []
     for exercise in catalog.exercises:
-        entries = [(e, lesson) for r in graded for lesson in r.lessons for e in lesson.exercises
-                   if e.name == exercise.name]
+        entries = [
+            (e, lesson) for r in graded for lesson in r.lessons for e in lesson.exercises if e.name == exercise.name
+        ]
         if not entries:
             continue
         full = sum(1 for e, _ in entries if e.points >= e.max_points) / len(entries)
@@ -115,18 +116,23 @@ def _kind(reason):
     """A failure reason without its numbers, so similar failures group together."""
     for marker in ("is not written yet", "did not return within", "raised", "returned shape", "returned None"):
         if marker in reason:
-            return reason[reason.index(marker):].split(":")[0].split("(")[0].strip()
+            return reason[reason.index(marker) :].split(":")[0].split("(")[0].strip()
     return ""
 
 
 def _worth_a_look_html(concerns):
     if not concerns:
         return "<h2>Worth a look</h2><p class='muted'>No attempted tampering, timeout or crash in this run.</p>"
-    rows = "".join(f"<tr><td><code>{escape(c.student_id)}</code></td><td>{escape(c.kind)}</td>"
-                   f'<td class="num">{c.count}</td><td>{escape(c.example)}</td></tr>' for c in concerns)
-    return ("<h2>Worth a look</h2><p>Attempted tampering, timeouts and crashes: each cost only its own "
-            "points, but deserves a look at the student's feedback page.</p><table><tr><th>student</th>"
-            f'<th>what</th><th class="num">times</th><th>for example</th></tr>{rows}</table>')
+    rows = "".join(
+        f"<tr><td><code>{escape(c.student_id)}</code></td><td>{escape(c.kind)}</td>"
+        f'<td class="num">{c.count}</td><td>{escape(c.example)}</td></tr>'
+        for c in concerns
+    )
+    return (
+        "<h2>Worth a look</h2><p>Attempted tampering, timeouts and crashes: each cost only its own "
+        "points, but deserves a look at the student's feedback page.</p><table><tr><th>student</th>"
+        f'<th>what</th><th class="num">times</th><th>for example</th></tr>{rows}</table>'
+    )
 
 
 def _skipped_html(skipped, results, shown=200):
@@ -141,21 +147,32 @@ def _skipped_html(skipped, results, shown=200):
         more = f"<li>and {len(skipped) - shown} more</li>" if len(skipped) > shown else ""
         parts.append(f"<p>In the submissions folder, not graded as students:</p><ul>{rows}{more}</ul>")
     if inside:
-        rows = "".join(f"<li><code>{escape(student, 300)}</code>: " + "; ".join(escape(line, 300) for line in lines[:5])
-                       + (f"; and {len(lines) - 5} more (see the feedback page)" if len(lines) > 5 else "") + "</li>"
-                       for student, lines in inside[:shown])
+        rows = "".join(
+            f"<li><code>{escape(student, 300)}</code>: "
+            + "; ".join(escape(line, 300) for line in lines[:5])
+            + (f"; and {len(lines) - 5} more (see the feedback page)" if len(lines) > 5 else "")
+            + "</li>"
+            for student, lines in inside[:shown]
+        )
         parts.append(f"<p>Inside students' folders, not read (hidden, links, too deep):</p><ul>{rows}</ul>")
     return "\n".join(parts)
 
 
 def _not_attempted(apart):
-    parts = ([f"{apart['stub']} left as the stub"] if apart["stub"] else []) + \
-            ([f"{apart['no notebook']} without a readable notebook"] if apart["no notebook"] else [])
+    parts = ([f"{apart['stub']} left as the stub"] if apart["stub"] else []) + (
+        [f"{apart['no notebook']} without a readable notebook"] if apart["no notebook"] else []
+    )
     return ", ".join(parts) or '<span class="muted">none</span>'
 
 
-def class_report_html(results: list[StudentResult], catalog: Catalog, title: str = "Class report", skipped: tuple = (),
-                      linked: frozenset = frozenset(), extra_sections: tuple = ()) -> str:
+def class_report_html(
+    results: list[StudentResult],
+    catalog: Catalog,
+    title: str = "Class report",
+    skipped: tuple = (),
+    linked: frozenset = frozenset(),
+    extra_sections: tuple = (),
+) -> str:
     """The report page for a list of StudentResult; ``skipped``: entries of the submissions folder that
     are not students (:class:`~autograder.grading.submissions.Skipped`); ``linked``: the students whose
     feedback page exists (``feedback/<id>.html`` beside the report), linked from the students' table;
@@ -164,50 +181,66 @@ def class_report_html(results: list[StudentResult], catalog: Catalog, title: str
     graded = [r for r in results if r.status not in (MISSING, COULD_NOT_GRADE)]
     missing = [r for r in results if r.status == MISSING]
     failed = [r for r in results if r.status == COULD_NOT_GRADE]
-    parts = [f"<h1>{escape(title)}</h1>",
-             f'<p>{len(results)} student{"" if len(results) == 1 else "s"}: {len(graded)} graded, '
-             f'{len(failed)} could not be graded, {len(missing)} missing.</p>']
+    parts = [
+        f"<h1>{escape(title)}</h1>",
+        f"<p>{len(results)} student{'' if len(results) == 1 else 's'}: {len(graded)} graded, "
+        f"{len(failed)} could not be graded, {len(missing)} missing.</p>",
+    ]
     limited = [r for r in results if r.isolation == "limits"]
     if limited:
-        parts.append(f'<p class="warning"><strong>{len(limited)} of {len(results)} students were graded with '
-                     f'resource limits only.</strong> {escape(LIMITS_ONLY_WARNING)}</p>')
-    parts += [f'<p class="warning"><strong>Check the grader:</strong> {escape(w.text)}</p>'
-              for w in stage_warnings(results)]
+        parts.append(
+            f'<p class="warning"><strong>{len(limited)} of {len(results)} students were graded with '
+            f"resource limits only.</strong> {escape(LIMITS_ONLY_WARNING)}</p>"
+        )
+    parts += [
+        f'<p class="warning"><strong>Check the grader:</strong> {escape(w.text)}</p>' for w in stage_warnings(results)
+    ]
     copied = copied_times_warning(results)
     if copied:
         parts.append(f'<p class="warning"><strong>Warning:</strong> {escape(copied)}</p>')
     due = due_dates(results)
     if due:
-        parts.append(f"<p>Due: {escape(due)}. Late: {sum(1 for r in results if late_summary(r))} of "
-                     f"{len(results)} students.</p>")
+        parts.append(
+            f"<p>Due: {escape(due)}. Late: {sum(1 for r in results if late_summary(r))} of {len(results)} students.</p>"
+        )
     parts.append(_worth_a_look_html(worth_a_look(results)))
     parts.append(students_table_html(results, linked))
     if graded:
         percentages = [100 * r.score / r.max_score if r.max_score else 0.0 for r in graded]
         mean = sum(percentages) / len(percentages)
         ordered = sorted(percentages)
-        median = ordered[len(ordered) // 2] if len(ordered) % 2 else \
-            (ordered[len(ordered) // 2 - 1] + ordered[len(ordered) // 2]) / 2
+        median = (
+            ordered[len(ordered) // 2]
+            if len(ordered) % 2
+            else (ordered[len(ordered) // 2 - 1] + ordered[len(ordered) // 2]) / 2
+        )
         parts.append(f"<p>Mean score {mean:.0f}%, median {median:.0f}%.</p>")
         parts.append(f'<img alt="score distribution" src="data:image/png;base64,{score_histogram(percentages)}">')
         summary = exercise_summary(graded, catalog)
         if summary:
-            parts.append(f'<img alt="pass rate per exercise" src="data:image/png;base64,'
-                         f'{pass_rate_chart([e.name for e, *_ in summary], [s for _, s, *_ in summary])}">')
-            parts.append("<h2>Exercises</h2><table><tr><th>lesson</th><th>exercise</th>"
-                         '<th class="num">full marks</th><th class="num">mean</th>'
-                         "<th>most common failed checks (students)</th><th>not attempted (students)</th></tr>")
+            parts.append(
+                f'<img alt="pass rate per exercise" src="data:image/png;base64,'
+                f'{pass_rate_chart([e.name for e, *_ in summary], [s for _, s, *_ in summary])}">'
+            )
+            parts.append(
+                "<h2>Exercises</h2><table><tr><th>lesson</th><th>exercise</th>"
+                '<th class="num">full marks</th><th class="num">mean</th>'
+                "<th>most common failed checks (students)</th><th>not attempted (students)</th></tr>"
+            )
             for exercise, share, mean_points, common, apart in summary:
                 reasons = "".join(
                     f"<li>{escape(description)} <span class='muted'>({count})"
-                    + (f" — {escape(hint)}" if hint else "") + "</span></li>"
-                    for count, description, hint in common)
+                    + (f" — {escape(hint)}" if hint else "")
+                    + "</span></li>"
+                    for count, description, hint in common
+                )
                 parts.append(
                     f"<tr><td>{escape(exercise.lesson)}</td><td><code>{escape(exercise.name)}</code></td>"
                     f'<td class="num"><span class="bar" style="width:{40 * share:.0f}px"></span> '
                     f"{100 * share:.0f}%</td>"
                     f'<td class="num">{mean_points:.2f} / {exercise.points:g}</td>'
-                    f"<td><ol>{reasons}</ol></td><td>{_not_attempted(apart)}</td></tr>")
+                    f"<td><ol>{reasons}</ol></td><td>{_not_attempted(apart)}</td></tr>"
+                )
             parts.append("</table>")
         runs = {}  # lesson -> statuses of its notebook runs ("passed", "failed", "skipped")
         for r in graded:
@@ -215,25 +248,34 @@ def class_report_html(results: list[StudentResult], catalog: Catalog, title: str
                 if lesson.run is not None:
                     runs.setdefault(lesson.number, []).append(lesson.run.status)
         if runs:
-            parts.append("<h2>Notebook stage (nbval)</h2>"
-                         '<p class="muted">nbval runs only the notebooks whose lesson has full marks on the '
-                         "hidden checks: the point needs them, so the others are not run.</p>"
-                         '<table><tr><th>lesson</th><th class="num">ran and reproduced the reference</th>'
-                         '<th class="num">ran</th><th class="num">not run (hidden points lost)</th></tr>')
+            parts.append(
+                "<h2>Notebook stage (nbval)</h2>"
+                '<p class="muted">nbval runs only the notebooks whose lesson has full marks on the '
+                "hidden checks: the point needs them, so the others are not run.</p>"
+                '<table><tr><th>lesson</th><th class="num">ran and reproduced the reference</th>'
+                '<th class="num">ran</th><th class="num">not run (hidden points lost)</th></tr>'
+            )
             for number, statuses in sorted(runs.items()):
                 ran = [s for s in statuses if s != "skipped"]
-                parts.append(f'<tr><td>{escape(number)}</td><td class="num">'
-                             f'{ran.count("passed")} / {len(ran)}</td><td class="num">{len(ran)}</td>'
-                             f'<td class="num">{len(statuses) - len(ran)}</td></tr>')
+                parts.append(
+                    f'<tr><td>{escape(number)}</td><td class="num">'
+                    f'{ran.count("passed")} / {len(ran)}</td><td class="num">{len(ran)}</td>'
+                    f'<td class="num">{len(statuses) - len(ran)}</td></tr>'
+                )
             parts.append("</table>")
     if failed or missing:
         parts.append("<h2>Not graded</h2><ul>")
         for r in failed + missing:
-            parts.append(f"<li><code>{escape(r.student_id)}</code>: {escape(r.status)}"
-                         + (f" — {escape(r.reason)}" if r.reason else "") + "</li>")
+            parts.append(
+                f"<li><code>{escape(r.student_id)}</code>: {escape(r.status)}"
+                + (f" — {escape(r.reason)}" if r.reason else "")
+                + "</li>"
+            )
         parts.append("</ul>")
     parts += [section for section in extra_sections if section]
     parts.append(_skipped_html(list(skipped), results))
     body = "\n".join(parts)
-    return (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{escape(title)}</title>'
-            f"<style>{STYLE}{TABLE_STYLE}</style></head><body>{body}</body></html>\n")
+    return (
+        f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{escape(title)}</title>'
+        f"<style>{STYLE}{TABLE_STYLE}</style></head><body>{body}</body></html>\n"
+    )

@@ -48,8 +48,14 @@ document.querySelectorAll("table.sortable").forEach(function (table) {
 });
 """
 
-COLUMNS = (("student", "text"), ("score", "number"), ("%", "number"), ("status", "text"),
-           ("late (penalty)", "text"), ("not handed in or unreadable", "text"))
+COLUMNS = (
+    ("student", "text"),
+    ("score", "number"),
+    ("%", "number"),
+    ("status", "text"),
+    ("late (penalty)", "text"),
+    ("not handed in or unreadable", "text"),
+)
 
 
 def feedback_link(student_id: str) -> str:
@@ -60,8 +66,11 @@ def feedback_link(student_id: str) -> str:
 def _absent(result):
     if result.status == MISSING:
         return "everything"
-    return ", ".join(lesson.number + ("" if lesson.status == "missing" else " (unreadable)")
-                     for lesson in result.lessons if lesson.status != "graded")
+    return ", ".join(
+        lesson.number + ("" if lesson.status == "missing" else " (unreadable)")
+        for lesson in result.lessons
+        if lesson.status != "graded"
+    )
 
 
 def _cell(text, sort, number=False):
@@ -71,8 +80,11 @@ def _cell(text, sort, number=False):
 
 def students_table_html(results: list[StudentResult], linked: frozenset = frozenset()) -> str:
     """The sortable table of students; ``linked``: the ids that have a feedback page to link."""
-    heads = "".join(f'<th scope="col"><button type="button" data-type="{kind}">{escape(name)}<span '
-                    'aria-hidden="true"></span></button></th>' for name, kind in COLUMNS)
+    heads = "".join(
+        f'<th scope="col"><button type="button" data-type="{kind}">{escape(name)}<span '
+        'aria-hidden="true"></span></button></th>'
+        for name, kind in COLUMNS
+    )
     rows = []
     for result in sorted(results, key=lambda r: r.student_id):
         shown = f"<code>{escape(result.student_id, 300)}</code>"
@@ -82,13 +94,19 @@ def students_table_html(results: list[StudentResult], linked: frozenset = frozen
         score = f"{result.score:g} / {result.max_score:g}" if result.max_score else "—"
         late, absent = late_summary(result), _absent(result)
         status = result.status + (f" — {result.reason}" if result.reason else "")
-        rows.append("<tr>" + _cell(shown, result.student_id.lower())
-                    + _cell(score, result.score if result.max_score else -1, number=True)
-                    + _cell(f"{share:.0f}%" if share >= 0 else "—", share, number=True)
-                    + _cell(escape(status, 300), result.status)
-                    + _cell(escape(late) or '<span class="muted">none</span>', late)
-                    + _cell(escape(absent) or '<span class="muted">none</span>', absent) + "</tr>")
-    return ('<h2 id="students">Students</h2><table class="sortable"><caption class="muted">Sorted by student; '
-            "press a column's heading to sort by it (again to reverse). Each name opens the student's feedback "
-            f"page.</caption><thead><tr>{heads}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
-            f"<script>{SCRIPT}</script>")
+        rows.append(
+            "<tr>"
+            + _cell(shown, result.student_id.lower())
+            + _cell(score, result.score if result.max_score else -1, number=True)
+            + _cell(f"{share:.0f}%" if share >= 0 else "—", share, number=True)
+            + _cell(escape(status, 300), result.status)
+            + _cell(escape(late) or '<span class="muted">none</span>', late)
+            + _cell(escape(absent) or '<span class="muted">none</span>', absent)
+            + "</tr>"
+        )
+    return (
+        '<h2 id="students">Students</h2><table class="sortable"><caption class="muted">Sorted by student; '
+        "press a column's heading to sort by it (again to reverse). Each name opens the student's feedback "
+        f"page.</caption><thead><tr>{heads}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
+        f"<script>{SCRIPT}</script>"
+    )

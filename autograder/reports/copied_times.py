@@ -75,7 +75,9 @@ def copied_times_warning(results: list[StudentResult]) -> str:
     signs = copy_signs(results)
     if not signs:
         return ""
-    return ("late penalties may be wrong. Without timestamp.txt, a lesson's hand-in time is its notebook's "
-            "modification time, and these look like a copy (" + "; ".join(signs) + "): copying or downloading a "
-            f"class resets them. Grade again with {OPTION} to take no lateness from file times, or keep the "
-            "original times (cp -p, rsync -t, nbgrader's timestamp.txt).")
+    return (
+        "late penalties may be wrong. Without timestamp.txt, a lesson's hand-in time is its notebook's "
+        "modification time, and these look like a copy (" + "; ".join(signs) + "): copying or downloading a "
+        f"class resets them. Grade again with {OPTION} to take no lateness from file times, or keep the "
+        "original times (cp -p, rsync -t, nbgrader's timestamp.txt)."
+    )

@@ -59,19 +59,26 @@ def _names(names):
 
 def _exercise_html(exercise):
     klass = _css_class(exercise.points, exercise.max_points)
-    parts = [f'<h3 id="{_e(exercise.name)}"><code>{_e(exercise.name)}</code> '
-             f'<span class="{klass}">{_points(exercise.points, exercise.max_points)}</span></h3>']
+    parts = [
+        f'<h3 id="{_e(exercise.name)}"><code>{_e(exercise.name)}</code> '
+        f'<span class="{klass}">{_points(exercise.points, exercise.max_points)}</span></h3>'
+    ]
     for note in exercise.notes:
         parts.append(f'<p class="note">{_e(note)}</p>')
     failed = [c for c in exercise.checks if not c.passed]
     passed = [c for c in exercise.checks if c.passed]
     stubs = unwritten_functions(exercise)
     if stubs:
-        needs = ("" if stubs == [exercise.name] else
-                 f" (it needs {_names(stubs)}, which {'is' if len(stubs) == 1 else 'are'} not written yet)")
-        parts.append(f'<p><span class="bad">✗</span> Not written yet{_e(needs)}: '
-                     f"{_plural(len(failed), 'check')} could not run. Write {_names(stubs)}, "
-                     "then run the check cell under it in your notebook.</p>")
+        needs = (
+            ""
+            if stubs == [exercise.name]
+            else f" (it needs {_names(stubs)}, which {'is' if len(stubs) == 1 else 'are'} not written yet)"
+        )
+        parts.append(
+            f'<p><span class="bad">✗</span> Not written yet{_e(needs)}: '
+            f"{_plural(len(failed), 'check')} could not run. Write {_names(stubs)}, "
+            "then run the check cell under it in your notebook.</p>"
+        )
         failed = []
     if failed:
         items = []
@@ -91,41 +98,58 @@ def _exercise_html(exercise):
         parts.append('<p class="muted">No checks ran for this exercise.</p>')
     printed = "".join(dict.fromkeys(c.printed for c in exercise.checks if c.printed))
     if printed:
-        parts.append("<details><summary>what your code printed while being checked</summary>"
-                     f"<pre>{_e(printed[:4000])}</pre></details>")
+        parts.append(
+            "<details><summary>what your code printed while being checked</summary>"
+            f"<pre>{_e(printed[:4000])}</pre></details>"
+        )
     return "\n".join(parts)
 
 
 def _lesson_html(lesson):
     title = f"Lesson {lesson.number}" + (f" — {lesson.title}" if lesson.title else "")
-    parts = [f'<h2 id="lesson-{_e(lesson.number)}">{_e(title)} '
-             f'<span class="{_css_class(lesson.points, lesson.max_points)}">'
-             f'{_points(lesson.points, lesson.max_points)}</span></h2>',
-             f'<p class="muted">notebook: <code>{_e(lesson.notebook)}</code></p>']
+    parts = [
+        f'<h2 id="lesson-{_e(lesson.number)}">{_e(title)} '
+        f'<span class="{_css_class(lesson.points, lesson.max_points)}">'
+        f"{_points(lesson.points, lesson.max_points)}</span></h2>",
+        f'<p class="muted">notebook: <code>{_e(lesson.notebook)}</code></p>',
+    ]
     if lesson.late_penalty:
-        parts.append(f'<p class="note">Late: {_e(lesson.late_note)}. Points before the penalty: '
-                     f'{_points(lesson.raw_points, lesson.max_points)}.</p>')
+        parts.append(
+            f'<p class="note">Late: {_e(lesson.late_note)}. Points before the penalty: '
+            f"{_points(lesson.raw_points, lesson.max_points)}.</p>"
+        )
     if lesson.status == "missing":
-        return "\n".join(parts[:1] + [f'<p class="note">{_e(lesson.reason)}: its '
-                                      f"{_plural(len(lesson.exercises), 'exercise')} earned no points.</p>"])
+        return "\n".join(
+            parts[:1]
+            + [
+                f'<p class="note">{_e(lesson.reason)}: its '
+                f"{_plural(len(lesson.exercises), 'exercise')} earned no points.</p>"
+            ]
+        )
     if lesson.status != "graded":  # one line: each check would only repeat why the notebook could not be read
         names = [e.name for e in lesson.exercises]
-        parts.append(f'<p class="note"><span class="bad">✗</span> This notebook could not be graded, so its '
-                     f"{_plural(len(names), 'exercise')} ({_names(names)}) earned no points: {_e(lesson.reason)}. "
-                     "Hand in a copy that opens in JupyterLab; if yours no longer opens, copy your answers into "
-                     "a fresh copy of the lesson's notebook.</p>")
+        parts.append(
+            f'<p class="note"><span class="bad">✗</span> This notebook could not be graded, so its '
+            f"{_plural(len(names), 'exercise')} ({_names(names)}) earned no points: {_e(lesson.reason)}. "
+            "Hand in a copy that opens in JupyterLab; if yours no longer opens, copy your answers into "
+            "a fresh copy of the lesson's notebook.</p>"
+        )
         return "\n".join(parts)
     for exercise in lesson.exercises:
         parts.append(_exercise_html(exercise))
     if lesson.run is not None:
         run = lesson.run
-        verdict = {"passed": "Your answers, placed in the reference notebook, ran top to bottom and reproduced "
-                             "its printed outputs.",
-                   "failed": "Your answers, placed in the reference notebook, did not run cleanly:",
-                   "skipped": "Your answers were not run in the reference notebook:"}.get(run.status, run.status)
-        parts.append(f"<h3>Notebook run <span class=\"{_css_class(run.points, run.max_points)}\">"
-                     f"{_points(run.points, run.max_points)}</span></h3>"
-                     f"<p>{_e(verdict)}</p>")
+        verdict = {
+            "passed": "Your answers, placed in the reference notebook, ran top to bottom and reproduced "
+            "its printed outputs.",
+            "failed": "Your answers, placed in the reference notebook, did not run cleanly:",
+            "skipped": "Your answers were not run in the reference notebook:",
+        }.get(run.status, run.status)
+        parts.append(
+            f'<h3>Notebook run <span class="{_css_class(run.points, run.max_points)}">'
+            f"{_points(run.points, run.max_points)}</span></h3>"
+            f"<p>{_e(verdict)}</p>"
+        )
         if run.failures:
             failures = [f.removeprefix("not run: ") for f in run.failures]  # the sentence above says it
             parts.append('<ul class="checks">' + "".join(f"<li>{_e(f)}</li>" for f in failures) + "</ul>")
@@ -137,19 +161,24 @@ def feedback_html(result: StudentResult) -> str:
     rows = "".join(
         f'<tr><td><a href="#lesson-{_e(lesson.number)}">{_e(lesson.number)}</a></td><td>{_e(lesson.title)}</td>'
         f'<td class="{_css_class(lesson.points, lesson.max_points)}">{_points(lesson.points, lesson.max_points)}</td></tr>'
-        for lesson in result.lessons)
+        for lesson in result.lessons
+    )
     problems = ""
     if result.reason or result.problems:
         items = "".join(f"<li>{_e(p)}</li>" for p in ([result.reason] if result.reason else []) + result.problems)
         problems = f"<h2>Worth a look</h2><ul>{items}</ul>"
     lessons = "\n".join(_lesson_html(lesson) for lesson in result.lessons)
     if result.skipped:
-        lessons += ('\n<h2>Not looked at</h2><p class="muted">What your folder holds that the grader did not '
-                    "read (hidden, a link, too deep):</p><ul>" + "".join(f"<li>{_e(s)}</li>" for s in result.skipped)
-                    + "</ul>")
+        lessons += (
+            '\n<h2>Not looked at</h2><p class="muted">What your folder holds that the grader did not '
+            "read (hidden, a link, too deep):</p><ul>" + "".join(f"<li>{_e(s)}</li>" for s in result.skipped) + "</ul>"
+        )
     isolation = f'<p class="note">{_e(LIMITS_ONLY_WARNING)}</p>' if result.isolation == "limits" else ""
-    raw = (f' <span class="muted">({_points(result.raw_score, result.max_score)} before late penalties)</span>'
-           if result.raw_score != result.score else "")
+    raw = (
+        f' <span class="muted">({_points(result.raw_score, result.max_score)} before late penalties)</span>'
+        if result.raw_score != result.score
+        else ""
+    )
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">

@@ -43,18 +43,34 @@ def columns(catalog: Catalog, with_notebooks: bool) -> list[str]:
 def row(result: StudentResult, catalog: Catalog, with_notebooks: bool, graded_at: str = "") -> list[str]:
     earned = {e.name: e.points for e in result.exercises}
     lessons = {lesson.number: lesson for lesson in result.lessons}
-    values = [csv_cell(result.student_id, MAX_ID_CHARACTERS), _number(result.score), _number(result.max_score),
-              csv_cell(result.status)]
-    values += [_number(lessons[lesson.number].points) if lesson.number in lessons else "" for lesson in catalog.graded_lessons]
+    values = [
+        csv_cell(result.student_id, MAX_ID_CHARACTERS),
+        _number(result.score),
+        _number(result.max_score),
+        csv_cell(result.status),
+    ]
+    values += [
+        _number(lessons[lesson.number].points) if lesson.number in lessons else "" for lesson in catalog.graded_lessons
+    ]
     values += [_number(earned[e.name]) if e.name in earned else "" for e in catalog.exercises]
     if with_notebooks:
-        values += [_number(lessons[lesson.number].run.points) if lesson.number in lessons and lessons[lesson.number].run else ""
-                   for lesson in catalog.graded_lessons]
-    late = "; ".join(f"{lesson.number}: −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
-                     if lesson.late_penalty)
+        values += [
+            _number(lessons[lesson.number].run.points)
+            if lesson.number in lessons and lessons[lesson.number].run
+            else ""
+            for lesson in catalog.graded_lessons
+        ]
+    late = "; ".join(
+        f"{lesson.number}: −{100 * lesson.late_penalty:g}%" for lesson in result.lessons if lesson.late_penalty
+    )
     problems = "; ".join(([result.reason] if result.reason else []) + list(result.problems))
-    values += [late, _number(result.raw_score), csv_cell(result.submitted_at), csv_cell(graded_at),
-               csv_cell(problems, 2000)]
+    values += [
+        late,
+        _number(result.raw_score),
+        csv_cell(result.submitted_at),
+        csv_cell(graded_at),
+        csv_cell(problems, 2000),
+    ]
     return values
 
 

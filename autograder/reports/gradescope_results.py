@@ -43,36 +43,55 @@ def results_json(result: StudentResult, visibility: str = DEFAULT_VISIBILITY, se
             else:
                 lines += exercise.notes
                 lines += [_check_output(c) for c in exercise.checks]
-            tests.append({
-                "name": f"Lesson {lesson.number} · {exercise.name}",
-                "score": exercise.points, "max_score": exercise.max_points,
-                "status": "passed" if exercise.points >= exercise.max_points else "failed",
-                "output": "\n".join(lines), "visibility": visibility})
+            tests.append(
+                {
+                    "name": f"Lesson {lesson.number} · {exercise.name}",
+                    "score": exercise.points,
+                    "max_score": exercise.max_points,
+                    "status": "passed" if exercise.points >= exercise.max_points else "failed",
+                    "output": "\n".join(lines),
+                    "visibility": visibility,
+                }
+            )
         if lesson.run is not None:
             run = lesson.run
-            tests.append({
-                "name": f"Lesson {lesson.number} · notebook runs top to bottom",
-                "score": run.points, "max_score": run.max_points,
-                "status": "passed" if run.points >= run.max_points else "failed",
-                "output": "\n".join([f"nbval: {run.status}"] + run.failures), "visibility": visibility})
+            tests.append(
+                {
+                    "name": f"Lesson {lesson.number} · notebook runs top to bottom",
+                    "score": run.points,
+                    "max_score": run.max_points,
+                    "status": "passed" if run.points >= run.max_points else "failed",
+                    "output": "\n".join([f"nbval: {run.status}"] + run.failures),
+                    "visibility": visibility,
+                }
+            )
     read = [lesson for lesson in result.lessons if lesson.status == "graded"]
-    summary = [f"Graded {len(read)} of {len(result.lessons)} notebook(s). "
-               "Details of each check appear here after the due date."]
+    summary = [
+        f"Graded {len(read)} of {len(result.lessons)} notebook(s). "
+        "Details of each check appear here after the due date."
+    ]
     for lesson in result.lessons:
         if lesson.status != "graded":
             summary.append(f"Lesson {lesson.number}: {lesson.reason}")
         if lesson.late_penalty:
-            summary.append(f"Lesson {lesson.number} late: {lesson.late_note} "
-                           f"({lesson.raw_points:g} → {lesson.points:g} points)")
+            summary.append(
+                f"Lesson {lesson.number} late: {lesson.late_note} ({lesson.raw_points:g} → {lesson.points:g} points)"
+            )
     if result.raw_score != result.score:
-        summary.append(f"Score {result.score:g} of {result.max_score:g} after late penalties "
-                       f"({result.raw_score:g} before).")
+        summary.append(
+            f"Score {result.score:g} of {result.max_score:g} after late penalties ({result.raw_score:g} before)."
+        )
     if result.reason:
         summary.append(result.reason)
     if result.isolation == "limits":
         summary.append(LIMITS_ONLY_WARNING)
-    data = {"score": result.score, "output": "\n".join(summary), "visibility": "visible",
-            "stdout_visibility": "hidden", "tests": tests}
+    data = {
+        "score": result.score,
+        "output": "\n".join(summary),
+        "visibility": "visible",
+        "stdout_visibility": "hidden",
+        "tests": tests,
+    }
     if seconds is not None:
         data["execution_time"] = round(seconds, 1)
     return data
@@ -80,7 +99,13 @@ def results_json(result: StudentResult, visibility: str = DEFAULT_VISIBILITY, se
 
 def failure_json(message: str) -> dict:
     """What Gradescope shows when grading itself failed: a message, no score claimed."""
-    return {"score": 0.0, "visibility": "visible", "stdout_visibility": "hidden", "tests": [],
-            "output": "The autograder could not grade this submission: " + message
-                      + "\nThe score of 0 is not a grade: your submission was received and is kept; "
-                        "ask your instructor to re-run the autograder."}
+    return {
+        "score": 0.0,
+        "visibility": "visible",
+        "stdout_visibility": "hidden",
+        "tests": [],
+        "output": "The autograder could not grade this submission: "
+        + message
+        + "\nThe score of 0 is not a grade: your submission was received and is kept; "
+        "ask your instructor to re-run the autograder.",
+    }

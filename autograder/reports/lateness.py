@@ -125,10 +125,16 @@ def _check_keys(table, known, where):
     """Raise :class:`ConfigError` for the first key of ``table`` that the schema does not know, with the close name."""
     for key in table:
         if key not in known:
-            elsewhere = (" (it belongs in [late_policy] or a lesson's table)" if key in POLICY_KEYS else
-                         " (it belongs in a lesson's table, [lessons.\"03\"])" if key == "due" else "")
-            raise ConfigError(f"{where}: unknown key {key!r}{elsewhere or did_you_mean(key, known)} "
-                              f"(known here: {', '.join(known)})")
+            elsewhere = (
+                " (it belongs in [late_policy] or a lesson's table)"
+                if key in POLICY_KEYS
+                else ' (it belongs in a lesson\'s table, [lessons."03"])'
+                if key == "due"
+                else ""
+            )
+            raise ConfigError(
+                f"{where}: unknown key {key!r}{elsewhere or did_you_mean(key, known)} (known here: {', '.join(known)})"
+            )
 
 
 def _check_lesson(number, lessons, name):
@@ -138,8 +144,7 @@ def _check_lesson(number, lessons, name):
     padded = number.zfill(2) if number.isdigit() else number
     close = padded if padded in lessons else (difflib.get_close_matches(number, lessons, n=1) or [None])[0]
     hint = f'; did you mean [lessons."{close}"] (quoted, two digits)?' if close else ""
-    raise ConfigError(f"{name}: unknown lesson {number!r} under [lessons]{hint} "
-                      f"(the lessons are {' '.join(lessons)})")
+    raise ConfigError(f"{name}: unknown lesson {number!r} under [lessons]{hint} (the lessons are {' '.join(lessons)})")
 
 
 def parse_config(text: str, name: str, lessons: list[str]) -> CourseConfig:
@@ -259,8 +264,10 @@ def penalty(config: CourseConfig, lesson: str, handed_in: datetime | None) -> tu
     if late <= policy.grace_minutes * 60:
         return 0.0, ""
     fraction, reason = lookup("late_policy", policy.rule)(policy, late)
-    return fraction, (f"handed in {local_time(handed_in, config.zone)}, {_span(late)} after the due date "
-                      f"({local_time(due, config.zone)}): {reason}, −{100 * fraction:g}%")
+    return fraction, (
+        f"handed in {local_time(handed_in, config.zone)}, {_span(late)} after the due date "
+        f"({local_time(due, config.zone)}): {reason}, −{100 * fraction:g}%"
+    )
 
 
 def apply_late_policy(result: StudentResult, folder: Path, config: CourseConfig | None) -> StudentResult:
@@ -286,8 +293,9 @@ def apply_late_policy(result: StudentResult, folder: Path, config: CourseConfig 
 
 def late_summary(result: StudentResult) -> str:
     """``01 −20%, 03 −10%``: the lessons ``result`` (a StudentResult) handed in late and what each cost."""
-    return ", ".join(f"{lesson.number} −{100 * lesson.late_penalty:g}%" for lesson in result.lessons
-                     if lesson.late_penalty)
+    return ", ".join(
+        f"{lesson.number} −{100 * lesson.late_penalty:g}%" for lesson in result.lessons if lesson.late_penalty
+    )
 
 
 def due_dates(results: list[StudentResult]) -> str:

@@ -28,4 +28,3 @@ def unwritten_functions(exercise: ExerciseResult) -> list[str]:
     if not failed or not all(found):
         return []
     return list(dict.fromkeys(match.group(1) for match in found))
-

@@ -27,7 +27,11 @@ def plain_page(title: str, results: list[StudentResult], why: str) -> str:
             score = "—"
         lines = ([result.reason] if result.reason else []) + list(result.problems)[:MAX_PROBLEMS]
         details = "".join(f"<li>{html_text(line, 2000)}</li>" for line in lines)
-        items.append(f"<li><code>{html_text(result.student_id, 300)}</code>: {score}, {html_text(result.status)}"
-                     f"<ul>{details}</ul></li>")
-    return (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{html_text(title)}</title></head>'
-            f"<body><h1>{html_text(title)}</h1><p>{html_text(why)}</p><ul>{''.join(items)}</ul></body></html>\n")
+        items.append(
+            f"<li><code>{html_text(result.student_id, 300)}</code>: {score}, {html_text(result.status)}"
+            f"<ul>{details}</ul></li>"
+        )
+    return (
+        f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{html_text(title)}</title></head>'
+        f"<body><h1>{html_text(title)}</h1><p>{html_text(why)}</p><ul>{''.join(items)}</ul></body></html>\n"
+    )

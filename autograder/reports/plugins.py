@@ -68,8 +68,9 @@ def did_you_mean(given: str, known: list[str] | tuple[str, ...]) -> str:
 
 def _plugins(kind: str) -> dict[str, Any]:
     if kind not in _REGISTRY:
-        raise ValueError(f"unknown kind of plugin {kind!r}{did_you_mean(kind, tuple(KINDS))} "
-                         f"(the kinds are {', '.join(KINDS)})")
+        raise ValueError(
+            f"unknown kind of plugin {kind!r}{did_you_mean(kind, tuple(KINDS))} (the kinds are {', '.join(KINDS)})"
+        )
     return _REGISTRY[kind]
 
 

@@ -22,9 +22,18 @@ import io
 from dataclasses import dataclass
 from pathlib import Path
 
-ALIASES = {"id": "student_id", "student_id": "student_id", "student": "student_id", "login": "student_id",
-           "name": "name", "email": "email", "section": "section", "sis_id": "sis_id",
-           "sis_user_id": "sis_id", "canvas_id": "canvas_id"}
+ALIASES = {
+    "id": "student_id",
+    "student_id": "student_id",
+    "student": "student_id",
+    "login": "student_id",
+    "name": "name",
+    "email": "email",
+    "section": "section",
+    "sis_id": "sis_id",
+    "sis_user_id": "sis_id",
+    "canvas_id": "canvas_id",
+}
 
 
 class RosterError(ValueError):

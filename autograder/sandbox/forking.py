@@ -59,9 +59,15 @@ def _release(slots, slot, free):
     free.append(slot)
 
 
-def fork_each(function: Callable[[T, WarmSlot | None], None], items: list[T], jobs: int,
-              on_done: Callable[[T, str | None], None], deadline_seconds: float | None = None, poll: float = 0.05,
-              slots: SlotPool | None = None) -> None:
+def fork_each(
+    function: Callable[[T, WarmSlot | None], None],
+    items: list[T],
+    jobs: int,
+    on_done: Callable[[T, str | None], None],
+    deadline_seconds: float | None = None,
+    poll: float = 0.05,
+    slots: SlotPool | None = None,
+) -> None:
     """Call ``function(item, slot)`` in a new fork per item, at most ``jobs`` at a time.
 
     ``on_done(item, problem)`` runs in the parent as each child ends:

@@ -49,7 +49,8 @@ LIMITS_ONLY_WARNING = (
     "Student code was isolated by resource limits only: it ran in its own process with limits and "
     "timeouts, but it could read files readable to the grading user and use the network. Grades are "
     "computed the same way; for full isolation grade where bubblewrap can create namespaces "
-    "(see SECURITY.md).")
+    "(see SECURITY.md)."
+)
 
 
 @dataclass(frozen=True)
@@ -96,12 +97,14 @@ def _preexec(limits, cgroup=None):
     def apply():
         if cgroup is not None:
             cgroup.join()
-        for kind, value in ((resource.RLIMIT_AS, limits.memory_bytes),
-                            (resource.RLIMIT_CPU, limits.cpu_seconds),
-                            (resource.RLIMIT_FSIZE, limits.file_bytes),
-                            (resource.RLIMIT_NOFILE, limits.open_files),
-                            (resource.RLIMIT_CORE, 0),
-                            (resource.RLIMIT_NPROC, nproc)):
+        for kind, value in (
+            (resource.RLIMIT_AS, limits.memory_bytes),
+            (resource.RLIMIT_CPU, limits.cpu_seconds),
+            (resource.RLIMIT_FSIZE, limits.file_bytes),
+            (resource.RLIMIT_NOFILE, limits.open_files),
+            (resource.RLIMIT_CORE, 0),
+            (resource.RLIMIT_NPROC, nproc),
+        ):
             try:
                 resource.setrlimit(kind, (value, value))
             except (ValueError, OSError):
@@ -140,8 +143,16 @@ def _system_binds():
             args += ["--symlink", os.readlink(name), name]
         elif os.path.isdir(name):
             args += ["--ro-bind", name, name]
-    for name in ("/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives",
-                 "/etc/localtime", "/etc/nsswitch.conf", "/etc/passwd", "/etc/group"):
+    for name in (
+        "/etc/ld.so.cache",
+        "/etc/ld.so.conf",
+        "/etc/ld.so.conf.d",
+        "/etc/alternatives",
+        "/etc/localtime",
+        "/etc/nsswitch.conf",
+        "/etc/passwd",
+        "/etc/group",
+    ):
         if os.path.exists(name):
             args += ["--ro-bind", name, name]
     return args
@@ -151,9 +162,16 @@ def sandbox_environment(limits: Limits) -> dict[str, str]:
     """The whole environment of a sandboxed process: nothing is inherited but a forced OpenBLAS kernel
     (``OPENBLAS_CORETYPE``, a kernel's name, which tells the student's code nothing about the grader)."""
     env = {
-        "HOME": "/tmp", "TMPDIR": "/tmp", "PATH": "/usr/bin:/bin", "LANG": "C.UTF-8",
-        "MPLBACKEND": "Agg", "MPLCONFIGDIR": "/tmp/.matplotlib", "PYTHONHASHSEED": "0",
-        "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
+        "HOME": "/tmp",
+        "TMPDIR": "/tmp",
+        "PATH": "/usr/bin:/bin",
+        "LANG": "C.UTF-8",
+        "MPLBACKEND": "Agg",
+        "MPLCONFIGDIR": "/tmp/.matplotlib",
+        "PYTHONHASHSEED": "0",
+        "OPENBLAS_NUM_THREADS": "1",
+        "OMP_NUM_THREADS": "1",
+        "MKL_NUM_THREADS": "1",
         "PYTHONDONTWRITEBYTECODE": "1",
     }
     # On a real machine the grader and the student's code load OpenBLAS on one CPU, so they pick one kernel;
@@ -200,8 +218,9 @@ def bwrap_executable() -> str | None:
         return None
 
 
-def bwrap_command(program: list[str], sandbox_dir: Path, scratch_dir: Path, limits: Limits,
-                  zygote: bool = False) -> list[str]:
+def bwrap_command(
+    program: list[str], sandbox_dir: Path, scratch_dir: Path, limits: Limits, zygote: bool = False
+) -> list[str]:
     """The bubblewrap command line that runs ``program`` (a list) isolated.
 
     As root, bubblewrap makes PID, network, IPC and mount namespaces without a
@@ -213,8 +232,7 @@ def bwrap_command(program: list[str], sandbox_dir: Path, scratch_dir: Path, limi
     """
     bwrap = bwrap_executable() or "bwrap"
     if _running_as_root():
-        args = [bwrap, "--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts",
-                "--unshare-cgroup-try"]
+        args = [bwrap, "--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts", "--unshare-cgroup-try"]
     else:
         args = [bwrap, "--unshare-all"]
     args += ["--die-with-parent", "--new-session"]
@@ -232,17 +250,32 @@ def bwrap_command(program: list[str], sandbox_dir: Path, scratch_dir: Path, limi
         args += ["--ro-bind", root, root]
     # / and /dev are bubblewrap's tmpfs: read-only, so that /tmp is the one writable place whoever runs
     # the grader (as an ordinary user, the sandbox's user would own them)
-    args += ["--ro-bind", str(sandbox_dir), "/sandbox",
-             "--proc", "/proc", "--dev", "/dev", "--remount-ro", "/", "--remount-ro", "/dev",
-             "--chdir", "/tmp", "--clearenv"]
+    args += [
+        "--ro-bind",
+        str(sandbox_dir),
+        "/sandbox",
+        "--proc",
+        "/proc",
+        "--dev",
+        "/dev",
+        "--remount-ro",
+        "/",
+        "--remount-ro",
+        "/dev",
+        "--chdir",
+        "/tmp",
+        "--clearenv",
+    ]
     for key, value in sandbox_environment(limits).items():
         args += ["--setenv", key, value]
     return args + ["--"] + list(program)
 
 
 # the namespaces probe makes a student's own namespaces too (jail.enter_student_jail), as every worker will
-_PROBE_PROGRAM = ("import sys; sys.path.insert(0, sys.argv[1]); import jail; "
-                  "jail.enter_student_jail(jail.sandbox_uid(sys.argv), sandbox_folder=sys.argv[1]); import numpy")
+_PROBE_PROGRAM = (
+    "import sys; sys.path.insert(0, sys.argv[1]); import jail; "
+    "jail.enter_student_jail(jail.sandbox_uid(sys.argv), sandbox_folder=sys.argv[1]); import numpy"
+)
 _LIMITS_PROBE_PROGRAM = "import sys; sys.path.insert(0, sys.argv[1]); import jail; jail.drop_privileges(); import numpy"
 
 
@@ -253,9 +286,11 @@ def _probe_namespaces(bwrap, child_dir):
         shutil.copy2(Path(child_dir) / "jail.py", probe_dir / "jail.py")
         os.chmod(probe_dir, 0o755)
         result = subprocess.run(
-            bwrap_command([sys.executable, "-I", "-c", _PROBE_PROGRAM, "/sandbox"],
-                          probe_dir, probe_dir, Limits()),
-            preexec_fn=_preexec(Limits()), capture_output=True, timeout=120)
+            bwrap_command([sys.executable, "-I", "-c", _PROBE_PROGRAM, "/sandbox"], probe_dir, probe_dir, Limits()),
+            preexec_fn=_preexec(Limits()),
+            capture_output=True,
+            timeout=120,
+        )
     except (OSError, subprocess.SubprocessError) as error:
         return f"bubblewrap could not start ({error})"
     finally:
@@ -284,7 +319,7 @@ def isolation() -> tuple[str, str]:
         problem = _probe_namespaces(bwrap, child_dir)
         if not problem or (attempt >= 1 and "temporarily unavailable" not in problem):
             break
-        time.sleep(0.5 * 2 ** attempt)
+        time.sleep(0.5 * 2**attempt)
     if problem:
         return "limits", problem
     spaces = "PID, network, IPC and mount" if _running_as_root() else "user, PID, network, IPC and mount"
@@ -298,8 +333,9 @@ def limits_mode_can_drop_root() -> bool:
     if not _running_as_root():
         return False
     child_dir = str(Path(__file__).resolve().parent / "child")
-    result = subprocess.run([sys.executable, "-I", "-c", _LIMITS_PROBE_PROGRAM, child_dir],
-                            capture_output=True, timeout=60, cwd="/")
+    result = subprocess.run(
+        [sys.executable, "-I", "-c", _LIMITS_PROBE_PROGRAM, child_dir], capture_output=True, timeout=60, cwd="/"
+    )
     return result.returncode == 0
 
 
@@ -308,8 +344,9 @@ def describe_isolation() -> str:
     mode, detail = isolation()
     caps = f"; cgroup {cgroups.flavour()} caps memory and processes per student" if cgroups.flavour() else ""
     if mode == "namespaces":
-        return (f"sandbox: {detail}; runs as {user_name()}; no network; "
-                f"project files out of reach; resource limits{caps}")
+        return (
+            f"sandbox: {detail}; runs as {user_name()}; no network; project files out of reach; resource limits{caps}"
+        )
     return f"sandbox: RESOURCE LIMITS ONLY — {detail}. {LIMITS_ONLY_WARNING} Student code runs as {user_name()}{caps}."
 
 
@@ -324,12 +361,22 @@ def prepare_dirs(base: str | Path, support: Path, uid: int | None = None) -> tup
     sandbox_dir.mkdir(parents=True, exist_ok=True)
     scratch_dir.mkdir(parents=True, exist_ok=True)
     child_dir = Path(__file__).resolve().parent / "child"
-    for name in ("worker.py", "feeder.py", "wire.py", "probes.py", "jail.py", "nbval_runner.py", "fork_kernel.py",
-                 "zygote.py", "student_client.py"):
+    for name in (
+        "worker.py",
+        "feeder.py",
+        "wire.py",
+        "probes.py",
+        "jail.py",
+        "nbval_runner.py",
+        "fork_kernel.py",
+        "zygote.py",
+        "student_client.py",
+    ):
         if (child_dir / name).exists():
             shutil.copy2(child_dir / name, sandbox_dir / name)
-    shutil.copytree(support, sandbox_dir / "coursekit",
-                    ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True)
+    shutil.copytree(
+        support, sandbox_dir / "coursekit", ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True
+    )
     for path in (base, sandbox_dir):
         os.chmod(path, 0o755)
     os.chmod(scratch_dir, 0o777)
@@ -339,8 +386,9 @@ def prepare_dirs(base: str | Path, support: Path, uid: int | None = None) -> tup
     return sandbox_dir, scratch_dir
 
 
-def outside_path(path: str, sandbox_dir: Path, scratch_dir: Path,
-                 inside: tuple[str, str] = ("/sandbox", "/tmp")) -> str:
+def outside_path(
+    path: str, sandbox_dir: Path, scratch_dir: Path, inside: tuple[str, str] = ("/sandbox", "/tmp")
+) -> str:
     """Where a path of the sandbox's world (``/sandbox/...``, ``/tmp/...``) really is, in limits mode.
 
     Only the prefixes in ``inside`` are mapped, and a path already in one of
@@ -360,12 +408,20 @@ def outside_path(path: str, sandbox_dir: Path, scratch_dir: Path,
             return path
     for prefix, real in (("/sandbox", sandbox_dir), ("/tmp", scratch_dir)):
         if prefix in inside and (path == prefix or path.startswith(prefix + "/")):
-            return str(real) + path[len(prefix):]
+            return str(real) + path[len(prefix) :]
     return path
 
 
-def spawn(program: list[str], sandbox_dir: Path, scratch_dir: Path, limits: Limits, stdin: int = subprocess.PIPE,
-          stdout: int = subprocess.PIPE, zygote: bool = False, pass_fds: tuple[int, ...] = ()) -> subprocess.Popen:
+def spawn(
+    program: list[str],
+    sandbox_dir: Path,
+    scratch_dir: Path,
+    limits: Limits,
+    stdin: int = subprocess.PIPE,
+    stdout: int = subprocess.PIPE,
+    zygote: bool = False,
+    pass_fds: tuple[int, ...] = (),
+) -> subprocess.Popen:
     """Start ``program`` (argv relative to the sandbox: ``/sandbox/...`` paths) isolated.
 
     In ``limits`` mode, ``/sandbox`` in the argv is rewritten to the real
@@ -380,13 +436,24 @@ def spawn(program: list[str], sandbox_dir: Path, scratch_dir: Path, limits: Limi
     else:
         # only the worker's own /sandbox paths: the interpreter may live under a real /tmp (a checkout there)
         argv = [outside_path(str(a), sandbox_dir, scratch_dir, inside=("/sandbox",)) for a in program]
-        env = {key: os.pathsep.join(outside_path(part, sandbox_dir, scratch_dir) for part in value.split(os.pathsep))
-               for key, value in sandbox_environment(limits).items()}
+        env = {
+            key: os.pathsep.join(outside_path(part, sandbox_dir, scratch_dir) for part in value.split(os.pathsep))
+            for key, value in sandbox_environment(limits).items()
+        }
         cwd = str(scratch_dir)
     group = cgroups.SandboxCgroup.create("sandbox", limits.memory_bytes, limits.processes)
-    process = subprocess.Popen(argv, stdin=stdin, stdout=stdout, stderr=subprocess.DEVNULL,
-                               preexec_fn=_preexec(limits, group), start_new_session=True, env=env, cwd=cwd,
-                               close_fds=True, pass_fds=tuple(pass_fds))
+    process = subprocess.Popen(
+        argv,
+        stdin=stdin,
+        stdout=stdout,
+        stderr=subprocess.DEVNULL,
+        preexec_fn=_preexec(limits, group),
+        start_new_session=True,
+        env=env,
+        cwd=cwd,
+        close_fds=True,
+        pass_fds=tuple(pass_fds),
+    )
     process.cgroup = group
     return process
 

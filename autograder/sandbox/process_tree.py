@@ -35,7 +35,7 @@ def _parent_map():
         except OSError:
             continue
         # the command name is in parentheses and may contain spaces: split after the last ')'
-        fields = stat[stat.rfind(")") + 2:].split()
+        fields = stat[stat.rfind(")") + 2 :].split()
         if len(fields) > 1:
             parents[int(entry)] = int(fields[1])
     return parents

@@ -100,8 +100,11 @@ class StudentSandbox:
         self.limits = limits or launcher.Limits()
         # a warm slot (see warm.py) when the caller has a usable one with the same limits and course, else
         # cold starts
-        self.slot = slot if (slot is not None and slot.usable() and slot.limits == self.limits
-                             and slot.support == self.support) else None
+        self.slot = (
+            slot
+            if (slot is not None and slot.usable() and slot.limits == self.limits and slot.support == self.support)
+            else None
+        )
         # the first sandbox of a student resets the slot before and after; more sandboxes of the same
         # student (the notebook stage's, one per lesson) share it without resetting
         self._slot_reset = not resets_slot
@@ -155,9 +158,14 @@ class StudentSandbox:
         if self.process is None:
             sandbox_dir, scratch_dir = self._dirs()
             # the venv's own interpreter path (not its realpath), so Python finds the venv's packages
-            self.process = launcher.spawn([sys.executable, "-I", "-B", "/sandbox/worker.py"]
-                                          + launcher.worker_flags(jail=True) + (["--direct"] if self.direct else []),
-                                          sandbox_dir, scratch_dir, self.limits)
+            self.process = launcher.spawn(
+                [sys.executable, "-I", "-B", "/sandbox/worker.py"]
+                + launcher.worker_flags(jail=True)
+                + (["--direct"] if self.direct else []),
+                sandbox_dir,
+                scratch_dir,
+                self.limits,
+            )
         self._selector = selectors.DefaultSelector()
         self._selector.register(self.process.stdout, selectors.EVENT_READ)
         try:
@@ -295,16 +303,28 @@ class StudentSandbox:
                         if (lesson, label) in self.bad_cells:
                             continue
                         self._current = (lesson, label)
-                        reply = self._request({"op": "exec", "lesson": lesson, "label": label,
-                                               "source": source, "timeout": self.limits.load_timeout},
-                                              self.limits.load_timeout)
+                        reply = self._request(
+                            {
+                                "op": "exec",
+                                "lesson": lesson,
+                                "label": label,
+                                "source": source,
+                                "timeout": self.limits.load_timeout,
+                            },
+                            self.limits.load_timeout,
+                        )
                         if (lesson, label) not in recorded:
                             recorded.add((lesson, label))
                             error = reply.get("error") or {}
-                            self.outcomes.append(CellOutcome(
-                                lesson, label, bool(reply["ok"]),
-                                _format_error(error) if not reply["ok"] else "",
-                                str(reply.get("stdout", ""))))
+                            self.outcomes.append(
+                                CellOutcome(
+                                    lesson,
+                                    label,
+                                    bool(reply["ok"]),
+                                    _format_error(error) if not reply["ok"] else "",
+                                    str(reply.get("stdout", "")),
+                                )
+                            )
                 self.loaded = True
                 return
             except _Dead as death:
@@ -325,14 +345,26 @@ class StudentSandbox:
     def check_callable(self, lesson: str, name: str) -> None:
         """Raise the :class:`StudentError` a call of ``name`` would get without running (budget, hang)."""
         if self.time_used > self.limits.student_seconds:
-            raise StudentError("timeout", f"not run: this student's code already used its "
-                                          f"{self.limits.student_seconds:g} s time budget")
+            raise StudentError(
+                "timeout",
+                f"not run: this student's code already used its {self.limits.student_seconds:g} s time budget",
+            )
         if (lesson, name) in self.hung:
-            raise StudentError("timeout", f"{name} did not return within {self.hung[(lesson, name)]:g} s "
-                                          "in an earlier check, so it was not called again")
+            raise StudentError(
+                "timeout",
+                f"{name} did not return within {self.hung[(lesson, name)]:g} s "
+                "in an earlier check, so it was not called again",
+            )
 
-    def call(self, lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, timeout: float | None = None,
-             forbid: tuple = ()) -> object:
+    def call(
+        self,
+        lesson: str,
+        name: str,
+        args: tuple = (),
+        kwargs: dict | None = None,
+        timeout: float | None = None,
+        forbid: tuple = (),
+    ) -> object:
         """Call the student's ``name`` from ``lesson``; return the decoded value.
 
         ``forbid``: library functions the call must not use (see :mod:`coursekit.watching`).
@@ -356,8 +388,9 @@ class StudentSandbox:
             self.restarts += 1
             if reason == "timeout":
                 self.hung[(lesson, name)] = timeout
-                raise StudentError("timeout", f"{name} did not return within {timeout:g} s "
-                                              "(an endless loop, or far too slow?)") from None
+                raise StudentError(
+                    "timeout", f"{name} did not return within {timeout:g} s (an endless loop, or far too slow?)"
+                ) from None
             raise StudentError("crash", f"calling {name}, the student's process {reason}") from None
         return self.take_reply(lesson, name, reply, timeout)
 
@@ -372,27 +405,35 @@ class StudentSandbox:
         self.last_changed = _names(reply.get("changed"))
         delegated = _names(reply.get("delegated"))
         if reply["ok"] and delegated:
-            raise StudentError("delegated", f"{name} calls {', '.join(delegated)}: this exercise asks for "
-                                            "your own implementation, so it earns no points", stdout)
+            raise StudentError(
+                "delegated",
+                f"{name} calls {', '.join(delegated)}: this exercise asks for "
+                "your own implementation, so it earns no points",
+                stdout,
+            )
         if reply["ok"]:
             if "text" in reply:  # a call's value travels as wire text
                 try:
                     return wire.loads(reply["text"], max_bytes=MAX_REPLY_BYTES)
                 except wire.WireError as error:
-                    raise StudentError("crash", f"calling {name}, the student's process sent a malformed "
-                                                f"reply ({error})") from None
+                    raise StudentError(
+                        "crash", f"calling {name}, the student's process sent a malformed reply ({error})"
+                    ) from None
             return reply.get("value")
         error = reply.get("error") or {}
-        kind = {"NotImplementedError": "not_implemented", "Timeout": "timeout",
-                "NameError": "missing" if "not defined in the graded cells" in str(error.get("message"))
-                else "exception",
-                "UnsupportedValue": "bad_value"}.get(error.get("type"), "exception")
+        kind = {
+            "NotImplementedError": "not_implemented",
+            "Timeout": "timeout",
+            "NameError": "missing" if "not defined in the graded cells" in str(error.get("message")) else "exception",
+            "UnsupportedValue": "bad_value",
+        }.get(error.get("type"), "exception")
         if kind == "not_implemented":
             raise StudentError(kind, f"{name} is not written yet (it raises NotImplementedError)", stdout)
         if kind == "timeout":
             self.hung[(lesson, name)] = timeout
-            raise StudentError(kind, f"{name} did not return within {timeout:g} s "
-                                     "(an endless loop, or far too slow?)", stdout)
+            raise StudentError(
+                kind, f"{name} did not return within {timeout:g} s (an endless loop, or far too slow?)", stdout
+            )
         if kind == "missing":
             raise StudentError(kind, f"{name} is not defined by the graded cells of the notebook", stdout)
         if kind == "bad_value":
@@ -419,8 +460,12 @@ class StudentSandbox:
         timeouts = [default if t is None else t for t in timeouts]
         self._next_id += 1
         # the request as wire.dumps would write it, with the calls' text, already wire text, put in as is
-        line = ('{"__dict__":[["op","batch"],["id",%d],["budget",%r],["timeout",%r],["calls",[%s]]]}'
-                % (self._next_id, float(budget), default, ",".join(calls)))
+        line = '{"__dict__":[["op","batch"],["id",%d],["budget",%r],["timeout",%r],["calls",[%s]]]}' % (
+            self._next_id,
+            float(budget),
+            default,
+            ",".join(calls),
+        )
         started = time.monotonic()
         try:
             self._send_line(line)
@@ -432,9 +477,16 @@ class StudentSandbox:
             return None
         self.time_used += time.monotonic() - started
         replies = reply.get("replies") if isinstance(reply, dict) and reply.get("id") == self._next_id else None
-        if not isinstance(replies, list) or len(replies) > len(calls) or not all(
-                isinstance(r, dict) and isinstance(r.get("ok"), bool) and
-                (not r["ok"] or isinstance(r.get("text"), str)) for r in replies):
+        if (
+            not isinstance(replies, list)
+            or len(replies) > len(calls)
+            or not all(
+                isinstance(r, dict)
+                and isinstance(r.get("ok"), bool)
+                and (not r["ok"] or isinstance(r.get("text"), str))
+                for r in replies
+            )
+        ):
             self._kill()  # a forged or malformed reply: start afresh, one call at a time
             return None
         return replies
@@ -456,11 +508,18 @@ def _status_reason(status):
     return _code_reason(os.WEXITSTATUS(status))
 
 
-def call_request(lesson: str, name: str, args: tuple | list, kwargs: dict | None, timeout: float | None,
-                 forbid: tuple = ()) -> dict:
+def call_request(
+    lesson: str, name: str, args: tuple | list, kwargs: dict | None, timeout: float | None, forbid: tuple = ()
+) -> dict:
     """The worker's request for one call (see ``child/worker.py``); ``forbid`` only when not empty."""
-    request = {"op": "call", "lesson": lesson, "name": name, "args": list(args), "kwargs": dict(kwargs or {}),
-               "timeout": timeout}
+    request = {
+        "op": "call",
+        "lesson": lesson,
+        "name": name,
+        "args": list(args),
+        "kwargs": dict(kwargs or {}),
+        "timeout": timeout,
+    }
     if forbid:
         request["forbid"] = list(forbid)
     return request

@@ -48,6 +48,7 @@ ZYGOTE_CPU_SECONDS = 3600  # the zygote's own CPU limit (each worker gets the st
 START_SECONDS = 60.0
 REPLY_SECONDS = 10.0
 
+
 class SlotBroken(RuntimeError):
     """A slot's zygote is gone or did not answer: the slot must be discarded."""
 
@@ -127,12 +128,22 @@ class WarmSlot:
         uid = launcher.sandbox_uid() + PID_LIMIT * (self.index + 1)
         sandbox_dir, scratch_dir = launcher.prepare_dirs(self._base, self.support, uid)
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
-        slot_limits = replace(self.limits, memory_bytes=self.limits.memory_bytes + ZYGOTE_MEMORY,
-                              processes=self.limits.processes + 2, cpu_seconds=ZYGOTE_CPU_SECONDS)
+        slot_limits = replace(
+            self.limits,
+            memory_bytes=self.limits.memory_bytes + ZYGOTE_MEMORY,
+            processes=self.limits.processes + 2,
+            cpu_seconds=ZYGOTE_CPU_SECONDS,
+        )
         try:
-            self.process = launcher.spawn([sys.executable, "-I", "-B", "/sandbox/zygote.py"]
-                                          + launcher.worker_flags(uid), sandbox_dir, scratch_dir, slot_limits,
-                                          stdin=theirs.fileno(), stdout=subprocess.DEVNULL, zygote=True)
+            self.process = launcher.spawn(
+                [sys.executable, "-I", "-B", "/sandbox/zygote.py"] + launcher.worker_flags(uid),
+                sandbox_dir,
+                scratch_dir,
+                slot_limits,
+                stdin=theirs.fileno(),
+                stdout=subprocess.DEVNULL,
+                zygote=True,
+            )
         finally:
             theirs.close()
         self.control = ours
@@ -188,8 +199,9 @@ class WarmSlot:
                 message = json.loads(data)
             except ValueError:
                 message = None
-            if isinstance(message, dict) and (message.get("ready") if want == "ready" else
-                                              message.get("nonce") == nonce):
+            if isinstance(message, dict) and (
+                message.get("ready") if want == "ready" else message.get("nonce") == nonce
+            ):
                 return message, fds
             for fd in fds:  # a reply to a request of a grader that died before reading it
                 os.close(fd)

@@ -138,8 +138,9 @@ def distinct_fingerprints(sources: list[str], stub: str) -> tuple[list[CodeFinge
     return prints, index
 
 
-def score_exercise(exercise: str, current: dict[str, str], past: dict[str, str], reference: str | None,
-                   stub: str) -> ExerciseFindings:
+def score_exercise(
+    exercise: str, current: dict[str, str], past: dict[str, str], reference: str | None, stub: str
+) -> ExerciseFindings:
     """The :class:`ExerciseFindings` of one exercise, in one pass.
 
     ``current`` and ``past``: ``{author: source}`` of this class and of past terms; ``reference``: the
@@ -151,7 +152,7 @@ def score_exercise(exercise: str, current: dict[str, str], past: dict[str, str],
     sources = [current[a] if a in current else past[a] for a in authors]
     has_reference = reference is not None
     prints, index = distinct_fingerprints(sources + ([reference] if has_reference else []), stub)
-    kept = [i for i, at in enumerate(index[:len(authors)]) if at >= 0]
+    kept = [i for i, at in enumerate(index[: len(authors)]) if at >= 0]
     authors, rows = [authors[i] for i in kept], np.array([index[i] for i in kept], dtype=int)
     reference_row = index[-1] if has_reference else -1
     is_current = np.array([author in current for author in authors], dtype=bool)
@@ -160,9 +161,17 @@ def score_exercise(exercise: str, current: dict[str, str], past: dict[str, str],
     distinct = share_of_smaller(counts, sizes)
     reference_scores = distinct[rows, reference_row] if reference_row >= 0 else np.zeros(len(authors))
     matches_reference = reference_scores >= REFERENCE_FLOOR
-    reference_matches = [Pair(exercise, authors[i], REFERENCE, float(reference_scores[i]), REFERENCE_FLOOR,
-                              int(counts[rows[i], reference_row]))
-                         for i in np.flatnonzero(matches_reference & is_current)]
+    reference_matches = [
+        Pair(
+            exercise,
+            authors[i],
+            REFERENCE,
+            float(reference_scores[i]),
+            REFERENCE_FLOOR,
+            int(counts[rows[i], reference_row]),
+        )
+        for i in np.flatnonzero(matches_reference & is_current)
+    ]
     if len(authors) < 2:
         return ExerciseFindings([], reference_matches, PAIR_FLOOR, compared)
     first, second = np.triu_indices(len(authors), k=1)
@@ -172,8 +181,10 @@ def score_exercise(exercise: str, current: dict[str, str], past: dict[str, str],
     baseline = both_current & ~explained
     threshold = pair_threshold(scores[baseline], len(set(first[baseline]) | set(second[baseline])))
     wanted = (is_current[first] | is_current[second]) & ~explained & (scores >= threshold) & (shared >= MIN_SHARED)
-    pairs = [Pair(exercise, authors[i], authors[j], float(score), threshold, int(common))
-             for i, j, score, common in zip(first[wanted], second[wanted], scores[wanted], shared[wanted])]
+    pairs = [
+        Pair(exercise, authors[i], authors[j], float(score), threshold, int(common))
+        for i, j, score, common in zip(first[wanted], second[wanted], scores[wanted], shared[wanted])
+    ]
     return ExerciseFindings(pairs, reference_matches, threshold, compared)
 
 
@@ -185,8 +196,12 @@ def _scored(tasks, jobs):
     """``[score_exercise(*task) for task in tasks]``, the exercises shared among ``jobs`` forked processes
     (each returns only its pairs and numbers; the fingerprints stay in the worker)."""
     answers = sum(len(task[1]) + len(task[2]) for task in tasks)
-    if jobs <= 1 or len(tasks) < 2 or answers < MIN_ANSWERS_FOR_WORKERS or \
-            "fork" not in multiprocessing.get_all_start_methods():
+    if (
+        jobs <= 1
+        or len(tasks) < 2
+        or answers < MIN_ANSWERS_FOR_WORKERS
+        or "fork" not in multiprocessing.get_all_start_methods()
+    ):
         return [score_exercise(*task) for task in tasks]
     biggest_first = sorted(range(len(tasks)), key=lambda i: -(len(tasks[i][1]) + len(tasks[i][2])))
     with multiprocessing.get_context("fork").Pool(min(jobs, len(tasks))) as pool:
@@ -217,14 +232,18 @@ def clusters_of(pairs: list[Pair]) -> list[Cluster]:
     for members_pairs in groups.values():
         members = sorted({a for p in members_pairs for a in (p.first, p.second)})
         exercises = tuple(dict.fromkeys(p.exercise for p in members_pairs))
-        found.append(Cluster(tuple(members), exercises,
-                             tuple(sorted(members_pairs, key=lambda p: -p.score))))
+        found.append(Cluster(tuple(members), exercises, tuple(sorted(members_pairs, key=lambda p: -p.score))))
     return sorted(found, key=lambda c: (-len(c.exercises), -c.score, c.members))
 
 
-def find_similar(current: dict[str, dict[str, str]], references: dict[str, str], stubs: dict[str, str],
-                 past: dict[str, dict[str, str]] | None = None, unread: dict[str, str] | None = None,
-                 jobs: int = 1) -> Findings:
+def find_similar(
+    current: dict[str, dict[str, str]],
+    references: dict[str, str],
+    stubs: dict[str, str],
+    past: dict[str, dict[str, str]] | None = None,
+    unread: dict[str, str] | None = None,
+    jobs: int = 1,
+) -> Findings:
     """The findings of a class.
 
     Parameters
@@ -249,8 +268,10 @@ def find_similar(current: dict[str, dict[str, str]], references: dict[str, str],
     past = past or {}
     findings = Findings(unread=dict(unread or {}))
     exercises = sorted(current)
-    tasks = [(exercise, current[exercise], past.get(exercise, {}), references.get(exercise),
-              stubs.get(exercise, "")) for exercise in exercises]
+    tasks = [
+        (exercise, current[exercise], past.get(exercise, {}), references.get(exercise), stubs.get(exercise, ""))
+        for exercise in exercises
+    ]
     pairs = []
     for (exercise, answers, earlier, reference, stub), found in zip(tasks, _scored(tasks, jobs)):
         findings.thresholds[exercise] = found.threshold

@@ -101,7 +101,7 @@ def _boilerplate(stub):
         function = ast.parse(stub).body[0]
         first = function.body[0]
         if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) and isinstance(first.value.value, str):
-            docstring = "\n".join(stub.splitlines()[first.lineno - 1:first.end_lineno]) + "\n"
+            docstring = "\n".join(stub.splitlines()[first.lineno - 1 : first.end_lineno]) + "\n"
     except (SyntaxError, IndexError, AttributeError):
         pass
     return hashes, docstring
@@ -110,8 +110,9 @@ def _boilerplate(stub):
 def _fingerprint(source, boilerplate):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return CodeFingerprint("answer.py", K, WINDOW, boilerplate=boilerplate, language="python",
-                               fp=io.StringIO(source))
+        return CodeFingerprint(
+            "answer.py", K, WINDOW, boilerplate=boilerplate, language="python", fp=io.StringIO(source)
+        )
 
 
 def shared_counts(fingerprints: list[CodeFingerprint]) -> tuple[np.ndarray, np.ndarray]:
@@ -130,8 +131,10 @@ def shared_counts(fingerprints: list[CodeFingerprint]) -> tuple[np.ndarray, np.n
     hashes = np.fromiter((value for fp in fingerprints for value in fp.hashes), dtype=np.int64, count=int(sizes.sum()))
     _, columns = np.unique(hashes, return_inverse=True)
     columns = columns.ravel()
-    incidence = sparse.csr_matrix((np.ones(len(columns), dtype=np.int32), (np.repeat(np.arange(n), sizes), columns)),
-                                  shape=(n, max(int(columns.max(initial=0)) + 1, 1)))
+    incidence = sparse.csr_matrix(
+        (np.ones(len(columns), dtype=np.int32), (np.repeat(np.arange(n), sizes), columns)),
+        shape=(n, max(int(columns.max(initial=0)) + 1, 1)),
+    )
     return (incidence @ incidence.T).toarray(), sizes
 
 

@@ -42,12 +42,19 @@ def similarity_of_class(path: str | Path, course: Course, past: tuple | list = (
         unread.update(answers.unread)
         for exercise, by_author in answers.by_exercise.items():
             earlier.setdefault(exercise, {}).update(by_author)
-    return find_similar(current.by_exercise, answer_sources(course.solutions), released_stubs(course.released),
-                        earlier, unread, jobs=jobs)
+    return find_similar(
+        current.by_exercise,
+        answer_sources(course.solutions),
+        released_stubs(course.released),
+        earlier,
+        unread,
+        jobs=jobs,
+    )
 
 
-def write_findings(findings: Findings, out_dir: str | Path,
-                   write: Callable[[Path, str], None] | None = None) -> tuple[Path, Path]:
+def write_findings(
+    findings: Findings, out_dir: str | Path, write: Callable[[Path, str], None] | None = None
+) -> tuple[Path, Path]:
     """Write ``similar_answers.csv`` and a stand-alone ``similar_answers.html`` into ``out_dir``.
 
     ``write(path, text)``: how to write a file (the batch's atomic writer); a plain write by default.
@@ -55,8 +62,10 @@ def write_findings(findings: Findings, out_dir: str | Path,
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     write = write or (lambda p, text: Path(p).write_text(text, encoding="utf-8"))
-    page = ('<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>Similar answers</title>'
-            f"</head><body>{similar_answers_html(findings)}</body></html>\n")
+    page = (
+        '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>Similar answers</title>'
+        f"</head><body>{similar_answers_html(findings)}</body></html>\n"
+    )
     write(out_dir / CSV_NAME, similar_answers_csv(findings))
     write(out_dir / HTML_NAME, page)
     return out_dir / CSV_NAME, out_dir / HTML_NAME

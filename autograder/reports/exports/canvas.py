@@ -57,11 +57,17 @@ def write(results: list[StudentResult], catalog: Catalog, roster: tuple | list =
         earned = {lesson.number: lesson.points for lesson in result.lessons if lesson.status != "missing"}
         if missing == "zero":
             earned.update({number: 0.0 for number in not_handed_in(result, lessons)})
-        writer.writerow([csv_cell(value, None) for value in (
-            (person.name if person and person.name else result.student_id),
-            person.canvas_id if person else "",
-            (person.sis_id if person and person.sis_id else result.student_id),
-            result.student_id,
-            person.section if person else "")]
-            + [f"{earned[lesson.number]:g}" if lesson.number in earned else "" for lesson in lessons])
+        writer.writerow(
+            [
+                csv_cell(value, None)
+                for value in (
+                    (person.name if person and person.name else result.student_id),
+                    person.canvas_id if person else "",
+                    (person.sis_id if person and person.sis_id else result.student_id),
+                    result.student_id,
+                    person.section if person else "",
+                )
+            ]
+            + [f"{earned[lesson.number]:g}" if lesson.number in earned else "" for lesson in lessons]
+        )
     return buffer.getvalue()

@@ -99,7 +99,7 @@ def _op_and_id(line):
 def _write(fd, data):
     view = memoryview(data)
     while view:
-        view = view[os.write(fd, view):]
+        view = view[os.write(fd, view) :]
 
 
 def wait_and_report(pid: int, replies_fd: int) -> None:
@@ -191,8 +191,14 @@ class Feeder:
 
     def ask_upstream(self, message: dict) -> dict:
         """A callable of the sender's own (the notebook stage): ask the sender, wait for its answer."""
-        self.send_upstream({"callback": message["callback"], "args": message.get("args", []),
-                            "kwargs": message.get("kwargs", {}), "id": self.request_id})
+        self.send_upstream(
+            {
+                "callback": message["callback"],
+                "args": message.get("args", []),
+                "kwargs": message.get("kwargs", {}),
+                "id": self.request_id,
+            }
+        )
         while True:
             line = self.upstream.read_line()
             if line is None:

@@ -37,8 +37,16 @@ import signal
 import socket
 import sys
 
-WARM_MODULES = ("numpy", "scipy.linalg", "scipy.spatial.transform", "matplotlib", "matplotlib.pyplot",
-                "ipykernel.kernelapp", "ipykernel.ipkernel", "IPython.core.interactiveshell")
+WARM_MODULES = (
+    "numpy",
+    "scipy.linalg",
+    "scipy.spatial.transform",
+    "matplotlib",
+    "matplotlib.pyplot",
+    "ipykernel.kernelapp",
+    "ipykernel.ipkernel",
+    "IPython.core.interactiveshell",
+)
 
 
 def kernel_argv(socket_path: str) -> list[str]:

@@ -89,11 +89,12 @@ def drop_privileges(uid: int = NOBODY) -> None:
 
 def _mount_points_under(folder):
     """Mount points below ``folder`` (read-only binds of a Python installed under /tmp, say), shallow first."""
+
     def unescape(path):  # mountinfo writes spaces and the like as octal escapes: \040
         out, i = [], 0
         while i < len(path):
-            if path[i] == "\\" and path[i + 1:i + 4].isdigit():
-                out.append(chr(int(path[i + 1:i + 4], 8)))
+            if path[i] == "\\" and path[i + 1 : i + 4].isdigit():
+                out.append(chr(int(path[i + 1 : i + 4], 8)))
                 i += 4
             else:
                 out.append(path[i])
@@ -109,12 +110,15 @@ def _mount_points_under(folder):
 def _fresh_tmp(libc, size):
     """A new tmpfs on /tmp that keeps the read-only mounts below it (a Python installed under /tmp)."""
     kept = [(point, os.open(point, os.O_PATH | os.O_CLOEXEC)) for point in _mount_points_under("/tmp")]
-    _check(libc.mount(b"tmpfs", b"/tmp", b"tmpfs", MS_NOSUID | MS_NODEV, f"size={size},mode=0777".encode()),
-           "mount a tmpfs on /tmp")
+    _check(
+        libc.mount(b"tmpfs", b"/tmp", b"tmpfs", MS_NOSUID | MS_NODEV, f"size={size},mode=0777".encode()),
+        "mount a tmpfs on /tmp",
+    )
     for point, fd in kept:
         os.makedirs(point, mode=0o755, exist_ok=True)
-        _check(libc.mount(f"/proc/self/fd/{fd}".encode(), point.encode(), None, MS_BIND | MS_REC, None),
-               f"keep {point}")
+        _check(
+            libc.mount(f"/proc/self/fd/{fd}".encode(), point.encode(), None, MS_BIND | MS_REC, None), f"keep {point}"
+        )
         libc.mount(None, point.encode(), None, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, None)
         os.close(fd)
     # the folders made to reach those mount points belong to the sandbox's user; the student must not
@@ -150,8 +154,13 @@ def _drop_capabilities(libc):
     _check(libc.capset(header, data), "drop capabilities")
 
 
-def enter_student_jail(uid: int = NOBODY, keep_user: bool = False, sandbox_folder: str = "/sandbox",
-                       tmp_bytes: int = TMP_BYTES, keep_fds: tuple[int, ...] = ()) -> None:
+def enter_student_jail(
+    uid: int = NOBODY,
+    keep_user: bool = False,
+    sandbox_folder: str = "/sandbox",
+    tmp_bytes: int = TMP_BYTES,
+    keep_fds: tuple[int, ...] = (),
+) -> None:
     """Make this process's student namespaces and return in PID 1 of them; the calling process never
     returns: it waits for that PID 1 and exits with its status (killed by the same signal).
 

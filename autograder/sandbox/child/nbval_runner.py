@@ -85,8 +85,9 @@ class Summary:
     def __init__(self):
         self.notebooks = {}
 
-    def pytest_collection_modifyitems(self, session: pytest.Session, config: pytest.Config,
-                                      items: list[pytest.Item]) -> None:
+    def pytest_collection_modifyitems(
+        self, session: pytest.Session, config: pytest.Config, items: list[pytest.Item]
+    ) -> None:
         for item in items:
             notebook = item.parent
             if hasattr(notebook, "skip_compare") and "text" not in notebook.skip_compare:
@@ -121,8 +122,12 @@ def use_forked_kernels(timeout: float = 30.0) -> subprocess.Popen | None:
     if len(socket_path) > 100:  # a Unix socket's path must be short
         return None
     try:
-        server = subprocess.Popen([sys.executable, fork_kernel.__file__, "serve", socket_path],
-                                  stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+        server = subprocess.Popen(
+            [sys.executable, fork_kernel.__file__, "serve", socket_path],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+        )
     except OSError:
         return None
     ready, _, _ = select.select([server.stdout], [], [], timeout)
@@ -154,9 +159,19 @@ def main(notebooks: list[str]) -> None:
     summary = Summary()
     # a cell may call a student function thousands of times, each a round trip to their sandbox (about
     # 0.3 ms); every call has its own time limit there, so the cell's limit only has to be generous
-    args = ["--nbval-lax", "--nbval-current-env", "--nbval-cell-timeout=60",
-            "--nbval-kernel-startup-timeout=60", "-p", "no:cacheprovider", "-q",
-            "-o", "addopts=", "--rootdir", os.getcwd()]
+    args = [
+        "--nbval-lax",
+        "--nbval-current-env",
+        "--nbval-cell-timeout=60",
+        "--nbval-kernel-startup-timeout=60",
+        "-p",
+        "no:cacheprovider",
+        "-q",
+        "-o",
+        "addopts=",
+        "--rootdir",
+        os.getcwd(),
+    ]
     if os.path.exists(os.path.join(HERE, "nbval_sanitize.cfg")):
         args += ["--nbval-sanitize-with", os.path.join(HERE, "nbval_sanitize.cfg")]
     pytest.main(args + notebooks, plugins=[summary])
@@ -173,7 +188,7 @@ def _take_option(arguments, name):
         return None
     position = arguments.index(name)
     value = arguments[position + 1]
-    del arguments[position:position + 2]
+    del arguments[position : position + 2]
     return value
 
 

@@ -178,8 +178,7 @@ def smooth_vector_function(x: ArrayLike) -> np.ndarray:
 
 def smooth_vector_function_jacobian(x: ArrayLike) -> np.ndarray:
     x = np.asarray(x, dtype=float)
-    return np.array([[2 * x[0] * x[1], x[0] ** 2, np.cos(x[2])],
-                     [0.5 * np.exp(0.5 * x[0]), -x[2], -x[1]]])
+    return np.array([[2 * x[0] * x[1], x[0] ** 2, np.cos(x[2])], [0.5 * np.exp(0.5 * x[0]), -x[2], -x[1]]])
 
 
 def quat_rotate_point_by(p: ArrayLike, q: ArrayLike) -> np.ndarray:
@@ -192,8 +191,11 @@ def identity_function(x: ArrayLike) -> np.ndarray:
     return np.asarray(x, dtype=float).copy()
 
 
-_PROBES = {name: value for name, value in globals().items()
-           if callable(value) and not name.startswith("_") and value.__module__ == __name__}
+_PROBES = {
+    name: value
+    for name, value in globals().items()
+    if callable(value) and not name.startswith("_") and value.__module__ == __name__
+}
 
 
 def names() -> list[str]:

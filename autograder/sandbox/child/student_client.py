@@ -61,7 +61,7 @@ class _Channel:
     def write(self, data):
         view = memoryview(data)
         while view:
-            view = view[os.write(self.out, view):]
+            view = view[os.write(self.out, view) :]
 
     def send(self, message):
         self.write(wire.dumps(message).encode() + b"\n")
@@ -114,22 +114,28 @@ def _raise(name, error):
     raise StudentCodeError(f"{kind}: {message}{where}")
 
 
-def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None,
-         timeout: float = CALL_TIMEOUT) -> object:
+def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, timeout: float = CALL_TIMEOUT) -> object:
     """Call the student's ``name`` of ``lesson`` in their sandbox; return its value, or raise what it raised."""
     channel = _channel(lesson)
     if channel.gone:
         raise StudentSandboxGone(f"the student's code {channel.gone} earlier in this notebook")
     callables = []
-    request = {"op": "call", "lesson": lesson, "name": name, "timeout": timeout,
-               "args": _as_wire(list(args), callables), "kwargs": _as_wire(dict(kwargs or {}), callables)}
+    request = {
+        "op": "call",
+        "lesson": lesson,
+        "name": name,
+        "timeout": timeout,
+        "args": _as_wire(list(args), callables),
+        "kwargs": _as_wire(dict(kwargs or {}), callables),
+    }
     channel.next_id += 1
     request["id"] = channel.next_id
     try:
         line = wire.dumps(request).encode() + b"\n"
     except wire.WireError as error:
-        raise TypeError(f"{name} can only be given numbers, arrays, lists, tuples, dicts and functions "
-                        f"here, not {error}") from None
+        raise TypeError(
+            f"{name} can only be given numbers, arrays, lists, tuples, dicts and functions here, not {error}"
+        ) from None
     deadline = time.monotonic() + timeout + MARGIN
     try:
         channel.write(line)

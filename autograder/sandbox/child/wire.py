@@ -25,7 +25,8 @@ import math
 import numpy as np
 
 ALLOWED_DTYPES = frozenset(
-    ["|b1", "|i1", "<i2", "<i4", "<i8", "|u1", "<u2", "<u4", "<u8", "<f2", "<f4", "<f8", "<c8", "<c16"])
+    ["|b1", "|i1", "<i2", "<i4", "<i8", "|u1", "<u2", "<u4", "<u8", "<f2", "<f4", "<f8", "<c8", "<c16"]
+)
 MAX_ELEMENTS = 5_000_000
 MAX_DEPTH = 32
 MAX_LINE_BYTES = 64 * 1024 * 1024
@@ -121,8 +122,11 @@ def encode(value: object, depth: int = 0, budget: list[int] | None = None) -> ob
         array = array.astype(array.dtype.newbyteorder("<"), copy=False)
         if array.size > MAX_ELEMENTS:
             raise WireError(f"an array of {array.size} elements (limit {MAX_ELEMENTS})")
-        return {"__ndarray__": base64.b64encode(array.tobytes()).decode("ascii"),
-                "dtype": array.dtype.str, "shape": list(array.shape)}
+        return {
+            "__ndarray__": base64.b64encode(array.tobytes()).decode("ascii"),
+            "dtype": array.dtype.str,
+            "shape": list(array.shape),
+        }
     if kind is list:
         return [encode(v, depth + 1, budget) for v in value]
     if kind is tuple:

@@ -116,8 +116,11 @@ def _describe(error):
 
 
 def _unsupported(error):
-    return {"type": "UnsupportedValue", "where": "",
-            "message": f"returned {error}; return numbers, numpy arrays, tuples, lists or dicts of those"}
+    return {
+        "type": "UnsupportedValue",
+        "where": "",
+        "message": f"returned {error}; return numbers, numpy arrays, tuples, lists or dicts of those",
+    }
 
 
 def _on_alarm(signum, frame):
@@ -157,8 +160,15 @@ class Worker:
         try:
             line = wire.dumps(message)
         except wire.WireError as error:
-            line = wire.dumps({"ok": False, "stdout": message["stdout"], "id": self.request_id,
-                               "error": _unsupported(error), "seconds": message.get("seconds", 0.0)})
+            line = wire.dumps(
+                {
+                    "ok": False,
+                    "stdout": message["stdout"],
+                    "id": self.request_id,
+                    "error": _unsupported(error),
+                    "seconds": message.get("seconds", 0.0),
+                }
+            )
         self.replies.write(line.encode("utf-8") + b"\n")
         self.replies.flush()
 
@@ -182,8 +192,11 @@ class Worker:
         except CallTimeout:
             if outer_expires:
                 raise  # the outer call's time is up: it is the one that timed out
-            return (False, {"type": "Timeout", "message": f"still running after {timeout:g} s", "where": ""},
-                    self.output.text())
+            return (
+                False,
+                {"type": "Timeout", "message": f"still running after {timeout:g} s", "where": ""},
+                self.output.text(),
+            )
         except BaseException as error:  # SystemExit and KeyboardInterrupt too: report, go on
             return False, _describe(error), self.output.text()
         finally:
@@ -216,14 +229,16 @@ class Worker:
         """
         function = self.namespace(call["lesson"]).get(call["name"])
         if not callable(function):
-            return False, {"type": "NameError", "where": "",
-                           "message": f"{call['name']} is not defined in the graded cells"}, {"stdout": ""}
+            return (
+                False,
+                {"type": "NameError", "where": "", "message": f"{call['name']} is not defined in the graded cells"},
+                {"stdout": ""},
+            )
         handles = iter(range(1 << 20))
         args = [self.materialize(a, handles) for a in call.get("args", [])]
         kwargs = {k: self.materialize(v, handles) for k, v in call.get("kwargs", {}).items()}
         forbidden = [str(name) for name in call.get("forbid") or ()]
-        ok, result, printed = self.run_guarded(lambda: watching.watch_call(function, args, kwargs, forbidden),
-                                               timeout)
+        ok, result, printed = self.run_guarded(lambda: watching.watch_call(function, args, kwargs, forbidden), timeout)
         if not ok:
             return False, result, {"stdout": printed}
         value, seen = result
@@ -246,8 +261,10 @@ class Worker:
             try:
                 message["text"] = wire.dumps(result)
                 if len(message["text"]) > MAX_VALUE_BYTES:
-                    raise wire.WireError(f"a value of {len(message.pop('text')) / 1024**2:.1f} MB "
-                                         f"(limit {MAX_VALUE_BYTES / 1024**2:g} MB)")
+                    raise wire.WireError(
+                        f"a value of {len(message.pop('text')) / 1024**2:.1f} MB "
+                        f"(limit {MAX_VALUE_BYTES / 1024**2:g} MB)"
+                    )
             except (wire.WireError, RecursionError) as error:
                 message.pop("text", None)
                 message["ok"] = False
@@ -326,8 +343,13 @@ class Worker:
             elif op == "bye":
                 return
             else:
-                self.reply({"ok": False, "stdout": "", "error": {"type": "ProtocolError",
-                                                                 "message": f"unknown op {op!r}", "where": ""}})
+                self.reply(
+                    {
+                        "ok": False,
+                        "stdout": "",
+                        "error": {"type": "ProtocolError", "message": f"unknown op {op!r}", "where": ""},
+                    }
+                )
 
 
 # ---------------------------------------------------------------- how a sandbox starts
@@ -347,8 +369,9 @@ def _become_runner(requests_fd, replies_fd):
         os._exit(0)
 
 
-def start(requests_fd: int, replies_fd: int, uid: int, keep_user: bool = False, in_jail: bool = True,
-          direct: bool = False) -> None:
+def start(
+    requests_fd: int, replies_fd: int, uid: int, keep_user: bool = False, in_jail: bool = True, direct: bool = False
+) -> None:
     """Become this student's sandbox: the jail (unless ``in_jail`` is False: limits mode), the feeder,
     the runner. ``requests_fd``/``replies_fd`` talk to the grader. Never returns.
 
@@ -371,8 +394,10 @@ def start(requests_fd: int, replies_fd: int, uid: int, keep_user: bool = False, 
         elif not keep_user:
             jail.drop_privileges(uid)
     except (jail.JailError, OSError) as error:
-        os.write(replies_fd, wire.dumps({"ready": False, "error": f"the student's namespaces: {error}",
-                                         "id": 0}).encode() + b"\n")
+        os.write(
+            replies_fd,
+            wire.dumps({"ready": False, "error": f"the student's namespaces: {error}", "id": 0}).encode() + b"\n",
+        )
         os._exit(0)
     ctypes.CDLL(None).prctl(PR_SET_DUMPABLE, 0, 0, 0, 0)
     for number in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2):
@@ -401,8 +426,14 @@ def main() -> None:
     for fd in (0, 1, 2):
         os.dup2(devnull, fd)
     os.close(devnull)
-    start(requests, replies, jail.sandbox_uid(sys.argv), keep_user="--keep-user" in sys.argv,
-          in_jail="--no-jail" not in sys.argv, direct="--direct" in sys.argv)
+    start(
+        requests,
+        replies,
+        jail.sandbox_uid(sys.argv),
+        keep_user="--keep-user" in sys.argv,
+        in_jail="--no-jail" not in sys.argv,
+        direct="--direct" in sys.argv,
+    )
 
 
 if __name__ == "__main__":
