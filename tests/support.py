@@ -14,7 +14,7 @@ import zlib
 from functools import lru_cache
 from pathlib import Path
 
-from autograder.grading.pipeline import GradingOptions, grade_student
+from autograder.grading.pipeline import GradingContext, GradingOptions, grade_student
 from autograder.lessons.hand_ins import write_submission
 from autograder.lessons.paths import PROJECT_ROOT, this_course
 from autograder.lessons.reference import answer_sources
@@ -87,7 +87,9 @@ def _drawn_mistakes(student, by_exercise, share=3):
 def grade(folder, lessons=(), nbval=False):
     """Grade one folder in this process and return its StudentResult."""
     return grade_student(
-        Path(folder).name, Path(folder), THIS_COURSE, GradingOptions(nbval=nbval, lessons=tuple(lessons))
+        Path(folder).name,
+        Path(folder),
+        GradingContext(THIS_COURSE, GradingOptions(nbval=nbval, lessons=tuple(lessons))),
     )
 
 

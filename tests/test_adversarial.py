@@ -494,9 +494,7 @@ def test_a_result_that_cannot_be_saved_still_reaches_the_gradebook(tmp_path, mon
     outputs = class_run.Outputs(tmp_path / "out")
     stamp = class_run.Stamp("f", {})
     monkeypatch.setattr(class_run, "save_result", lambda *a: (_ for _ in ()).throw(OSError(28, "No space left")))
-    task = class_run.GradingTask(
-        "mallory", str(tmp_path / "missing"), None, str(outputs.root), stamp, None, THIS_COURSE
-    )
+    task = class_run.GradingTask("mallory", str(tmp_path / "missing"), None, str(outputs.root), stamp, None)
     result = class_run.record_death(task, "the grading process was killed by SIGKILL")
     assert result.status == "could not grade" and "could not be saved" in result.problems[-1]
     monkeypatch.undo()

@@ -13,7 +13,7 @@ import pytest
 
 from autograder.batch.class_run import grade_class, safe_name
 from autograder.batch.progress import Progress
-from autograder.grading.pipeline import GradingOptions
+from autograder.grading.pipeline import GradingContext, GradingOptions
 from autograder.grading.results import CheckResult, ExerciseResult, LessonResult, StudentResult
 from autograder.lessons.paths import PROJECT_ROOT
 from autograder.reports.class_report import class_report_html
@@ -230,7 +230,9 @@ def test_the_slot_a_grader_is_handed_reaches_every_sandbox_of_its_student(tmp_pa
     monkeypatch.setattr(pipeline, "StudentSandbox", Recording)
     monkeypatch.setattr(nbval_stage, "StudentSandbox", Recording)
     folder = build_submission(tmp_path / "ada", lessons=(FIRST,))
-    result = pipeline.grade_student("ada", folder, THIS_COURSE, GradingOptions(lessons=(FIRST,)), slot=handed)
+    result = pipeline.grade_student(
+        "ada", folder, GradingContext(THIS_COURSE, GradingOptions(lessons=(FIRST,))), slot=handed
+    )
     assert result.score == result.max_score > 0
     assert seen == [handed, handed], seen  # the suite's sandbox, then lesson 01's notebook
 
@@ -239,7 +241,7 @@ def test_the_slot_a_grader_is_handed_reaches_every_sandbox_of_its_student(tmp_pa
     for name in ("become_subreaper", "kill_descendants"):  # not in this test process: it has other children
         monkeypatch.setattr(class_run.process_tree, name, lambda *args, **kwargs: None)
     task = class_run.GradingTask(
-        "ada", str(folder), FAST, str(tmp_path / "out"), class_run.Stamp("f", {}), None, THIS_COURSE
+        "ada", str(folder), GradingContext(THIS_COURSE, FAST), str(tmp_path / "out"), class_run.Stamp("f", {}), None
     )
     class_run.grade_task(task, handed)
     assert graded == [handed]

@@ -72,7 +72,7 @@ def test_nbval_gets_only_the_lessons_with_full_hidden_marks(tmp_path, monkeypatc
 
     monkeypatch.setattr(grading, "run_notebooks", fake_run_notebooks)
     result = grading.grade_student(
-        "s", folder, THIS_COURSE, grading.GradingOptions(lessons=(first.number, second.number))
+        "s", folder, grading.GradingContext(THIS_COURSE, grading.GradingOptions(lessons=(first.number, second.number)))
     )
     runs = {lesson.number: lesson.run for lesson in result.lessons}
     assert asked == [first.number]

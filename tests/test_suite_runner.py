@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from autograder.grading import pipeline, transcripts
-from autograder.grading.pipeline import GradingOptions, grade_student
+from autograder.grading.pipeline import GradingContext, GradingOptions, grade_student
 from autograder.grading.suite import run_hidden_suite_with_pytest
 from autograder.lessons.paths import PROJECT_ROOT
 from autograder.sandbox.child import wire
@@ -94,9 +94,9 @@ def _as_rows(result):
 @pytest.mark.parametrize("name", sorted(SUBMISSIONS))
 def test_the_runner_agrees_with_plain_pytest_check_by_check(name, tmp_path, monkeypatch):
     folder = SUBMISSIONS[name](tmp_path / name)
-    fast = grade_student(name, folder, THIS_COURSE, OPTIONS)
+    fast = grade_student(name, folder, GradingContext(THIS_COURSE, OPTIONS))
     monkeypatch.setattr(pipeline, "run_hidden_suite", run_hidden_suite_with_pytest)
-    plain = grade_student(name, folder, THIS_COURSE, OPTIONS)
+    plain = grade_student(name, folder, GradingContext(THIS_COURSE, OPTIONS))
 
     fast_rows, fast_problems = _as_rows(fast)
     plain_rows, plain_problems = _as_rows(plain)
@@ -125,8 +125,7 @@ def test_answers_equal_to_the_references_bit_for_bit_are_passed_without_running(
     result = grade_student(
         "ada",
         build_submission(tmp_path / "ada", lessons=("01", "02")),
-        THIS_COURSE,
-        GradingOptions(nbval=False, lessons=("01", "02")),
+        GradingContext(THIS_COURSE, GradingOptions(nbval=False, lessons=("01", "02"))),
     )
     assert result.score == result.max_score
     # rot_z and friends return the same bits as the reference's; a few results differ from the
@@ -141,7 +140,7 @@ def test_an_answer_one_rounding_away_from_the_reference_runs_its_tests_and_passe
     )
     folder = build_submission(tmp_path / "nudged", {"rot_z": nudged}, lessons=("01",))
     counts = _count_unrun(monkeypatch)
-    result = grade_student("nudged", folder, THIS_COURSE, GradingOptions(nbval=False, lessons=("01",)))
+    result = grade_student("nudged", folder, GradingContext(THIS_COURSE, GradingOptions(nbval=False, lessons=("01",))))
     rot_z = next(e for e in result.exercises if e.name == "rot_z")
     assert rot_z.points == rot_z.max_points and all(c.passed for c in rot_z.checks)
     assert counts["run"] >= len(rot_z.checks)  # its tests could not be skipped: they ran, and passed
@@ -265,7 +264,9 @@ def test_a_student_whose_code_is_the_references_runs_almost_no_test_once_learned
     suite.learn_reference_in_sandbox(THIS_COURSE.reference, THIS_COURSE)
     cut = sum(not t.complete for t in suite.transcripts_for(THIS_COURSE.reference, THIS_COURSE).values())
     counts = _count_unrun(monkeypatch)
-    result = grade_student("ada", build_submission(tmp_path / "ada"), THIS_COURSE, GradingOptions(nbval=False))
+    result = grade_student(
+        "ada", build_submission(tmp_path / "ada"), GradingContext(THIS_COURSE, GradingOptions(nbval=False))
+    )
     assert result.score == result.max_score
     total = counts["run"] + counts["unrun"]
     # the tests cut for chained inputs always run (tests/test_transcripts_independent.py); of the rest, ≤ 2%

@@ -49,6 +49,7 @@ from autograder.batch.progress import Progress
 from autograder.grading import submissions
 from autograder.grading.canary import describe_canary, ensure_reference_passes
 from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_changed
+from autograder.grading.context import GradingContext
 from autograder.grading.pipeline import GradingOptions, grade_student
 from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
@@ -74,11 +75,10 @@ class GradingTask(NamedTuple):
 
     student_id: str
     folder: str  # the student's submission folder
-    options: GradingOptions
+    context: GradingContext  # the course and the run's options (paths only: a Dask worker rebuilds the rest)
     out_root: str  # the run's output folder (:class:`Outputs`)
     stamp: "Stamp"
     config: object  # the course's settings (a CourseConfig) or None
-    course: Course  # the course graded (paths only: a Dask worker rebuilds its catalog and reference)
 
 
 class Runner(Protocol):
@@ -227,7 +227,7 @@ def save_result(outputs: Outputs, result: StudentResult, stamp: Stamp, graded_at
 
 def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     """Runs in a forked child: grade one student and save the result (``slot``: this child's warm slot)."""
-    student_id, folder, options, out_root, stamp, config, course = task
+    student_id, folder, context, out_root, stamp, config = task
     process_tree.become_subreaper()
     outputs = Outputs(Path(out_root))
 
@@ -237,7 +237,7 @@ def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     signal.signal(signal.SIGALRM, on_alarm)
     signal.alarm(STUDENT_TIMEOUT)
     try:
-        result = apply_late_policy(grade_student(student_id, Path(folder), course, options, slot=slot), folder, config)
+        result = apply_late_policy(grade_student(student_id, Path(folder), context, slot=slot), folder, config)
     except Exception as error:  # our fault, not the student's: report, keep the batch going
         result = StudentResult(
             student_id=student_id,
@@ -268,7 +268,7 @@ def record_death(task: GradingTask, problem: str) -> StudentResult:
     Never raises: when even this result cannot be saved, it is returned with a note, and the run keeps
     it in memory for this run's gradebook and report.
     """
-    student_id, folder, _, out_root, stamp, _, _ = task
+    student_id, folder, _, out_root, stamp, _ = task
     result = StudentResult(
         student_id=student_id,
         status=COULD_NOT_GRADE,
@@ -382,6 +382,7 @@ def grade_class(
         if config.ignore_file_times:
             parts["file times"] = "ignored (--ignore-mtimes)"
     stamp = Stamp(fingerprint(parts), parts)
+    context = GradingContext(course, options)
     tasks = []
     for student_id, folder in students:
         if only and student_id not in only:
@@ -398,9 +399,7 @@ def grade_class(
             continue
         summary.reasons[student_id] = because
         tasks.append(
-            GradingTask(
-                student_id, str(folder), options, str(outputs.root), replace(stamp, because=because), config, course
-            )
+            GradingTask(student_id, str(folder), context, str(outputs.root), replace(stamp, because=because), config)
         )
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:

@@ -84,12 +84,13 @@ def shortfalls(result: StudentResult) -> list[str]:
 
 def _grade_reference(course, options, folder, target, slot=None):
     """Runs in a fork, like a student's grading: grade the reference and write its result to ``target``."""
+    from autograder.grading.context import GradingContext
     from autograder.grading.pipeline import grade_student
     from autograder.sandbox import process_tree
 
     process_tree.become_subreaper()
     try:
-        result = grade_student("reference solutions (canary)", folder, course, options, slot=slot)
+        result = grade_student("reference solutions (canary)", folder, GradingContext(course, options), slot=slot)
     finally:
         process_tree.kill_descendants()
     Path(target).write_text(result.to_json(), encoding="utf-8")

@@ -18,6 +18,7 @@ import time
 from pathlib import Path
 
 from autograder.grading import extract, submissions
+from autograder.grading.context import GradingContext
 from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
 from autograder.grading.options import GradingOptions
 from autograder.grading.results import (
@@ -32,11 +33,12 @@ from autograder.grading.results import (
 )
 from autograder.grading.suite import StudentProxy, run_hidden_suite
 from autograder.lessons import cells
-from autograder.lessons.course import Course
 from autograder.lessons.notebook_files import UnreadableNotebook, read_submission
 from autograder.sandbox import launcher
 from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
 from autograder.sandbox.warm import WarmSlot
+
+__all__ = ["GradingContext", "GradingOptions", "grade_student"]  # what a caller needs to grade one student
 
 
 def _score(max_points, checks):
@@ -111,16 +113,17 @@ def _read_lessons(folder, course, only=()):
 def grade_student(
     student_id: str,
     folder: Path,
-    course: Course,
-    options: GradingOptions = GradingOptions(),
+    context: GradingContext,
     slot: WarmSlot | None = None,
 ) -> StudentResult:
-    """Grade the submission in ``folder`` against ``course``; never raises for anything the student did.
+    """Grade the submission in ``folder`` in ``context`` (the course and the run's options); never raises for
+    anything the student did.
 
     ``slot``: the warm slot (:class:`~autograder.sandbox.warm.WarmSlot`) this grader process was
     given, whose zygote forks the student's sandboxes; None starts each sandbox cold.
     """
     started = time.monotonic()
+    course, options = context.course, context.options
     catalog, reference = course.catalog, course.reference
     result = StudentResult(
         student_id=student_id,

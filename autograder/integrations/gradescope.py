@@ -113,7 +113,7 @@ def build_bundle(
 
 def run_in_container(root: str | Path) -> dict:
     """Grade ``root/submission`` and write ``root/results/results.json`` (never raises)."""
-    from autograder.grading.pipeline import GradingOptions, grade_student
+    from autograder.grading.pipeline import GradingContext, GradingOptions, grade_student
     from autograder.sandbox import process_tree
 
     root = Path(root)
@@ -127,7 +127,7 @@ def run_in_container(root: str | Path) -> dict:
         options = GradingOptions(nbval=config.get("nbval", True), lessons=tuple(config.get("lessons", ())))
         course = Course.at(GRADER_ROOT / config.get("course", "."))
         process_tree.become_subreaper()
-        result = grade_student("submission", root / "submission", course, options)
+        result = grade_student("submission", root / "submission", GradingContext(course, options))
         process_tree.kill_descendants()
         data = results_json(result, config.get("visibility", DEFAULT_VISIBILITY), time.monotonic() - started)
     except Exception as error:  # the grader failed: say so, never crash without results
