@@ -178,7 +178,8 @@ def _cmd_record(args):
         return 1
     for path in changed:
         print(f"recorded {path}")
-    print(f"record done: {len(changed)} master(s) changed. Run `python -m autograder release` next.")
+    course = f" --course {args.course}" if args.course else ""
+    print(f"record done: {len(changed)} master(s) changed. Run `python -m autograder release{course}` next.")
     return 0
 
 

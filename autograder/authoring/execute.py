@@ -40,6 +40,9 @@ def execute_notebook(
         kernel_name="python3",
         allow_errors=allow_errors,
         resources={"metadata": {"path": str(cwd)}},
+        # the kernel's own warnings (e.g. "running over TCP without encryption": it listens on localhost only)
+        # would reach the author's terminal after every recording; its errors still do
+        extra_arguments=["--IPKernelApp.log_level=ERROR"],
     )
     client.km = client.create_kernel_manager()
     client.km.kernel_spec  # noqa: B018  (resolve the spec before starting)
