@@ -36,6 +36,10 @@ gradescope --out autograder.zip [--lessons NN ...] [--visibility V]
 preview NOTEBOOK [--figures DIR]
     Run a notebook top to bottom; report errors, warnings and check cells;
     save every figure as a PNG to look at (for authors).
+course-stats [--markdown | --catalog]
+    What the exercises ask for, per lesson: exercises and points by kind (transcribe, assemble,
+    derive, design, diagnose), the share of points that ask for thinking, estimated minutes;
+    --catalog prints docs/EXERCISES.md.
 book --out DIR
     Build the book: the solved lessons, executed, as a static website
     (open DIR/index.html in a browser; no Python needed to read it).
@@ -111,14 +115,15 @@ SUBMISSIONS_LAYOUT = (
 )
 
 
-def _require_students(path):
+def _require_students(path, layout=None):
     """Raise :class:`UsageError` when ``path`` holds no student folder, saying what one looks like, and when
-    ``path`` looks like a single student's folder (notebooks of its own, or only nbgrader assignment folders)."""
+    ``path`` looks like a single student's folder (notebooks of its own, or only nbgrader assignment folders).
+    ``layout``: the one declared (``grade --layout``), else detected from the instructor's markers."""
     import re
 
     from autograder.grading.submissions import scan_submissions
 
-    students = [student_id for student_id, _ in scan_submissions(path).files]
+    students = [student_id for student_id, _ in scan_submissions(path, layout).files]
     if students and not all(re.fullmatch(r"lesson\d\d", student_id) for student_id in students):
         return
     if students or any(child.suffix == ".ipynb" for child in path.iterdir()):
@@ -263,14 +268,18 @@ def _read_roster(path):
 
 def _cmd_canary(args):
     from autograder.batch.class_run import prewarm
-    from autograder.grading.canary import CanaryFailed, describe_canary, ensure_reference_passes
+    from autograder.grading.canary import CanaryFailed, check_sandbox_view, describe_canary, ensure_reference_passes
     from autograder.grading.fingerprint import fingerprint_parts
     from autograder.grading.pipeline import GradingOptions
     from autograder.sandbox import launcher
 
     course = _course(args)
     args.lessons = _lesson_numbers(args.lessons, course)
-    print(launcher.describe_isolation())
+    try:  # the sandbox's view, checked from inside (the isolation line says what it found)
+        print(launcher.describe_isolation(check_sandbox_view(course).line()))
+    except CanaryFailed as error:
+        print(f"error: canary failed: {error}", file=sys.stderr)
+        return 3
     options = GradingOptions(nbval=not args.no_nbval, lessons=tuple(args.lessons))
     prewarm(course)
     try:
@@ -284,7 +293,7 @@ def _cmd_canary(args):
 def _cmd_grade(args):
     from autograder.batch.class_run import UnknownStudents, grade_class
     from autograder.batch.progress import Progress
-    from autograder.grading.canary import CanaryFailed
+    from autograder.grading.canary import CanaryFailed, check_sandbox_view
     from autograder.grading.pipeline import GradingOptions
     from autograder.integrations.cluster import ClusterError
     from autograder.reports.lateness import ConfigError, load_config
@@ -316,8 +325,15 @@ def _cmd_grade(args):
     if not path.is_dir():
         print(f"error: {path} is not a folder of student submissions", file=sys.stderr)
         return 2
-    _require_students(path)
-    print(launcher.describe_isolation())
+    _require_students(path, args.layout)
+    from autograder.grading.submissions import detect_layout
+
+    try:  # the sandbox's view, checked from inside with this run's folders (grade_class's canary checks it too)
+        print(launcher.describe_isolation(check_sandbox_view(course, submissions=path, output=out).line()))
+    except CanaryFailed as error:
+        print(f"error: canary failed: {error}", file=sys.stderr)
+        return 3
+    print(one_line(detect_layout(path, args.layout).line(), 400))  # after the isolation line, which comes first
     if not args.cluster and warm.enabled():
         print(
             "sandbox slots: each grading process keeps one warm sandbox whose workers are forked fresh for "
@@ -355,6 +371,8 @@ def _cmd_grade(args):
             config=config,
             runner=runner,
             similarity=not args.no_similarity,
+            layout=args.layout,
+            share_output=args.share_output,
         )
     except CanaryFailed as error:
         print(f"error: canary failed: {error}", file=sys.stderr)
@@ -559,6 +577,15 @@ def _cmd_handout(args):
     return 0
 
 
+def _cmd_course_stats(args):
+    from autograder.lessons.course_stats import catalog_page, stats_markdown, stats_table
+
+    catalog = _course(args).catalog
+    text = catalog_page(catalog) if args.catalog else stats_markdown(catalog) if args.markdown else stats_table(catalog)
+    print(text, end="" if text.endswith("\n") else "\n")  # --catalog's page is a whole file, newline included
+    return 0
+
+
 def _cmd_mutants(args):
     from autograder.mutants.run import main as run_mutants
 
@@ -679,6 +706,18 @@ def build_parser():
         "(N local worker processes); see docs/CLUSTER.md",
     )
     grade.add_argument(
+        "--layout",
+        choices=("folders", "nbgrader"),
+        default=None,
+        help="how the class is laid out: one folder per student, or nbgrader's submitted/<student>/<assignment>/ "
+        "(default: nbgrader's only for its course root, nbgrader_config.py or gradebook.db beside submitted/)",
+    )
+    grade.add_argument(
+        "--share-output",
+        action="store_true",
+        help="let group and others read the output folder (grades, feedback pages); by default only you can",
+    )
+    grade.add_argument(
         "--no-similarity",
         action="store_true",
         help="do not compare the students' answers with each other (the 'Similar answers' section)",
@@ -760,7 +799,30 @@ def build_parser():
     book = commands.add_parser("book", help="build the solved lessons as a static website (open OUT/index.html)")
     book.add_argument("--out", default="_build/book", help="the folder to write (replaced), e.g. _build/book")
     book.set_defaults(run=_cmd_book)
-    for command in (release, record, grade, similar, canary, course, handout, export, gradescope, mutants, book):
+
+    stats = commands.add_parser(
+        "course-stats", help="what the exercises ask for: kinds, points and minutes per lesson (issue 42's targets)"
+    )
+    form = stats.add_mutually_exclusive_group()
+    form.add_argument("--markdown", action="store_true", help="print the table as Markdown")
+    form.add_argument(
+        "--catalog", action="store_true", help="print the catalog of every exercise (docs/EXERCISES.md) as Markdown"
+    )
+    stats.set_defaults(run=_cmd_course_stats)
+    for command in (
+        release,
+        record,
+        grade,
+        similar,
+        canary,
+        course,
+        handout,
+        export,
+        gradescope,
+        mutants,
+        book,
+        stats,
+    ):
         command.add_argument("--course", metavar="DIR", default=None, help=COURSE_HELP)
     return parser
 

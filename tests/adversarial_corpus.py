@@ -160,12 +160,12 @@ def cases(context):
             "detached_process",
             "leaves a detached process that rewrites the gradebook later",
             "full",
-            "import os, time\n"
+            "import os, sys, time\n"
             "if os.fork() == 0:\n"
             "    os.setsid()\n"
             "    if os.fork() == 0:\n"
-            "        if os.fork() == 0:\n"
-            "            os.execv('/bin/sleep', ['sleep', '31.4159'])\n"
+            "        if os.fork() == 0:\n"  # a long-lived program of its own (the sandbox holds no /bin/sleep)
+            "            os.execv(sys.executable, [sys.executable, '-c', 'import time; time.sleep(31.4159)'])\n"
             "        time.sleep(4)\n"
             "        for target in ["
             f"{str(out / 'grades.csv')!r}, {str(canary)!r}]:\n"
@@ -434,3 +434,43 @@ def damage_notebook(case, nb, text):
     from autograder.lessons.notebook_files import canonical_text
 
     return canonical_text(nb)
+
+
+# A student who fills every field they control to its bound (SECURITY.md, "Budgets per student"): each
+# answer cell still defines a correct function (full marks), but prints megabytes, raises an error of
+# megabytes, carries a tail of many tokens nested deep that is slow to tokenise and parse, and the folder
+# holds notebooks and files with long names that the grader echoes. Built in the student's folder after
+# ``build_submission`` wrote the reference answers.
+FILL_MARK = "FILLSEVERYFIELD"
+
+
+def filled_answer(reference):
+    """``reference`` (a correct answer cell) with most of a megabyte printed and raised (the runner's own cuts of
+    messages and printed text lifted first, as a student can), and 170,000 characters of nested tokens
+    (under the 200,000 above which the grader's own parser refuses a source)."""
+    tail = "_pad = " + "(" * 90 + "[" + f"{FILL_MARK}_a, " * 9_000 + "]" + ")" * 90 + " if False else None\n"
+    forge = (  # the runner's own bounds on messages and printed text live in the student's process: lift them
+        "import sys as _sys\n"
+        "for _m in list(_sys.modules.values()):\n"
+        "    if isinstance(getattr(_m, 'MESSAGE_KEEP', None), int):\n"
+        "        _m.MESSAGE_KEEP = _m.STDOUT_KEEP = 10**9\n"
+    )
+    return (
+        forge
+        + reference
+        + f"\n{tail}"
+        + f"print('{FILL_MARK}' + 'p' * 400_000)\n"
+        + f"raise ValueError('{FILL_MARK} ' + 'e' * 900_000)\n"
+    )
+
+
+def fill_every_field(folder):
+    """Add to a student's ``folder`` what makes the grader echo long names: 60 extra notebooks and files
+    whose names are 200 characters (each one a line of problems or skipped entries)."""
+    from pathlib import Path
+
+    folder = Path(folder)
+    for index in range(60):
+        name = f"{index:02d}_{FILL_MARK}_" + "n" * 180
+        (folder / f"{name}.ipynb").write_text('{"cells": [], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}')
+        (folder / f".{name}").write_text("hidden")

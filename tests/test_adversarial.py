@@ -10,6 +10,7 @@ finished, and nothing outside the sandbox may have changed.
 import csv
 import json
 import os
+import shutil
 import signal
 import socket
 import stat
@@ -521,3 +522,155 @@ def test_a_page_that_cannot_be_made_keeps_the_grade(tmp_path, monkeypatch):
     class_run.save_result(outputs, _graded("ada"), class_run.Stamp("f", {}), "now")
     assert class_run.load_saved(outputs, "ada").result.status == "graded"
     assert "could not be made" in outputs.feedback_html("ada").read_text(encoding="utf-8")
+
+
+# ------------------------------------------------------------------ budgets per student (SECURITY.md)
+GRADER_MEMORY = 1 << 30  # the project's bound on any one process of the grader (resident high-water mark)
+
+
+@pytest.fixture(scope="module")
+def filled(tmp_path_factory):
+    """A student who fills every field they control to its bound, beside an honest one, graded by
+    ``python -m autograder grade`` with the grader's memory sampled."""
+    from adversarial_corpus import fill_every_field, filled_answer
+    from process_memory import PeakMemory, is_grader
+    from support import references
+
+    base = tmp_path_factory.mktemp("filled")
+    class_dir, out = base / "class", base / "out"
+    answers = {name: filled_answer(source) for name, source in references().items()}
+    build_submission(class_dir / "fills_every_field", answers, lessons=("01",))
+    fill_every_field(class_dir / "fills_every_field")
+    build_submission(class_dir / "honest", lessons=("01",))
+    command = [sys.executable, "-m", "autograder", "grade", str(class_dir), "--out", str(out)]
+    command += ["--lessons", "01", "--jobs", "1", "--no-nbval"]
+    process = subprocess.Popen(command, cwd=PROJECT_ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    with PeakMemory(process.pid, only=is_grader) as memory:
+        stdout, stderr = process.communicate(timeout=1500)
+    return {"out": out, "returncode": process.returncode, "stderr": stderr, "memory": memory}
+
+
+def _student_bytes(out, student_id):
+    outputs = class_run.Outputs(out)
+    return {kind: path.stat().st_size for kind, path in outputs.student_files(student_id)}
+
+
+def test_a_student_who_fills_every_field_is_kept_within_the_budget(filled):
+    """Every byte the student can make the grader keep is bounded where it is made: each text is cut with
+    its marker, and the saved result, the feedback page and the Gradescope JSON are under their bounds; no
+    process of the grader passes the project's 1 GiB while grading them (both figures are printed)."""
+    from adversarial_corpus import FILL_MARK
+    from autograder.grading import budget
+
+    assert filled["returncode"] == 0, filled["stderr"][-2000:]
+    sizes = _student_bytes(filled["out"], "fills_every_field")
+    print(f"bytes kept for the student who fills every field: {sizes}, {sum(sizes.values())} in all")
+    assert sizes["student"] <= budget.RESULT_BYTES and sizes["feedback"] <= budget.PAGE_BYTES, sizes
+    assert sizes["gradescope"] <= budget.GRADESCOPE_BYTES, sizes
+    assert sum(sizes.values()) <= budget.STUDENT_BYTES, sizes
+    memory = filled["memory"]
+    print(f"grader: largest process {memory.largest / 2**20:.0f} MiB, all together {memory.peak / 2**20:.0f} MiB")
+    assert 0 < memory.largest < GRADER_MEMORY, memory.largest
+    result = class_run.load_saved(class_run.Outputs(filled["out"]), "fills_every_field").result
+    assert result.score == result.max_score > 0  # the bound changes no grade
+    notes = [note for e in result.exercises for note in e.notes]
+    assert notes and all(len(note) <= budget.STRING_CHARS + 40 for note in notes)
+    assert any(FILL_MARK in note and "bytes more)" in note for note in notes)
+    for texts in (result.problems, result.skipped):  # the long names it made the grader echo
+        assert any(FILL_MARK in text for text in texts) and len(texts) <= budget.LIST_ITEMS + 1
+        assert all(len(text) <= budget.STRING_CHARS + 40 for text in texts)
+    assert result.answers, "the answers the similarity stage compares are kept by the grading process"
+
+
+def test_saved_results_are_read_with_a_size_cap(filled, tmp_path):
+    """``status``, ``export`` and the batch parent read at most RESULT_BYTES of a saved result."""
+    from autograder.grading import budget
+
+    out = tmp_path / "out"
+    shutil.copytree(filled["out"], out)
+    path = class_run.Outputs(out).student_json("honest")
+    data = json.loads(path.read_text(encoding="utf-8"))
+    data["result"]["reason"] = "r" * budget.RESULT_BYTES
+    path.write_text(json.dumps(data), encoding="utf-8")
+    assert class_run.load_saved(class_run.Outputs(out), "honest") is None
+    results, _ = class_run.collect_results(class_run.Outputs(out), ["honest", "fills_every_field"])
+    assert results[0].status == "could not grade" and results[1].score == results[1].max_score
+
+
+def _forbid_parsing_student_text(monkeypatch, marks, calls):
+    """In this process only (forked readers and graders may), refuse to read a notebook or to parse or
+    tokenise a text that holds one of ``marks``; record each attempt in ``calls``."""
+    from autograder.lessons import cells as cells_module
+    from autograder.similarity import answers, fingerprints
+
+    parent = os.getpid()
+
+    def guard(name, function, check=lambda *args, **kwargs: True):
+        def guarded(*args, **kwargs):
+            if os.getpid() == parent and check(*args, **kwargs):
+                calls.append(name)
+                raise AssertionError(f"{name} in the similarity stage's parent")
+            return function(*args, **kwargs)
+
+        return guarded
+
+    student_text = lambda code, *args, **kwargs: any(mark in code for mark in marks)  # noqa: E731
+    monkeypatch.setattr(answers, "read_submission", guard("read_submission", answers.read_submission))
+    monkeypatch.setattr(answers, "lesson_program", guard("lesson_program", answers.lesson_program))
+    import copydetect.detector
+
+    for module in (fingerprints, copydetect.detector):  # what tokenises, whoever calls it
+        if hasattr(module, "filter_code"):
+            monkeypatch.setattr(module, "filter_code", guard("filter_code", module.filter_code, student_text))
+    monkeypatch.setattr(cells_module, "parse_source", guard("parse_source", cells_module.parse_source, student_text))
+
+
+def _similarity_class(class_dir):
+    from adversarial_corpus import fill_every_field, filled_answer
+    from support import references
+
+    mine = {name: source + "\n# mine\n" for name, source in references().items()}
+    for student in ("ana", "bo"):
+        build_submission(class_dir / student, mine, lessons=("01",))
+    answers = {name: filled_answer(source) for name, source in references().items()}
+    build_submission(class_dir / "fills_every_field", answers, lessons=("01",))
+    fill_every_field(class_dir / "fills_every_field")
+
+
+def test_the_similarity_stage_parses_nothing_in_the_batch_parent(tmp_path, monkeypatch):
+    """Each student's answers are read, parsed and tokenised in their own grading process and kept in
+    their result; the parent only hashes the normalised code it is given."""
+    from adversarial_corpus import FILL_MARK
+    from autograder.grading.pipeline import GradingOptions
+
+    class_dir = tmp_path / "class"
+    _similarity_class(class_dir)
+    calls, stage = [], class_run._similarity_section
+
+    def watched(*args, **kwargs):
+        with pytest.MonkeyPatch.context() as patch:
+            _forbid_parsing_student_text(patch, (FILL_MARK, "# mine"), calls)
+            return stage(*args, **kwargs)
+
+    monkeypatch.setattr(class_run, "_similarity_section", watched)
+    summary = class_run.grade_class(
+        class_dir, tmp_path / "out", THIS_COURSE, jobs=1, options=GradingOptions(nbval=False, lessons=("01",))
+    )
+    assert not calls and summary.similarity is not None, (calls, summary.similarity_note)
+    assert summary.similarity.compared["rot_z"] >= 2  # the answers were compared
+    assert {"ana", "bo"} <= {pair.first for pair in summary.similarity.reference_matches}
+
+
+def test_the_similarity_command_reads_each_student_in_a_limited_fork(tmp_path, monkeypatch):
+    """``python -m autograder similarity`` without saved results: each student is read in a forked
+    process of its own, with limits; the parent parses nothing of a student's."""
+    from adversarial_corpus import FILL_MARK
+    from autograder.similarity.stage import similarity_of_class
+
+    class_dir = tmp_path / "class"
+    _similarity_class(class_dir)
+    calls = []
+    _forbid_parsing_student_text(monkeypatch, (FILL_MARK, "# mine"), calls)
+    findings = similarity_of_class(class_dir, THIS_COURSE, jobs=2)
+    assert not calls and not findings.unread, (calls, findings.unread)
+    assert {"ana", "bo"} <= {pair.first for pair in findings.reference_matches}

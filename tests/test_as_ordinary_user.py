@@ -20,10 +20,13 @@ ROOT = Path(__file__).resolve().parent.parent
 ONLY_AS_ROOT = ("as an ordinary user every sandbox runs as that user", "only root makes device files")
 WALLS = [
     "test_sandbox.py",
+    "test_sandbox_view.py",
     "test_warm_slots.py",
+    "test_fresh_process_state.py",
     "test_feeder.py",
     "test_watching.py",
     "test_cleanup.py",
+    "test_class_layout.py",
     "test_notebook_stage_walls.py",
     "test_adversarial.py",
 ]

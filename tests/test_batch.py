@@ -169,6 +169,7 @@ def test_nbgrader_submitted_layout(tmp_path):
     for student, default in (("ana", "reference"), ("bo", STUB)):
         folder = tmp_path / "course" / "submitted" / student / f"lesson{lesson.number}"
         build_submission(folder, default=default, lessons=(lesson.number,))
+    (tmp_path / "course" / "nbgrader_config.py").write_text("c = get_config()\n", encoding="utf-8")  # its course root
     summary = grade_class(tmp_path / "course", tmp_path / "out", THIS_COURSE, jobs=2, options=FAST)
     scores = {r.student_id: (r.score, r.max_score) for r in summary.results}
     assert scores == {"ana": (lesson.points, lesson.points), "bo": (0.0, lesson.points)}
@@ -237,7 +238,7 @@ def test_the_slot_a_grader_is_handed_reaches_every_sandbox_of_its_student(tmp_pa
     assert seen == [handed, handed], seen  # the suite's sandbox, then lesson 01's notebook
 
     graded = []
-    monkeypatch.setattr(class_run, "grade_student", lambda *args, slot=None: graded.append(slot) or result)
+    monkeypatch.setattr(class_run, "grade_student", lambda *args, slot=None, **kwargs: graded.append(slot) or result)
     for name in ("become_subreaper", "kill_descendants"):  # not in this test process: it has other children
         monkeypatch.setattr(class_run.process_tree, name, lambda *args, **kwargs: None)
     task = class_run.GradingTask(

@@ -200,8 +200,10 @@ def test_ctrl_c_says_what_is_saved_and_how_to_resume(classroom):
         text=True,
         start_new_session=True,
     )
-    started = grader.stdout.readline()  # the sandbox line: the grader is at work
+    started = grader.stdout.readline()  # the sandbox line, then how the class is read and why: the grader is at work
     assert started.startswith("sandbox"), started
+    layout = grader.stdout.readline()
+    assert layout.startswith("layout: folders"), layout
     time.sleep(1.0)
     os.killpg(grader.pid, signal.SIGINT)
     stdout, stderr = grader.communicate(timeout=60)
@@ -228,14 +230,16 @@ def _nbgrader_student(root):
 def test_the_hand_in_time_comes_from_nbgraders_timestamp_only(tmp_path):
     """A timestamp.txt the student wrote (beside a notebook deeper down, or in their own folder) is never read."""
     folder, notebook = _nbgrader_student(tmp_path)
-    assert submission_time(notebook, folder) == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
+    assert submission_time(notebook, folder, "nbgrader") == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
     (folder / "timestamp.txt").write_text("2026-11-01 10:00:00 UTC", encoding="utf-8")
     deeper = folder / "lesson01" / "mine"
     deeper.mkdir()
     shutil.copy(notebook, deeper / notebook.name)
     (deeper / "timestamp.txt").write_text("2026-11-01 10:00:00 UTC", encoding="utf-8")
-    assert submission_time(deeper / notebook.name, folder) == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
-    assert submission_time(notebook, folder) == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
+    assert submission_time(deeper / notebook.name, folder, "nbgrader") == datetime(
+        2026, 12, 1, 10, 0, tzinfo=timezone.utc
+    )
+    assert submission_time(notebook, folder, "nbgrader") == datetime(2026, 12, 1, 10, 0, tzinfo=timezone.utc)
 
     student = tmp_path / "class" / "bo"  # one folder per student (an LMS download): the file's time as collected
     student.mkdir(parents=True)
@@ -250,11 +254,14 @@ def test_a_corrected_hand_in_time_re_grades_the_student(tmp_path):
     folder, notebook = _nbgrader_student(tmp_path)
     stamp = Stamp("0" * 16, {})
     saved = Saved(
-        stamp, StudentResult(student_id="ana", status=GRADED_WITH_PROBLEMS, submission_hash=submission_hash(folder))
+        stamp,
+        StudentResult(
+            student_id="ana", status=GRADED_WITH_PROBLEMS, submission_hash=submission_hash(folder, "nbgrader")
+        ),
     )
-    assert regrade_reason(saved, stamp, submission_hash(folder)) is None
+    assert regrade_reason(saved, stamp, submission_hash(folder, "nbgrader")) is None
     (folder / "lesson01" / "timestamp.txt").write_text("2026-12-03 10:00:00.000000 UTC", encoding="utf-8")
-    assert regrade_reason(saved, stamp, submission_hash(folder)) == "the submission changed"
+    assert regrade_reason(saved, stamp, submission_hash(folder, "nbgrader")) == "the submission changed"
 
     student = tmp_path / "class" / "bo"  # without nbgrader: the file's time
     student.mkdir(parents=True)

@@ -106,6 +106,7 @@ def test_due_dates_late_penalties_and_submission_times(tmp_path):
     for student, stamp in (("early", "2026-11-30 13:00:00.000000 UTC"), ("late", "2026-12-02 13:00:00.000000 UTC")):
         folder = build_submission(submitted / student / f"lesson{LESSON.number}", lessons=(LESSON.number,))
         (folder / "timestamp.txt").write_text(stamp, encoding="utf-8")
+    (tmp_path / "course" / "gradebook.db").write_bytes(b"")  # nbgrader's course root: its layout, its timestamps
     config = tmp_path / "course.toml"
     config.write_text(
         f"[late_policy]\npenalty_per_day = 0.1\ngrace_minutes = 30\n"

@@ -16,6 +16,7 @@ import pytest
 
 from autograder.batch.class_run import Outputs, Stamp, save_result
 from autograder.grading.results import GRADED, ExerciseResult, LessonResult, StudentResult
+from autograder.grading.submissions import NBGRADER, read_student_folder
 from autograder.reports import plugins
 from autograder.reports.exports import EXPORTERS, canvas
 from autograder.reports.lateness import (
@@ -105,7 +106,8 @@ def test_the_cutoff_rule_gives_full_points_before_due_and_grace_and_zero_after(t
     assert course.policy("02").rule == ("cutoff" if where == "course" else "per_day")
     assert course.policy("01").rule == "cutoff" and course.policy("01").grace_minutes == 15
     folder, result = _handed_in(tmp_path, DUE + after)
-    lesson = apply_late_policy(result, folder, course).lessons[0]
+    student = read_student_folder(folder, layout=NBGRADER)  # timestamp.txt counts in nbgrader's layout only
+    lesson = apply_late_policy(result, student, course).lessons[0]
     assert lesson.raw_points == 4.0 and lesson.points == points and result.score == points
     if points:
         assert lesson.late_penalty == 0 and lesson.late_note == ""

@@ -3,6 +3,8 @@
 One small class (lessons 01 and 02), graded once by the real command as an instructor types it, with a
 course config whose due date has passed and no ``timestamp.txt``: every notebook's time is the moment
 this test wrote it, as after a copy. Then ``status``, and one more grading with ``--ignore-mtimes``.
+The class is graded with ``--layout nbgrader``: the instructor says that the times nbgrader recorded
+(``<student>/<assignment>/timestamp.txt``) are to be read; in the default layout no student's file dates anything.
 
 - ``ana``: every answer right;  ``bo``: the untouched release;  ``cy``: lesson 01 damaged by a text editor;
   ``dan``: one typical mistake;  ``eve``: lesson 01 only, right, with nbgrader's ``timestamp.txt`` two days
@@ -86,6 +88,8 @@ def graded(tmp_path_factory):
         "--config",
         str(config),
         "--no-nbval",
+        "--layout",
+        "nbgrader",
     )
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
     status = _run("status", "--out", str(out), "--roster", str(roster))
@@ -190,6 +194,8 @@ def test_ignore_mtimes_takes_lateness_from_timestamp_files_only(graded, tmp_path
         str(config),
         "--no-nbval",
         "--ignore-mtimes",
+        "--layout",
+        "nbgrader",
     )
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
     rows = _rows(out)

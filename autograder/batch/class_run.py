@@ -32,6 +32,7 @@ interrupted run loses nothing already graded.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -47,6 +48,7 @@ from typing import Callable, NamedTuple, Protocol
 
 from autograder.batch.progress import Progress
 from autograder.grading import submissions
+from autograder.grading.budget import GRADESCOPE_BYTES, PAGE_BYTES, RESULT_BYTES, fit_result, read_capped
 from autograder.grading.canary import describe_canary, ensure_reference_passes
 from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_changed
 from autograder.grading.context import GradingContext
@@ -63,6 +65,7 @@ from autograder.reports.lateness import apply_late_policy
 from autograder.reports.plain_page import plain_page
 from autograder.sandbox import cleanup, launcher, process_tree, warm
 from autograder.sandbox.forking import fork_each
+from autograder.similarity.answers import released_stubs, summarize
 
 STUDENT_TIMEOUT = 900
 
@@ -79,6 +82,7 @@ class GradingTask(NamedTuple):
     out_root: str  # the run's output folder (:class:`Outputs`)
     stamp: "Stamp"
     config: object  # the course's settings (a CourseConfig) or None
+    layout: str = submissions.FOLDERS  # how the class is read (submissions.detect_layout): dates the hand-ins
 
 
 class Runner(Protocol):
@@ -100,13 +104,65 @@ class Runner(Protocol):
     ) -> None: ...
 
 
+PRIVATE_FOLDER, SHARED_READ = 0o700, 0o055  # output folders; what --share-output adds (group and others read)
+OUTPUT_FOLDERS = ("students", "feedback", "results")  # the grader's folders in the output folder
+OUTPUT_SUFFIXES = (".csv", ".html", ".json")  # and its files there (grades.csv, report.html, skipped.json, ...)
+
+
+def _output_folder(folder):
+    """Make ``folder`` (and missing parents) as readable as the folder above it: private (0700) under a private
+    output folder, group and others read under a shared one (:func:`set_output_sharing`)."""
+    folder = Path(folder)
+    missing = []
+    while not folder.exists():
+        missing.append(folder)
+        folder = folder.parent
+    for made in reversed(missing):
+        made.mkdir(exist_ok=True)
+        os.chmod(made, PRIVATE_FOLDER | (os.stat(made.parent).st_mode & SHARED_READ))
+
+
+def set_output_sharing(root: str | Path, share: bool = False) -> None:
+    """Make the output folder ``root`` and everything the grader wrote in it readable by its owner only
+    (folders 0700, files 0600), or, with ``share`` (``grade --share-output``), by group and others too
+    (0755, 0644). Files written later follow their folder (:func:`write_atomically`).
+
+    >>> set_output_sharing("results")                                   # doctest: +SKIP
+    """
+    root = Path(root)
+    root.mkdir(parents=True, exist_ok=True)
+    extra = SHARED_READ if share else 0
+    os.chmod(root, PRIVATE_FOLDER | extra)
+    for entry in _grader_outputs(root):
+        folder = entry.is_dir(follow_symlinks=False)
+        os.chmod(entry.path, PRIVATE_FOLDER | extra if folder else 0o600 | (extra & 0o044))
+
+
+def _grader_outputs(root):
+    """The entries of ``root`` the grader writes (its folders' files and its own files at the top), never links."""
+    with os.scandir(root) as top:
+        for entry in top:
+            if entry.is_symlink():
+                continue
+            if entry.is_dir(follow_symlinks=False) and entry.name in OUTPUT_FOLDERS:
+                yield entry
+                with os.scandir(entry.path) as inside:
+                    yield from (e for e in inside if e.is_file(follow_symlinks=False))
+            elif entry.is_file(follow_symlinks=False) and entry.name.endswith(OUTPUT_SUFFIXES):
+                yield entry
+
+
 def write_atomically(path: str | Path, text: str) -> None:
     """Write ``text`` to ``path`` through a temporary file and a rename; text that UTF-8 cannot encode
-    (lone surrogates) is written as backslash escapes rather than failing."""
+    (lone surrogates) is written as backslash escapes rather than failing. The file is readable by its owner
+    only (0600) unless its folder is shared (:func:`set_output_sharing`), then by group and others too."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    _output_folder(path.parent)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    with open(tmp, "w", encoding="utf-8", errors="backslashreplace") as handle:
+    flags = os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_NOFOLLOW | os.O_CLOEXEC
+    descriptor = os.open(tmp, flags, 0o600)
+    os.fchmod(descriptor, 0o600 | (os.stat(path.parent).st_mode & 0o044))
+    with open(descriptor, "w", encoding="utf-8", errors="backslashreplace") as handle:
         handle.write(text)
         handle.flush()
         os.fsync(handle.fileno())
@@ -170,7 +226,7 @@ def load_saved(outputs: Outputs, student_id: str) -> Saved | None:
     """The :class:`Saved` result of a student, or None."""
     path = outputs.student_json(student_id)
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
+        data = json.loads(read_capped(path))  # at most RESULT_BYTES: a bounded summary per student
         stamp = Stamp(data["fingerprint"], data.get("fingerprint_parts") or {}, data.get("graded_because", ""))
         return Saved(stamp, StudentResult.from_json(json.dumps(data["result"])))
     except (OSError, ValueError, KeyError, TypeError):
@@ -198,6 +254,7 @@ def save_result(outputs: Outputs, result: StudentResult, stamp: Stamp, graded_at
 
     A page that cannot be made from the result is replaced by a plain one that says why; the grade is kept.
     """
+    fit_result(result)  # every student-controlled text bounded (grading.budget), whoever made the result
     payload = {
         "fingerprint": stamp.fingerprint,
         "fingerprint_parts": stamp.parts,
@@ -220,14 +277,24 @@ def save_result(outputs: Outputs, result: StudentResult, stamp: Stamp, graded_at
             "score": result.score,
             "output": f"the detailed results could not be made ({type(error).__name__}: {error})",
         }
+    saved = json.dumps(payload, indent=1, sort_keys=True)
+    if len(saved) > RESULT_BYTES:  # only the similarity answers can still be large: never the grade
+        payload["result"]["answers"] = None
+        saved = json.dumps(payload, indent=1, sort_keys=True)
+    gradescope = json.dumps(gradescope, indent=1, ensure_ascii=False)
+    if len(gradescope.encode("utf-8", "surrogatepass")) > GRADESCOPE_BYTES:
+        gradescope = json.dumps({"score": result.score, "output": "the detailed results are too large to show"})
+    if len(page.encode("utf-8", "surrogatepass")) > PAGE_BYTES:
+        page = plain_page(f"Feedback for {result.student_id}", [result], "the full feedback page is too large")
     write_atomically(outputs.feedback_html(result.student_id), page)
-    write_atomically(outputs.gradescope_json(result.student_id), json.dumps(gradescope, indent=1, ensure_ascii=False))
-    write_atomically(outputs.student_json(result.student_id), json.dumps(payload, indent=1, sort_keys=True))
+    write_atomically(outputs.gradescope_json(result.student_id), gradescope)
+    write_atomically(outputs.student_json(result.student_id), saved)
 
 
 def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     """Runs in a forked child: grade one student and save the result (``slot``: this child's warm slot)."""
-    student_id, folder, context, out_root, stamp, config = task
+    student_id, folder, context, out_root, stamp, config = task[:6]
+    student = None
     process_tree.become_subreaper()
     outputs = Outputs(Path(out_root))
 
@@ -237,13 +304,17 @@ def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
     signal.signal(signal.SIGALRM, on_alarm)
     signal.alarm(STUDENT_TIMEOUT)
     try:
-        result = apply_late_policy(grade_student(student_id, Path(folder), context, slot=slot), folder, config)
+        student = submissions.read_student_folder(folder, task.layout, student_id)  # the one walk of the folder
+        answers = functools.partial(summarize, course=context.course)  # kept for the similarity stage
+        result = apply_late_policy(
+            grade_student(student_id, student, context, slot=slot, answers=answers), student, config
+        )
     except Exception as error:  # our fault, not the student's: report, keep the batch going
         result = StudentResult(
             student_id=student_id,
             status=COULD_NOT_GRADE,
             reason=f"{type(error).__name__}: {error}",
-            submission_hash=_hash_or_blank(folder),
+            submission_hash=student.digest if student is not None else _hash_or_blank(folder, task.layout),
         )
         result.problems.append(traceback.format_exc(limit=3).strip().splitlines()[-1])
     finally:
@@ -255,9 +326,9 @@ def grade_task(task: GradingTask, slot: warm.WarmSlot | None = None) -> None:
         print(one_line(f"could not save the result of {student_id}: {type(error).__name__}: {error}"), file=sys.stderr)
 
 
-def _hash_or_blank(folder):
+def _hash_or_blank(folder, layout=submissions.FOLDERS):
     try:
-        return submissions.submission_hash(folder)
+        return submissions.submission_hash(folder, layout)
     except Exception:  # the folder went away or cannot be listed: the next run grades it again anyway
         return ""
 
@@ -268,12 +339,12 @@ def record_death(task: GradingTask, problem: str) -> StudentResult:
     Never raises: when even this result cannot be saved, it is returned with a note, and the run keeps
     it in memory for this run's gradebook and report.
     """
-    student_id, folder, _, out_root, stamp, _ = task
+    student_id, folder, _, out_root, stamp, _ = task[:6]
     result = StudentResult(
         student_id=student_id,
         status=COULD_NOT_GRADE,
         reason=f"{problem}; nothing else was affected, run grade again to retry",
-        submission_hash=_hash_or_blank(folder),
+        submission_hash=_hash_or_blank(folder, task.layout),
     )
     try:
         save_result(Outputs(Path(out_root)), result, stamp, time.strftime("%Y-%m-%d %H:%M:%S"))
@@ -299,11 +370,13 @@ class RunSummary:
     similarity_note: str = ""  # why the similarity stage wrote no findings
     similarity_seconds: float = 0.0  # wall time of the similarity stage
     similarity_cpu_seconds: float = 0.0  # its CPU time, this process and its finished workers
+    layout: object = None  # submissions.ClassLayout: how the class was read, and why
 
 
 def prewarm(course: Course) -> None:
     """Import and compute, once, everything the forked graders share read-only."""
     preload_hidden_suite(course)
+    released_stubs(course.released)
     launcher.isolation()
     launcher.limits_mode_can_drop_root()
 
@@ -317,7 +390,7 @@ def saved_student_ids(outputs: Outputs) -> list[str]:
     ids = []
     for path in sorted((outputs.root / "students").glob("*.json")):
         try:
-            ids.append(json.loads(path.read_text(encoding="utf-8"))["result"]["student_id"])
+            ids.append(json.loads(read_capped(path))["result"]["student_id"])
         except (OSError, ValueError, KeyError, TypeError):
             continue
     return ids
@@ -337,6 +410,8 @@ def grade_class(
     config: CourseConfig | None = None,
     runner: Runner | None = None,
     similarity: bool = True,
+    layout: str | None = None,
+    share_output: bool = False,
 ) -> RunSummary:
     """Grade every student under ``path`` into ``out_dir`` against ``course``; return a :class:`RunSummary`.
 
@@ -360,7 +435,7 @@ def grade_class(
     """
     started = time.monotonic()
     outputs = Outputs(Path(out_dir))
-    found = submissions.scan_submissions(path)
+    found = submissions.scan_submissions(path, layout)
     students = found.files
     unknown = sorted(set(only) - {student_id for student_id, _ in students})
     if unknown:
@@ -368,13 +443,13 @@ def grade_class(
     prewarm(course)
     cleanup.sweep_stale()  # the temporary folders of a grader that was killed mid-batch
     parts = fingerprint_parts(options, course)
-    summary = RunSummary(ignored=found.skipped)
+    summary = RunSummary(ignored=found.skipped, layout=found.layout)
     if announce:
         announce("canary: grading the reference solutions first (once per grader version)...")
-    summary.canary = ensure_reference_passes(course, options, parts)
+    summary.canary = ensure_reference_passes(course, options, parts, submissions=path, output=out_dir)
     if announce:
         announce(describe_canary(summary.canary))
-    outputs.root.mkdir(parents=True, exist_ok=True)
+    set_output_sharing(outputs.root, share_output)
     for stale in outputs.root.glob("*/.*.tmp"):  # left by a run that was killed mid-write
         stale.unlink(missing_ok=True)
     if config is not None:
@@ -390,7 +465,10 @@ def grade_class(
             continue
         try:
             because = regrade_reason(
-                load_saved(outputs, student_id), stamp, submissions.submission_hash(folder), force or bool(only)
+                load_saved(outputs, student_id),
+                stamp,
+                submissions.submission_hash(folder, found.layout.kind),
+                force or bool(only),
             )
         except Exception as error:  # this student only: grade them, and say why
             because = f"graded: whether the submission changed could not be checked ({type(error).__name__})"
@@ -399,7 +477,15 @@ def grade_class(
             continue
         summary.reasons[student_id] = because
         tasks.append(
-            GradingTask(student_id, str(folder), context, str(outputs.root), replace(stamp, because=because), config)
+            GradingTask(
+                student_id,
+                str(folder),
+                context,
+                str(outputs.root),
+                replace(stamp, because=because),
+                config,
+                found.layout.kind,
+            )
         )
     jobs = max(1, jobs or os.cpu_count() or 1)
     if progress:
@@ -436,7 +522,7 @@ def grade_class(
     summary.kept = sorted(earlier - submitted)
     everyone = submitted | earlier
     write_atomically(outputs.skipped, json.dumps([asdict(item) for item in found.skipped], indent=1))
-    section = _similarity_section(path, course, outputs, summary) if similarity else ""
+    section = _similarity_section(found.layout, course, outputs, summary, sorted(submitted)) if similarity else ""
     summary.results = write_reports(outputs, course, sorted(everyone | set(roster)), everyone, unsaved, section)
     summary.seconds = time.monotonic() - started
     return summary
@@ -457,7 +543,7 @@ def collect_results(
     for student_id in student_ids:
         path = outputs.student_json(student_id)
         try:
-            data = json.loads(path.read_text(encoding="utf-8"))
+            data = json.loads(read_capped(path))
             results.append(StudentResult.from_json(json.dumps(data["result"])))
             graded_at[student_id] = data.get("graded_at", "")
         except (OSError, ValueError, KeyError, TypeError):
@@ -485,15 +571,34 @@ def load_skipped(outputs: Outputs) -> list[submissions.Skipped]:
         return []
 
 
-def _similarity_section(path, course, outputs, summary):
+def saved_answers(outputs: Outputs, student_ids: list[str]) -> dict[str, dict | None]:
+    """``{student_id: answers}`` kept by each student's grading process for the similarity stage (their saved
+    result, read with its size cap), or None for a student without them.
+
+    >>> saved_answers(Outputs(Path("out")), ["ada"])        # doctest: +SKIP
+    {'ada': {'rot_z': {'source': 'def rot_z(angle): ...', 'normalised': ..., 'offsets': [...]}}}
+    """
+    found = {}
+    for student_id in student_ids:
+        try:
+            answers = json.loads(read_capped(outputs.student_json(student_id)))["result"].get("answers")
+        except (OSError, ValueError, KeyError, TypeError, AttributeError):
+            answers = None
+        found[student_id] = answers if isinstance(answers, dict) else None
+    return found
+
+
+def _similarity_section(path, course, outputs, summary, student_ids=()):
     """Run the similarity stage on the class under ``path``: write its CSV and page into ``outputs``,
-    keep the findings in ``summary`` and return the report's section (a short note if it failed)."""
+    keep the findings in ``summary`` and return the report's section (a short note if it failed). The
+    answers are those the students' grading processes kept (:func:`saved_answers`); nothing of a student's
+    is parsed in this process."""
     from autograder.similarity.report import similar_answers_html
     from autograder.similarity.stage import similarity_of_class, write_findings
 
     started, cpu = time.monotonic(), cpu_seconds()
     try:
-        summary.similarity = similarity_of_class(path, course)
+        summary.similarity = similarity_of_class(path, course, summaries=saved_answers(outputs, list(student_ids)))
         write_findings(summary.similarity, outputs.root, write_atomically)
         section = similar_answers_html(summary.similarity)
     except Exception as error:  # the grades do not depend on it

@@ -98,6 +98,38 @@ def cache_dir() -> Path:
     return Path(base) / "rotations-autograder"
 
 
+def private_cache_dir() -> Path:
+    """:func:`cache_dir`, created readable by this user only (0700; an existing one of this user is made so),
+    since what it holds decides grades (a passing canary, the reference's transcripts).
+
+    >>> private_cache_dir().stat().st_mode & 0o777                      # doctest: +SKIP
+    448
+    """
+    folder = cache_dir()
+    folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+    if folder.stat().st_uid == os.geteuid():
+        os.chmod(folder, 0o700)
+    return folder
+
+
+def write_private(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` (in :func:`private_cache_dir`) through a file only this user reads (0600) and a
+    rename.
+
+    >>> write_private(cache_dir() / "canary-0123.json", "{}")           # doctest: +SKIP
+    """
+    private_cache_dir()
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    descriptor = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_NOFOLLOW | os.O_CLOEXEC, 0o600)
+    try:
+        os.fchmod(descriptor, 0o600)
+        with open(descriptor, "w", encoding="utf-8", closefd=False) as handle:
+            handle.write(text)
+    finally:
+        os.close(descriptor)
+    os.replace(tmp, path)
+
+
 def fingerprint(parts: dict[str, str]) -> str:
     """One digest for all the parts."""
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()[:16]

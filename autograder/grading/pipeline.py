@@ -16,8 +16,10 @@ from __future__ import annotations
 import ast
 import time
 from pathlib import Path
+from typing import Callable
 
 from autograder.grading import extract, submissions
+from autograder.grading.budget import cut, cut_list, fit_result
 from autograder.grading.context import GradingContext
 from autograder.grading.nbval_stage import award, full_hidden_marks, not_run_for_lost_points, run_notebooks
 from autograder.grading.options import GradingOptions
@@ -33,7 +35,7 @@ from autograder.grading.results import (
 )
 from autograder.grading.suite import StudentProxy, run_hidden_suite
 from autograder.lessons import cells
-from autograder.lessons.notebook_files import UnreadableNotebook, read_submission
+from autograder.lessons.notebook_files import UnreadableNotebook
 from autograder.sandbox import launcher
 from autograder.sandbox.session import SandboxUnavailable, StudentError, StudentSandbox
 from autograder.sandbox.warm import WarmSlot
@@ -74,12 +76,16 @@ def _note_failed_prerequisites(shell, program):
             )
 
 
-def _read_lessons(folder, course, only=()):
+def _read_lessons(student, course, only=()):
     """For each graded lesson: (LessonResult shell, notebook path, program or None); notes on the files
     (which of several notebooks was graded, notebooks that belong to no lesson); and one line for each
-    thing of the folder that was skipped (hidden, a link, too deep), with why."""
-    catalog = course.catalog
-    files = submissions.match_lessons(folder, catalog, course.released)
+    thing of the folder that was skipped (hidden, a link, too deep), with why. ``student``: the folder as read
+    once (:class:`~autograder.grading.submissions.StudentFolder`; a path is read here, in one walk); nothing
+    here reads the disk again."""
+    if not isinstance(student, submissions.StudentFolder):
+        student = submissions.read_student_folder(student)
+    catalog, folder = course.catalog, student.path
+    files = submissions.match_lessons(folder, catalog, course.released, student=student)
     notes = [files.notes[number] for number in sorted(files.notes) if not only or number in only]
     notes += [
         f"{path.relative_to(folder)} was not graded: "
@@ -98,40 +104,54 @@ def _read_lessons(folder, course, only=()):
             continue
         shell.notebook = str(path.relative_to(folder))
         try:
-            program = extract.lesson_program(read_submission(path, root=folder), lesson)
+            program = extract.lesson_program(student.read(path), lesson)
         except UnreadableNotebook as error:
-            shell.status, shell.reason = "unreadable", str(error)
+            shell.status, shell.reason = "unreadable", cut(error)
             program = None
         except Exception as error:  # whatever else this notebook does to the grader costs this notebook only
             shell.status = "unreadable"
-            shell.reason = f"the grader could not read this notebook ({type(error).__name__}: {error})"
+            shell.reason = cut(f"the grader could not read this notebook ({type(error).__name__}: {error})")
             program = None
         found.append((shell, path, program))
-    return found, notes, [item.line() for item in files.skipped]
+    return found, cut_list([cut(note) for note in notes]), cut_list([cut(item.line()) for item in files.skipped])
 
 
 def grade_student(
     student_id: str,
-    folder: Path,
+    folder: Path | submissions.StudentFolder,
     context: GradingContext,
     slot: WarmSlot | None = None,
+    answers: Callable[[dict[str, str]], dict] | None = None,
 ) -> StudentResult:
     """Grade the submission in ``folder`` in ``context`` (the course and the run's options); never raises for
     anything the student did.
 
+    ``folder``: the student's folder as read once (:class:`~autograder.grading.submissions.StudentFolder`),
+    whose notebooks, digest and skipped entries are all this uses; a path is read here, in one walk.
+
     ``slot``: the warm slot (:class:`~autograder.sandbox.warm.WarmSlot`) this grader process was
     given, whose zygote forks the student's sandboxes; None starts each sandbox cold.
+
+    ``answers``: called here, in the student's own grading process, with ``{exercise: answer source}`` as
+    extracted for grading; what it returns (bounded: :data:`~autograder.grading.budget.ANSWERS_BYTES`) is kept
+    as ``result.answers`` for the similarity stage, which then reads and parses nothing of the student's.
+    Every student-controlled text of the result is bounded (:func:`~autograder.grading.budget.fit_result`).
+
+    >>> grade_student("ada", Path("class/ada"), context).status        # doctest: +SKIP
+    'graded'
     """
     started = time.monotonic()
+    student = folder if isinstance(folder, submissions.StudentFolder) else submissions.read_student_folder(folder)
+    folder = student.path
     course, options = context.course, context.options
     catalog, reference = course.catalog, course.reference
     result = StudentResult(
         student_id=student_id,
         status=GRADED,
-        submission_hash=submissions.submission_hash(folder),
+        submission_hash=student.digest,
         isolation=launcher.isolation()[0],
     )
-    lessons, file_notes, result.skipped = _read_lessons(folder, course, options.lessons)
+    lessons, file_notes, result.skipped = _read_lessons(student, course, options.lessons)
     result.problems.extend(file_notes)
     programs = {shell.number: program for shell, _, program in lessons if program is not None}
     unavailable = {
@@ -146,18 +166,23 @@ def grade_student(
                 proxy, reference, course, lessons=[shell.number for shell, _, _ in lessons]
             )
         except StudentError as error:  # e.g. the sandbox crashed too many times
-            result.problems.append(f"grading stopped early: {error.message}")
+            result.problems.append(cut(f"grading stopped early: {error.message}"))
         except SandboxUnavailable as error:  # nothing of the student's ran: no grade rather than a zero
             result.status = COULD_NOT_GRADE
-            result.reason = f"{error}: a problem of this machine or of the grader, not of the submission"
+            result.reason = cut(f"{error}: a problem of this machine or of the grader, not of the submission")
         outcomes = {(o.lesson, o.label): o for o in sandbox.outcomes}
+    if answers is not None:
+        try:
+            result.answers = answers({name: source for p in programs.values() for name, source in p.cells})
+        except Exception:  # no grade depends on it: the similarity stage reads this student in a limited fork
+            result.answers = None
 
     for shell, path, program in lessons:
         lesson = catalog.lesson(shell.number)
         if program is not None:
-            result.problems.extend(f"{shell.notebook}: {p}" for p in program.problems)
+            result.problems.extend(cut(f"{shell.notebook}: {p}") for p in cut_list(program.problems))
         elif shell.status != "graded":
-            result.problems.append(f"lesson {shell.number}: {shell.reason}")
+            result.problems.append(cut(f"lesson {shell.number}: {shell.reason}"))
         for exercise in lesson.exercises:
             own = [c for c in checks if c.exercise == exercise.name]
             entry = ExerciseResult(
@@ -169,10 +194,10 @@ def grade_student(
             )
             outcome = outcomes.get((lesson.number, exercise.name))
             if outcome is not None and not outcome.ok:
-                entry.notes.append(f"running the answer cell failed: {outcome.message}")
+                entry.notes.append(cut(f"running the answer cell failed: {outcome.message}"))
             setup = outcomes.get((lesson.number, "setup"))
             if setup is not None and not setup.ok:
-                entry.notes.append(f"the lesson's setup cell failed: {setup.message}")
+                entry.notes.append(cut(f"the lesson's setup cell failed: {setup.message}"))
             if program is None:
                 entry.notes.append(shell.reason)
             shell.exercises.append(entry)
@@ -191,7 +216,7 @@ def grade_student(
         try:
             runs = run_notebooks(folder, worth_running, options, course, slot=slot) if worth_running else {}
         except Exception as error:  # costs this student's notebook points, with the reason
-            runs, stage_failed = {}, f"the notebook stage failed ({type(error).__name__}: {error})"
+            runs, stage_failed = {}, cut(f"the notebook stage failed ({type(error).__name__}: {error})")
         for shell, _, program in lessons:
             if program is not None and not full_hidden_marks(shell):
                 shell.run = not_run_for_lost_points(options.notebook_points)
@@ -203,7 +228,8 @@ def grade_student(
                 )
             award(shell)
 
-    result.problems.extend(suite_problems)
+    result.problems.extend(cut(problem) for problem in cut_list(suite_problems))
+    fit_result(result)  # one budget for all the student's text of this result
     if result.status != COULD_NOT_GRADE:
         if all(shell.status == "missing" for shell, _, _ in lessons):
             result.status, result.reason = MISSING, "the submission holds none of the course's notebooks"

@@ -97,6 +97,7 @@ class StudentResult:
     seconds: float = 0.0
     isolation: str = ""  # "namespaces" or "limits": how the student's code was isolated (sandbox.launcher)
     skipped: list = field(default_factory=list)  # "path: why" for what the grader saw in the folder and did not use
+    answers: dict | None = None  # exercise -> the answer as the similarity stage compares it (None: not made)
 
     @property
     def score(self) -> float:

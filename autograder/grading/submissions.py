@@ -6,6 +6,13 @@ Two layouts are understood:
 - nbgrader's: ``PATH/submitted/<student_id>/<assignment>/01_....ipynb`` (PATH may
   also be the ``submitted`` folder itself, or an nbgrader course root).
 
+The class is read one way, from what the instructor controls (:func:`detect_layout`): the layout
+declared (``grade --layout``), else nbgrader's only when its course root says so (a regular
+``nbgrader_config.py`` or ``gradebook.db`` beside ``submitted/``). No student's folder name or content
+changes how another student is found or dated. Each student's folder is read once, into one frozen
+:class:`StudentFolder` (its notebooks' bytes, what was skipped, the hand-in times, their digest) that
+grading, the late policy and the saved result all use.
+
 A notebook is matched to a lesson by its content (:func:`match_lessons`):
 the ``grade_id`` of its answer cells, or the ``def`` of the lesson's
 exercises, whatever the file is called (``dan_exp_log_final.ipynb``). When
@@ -43,8 +50,10 @@ from autograder.lessons import cells
 from autograder.lessons.catalog import Catalog
 from autograder.lessons.notebook_files import (
     MAX_NOTEBOOK_BYTES,
+    NotARegularFile,
     UnreadableNotebook,
     file_kind,
+    parse_notebook,
     read_master,
     read_regular_file,
     read_submission,
@@ -73,6 +82,81 @@ class Found:
 
     files: list = field(default_factory=list)  # Paths
     skipped: list = field(default_factory=list)  # Skipped
+    layout: ClassLayout | None = None  # scan_submissions: how the class was read
+
+
+FOLDERS, NBGRADER = "folders", "nbgrader"
+LAYOUTS = (FOLDERS, NBGRADER)
+NBGRADER_MARKERS = ("nbgrader_config.py", "gradebook.db")  # regular files of nbgrader's course root
+
+
+@dataclass(frozen=True)
+class ClassLayout:
+    """How a class is read: ``kind`` (:data:`FOLDERS` or :data:`NBGRADER`), the folder whose folders are the
+    students (``root``), and why this layout was chosen (``why``, one sentence for the run's first lines)."""
+
+    kind: str
+    root: Path
+    why: str
+
+    def line(self) -> str:
+        """``layout: nbgrader (nbgrader_config.py beside submitted/): the students are the folders of …``"""
+        return f"layout: {self.kind} ({self.why}); the students are the folders of {self.root}"
+
+
+def _marker(folder):
+    """The first of :data:`NBGRADER_MARKERS` that is a regular file (not a link, not a folder) in ``folder``."""
+    for name in NBGRADER_MARKERS:
+        try:
+            if stat.S_ISREG(os.lstat(Path(folder) / name).st_mode):
+                return name
+        except OSError:
+            continue
+    return None
+
+
+def _real_folder(path):
+    try:
+        return stat.S_ISDIR(os.lstat(path).st_mode)
+    except OSError:
+        return False
+
+
+def detect_layout(path: str | Path, declared: str | None = None) -> ClassLayout:
+    """The layout of the class under ``path``: the one the instructor ``declared`` (``grade --layout``), else
+    read from markers no student can make.
+
+    A student controls the name and the contents of their own folder only, so neither decides the layout:
+    nbgrader's layout is recognised by its course root, a regular ``nbgrader_config.py`` or ``gradebook.db``
+    beside ``submitted/`` (``path`` is that root, or its ``submitted`` folder). Anything else is one folder
+    per student, where a folder named ``submitted`` is a student like any other.
+
+    Examples
+    --------
+    >>> detect_layout(Path("nbgrader-course")).line()                                    # doctest: +SKIP
+    'layout: nbgrader (nbgrader_config.py beside submitted/); the students are the folders of nbgrader-course/submitted'
+    >>> detect_layout(Path("class"), declared="folders").kind                             # doctest: +SKIP
+    'folders'
+    """
+    path = Path(path)
+    submitted = path / "submitted"
+    if declared is not None and declared not in LAYOUTS:
+        raise ValueError(f"unknown layout {declared!r} (known: {', '.join(LAYOUTS)})")
+    if declared == FOLDERS:
+        return ClassLayout(FOLDERS, path, "declared with --layout folders")
+    if declared == NBGRADER:
+        inside = _real_folder(submitted) and path.name != "submitted"
+        return ClassLayout(NBGRADER, submitted if inside else path, "declared with --layout nbgrader")
+    marker = _marker(path)
+    if marker and _real_folder(submitted):
+        return ClassLayout(NBGRADER, submitted, f"nbgrader's course root: {marker} beside submitted/")
+    marker = _marker(path.parent) if path.name == "submitted" else None
+    if marker:
+        return ClassLayout(NBGRADER, path, f"the submitted/ folder of nbgrader's course root ({marker} beside it)")
+    why = "no nbgrader course root (nbgrader_config.py or gradebook.db beside submitted/)"
+    if _real_folder(submitted):
+        why += "; submitted/ is graded as a student: give --layout nbgrader if it is nbgrader's"
+    return ClassLayout(FOLDERS, path, why)
 
 
 def _top_level_why(entry):
@@ -90,19 +174,24 @@ def _top_level_why(entry):
     return f"{file_kind(mode)}, not a student folder (each student's notebooks go in a folder of their own)"
 
 
-def scan_submissions(path: str | Path) -> Found:
+def scan_submissions(path: str | Path | ClassLayout, layout: str | ClassLayout | None = None) -> Found:
     """The students under ``path`` and what was skipped there (see the module docstring).
+
+    ``layout``: the layout the instructor declared (``"folders"``, ``"nbgrader"``), a :class:`ClassLayout`
+    already decided, or None to detect it from markers no student can make (:func:`detect_layout`). ``path``
+    may be a :class:`ClassLayout` itself, so a later stage reads the class exactly as grading did.
 
     Returns
     -------
     Found
-        ``files``: sorted ``[(student_id, folder)]``; ``skipped``: hidden entries, links, stray files.
+        ``files``: sorted ``[(student_id, folder)]``; ``skipped``: hidden entries, links, stray files;
+        ``layout``: the :class:`ClassLayout` it was read with.
     """
-    path = Path(path)
-    if (path / "submitted").is_dir() and not (path / "submitted").is_symlink():
-        path = path / "submitted"
-    found = Found()
-    with os.scandir(path) as entries:
+    if isinstance(path, ClassLayout):  # a class already read (the batch hands its layout to later stages)
+        path, layout = path.root, path
+    chosen = layout if isinstance(layout, ClassLayout) else detect_layout(path, layout)
+    found = Found(layout=chosen)
+    with os.scandir(chosen.root) as entries:
         for entry in sorted(entries, key=lambda e: e.name):
             why = _top_level_why(entry)
             if why is None:
@@ -313,6 +402,7 @@ def match_lessons(
     released: Path,
     notebooks: list[Path] | None = None,
     read: Callable[[Path], nbformat.NotebookNode] | None = None,
+    student: StudentFolder | None = None,
 ) -> LessonFiles:
     """Match the notebooks of one student's ``folder`` to ``catalog``'s graded lessons, by content.
 
@@ -321,6 +411,9 @@ def match_lessons(
 
     ``read(path)``: how a notebook is read (default :func:`read_submission` inside ``folder``); a caller
     that reads the chosen notebooks again passes a memoising one, so each file is parsed once.
+
+    ``student``: the folder as read once (:func:`read_student_folder`): its notebooks and bytes are used, the
+    folder is not walked again.
 
     Returns
     -------
@@ -335,7 +428,9 @@ def match_lessons(
     """
     folder = Path(folder)
     skipped = []
-    if notebooks is None:
+    if student is not None:
+        notebooks, skipped, read = student.notebook_paths, list(student.skipped), read or student.read
+    elif notebooks is None:
         scan = scan_folder(folder)
         notebooks, skipped = scan.files, scan.skipped
     lessons = catalog.graded_lessons
@@ -385,30 +480,257 @@ def _work(count):
 
 
 NBGRADER_TIMESTAMP = "timestamp.txt"
+EARLIEST = datetime(1970, 1, 1, tzinfo=timezone.utc)  # hand-in times are read in [EARLIEST, LATEST)
+LATEST = datetime(2200, 1, 1, tzinfo=timezone.utc)
+MAX_TIMESTAMP_BYTES = 200  # nbgrader writes one line of about 30 bytes
+HELD_BYTES = 256 * 1024 * 1024  # notebook bytes a StudentFolder holds; past it, a notebook is read again and checked
 
 
-def handed_in_at(notebook: Path, folder: Path) -> datetime | None:
-    """When ``notebook`` (under the student's ``folder``) was handed in, from one trusted source, or ``None``.
+@dataclass(frozen=True)
+class HandIn:
+    """When a notebook was handed in: ``moment`` (aware, UTC, within 1970..2200) and where it came from
+    (``source``: ``"timestamp.txt"`` or ``"file time"``), or ``moment`` None and why (``problem``)."""
 
-    - nbgrader's ``timestamp.txt`` at the top level of the submission, ``folder/<assignment>/timestamp.txt``
-      (where ``nbgrader collect`` writes it), for a notebook anywhere under ``<assignment>/``;
-    - else the notebook file's modification time as collected (an LMS download, a copied class).
+    moment: datetime | None = None
+    source: str = ""
+    problem: str = ""
 
-    A ``timestamp.txt`` anywhere else (beside a notebook in a deeper folder, or in the student's folder itself,
-    which in the one-folder-per-student layout holds only what the student handed in) is the student's file
-    and never read. A damaged or linked ``timestamp.txt`` falls back on the file's time.
+
+def bounded_time(moment: datetime, what: str) -> HandIn:
+    """``moment`` as a :class:`HandIn` in UTC when it lies in 1970..2200 (naive: UTC), else refused with why.
+
+    >>> bounded_time(datetime(9999, 12, 31), "timestamp.txt").problem
+    'timestamp.txt says 9999-12-31 00:00:00, outside 1970..2200: lateness unknown'
+    """
+    try:
+        aware = (
+            moment
+            if moment.tzinfo is not None and moment.utcoffset() is not None
+            else moment.replace(tzinfo=timezone.utc)
+        )
+        if EARLIEST <= aware < LATEST:
+            return HandIn(aware.astimezone(timezone.utc), what)
+    except (ValueError, OverflowError, TypeError, ArithmeticError):
+        pass
+    return HandIn(None, what, f"{what} says {str(moment)[:60]}, outside 1970..2200: lateness unknown")
+
+
+def parse_hand_in_time(text: str, what: str = NBGRADER_TIMESTAMP) -> HandIn:
+    """A time written as text (nbgrader's ``2026-12-01 10:00:00.000000 UTC``), bounded, or refused with why.
+
+    >>> parse_hand_in_time("2026-12-01 10:00:00.000000 UTC").moment.isoformat()
+    '2026-12-01T10:00:00+00:00'
+    >>> parse_hand_in_time("soon").problem[:40]
+    "timestamp.txt holds no date ('soon'): la"
+    """
+    text = text.strip()[:100]
+    try:
+        moment = date_parser.parse(text)
+    except (ValueError, OverflowError, TypeError, ArithmeticError, LookupError):
+        return HandIn(None, what, f"{what} holds no date ({text[:40]!r}): lateness unknown")
+    return bounded_time(moment, what)
+
+
+def _timestamp_of(folder):
+    """nbgrader's hand-in time in ``folder/timestamp.txt``: a :class:`HandIn`, or None when there is none."""
+    stamp = Path(folder) / NBGRADER_TIMESTAMP
+    try:
+        os.lstat(stamp)
+    except OSError:
+        return None
+    try:
+        raw, size = read_regular_file(stamp, MAX_TIMESTAMP_BYTES + 1)
+    except OSError as error:
+        return HandIn(None, NBGRADER_TIMESTAMP, f"{NBGRADER_TIMESTAMP} cannot be read ({error}): lateness unknown")
+    if size > MAX_TIMESTAMP_BYTES or len(raw) > MAX_TIMESTAMP_BYTES:
+        return HandIn(
+            None, NBGRADER_TIMESTAMP, f"{NBGRADER_TIMESTAMP} is {size:,} bytes, not one line: lateness unknown"
+        )
+    return parse_hand_in_time(raw.decode("utf-8", "replace"))
+
+
+def _file_time(info):
+    """The modification time of ``info`` (an ``lstat`` result) as collected, bounded."""
+    seconds = info.st_mtime
+    if not EARLIEST.timestamp() <= seconds < LATEST.timestamp():
+        return HandIn(None, "file time", f"its file time ({seconds:.6g} s after 1970) is outside 1970..2200")
+    return HandIn(datetime.fromtimestamp(seconds, tz=timezone.utc), "file time")
+
+
+@dataclass(frozen=True)
+class NotebookFile:
+    """One notebook of a :class:`StudentFolder`, read once: its bytes (``data``, None when it cannot be used or
+    is not held), or why it cannot be used (``problem``); nbgrader's ``recorded`` time and the file's ``collected``
+    time (:class:`HandIn`)."""
+
+    path: Path
+    relative: str
+    data: bytes | None
+    problem: str
+    sha256: bytes
+    recorded: HandIn | None
+    collected: HandIn
+
+
+@dataclass(frozen=True)
+class StudentFolder:
+    """Everything the grader uses of one student's folder, read in one walk (:func:`read_student_folder`):
+    the notebooks' bytes, what the walk skipped, the hand-in times and the digest of it all. Grading, the
+    late policy and the saved result all use this one value, so what was graded is what was hashed and dated.
 
     Examples
     --------
-    >>> handed_in_at(Path("submitted/ana/lesson03/03_exp_and_log.ipynb"), Path("submitted/ana"))  # doctest: +SKIP
+    >>> student = read_student_folder(Path("class/dan"), FOLDERS, "dan")             # doctest: +SKIP
+    >>> [n.relative for n in student.notebooks], student.digest[:8]
+    (['dan_exp_log_final.ipynb'], '3f0c9a1e')
+    """
+
+    student_id: str
+    path: Path
+    layout: str
+    notebooks: tuple[NotebookFile, ...]
+    skipped: tuple[Skipped, ...]
+    digest: str
+
+    def file(self, path: str | Path) -> NotebookFile | None:
+        """The :class:`NotebookFile` at ``path`` (absolute, or relative to the folder), or None."""
+        path = Path(path)
+        relative = path.relative_to(self.path).as_posix() if path.is_absolute() else path.as_posix()
+        return next((n for n in self.notebooks if n.relative == relative), None)
+
+    def read(self, path: str | Path) -> nbformat.NotebookNode:
+        """The notebook at ``path`` parsed from the bytes read by the walk; :class:`UnreadableNotebook` otherwise."""
+        notebook = self.file(path)
+        if notebook is None:
+            raise UnreadableNotebook(f"{Path(path).name} was not found by the walk of the folder")
+        if notebook.problem:
+            raise UnreadableNotebook(notebook.problem)
+        data = notebook.data
+        if data is None:  # over HELD_BYTES: read again, and only if it did not change
+            try:
+                data = read_regular_file(notebook.path, MAX_NOTEBOOK_BYTES + 1)[0]
+            except OSError as error:
+                raise UnreadableNotebook(f"cannot read {notebook.path.name}: {error.strerror or error}") from None
+            if hashlib.sha256(data).digest() != notebook.sha256:
+                raise UnreadableNotebook(f"{notebook.path.name} changed while it was being graded; grade again")
+        return parse_notebook(data, notebook.path.name)
+
+    def hand_in(self, path: str | Path, file_times: bool = True) -> HandIn:
+        """When the notebook at ``path`` was handed in (:func:`handed_in_at`); ``file_times``: whether a file's
+        modification time may say it (``grade --ignore-mtimes`` says no)."""
+        notebook = self.file(path)
+        if notebook is None:
+            return HandIn()
+        if notebook.recorded is not None:
+            return notebook.recorded
+        return notebook.collected if file_times else HandIn()
+
+    @property
+    def notebook_paths(self) -> list[Path]:
+        return [n.path for n in self.notebooks]
+
+
+def _read_notebook(path, folder, real_root, held):
+    """``(data or None, problem, the bytes hashed)`` for one notebook, with :func:`read_submission`'s reasons."""
+    name = path.name
+    try:
+        info = os.lstat(path)
+    except OSError as error:
+        return None, f"cannot open {name}: {error.strerror}", f"unreadable:{error.errno}".encode(), None
+    if stat.S_ISLNK(info.st_mode):
+        try:
+            target = b"link:" + os.fsencode(os.readlink(path))
+        except OSError as error:
+            target = f"unreadable:{error.errno}".encode()
+        return None, f"{name} is a symbolic link; submit the notebook file itself", target, info
+    if not stat.S_ISREG(info.st_mode):
+        kind = file_kind(info.st_mode)
+        return (
+            None,
+            f"{name} is {kind}, not a regular file; submit the notebook file itself",
+            f"kind:{kind}".encode(),
+            info,
+        )
+    try:
+        raw, size = read_regular_file(path, MAX_NOTEBOOK_BYTES + 1)
+    except NotARegularFile as error:
+        return None, f"{error}; submit the notebook file itself", f"unreadable:{error.errno}".encode(), info
+    except OSError as error:
+        return None, f"cannot read {name}: {error.strerror or error}", f"unreadable:{error.errno}".encode(), info
+    if real_root not in path.resolve().parents:
+        return None, f"{name} lies outside the submission folder", raw, info
+    if size > MAX_NOTEBOOK_BYTES or len(raw) > MAX_NOTEBOOK_BYTES:
+        return (
+            None,
+            f"{name} is {max(size, len(raw)) / 2**20:.0f} MB, over the {MAX_NOTEBOOK_BYTES / 2**20:.0f} MB limit "
+            "(clear large outputs with Edit → Clear Outputs of All Cells, save, resubmit)",
+            raw,
+            info,
+        )
+    return (raw if held + len(raw) <= HELD_BYTES else None), "", raw, info
+
+
+def read_student_folder(folder: str | Path, layout: str = FOLDERS, student_id: str = "") -> StudentFolder:
+    """Walk ``folder`` once (:func:`scan_folder`, its bounds unchanged) and read each notebook once: a frozen
+    :class:`StudentFolder`. Never raises for what the folder holds.
+
+    The hand-in times come from the ``layout`` the instructor's side decided (:func:`detect_layout`): in
+    nbgrader's, ``<assignment>/timestamp.txt`` (as ``nbgrader collect`` writes it) for a notebook under
+    ``<assignment>/``; in every layout, else, the file's own time as collected. Any time is bounded to
+    1970..2200 or refused with why (:class:`HandIn`).
+    """
+    folder = Path(folder)
+    scan = scan_folder(folder)
+    try:
+        real_root = folder.resolve()
+    except (OSError, RuntimeError):
+        real_root = folder
+    digest, notebooks, held, stamps = hashlib.sha256(), [], 0, {}
+    for path in scan.files:
+        relative = path.relative_to(folder)
+        data, problem, hashed, info = _read_notebook(path, folder, real_root, held)
+        held += len(data or b"")
+        recorded = None
+        if layout == NBGRADER and len(relative.parts) >= 2:
+            assignment = relative.parts[0]
+            if assignment not in stamps:
+                stamps[assignment] = _timestamp_of(folder / assignment)
+            recorded = stamps[assignment]
+        collected = _file_time(info) if info is not None else HandIn(None, "file time", "its file time cannot be read")
+        moment = (recorded if recorded is not None else collected).moment
+        digest.update(str(relative).encode("utf-8", "surrogatepass") + b"\0")
+        digest.update(hashed)
+        digest.update(b"\0" + (moment.isoformat() if moment else "no time").encode())
+        digest.update(b"\0")
+        notebooks.append(
+            NotebookFile(path, relative.as_posix(), data, problem, hashlib.sha256(hashed).digest(), recorded, collected)
+        )
+    return StudentFolder(
+        student_id or folder.name, folder, layout, tuple(notebooks), tuple(scan.skipped), digest.hexdigest()
+    )
+
+
+def handed_in_at(notebook: Path, folder: Path, layout: str = FOLDERS) -> datetime | None:
+    """When ``notebook`` (under the student's ``folder``) was handed in, from one trusted source, or ``None``.
+
+    - in nbgrader's layout only, ``folder/<assignment>/timestamp.txt`` (where ``nbgrader collect`` writes it),
+      for a notebook anywhere under ``<assignment>/``;
+    - else the notebook file's modification time as collected (an LMS download, a copied class).
+
+    In the one-folder-per-student layout every ``timestamp.txt`` is the student's own file and never read.
+    A time outside 1970..2200 or that cannot be read gives ``None`` (:meth:`StudentFolder.hand_in` says why).
+
+    Examples
+    --------
+    >>> handed_in_at(Path("submitted/ana/lesson03/03_exp_and_log.ipynb"), Path("submitted/ana"), NBGRADER)  # doctest: +SKIP
     datetime.datetime(2026, 12, 1, 22, 10, 3, tzinfo=datetime.timezone.utc)
     """
-    return nbgrader_timestamp(notebook, folder) or collected_time(notebook)
+    return read_student_folder(folder, layout).hand_in(notebook).moment
 
 
 def nbgrader_timestamp(notebook: Path, folder: Path) -> datetime | None:
-    """The time in ``folder/<assignment>/timestamp.txt`` for a notebook under ``<assignment>/`` (see
-    :func:`handed_in_at`), or ``None`` when there is none, it is not a regular file, or it cannot be read."""
+    """The time in ``folder/<assignment>/timestamp.txt`` for a notebook under ``<assignment>/`` (nbgrader's
+    layout), or ``None`` when there is none or it is refused."""
     notebook, folder = Path(notebook), Path(folder)
     try:
         parts = notebook.relative_to(folder).parts
@@ -416,48 +738,25 @@ def nbgrader_timestamp(notebook: Path, folder: Path) -> datetime | None:
         return None
     if len(parts) < 2:
         return None
-    stamp = folder / parts[0] / NBGRADER_TIMESTAMP
-    try:
-        if stat.S_ISREG(os.lstat(stamp).st_mode):
-            text = read_regular_file(stamp, 200)[0].decode("utf-8", "replace").strip()[:100]
-            moment = date_parser.parse(text)
-            return moment if moment.tzinfo else moment.replace(tzinfo=timezone.utc)
-    except (OSError, ValueError, OverflowError, UnreadableNotebook):
-        pass  # absent or damaged: the caller falls back on the file's own time
-    return None
+    stamp = _timestamp_of(folder / parts[0])
+    return stamp.moment if stamp is not None else None
 
 
 def collected_time(notebook: Path) -> datetime | None:
-    """The modification time of ``notebook`` as collected (aware, UTC), or ``None`` when it cannot be read."""
+    """The modification time of ``notebook`` as collected (aware, UTC, within 1970..2200), or ``None``."""
     try:
-        return datetime.fromtimestamp(os.lstat(notebook).st_mtime, tz=timezone.utc)
-    except (OSError, ValueError, OverflowError):
+        return _file_time(os.lstat(notebook)).moment
+    except OSError:
         return None
 
 
-def submission_hash(folder: str | Path) -> str:
-    """SHA-256 over the names, bytes and hand-in times (:func:`handed_in_at`) of every notebook of a student
-    (links by their target text), so a corrected hand-in time re-grades the student like changed bytes.
+def submission_hash(folder: str | Path, layout: str = FOLDERS) -> str:
+    """SHA-256 over the names, bytes and hand-in times of every notebook of a student (links by their target
+    text): the ``digest`` of :func:`read_student_folder`, so a corrected hand-in time re-grades the student
+    like changed bytes.
 
     Only regular files are read, at most :data:`MAX_NOTEBOOK_BYTES` + 1 bytes each (a larger one is
     refused whole, so what lies beyond cannot change its grade); a FIFO, socket or device is hashed by
     its kind. It never blocks and never raises for what the folder holds.
     """
-    digest = hashlib.sha256()
-    folder = Path(folder)
-    for path in notebooks_in(folder):
-        digest.update(str(path.relative_to(folder)).encode("utf-8", "surrogatepass") + b"\0")
-        try:
-            mode = os.lstat(path).st_mode
-            if stat.S_ISLNK(mode):
-                digest.update(b"link:" + os.fsencode(os.readlink(path)))
-            elif stat.S_ISREG(mode):
-                digest.update(read_regular_file(path, MAX_NOTEBOOK_BYTES + 1)[0])
-            else:
-                digest.update(f"kind:{file_kind(mode)}".encode())
-        except OSError as error:
-            digest.update(f"unreadable:{error.errno}".encode())
-        moment = handed_in_at(path, folder)
-        digest.update(b"\0" + (moment.isoformat() if moment else "no time").encode())
-        digest.update(b"\0")
-    return digest.hexdigest()
+    return read_student_folder(folder, layout).digest

@@ -38,6 +38,7 @@ from types import SimpleNamespace
 import pytest
 
 from autograder.grading import transcript_cache
+from autograder.grading.budget import cut
 from autograder.grading.results import CheckResult
 from autograder.grading.transcripts import NudgedReference, ReferenceRecorder, Replay, Transcript, independent_prefix
 from autograder.lessons.course import Course
@@ -477,7 +478,7 @@ def run_hidden_suite(
                     description=test.description,
                     weight=test.weight,
                     passed=passed,
-                    reason=reason,
+                    reason=cut(reason),
                     hint=hint,
                     printed=_printed_text(proxy.printed),
                 )
@@ -537,7 +538,7 @@ class _Collector:
                 description=_describe(item),
                 weight=mark.kwargs.get("weight", 1.0),
                 passed=report.passed,
-                reason=reason,
+                reason=cut(reason),
                 hint=hint,
                 printed=_printed_text(self.proxy.printed),
             )

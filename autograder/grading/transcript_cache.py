@@ -34,7 +34,7 @@ import os
 import platform
 from pathlib import Path
 
-from autograder.grading.fingerprint import cache_dir, content_parts
+from autograder.grading.fingerprint import cache_dir, content_parts, write_private
 from autograder.grading.transcripts import Transcript
 from autograder.lessons.course import Course
 
@@ -79,9 +79,7 @@ def save(course: Course, transcripts: dict[str, Transcript], learned: set[str] |
     }
     tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
-        tmp.write_text(json.dumps(document), encoding="utf-8")
-        os.replace(tmp, target)
+        write_private(target, json.dumps(document))  # 0600 in a 0700 folder: what grades rely on is this user's
     except OSError:
         tmp.unlink(missing_ok=True)
 

@@ -242,7 +242,7 @@ def grade_on_worker(
     from autograder.batch.class_run import GradingTask, Outputs
     from autograder.sandbox.forking import fork_each
 
-    student_id, _, context, _, stamp, config = task
+    student_id, context = task[0], task[2]
     address = _here()
     verdict = worker_verdict(context.course, context.options, driver_parts)
     if verdict is not None:
@@ -256,7 +256,7 @@ def grade_on_worker(
     with _GRADING_LOCK, tempfile.TemporaryDirectory(prefix="student-", dir=scratch) as base:
         folder = unpack_submission(payload, Path(base) / "submission")
         here = Outputs(Path(base) / "out")
-        local_task = GradingTask(student_id, str(folder), context, str(here.root), stamp, config)
+        local_task = GradingTask(*task)._replace(folder=str(folder), out_root=str(here.root))
         problems = []
         fork_each(
             _die_with_parent(function),

@@ -9,6 +9,11 @@ image, then ``run_autograder`` for each submission: it grades
 otherwise) and writes ``$AUTOGRADER_ROOT/results/results.json`` in the schema of
 :mod:`autograder.reports.gradescope_results` (the same file ``grade --out DIR``
 writes for every student to ``DIR/results/``).
+
+The hidden suite stays in ``source/`` (``source/autograder/hidden``, or ``source/graded_course/``), never in
+the venv's ``site-packages`` (the grader is installed editable, and its wheel leaves the hidden suite out):
+a sandbox sees only its allow-list (:mod:`autograder.sandbox.allowlist`), and both ``setup.sh``'s canary
+and every run check that from inside before grading (:func:`~autograder.grading.canary.check_sandbox_view`).
 """
 
 from __future__ import annotations
@@ -113,6 +118,7 @@ def build_bundle(
 
 def run_in_container(root: str | Path) -> dict:
     """Grade ``root/submission`` and write ``root/results/results.json`` (never raises)."""
+    from autograder.grading.canary import check_sandbox_view
     from autograder.grading.pipeline import GradingContext, GradingOptions, grade_student
     from autograder.sandbox import process_tree
 
@@ -126,6 +132,8 @@ def run_in_container(root: str | Path) -> dict:
         config = json.loads(config_path.read_text(encoding="utf-8")) if config_path.exists() else {}
         options = GradingOptions(nbval=config.get("nbval", True), lessons=tuple(config.get("lessons", ())))
         course = Course.at(GRADER_ROOT / config.get("course", "."))
+        # the sandbox must not see the hidden suite (in source/, beside the grader), the masters or the results
+        check_sandbox_view(course, submissions=root / "submission", output=results_dir)
         process_tree.become_subreaper()
         result = grade_student("submission", root / "submission", GradingContext(course, options))
         process_tree.kill_descendants()

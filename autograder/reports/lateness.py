@@ -25,10 +25,13 @@ date, only past the grace. ``per_day`` (:func:`per_day`) takes ``penalty_per_day
 whatever ``penalty_per_day`` says. Another rule is registered with ``@register("late_policy", "NAME")`` and
 chosen with ``rule = "NAME"``; a rule the registry does not know is refused with the known ones.
 
-When a lesson was handed in comes from one trusted source: nbgrader's
-``timestamp.txt`` at the top of the submission (``<student>/<assignment>/``),
+When a lesson was handed in comes from one trusted source: in nbgrader's layout only
+(declared, or nbgrader's course root: :func:`~autograder.grading.submissions.detect_layout`),
+nbgrader's ``timestamp.txt`` at the top of the submission (``<student>/<assignment>/``),
 else the notebook file's modification time as collected; never a file inside
-the student's own folders (:func:`~autograder.grading.submissions.handed_in_at`).
+the student's own folders (:func:`~autograder.grading.submissions.handed_in_at`). A time outside
+1970..2200, or text that is no date, is refused for that lesson: it is graded, its lateness "unknown"
+with the reason.
 ``grade --ignore-mtimes`` takes no time from files
 (:attr:`CourseConfig.ignore_file_times`), since copying or downloading a class
 resets them (:mod:`autograder.reports.copied_times` warns when they look like
@@ -51,12 +54,19 @@ import difflib
 import math
 import tomllib
 from dataclasses import dataclass, field
-from datetime import date, datetime, time, timezone
+from datetime import date, datetime, time, timezone  # noqa: F401 (timezone: the examples use it)
 from pathlib import Path
 from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 
 from autograder.grading.results import StudentResult
-from autograder.grading.submissions import collected_time, handed_in_at, nbgrader_timestamp
+from autograder.grading.submissions import (
+    FOLDERS,
+    StudentFolder,
+    collected_time,
+    handed_in_at,
+    nbgrader_timestamp,
+    read_student_folder,
+)
 from autograder.reports.plugins import UnknownPlugin, did_you_mean, lookup, register
 
 DEFAULT_RULE = "per_day"
@@ -195,14 +205,15 @@ def load_config(path: str | Path, lessons: list[str]) -> CourseConfig:
     return parse_config(text, Path(path).name, lessons)
 
 
-def submission_time(notebook: Path, folder: Path) -> datetime | None:
-    """When ``notebook`` was handed in: one trusted source per layout (see
+def submission_time(notebook: Path, folder: Path, layout: str = FOLDERS) -> datetime | None:
+    """When ``notebook`` was handed in: one trusted source per ``layout`` (see
     :func:`autograder.grading.submissions.handed_in_at`)."""
-    return handed_in_at(notebook, folder)
+    return handed_in_at(notebook, folder, layout)
 
 
 def recorded_time(notebook: Path, folder: Path) -> datetime | None:
-    """The time nbgrader recorded for ``notebook`` (``<student>/<assignment>/timestamp.txt``), or None."""
+    """The time nbgrader recorded for ``notebook`` (``<student>/<assignment>/timestamp.txt``), or None; only
+    meaningful in nbgrader's layout."""
     return nbgrader_timestamp(notebook, folder)
 
 
@@ -270,24 +281,39 @@ def penalty(config: CourseConfig, lesson: str, handed_in: datetime | None) -> tu
     )
 
 
-def apply_late_policy(result: StudentResult, folder: Path, config: CourseConfig | None) -> StudentResult:
+def apply_late_policy(
+    result: StudentResult, folder: Path | StudentFolder, config: CourseConfig | None
+) -> StudentResult:
     """Record when each lesson was handed in, where that time came from, its due date and, past it, the
-    penalty (in place)."""
+    penalty (in place).
+
+    ``folder``: the student's folder as read once (:class:`~autograder.grading.submissions.StudentFolder`:
+    its layout decides whether nbgrader's ``timestamp.txt`` is read), or a path read in the one-folder-per-student
+    layout. A time that cannot be used (out of 1970..2200, not a date) leaves that lesson graded, its lateness
+    unknown with the reason (``submitted_from`` ``"unknown"``, ``late_note``, a line of ``problems``).
+    """
+    student = folder if isinstance(folder, StudentFolder) else read_student_folder(folder)
+    file_times = not (config is not None and config.ignore_file_times)
     for lesson in result.lessons:
         if config is not None and lesson.number in config.due:
             lesson.due = local_time(config.due[lesson.number], config.zone)
         if lesson.status == "missing":
             continue
-        notebook = Path(folder) / lesson.notebook
-        handed_in, lesson.submitted_from = recorded_time(notebook, folder), "timestamp.txt"
-        if handed_in is None and not (config is not None and config.ignore_file_times):
-            handed_in, lesson.submitted_from = file_time(notebook), "file time"
-        if handed_in is None:
-            lesson.submitted_from = ""
+        hand_in = student.hand_in(lesson.notebook, file_times)
+        if hand_in.moment is None:
+            lesson.submitted_from = "unknown" if hand_in.problem else ""
+            if hand_in.problem:
+                lesson.late_note = f"lateness unknown: {hand_in.problem}"
+                result.problems.append(f"lesson {lesson.number}: {lesson.late_note}")
             continue
-        lesson.submitted_at = handed_in.astimezone(timezone.utc).isoformat(timespec="seconds")
+        lesson.submitted_from = hand_in.source
+        lesson.submitted_at = hand_in.moment.isoformat(timespec="seconds")
         if config is not None:
-            lesson.late_penalty, lesson.late_note = penalty(config, lesson.number, handed_in)
+            try:
+                lesson.late_penalty, lesson.late_note = penalty(config, lesson.number, hand_in.moment)
+            except (OverflowError, ValueError) as error:  # bounded times make this unreachable; still, this lesson only
+                lesson.late_penalty, lesson.late_note = 0.0, f"lateness unknown: {error}"
+                result.problems.append(f"lesson {lesson.number}: {lesson.late_note}")
     return result
 
 

@@ -151,8 +151,12 @@ def _remove_child_folder(fd, child_stat, depth, stuck):
 
 def private_folder(kind: str) -> str:
     """A new folder under the temporary directory, named for this process (``autograder-KIND-pPID-…``),
-    so that :func:`sweep_stale` can tell one a killed grader left behind."""
-    return tempfile.mkdtemp(prefix=f"autograder-{kind}-p{os.getpid()}-")
+    so that :func:`sweep_stale` can tell one a killed grader left behind. Only the grader's user may enter it
+    (0700, whatever the umask): what the grader puts there for a sandbox cannot be read or swapped by another
+    account (:func:`~autograder.sandbox.launcher.prepare_dirs` keeps it so)."""
+    path = tempfile.mkdtemp(prefix=f"autograder-{kind}-p{os.getpid()}-")
+    os.chmod(path, 0o700)
+    return path
 
 
 @contextlib.contextmanager

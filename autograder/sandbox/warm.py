@@ -7,13 +7,18 @@ slot keeps one sandbox alive for the whole batch, with a *zygote* inside
 (``child/zygote.py``) that has imported all of that once and forks a fresh
 worker for each student, and for each restart after a crash.
 
-What a student sees does not change: the same namespaces, uid, limits and
-folders; a worker that is a copy of a process no student code ever ran in.
-Before a student's first worker the slot is *reset*: every process left in
-the sandbox is killed, System V IPC objects are removed, and ``/tmp``, the
-one writable folder, is emptied. So nothing one student leaves behind reaches
-the next. SECURITY.md lists what a slot shares between students and why that is
-safe.
+What a student sees does not change: the same uid, limits and folders; a
+worker that is a copy of a process no student code ever ran in, which enters
+namespaces of its own before any student code runs (``child/jail.py``: new
+user, mount, PID, IPC, UTS, network and cgroup namespaces, a fresh tmpfs on
+``/tmp``, a new empty session keyring, the key system calls refused), as a
+cold sandbox does. Everything a student makes lives in those namespaces and
+dies with the student's last process, so nothing one student leaves behind
+reaches the next by construction. Before a student's first worker the slot
+is *reset*: every process left in the sandbox is killed, and the zygote proves
+it (no process left, the slot's own ``/tmp`` untouched: students never write
+there), else the slot is discarded. SECURITY.md lists what a slot shares
+between students and why that is safe.
 
 Any failure of a slot (its zygote killed by a student, a reply that does not
 come) discards the slot: that student's sandbox goes on cold, and the batch

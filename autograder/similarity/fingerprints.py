@@ -35,7 +35,7 @@ from functools import lru_cache
 
 import numpy as np
 from copydetect import CodeFingerprint, compare_files
-from copydetect.utils import highlight_overlap
+from copydetect.utils import filter_code, get_document_fingerprints, get_token_coverage, highlight_overlap
 from markupsafe import escape
 from scipy import sparse
 
@@ -62,8 +62,42 @@ def fingerprint(source: str, boilerplate_source: str = "") -> CodeFingerprint | 
     copydetect.CodeFingerprint
         ``hashes`` (a set), ``token_coverage`` (normalised characters not in the stub) and the spans.
     """
-    source, boilerplate = _without_stub_docstring(source, boilerplate_source)
+    normalised = getattr(source, "normalised", None)  # tokenised already, in the student's grading process
+    source, boilerplate = _without_stub_docstring(str(source), boilerplate_source)
+    if normalised is not None:
+        return _from_normalised(source, normalised, boilerplate)
     return _fingerprint(source, boilerplate)
+
+
+def normalised(source: str, boilerplate_source: str = "") -> tuple[str, list[int]]:
+    """``(code, offsets)``: ``source`` tokenised and normalised as :func:`fingerprint` does it (the stub's
+    docstring cut, names as one letter), with copydetect's offsets flattened; what a student's grading
+    process keeps so that the similarity stage never tokenises a student's text itself.
+
+    >>> normalised("def f(x):\n    return x\n")[0]
+    'deff(V):returnV'
+    """
+    source, _ = _without_stub_docstring(source, boilerplate_source)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        code, offsets = filter_code(source, "answer.py", "python")
+    return code, [int(value) for value in np.asarray(offsets, dtype=np.int64).ravel()]
+
+
+class _Normalised(CodeFingerprint):
+    """A :class:`CodeFingerprint` made from code tokenised elsewhere (:func:`normalised`): only hashing."""
+
+    def __init__(self, raw_code, code, offsets, boilerplate):
+        hashes, idx = get_document_fingerprints(code, K, WINDOW, boilerplate)
+        self.filename, self.raw_code, self.filtered_code = "answer.py", raw_code, code
+        self.offsets = np.asarray(offsets, dtype=np.int64).reshape(-1, 2) if offsets else np.array([])
+        self.hashes, self.hash_idx, self.k = hashes, idx, K
+        self.token_coverage = get_token_coverage(idx, K, len(code))
+
+
+def _from_normalised(raw_code, normalised, boilerplate):
+    code, offsets = normalised
+    return _Normalised(raw_code, code, offsets, boilerplate)
 
 
 def longest_coverage(source: str, boilerplate_source: str = "") -> int:

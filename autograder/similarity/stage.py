@@ -27,15 +27,25 @@ CSV_NAME = "similar_answers.csv"
 HTML_NAME = "similar_answers.html"
 
 
-def similarity_of_class(path: str | Path, course: Course, past: tuple | list = (), jobs: int | None = None) -> Findings:
+def similarity_of_class(
+    path: str | Path,
+    course: Course,
+    past: tuple | list = (),
+    jobs: int | None = None,
+    summaries: dict | None = None,
+) -> Findings:
     """The :class:`~autograder.similarity.findings.Findings` of the class under ``path``.
+
+    ``summaries``: ``{student_id: answers}`` as the students' grading processes kept them
+    (``StudentResult.answers``, :func:`~autograder.similarity.answers.summarize`); every other student is
+    read in a forked process of its own, with limits. This process parses nothing of a student's.
 
     ``past``: folders of past terms' submissions (same layouts); their authors are named
     ``"<folder name>/<student>"``, and pairs within a past term are not compared. ``jobs``: processes
     that fingerprint the answers (default: the number of cores).
     """
     jobs = jobs or os.cpu_count() or 1
-    current = read_class(path, course, jobs=jobs)
+    current = read_class(path, course, jobs=jobs, summaries=summaries)
     earlier, unread = {}, dict(current.unread)
     for folder in past:
         answers = read_class(folder, course, prefix=f"{Path(folder).name}/", jobs=jobs)

@@ -1,4 +1,4 @@
-"""Drop root, and give each student a world of their own (copied into every sandbox).
+"""Drop root, and give each student a process that starts from nothing (copied into every sandbox).
 
 :func:`drop_privileges` is the old, simple wall: when the grader runs as root,
 bubblewrap starts our processes as root inside fresh PID, network and mount
@@ -7,39 +7,127 @@ unprivileged user with no capabilities first thing, so RLIMIT_NPROC applies
 (the kernel exempts root from it).
 
 :func:`enter_student_jail` is what every student's code runs in, cold or
-forked from a warm slot: fresh **user, IPC, mount and PID** namespaces and a
-fresh ``tmpfs`` on ``/tmp``, made for this student and gone with them. So the
-reset between two students of a slot is by construction, not by a list of
-things to clean: System V and POSIX IPC live in the IPC namespace, the user
-and user-session keyrings in the user namespace, every file the student can
-write in the tmpfs, every process in the PID namespace; when its first
-process (the *feeder*, see ``feeder.py``) ends, the kernel kills the rest and
-frees all of it. Nothing the student writes reaches the host's disk.
+forked from a warm slot. A process inherits much more than its files from the
+one that made it (fork(2), execve(2), credentials(7), keyrings(7)); every
+piece of it is made fresh or empty here, for this student, before any of the
+student's code runs (SECURITY.md, "What a student's process inherits"):
+
+- fresh **user, IPC, mount, PID, network, UTS and cgroup** namespaces, with a
+  fresh ``tmpfs`` on ``/tmp``, a network of its own loopback only (up, as
+  bubblewrap leaves it) and the host name ``sandbox``;
+- a new, empty, anonymous **session keyring**, made inside the new user
+  namespace (so the grader's session keyring, and whatever an ssh login, a
+  systemd service or a container put there, is no longer possessed); the
+  user and user-session keyrings are those of the new user namespace, and
+  ``/proc/keys`` and ``/proc/key-users`` are covered;
+- no descriptor but the wire's and 0, 1, 2; every signal at its default (but
+  SIGPIPE and SIGXFSZ ignored, as a fresh Python has them), an empty signal
+  mask, no interval timer; the default personality (PER_LINUX: address space
+  randomisation on); umask 022;
+- no capability (effective, permitted, inheritable, ambient, and an empty
+  bounding set) and ``no_new_privs``;
+- last, a seccomp filter (:func:`key_filter`) under which ``add_key``,
+  ``request_key`` and ``keyctl`` fail with EPERM, as do system calls of a
+  foreign ABI (i386's on x86_64): keys are not namespaced, and as an ordinary
+  user the student is the grader's user to the kernel, so without it student
+  code that guessed the serial of one of that user's keyrings could describe
+  it, list it and write into the user keyring. No answer needs keys.
+
+In ``limits`` mode, where no namespace can be made, :func:`start_afresh` still gives
+the student a new session keyring and fresh signals, timers, personality and umask,
+then ``no_new_privs`` and the same filter.
+
+So the reset between two students of a slot is by construction, not by a list
+of things to clean: when the student's first process (the *feeder*, see
+``feeder.py``) ends, the kernel kills the rest and frees all of it. Nothing the
+student writes reaches the host's disk. The resource limits are the grader's
+(``launcher.Limits``), set before this runs.
 
 The student's uid inside is 1000, mapped to the sandbox's unprivileged user
-outside; no capability survives into the feeder or the student's process,
-and ``no_new_privs`` is set.
+outside.
 
 Examples
 --------
 >>> status_of_child = enter_student_jail(uid=4394304)      # doctest: +SKIP
->>> # here: PID 1 of the student's namespaces, /tmp empty and writable, no capabilities
+>>> # here: PID 1 of the student's namespaces, /tmp empty and writable, no capabilities, an empty @s
 """
 
 from __future__ import annotations
 
 import ctypes
+import fcntl
 import os
+import platform
+import signal
+import socket
+import struct
 
 NOBODY = 65534
 INNER_UID = 1000
 PR_SET_DUMPABLE = 4
 PR_SET_NO_NEW_PRIVS = 38
+PR_CAPBSET_DROP = 24
+PR_CAP_AMBIENT, PR_CAP_AMBIENT_CLEAR_ALL = 47, 4
+PER_LINUX = 0
 
 CLONE_NEWNS = 0x00020000
+CLONE_NEWCGROUP = 0x02000000
+CLONE_NEWUTS = 0x04000000
 CLONE_NEWIPC = 0x08000000
 CLONE_NEWUSER = 0x10000000
 CLONE_NEWPID = 0x20000000
+CLONE_NEWNET = 0x40000000
+STUDENT_NAMESPACES = CLONE_NEWIPC | CLONE_NEWNS | CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWUTS | CLONE_NEWCGROUP
+HOSTNAME = b"sandbox"
+SIOCGIFFLAGS, SIOCSIFFLAGS, IFF_UP = 0x8913, 0x8914, 0x1
+
+# keyctl(2) has no libc wrapper: the syscall's number, per architecture (add_key, request_key, keyctl)
+KEY_SYSCALLS = {
+    "x86_64": (248, 249, 250),
+    "aarch64": (217, 218, 219),
+    "riscv64": (217, 218, 219),
+    "loongarch64": (217, 218, 219),
+    "ppc64le": (269, 270, 271),
+    "ppc64": (269, 270, 271),
+    "s390x": (278, 279, 280),
+    "i386": (286, 287, 288),
+    "i586": (286, 287, 288),
+    "i686": (286, 287, 288),
+    "armv6l": (309, 310, 311),
+    "armv7l": (309, 310, 311),
+    "armv8l": (309, 310, 311),
+}
+# the architecture a system call's ``seccomp_data.arch`` names (AUDIT_ARCH_*, linux/audit.h), per machine:
+# the filter lets through only the native ABI's calls (not i386's ``int 0x80`` on x86_64, nor arm32's on arm64)
+AUDIT_ARCHES = {
+    "x86_64": 0xC000003E,
+    "aarch64": 0xC00000B7,
+    "riscv64": 0xC00000F3,
+    "loongarch64": 0xC0000102,
+    "ppc64le": 0xC0000015,
+    "ppc64": 0x80000015,
+    "s390x": 0x80000016,
+    "i386": 0x40000003,
+    "i586": 0x40000003,
+    "i686": 0x40000003,
+    "armv6l": 0x40000028,
+    "armv7l": 0x40000028,
+    "armv8l": 0x40000028,
+}
+AUDIT_ARCH_64BIT = 0x80000000
+X32_SYSCALL_BIT = 0x40000000  # x86_64's x32 ABI: the same arch, numbers with this bit
+PR_SET_SECCOMP, SECCOMP_MODE_FILTER = 22, 2
+BPF_LD_W_ABS, BPF_JEQ_K, BPF_JGE_K, BPF_RET_K = 0x20, 0x15, 0x35, 0x06
+SECCOMP_RET_ALLOW, SECCOMP_RET_ERRNO = 0x7FFF0000, 0x00050000
+KEYS_REFUSED_WITH = 1  # EPERM, as Docker's default profile and most containers answer keyctl
+KEY_SPEC_SESSION_KEYRING = -3
+KEYCTL_GET_KEYRING_ID, KEYCTL_JOIN_SESSION_KEYRING, KEYCTL_READ, KEYCTL_SET_REQKEY_KEYRING = 0, 1, 11, 14
+# what a fresh Python ignores itself (Python/pylifecycle.c): a write to a closed pipe or past RLIMIT_FSIZE
+# raises an OSError instead of killing the process
+PYTHON_IGNORES = (signal.SIGPIPE, signal.SIGXFSZ)
+# the kernel's list of every key and keyring this user may see, with serials: covered, so that a key of the
+# grader's own user (as an ordinary user the student is that user to the kernel) cannot be looked up by it
+KEY_LISTS = ("/proc/keys", "/proc/key-users")
 MS_RDONLY, MS_NOSUID, MS_NODEV, MS_NOEXEC = 1, 2, 4, 8
 MS_REMOUNT, MS_BIND, MS_REC, MS_PRIVATE = 32, 4096, 16384, 1 << 18
 TMP_BYTES = 256 * 1024**2
@@ -148,10 +236,167 @@ def _map_user(outer_uid, outer_gid):
 
 
 def _drop_capabilities(libc):
-    """Clear the effective, permitted and inheritable capability sets (capset, version 3)."""
+    """Empty the bounding and ambient sets, then the effective, permitted and inheritable ones (capset,
+    version 3): no capability now, and none that an execve could give back."""
+    for number in range(64):
+        if libc.prctl(PR_CAPBSET_DROP, number, 0, 0, 0) != 0 and ctypes.get_errno() == 22:
+            break  # EINVAL: past the kernel's last capability
+    libc.prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_CLEAR_ALL, 0, 0, 0)  # EINVAL on kernels before 4.3: none there
     header = (ctypes.c_uint32 * 2)(0x20080522, 0)
     data = (ctypes.c_uint32 * 6)()
     _check(libc.capset(header, data), "drop capabilities")
+
+
+def _key_syscall(libc, which, *args):
+    """``add_key``/``request_key``/``keyctl`` (``which`` 0, 1, 2) by number."""
+    libc.syscall.restype = ctypes.c_long
+    return libc.syscall(KEY_SYSCALLS[platform.machine()][which], *args)
+
+
+def _fresh_session_keyring(libc, strict=True):
+    """Join a new anonymous session keyring, empty, and make it where request_key(2) puts keys.
+
+    The session keyring is inherited by fork and kept by execve and by a new user namespace, so without
+    this the student would possess the grader's (an ssh login's, a service's): read its keys, change
+    them, leave some for later. Where keyrings cannot be used at all (a kernel without them, a seccomp
+    filter that refuses keyctl), there is nothing to possess; if the join fails while the old session
+    keyring can still be reached, no student may run here. On a machine whose keyctl number is not
+    known here, ``strict`` refuses too (the namespaces probe then says so, and the grader falls back to
+    limits mode, loudly); limits mode itself (not ``strict``) goes on without.
+    """
+    if platform.machine() not in KEY_SYSCALLS:
+        if strict:
+            raise JailError(38, f"a new session keyring: keyctl's number on {platform.machine()} is not known")
+        return
+    if _key_syscall(libc, 2, KEYCTL_JOIN_SESSION_KEYRING, None) < 0:
+        number = ctypes.get_errno()
+        if _key_syscall(libc, 2, KEYCTL_GET_KEYRING_ID, KEY_SPEC_SESSION_KEYRING, 0) >= 0:
+            raise JailError(number, f"a new session keyring: {os.strerror(number)}")
+        return
+    _key_syscall(libc, 2, KEYCTL_SET_REQKEY_KEYRING, 0)  # KEY_REQKEY_DEFL_DEFAULT
+    held = _key_syscall(libc, 2, KEYCTL_READ, KEY_SPEC_SESSION_KEYRING, None, 0)
+    if held != 0:
+        raise JailError(0, f"the new session keyring is not empty ({held} bytes of serials)")
+
+
+class _SockFprog(ctypes.Structure):
+    """``struct sock_fprog``: the number of instructions, and where they are (``struct sock_filter[]``)."""
+
+    _fields_ = [("len", ctypes.c_ushort), ("filter", ctypes.c_void_p)]
+
+
+def key_filter(machine: str) -> list[tuple[int, int, int, int]]:
+    """The seccomp program (classic BPF: ``(code, jt, jf, k)``) that refuses ``add_key``, ``request_key``
+    and ``keyctl`` with EPERM, and every call of a foreign ABI (their numbers differ), and allows the rest.
+
+    >>> len(key_filter("x86_64")), key_filter("x86_64")[-1]
+    (10, (6, 0, 0, 327681))
+    """
+    refuse = SECCOMP_RET_ERRNO | KEYS_REFUSED_WITH
+    checks = [(BPF_JGE_K, X32_SYSCALL_BIT)] if machine == "x86_64" else []
+    checks += [(BPF_JEQ_K, number) for number in KEY_SYSCALLS[machine]]
+    program = [
+        (BPF_LD_W_ABS, 0, 0, 4),  # seccomp_data.arch
+        (BPF_JEQ_K, 1, 0, AUDIT_ARCHES[machine]),
+        (BPF_RET_K, 0, 0, refuse),
+        (BPF_LD_W_ABS, 0, 0, 0),  # seccomp_data.nr
+    ]
+    for index, (code, k) in enumerate(checks):
+        program.append((code, len(checks) - index, 0, k))  # to the last instruction: refuse
+    return program + [(BPF_RET_K, 0, 0, SECCOMP_RET_ALLOW), (BPF_RET_K, 0, 0, refuse)]
+
+
+def _native_key_filter():
+    """:func:`key_filter` for this machine as prctl(2) takes it (a ``struct sock_fprog`` and the
+    ``struct sock_filter[]`` it points to), or None when its numbers are not known here (a 32-bit Python
+    on a 64-bit kernel calls another ABI than uname's)."""
+    machine = platform.machine()
+    if machine not in KEY_SYSCALLS or machine not in AUDIT_ARCHES:
+        return None
+    if bool(AUDIT_ARCHES[machine] & AUDIT_ARCH_64BIT) != (struct.calcsize("P") == 8):
+        return None
+    program = key_filter(machine)
+    instructions = ctypes.create_string_buffer(b"".join(struct.pack("=HBBI", *line) for line in program))
+    return _SockFprog(len(program), ctypes.addressof(instructions)), instructions
+
+
+# made on import: in a warm slot once, by the zygote (which never installs it), not in each worker
+KEY_FILTER = _native_key_filter()
+
+
+def _refuse_keys(libc, strict=True):
+    """Install :func:`key_filter` on this process (kept by its children, never removable): no key or
+    keyring of anyone's can be reached by serial number, not even one of the grader's own user (as an
+    ordinary user the student is that user to the kernel). ``no_new_privs`` must be set.
+
+    On a machine whose numbers are not known here, or whose kernel takes no filter while keyrings can be
+    used, ``strict`` refuses (the namespaces probe then says so, and the grader falls back to limits mode,
+    loudly); limits mode itself (not ``strict``) goes on without.
+    """
+    if KEY_FILTER is None:
+        if strict:
+            raise JailError(38, f"a filter of keyctl: the system calls' numbers on {platform.machine()} are not known")
+        return
+    if libc.prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, ctypes.byref(KEY_FILTER[0]), 0, 0) != 0:
+        number = ctypes.get_errno()
+        if strict and _key_syscall(libc, 2, KEYCTL_GET_KEYRING_ID, KEY_SPEC_SESSION_KEYRING, 0) >= 0:
+            raise JailError(number, f"a filter of keyctl: {os.strerror(number)}")
+
+
+def _loopback_up():
+    """Bring up ``lo`` of the new network namespace, as bubblewrap does for its own (a student's code
+    may talk to itself over 127.0.0.1, as a notebook can; nothing else is reachable). Where the kernel
+    will not (no IPv4), ``lo`` stays down: the namespace is the student's either way."""
+    try:
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
+            request = struct.pack("16sH22x", b"lo", 0)
+            flags = struct.unpack("16sH22x", fcntl.ioctl(probe.fileno(), SIOCGIFFLAGS, request))[1]
+            fcntl.ioctl(probe.fileno(), SIOCSIFFLAGS, struct.pack("16sH22x", b"lo", flags | IFF_UP))
+    except OSError:
+        pass
+
+
+def _fresh_process_state(libc):
+    """Signals, timers, personality and umask as a fresh process has them, whatever the grader had.
+
+    Ignored signals and the signal mask survive fork and execve (signal(7)), so does an interval timer
+    across execve (setitimer(2)), and so does the personality (personality(2); ADDR_NO_RANDOMIZE, under
+    ``setarch -R`` or a debugger, would turn off address randomisation for the student's processes).
+    """
+    for number in signal.valid_signals():
+        try:
+            signal.signal(number, signal.SIG_IGN if number in PYTHON_IGNORES else signal.SIG_DFL)
+        except (OSError, ValueError):  # SIGKILL and SIGSTOP cannot be changed
+            pass
+    signal.pthread_sigmask(signal.SIG_SETMASK, ())
+    for timer in (signal.ITIMER_REAL, signal.ITIMER_VIRTUAL, signal.ITIMER_PROF):
+        signal.setitimer(timer, 0)
+    libc.personality(PER_LINUX)
+    os.umask(0o022)
+
+
+def _cover_key_lists(libc):
+    """Cover the kernel's lists of keys of the student's own /proc (see :data:`KEY_LISTS`)."""
+    for path in KEY_LISTS:
+        if os.path.exists(path):
+            _check(libc.mount(b"/dev/null", path.encode(), None, MS_BIND, None), f"cover {path}")
+
+
+def start_afresh() -> None:
+    """What can be made fresh without namespaces (``limits`` mode): a new, empty session keyring, and
+    signals, timers, personality and umask as a fresh process has them; then ``no_new_privs`` and the
+    filter that refuses every key system call (:func:`key_filter`).
+
+    Raises
+    ------
+    JailError
+        The grader's session keyring could not be left.
+    """
+    libc = _libc()
+    _fresh_session_keyring(libc, strict=False)
+    _fresh_process_state(libc)
+    libc.prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0)
+    _refuse_keys(libc, strict=False)
 
 
 def enter_student_jail(
@@ -182,11 +427,15 @@ def enter_student_jail(
     outer_uid, outer_gid = os.getuid(), os.getgid()
     _check(libc.unshare(CLONE_NEWUSER), "a new user namespace")
     _map_user(outer_uid, outer_gid)
-    _check(libc.unshare(CLONE_NEWIPC | CLONE_NEWNS | CLONE_NEWPID), "new IPC, mount and PID namespaces")
+    _check(libc.unshare(STUDENT_NAMESPACES), "new IPC, mount, PID, network, UTS and cgroup namespaces")
+    _fresh_session_keyring(libc)  # inside the new user namespace: the student's own, not the grader's
+    _check(libc.sethostname(HOSTNAME, len(HOSTNAME)), "a host name of its own")
+    _loopback_up()
     _check(libc.mount(None, b"/", None, MS_REC | MS_PRIVATE, None), "private mounts")
     _fresh_tmp(libc, tmp_bytes)
     _hide(libc, sandbox_folder, HIDDEN_FILES)
     os.chdir("/tmp")
+    _fresh_process_state(libc)
     libc.prctl(PR_SET_DUMPABLE, 0, 0, 0, 0)
     pid = os.fork()
     if pid:
@@ -195,8 +444,10 @@ def enter_student_jail(
     # PID 1 of the student's namespaces: a /proc of its own, when this kernel allows one here (as root,
     # bubblewrap's /proc has covered folders and a new one is refused; the old one shows no student)
     libc.mount(b"proc", b"/proc", b"proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, None)
+    _cover_key_lists(libc)
     _drop_capabilities(libc)
     libc.prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0)
+    _refuse_keys(libc)
 
 
 def close_all_but(keep_fds: tuple[int, ...] | list[int]) -> None:

@@ -2,8 +2,9 @@
 
 A sandbox starts here, cold (``python worker.py``, from bubblewrap) or forked
 from a warm slot's zygote (:func:`start`): the process enters the student's
-own namespaces (``jail.enter_student_jail``: fresh user, IPC, mount and PID
-namespaces and a fresh ``/tmp``), becomes the *feeder* (``feeder.py``, PID 1
+own namespaces (``jail.enter_student_jail``: fresh user, mount, PID, IPC, UTS,
+network and cgroup namespaces, a fresh ``/tmp``, a new empty session keyring and
+nothing else of the grader's process), becomes the *feeder* (``feeder.py``, PID 1
 there, out of the student's reach) and forks the runner, which executes the
 student's cells and calls their functions, one request at a time.
 
@@ -391,8 +392,10 @@ def start(
     try:
         if in_jail:
             jail.enter_student_jail(uid, keep_user, HERE, keep_fds=keep)
-        elif not keep_user:
-            jail.drop_privileges(uid)
+        else:  # limits mode: no namespaces, but not the grader's keyring, signals or personality either
+            if not keep_user:
+                jail.drop_privileges(uid)
+            jail.start_afresh()
     except (jail.JailError, OSError) as error:
         os.write(
             replies_fd,

@@ -5,8 +5,9 @@ the interpreter, numpy), and a student whose code calls ``coursekit.lie``
 pays another fifth for scipy. The zygote pays that once per grading slot: it
 imports what every worker needs and then forks one worker per request. Each
 worker is a copy of a process that never ran student code; it enters the
-student's own namespaces (``jail.enter_student_jail``: fresh user, IPC, mount
-and PID namespaces and a fresh tmpfs on ``/tmp``) and runs the student's code
+student's own namespaces (``jail.enter_student_jail``: fresh user, mount, PID,
+IPC, UTS, network and cgroup namespaces, a fresh tmpfs on ``/tmp``, a new empty
+session keyring, and nothing else the zygote inherited from the grader) and runs the student's code
 there (``worker.start``), so every student, and every restart after a crash,
 starts from the same clean state.
 
@@ -19,7 +20,7 @@ worker closes the control socket before anything else.
 
 Between two students the grader asks for a *reset*: every other process in the
 sandbox is killed, and with them the student's namespaces and everything in
-them (files, IPC objects, keyrings). The zygote proves it: no process is left,
+them (files, IPC objects, network state, keyrings). The zygote proves it: no process is left,
 and the slot's own ``/tmp`` is as bubblewrap made it (students never write
 there); otherwise the grader discards the slot.
 
