@@ -25,3 +25,9 @@ def test_slips():
     a, b = np.array([2.0, 0.0, 0.0]), np.array([3.0, 3.0, 0.0])
     raw = np.concatenate([[1.0 + a @ b], np.cross(a, b)])
     assert np.allclose(checks.EIGHTH_UNNORMALISED, raw / np.linalg.norm(raw), atol=1e-15)
+
+
+def test_the_answer_at_a_micro_radian():
+    a, b = np.array([0.3, -1.2, 2.0]), np.array([0.3, -1.2 + 2e-6, 2.0 + 1.2e-6])
+    truth = Rotation.align_vectors([b / np.linalg.norm(b)], [a / np.linalg.norm(a)])[0].as_quat(scalar_first=True)
+    assert np.allclose(checks.MICRO, truth * np.sign(truth[0]), atol=1e-15)

@@ -43,6 +43,7 @@ def jr_closed_form(w):
         ("JRP_SIGN_FLIPPED", lambda: R @ skew(P)),
         ("JRP_TRANSPOSED", lambda: (-R @ skew(P)).T),
         ("JRP_FACTORS_SWAPPED", lambda: -skew(P) @ R),
+        ("JRP_AT_GENERIC", lambda: -R @ skew(checks.P_GENERIC)),
         ("JR_AT_W", lambda: jr_closed_form(W_INV)),
         ("JR_INV_FIRST_ORDER_AT_W", lambda: np.eye(3) + 0.5 * skew(W_INV)),
         ("JR_INV_TINY", lambda: np.eye(3) + 0.5 * skew(1e-9 * np.array([0.0, 0.6, 0.8]))),

@@ -5,7 +5,8 @@
 1. normalises each master in place (no execution counts, no outputs except the
    recorded ones of ``nbval-check-output`` cells, no editor metadata), so that
    diffs of the masters show only what an author changed;
-2. writes ``course/NN_*.ipynb`` without the book's ``reader-only`` cells, with nbgrader's own preprocessors: solution
+2. writes ``course/NN_*.ipynb`` without the book's ``reader-only`` cells, nor the ``giveaways`` of an answer
+   cell's ``exercise`` metadata (its kind and minutes stay), with nbgrader's own preprocessors: solution
    regions replaced by a stub that raises ``NotImplementedError``, outputs
    cleared, check cells locked, checksums computed as ``nbgrader
    generate_assignment`` would;
@@ -30,7 +31,7 @@ CODE_STUB = (
     "# Your code here: replace the next line with your solution.\n"
     'raise NotImplementedError("this exercise is not written yet")'
 )
-KEPT_CELL_METADATA = ("deletable", "editable", "nbgrader", "tags")
+KEPT_CELL_METADATA = ("deletable", "editable", "exercise", "nbgrader", "tags")
 KEPT_OUTPUT_MIME = ("text/plain",)
 
 
@@ -94,6 +95,8 @@ def student_version(master: NotebookNode) -> NotebookNode:
 
     nb = normalize_master(master)
     nb.cells = [cell for cell in nb.cells if not cells.is_reader_only(cell)]
+    for cell in nb.cells:
+        cells.drop_giveaways(cell)
     resources = {}
     for preprocessor in (
         ClearSolutions(code_stub={"python": CODE_STUB}),

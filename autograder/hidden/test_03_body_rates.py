@@ -32,7 +32,7 @@ def _hint(got, R, R_dot, omega_b):
             _vee(R_dot @ R.T),
             "that is the world rate ω_w (Ṙ Rᵀ = [ω_w]×); the gyroscope's rate is in body axes, ω_b = Rᵀ ω_w",
         ),
-        (-omega_b, "the opposite spin: Rᵀ Ṙ and Ṙᵀ R are negatives of each other"),
+        (-omega_b, "the opposite spin: ω_b came out negated"),
         (_vee(R_dot), "Ṙ alone is not skew-symmetric: it still holds the attitude R"),
         (R.T @ omega_b, hints.RATE_TURNED_INTO_BODY_HINT),
     ]

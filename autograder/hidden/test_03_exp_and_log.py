@@ -439,7 +439,7 @@ def _log_hint(got, R, expected):
             return hints.RETURNED_ZERO_TINY_ROTATION_HINT
         return (
             f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
-            "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
+            "is near ±1; the angle must come from numbers that keep it"
         )
     no_branch = [t / np.sin(t) * a for t in (theta, theta_acos) if np.sin(t) != 0.0]
     if any(explains(got, candidate, expected) for candidate in no_branch) or (
@@ -562,10 +562,10 @@ def _theta_hint(theta, R, true_angle):
         return hints.DEGREES_VALUE_RADIANS_COURSE_HINT
     if explains(theta, theta_acos, true_angle):
         if theta_acos == 0.0:
-            return "arccos loses tiny angles (here it rounds θ to 0): use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
+            return "arccos loses tiny angles (here it rounds θ to 0): the angle must come from numbers that keep it"
         return (
             f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
-            "use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)"
+            "the angle must come from numbers that keep it"
         )
     return hints.ANGLE_FORMULA_HINT
 
@@ -575,8 +575,8 @@ def _axis_hint(u, R, axis):
     a, _, _, _ = _log_parts(R)
     if np.linalg.norm(a) <= 1e-9 and (np.linalg.norm(a) == 0.0 or abs(abs(u @ a) / np.linalg.norm(a) - 1.0) <= 1e-6):
         return (
-            "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: take u from (R + I)/2, "
-            "the column with the largest diagonal entry (sign from R - Rᵀ just below π)"
+            "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: the symmetric part (R + I)/2 "
+            "still does, in every column that is not nearly zero (sign from R - Rᵀ just below π)"
         )
     if explains(u, -axis, axis):
         return hints.U_POINTS_WRONG_WAY_HINT
@@ -595,7 +595,7 @@ def _axis_angle(student, R, what):
             f"(tr R - 1)/2 = 1 + {c - 1.0:.1e} is just above 1 by rounding, so arccos gives NaN: "
             "clip (tr R - 1)/2 to [-1, 1] before arccos (or use atan2)"
             if abs(c) > 1.0
-            else "θ must be a number: θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)",
+            else "θ must be a number",
         )
     theta = float(expect_array(value[1], (), f"{what}: theta"))
     if shape_problem(value[0], (3,)) == "returned NaN or inf values":

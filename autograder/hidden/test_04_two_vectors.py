@@ -59,7 +59,7 @@ def _slip_values(a, b):
         ),
         (
             np.concatenate([[np.cos(theta / 2)], -np.sin(theta / 2) * u]),
-            "the axis points the wrong way: turn about a × b, not b × a",
+            "the axis points the wrong way: the turn takes a away from b",
         ),
         (raw / np.linalg.norm(raw), "only the directions count: normalise a and b first"),
         (
@@ -78,7 +78,10 @@ def _hint(got, a, b, truth):
     for candidate, hint in _slip_values(a, b):
         if np.max(np.abs(candidate - truth)) > 1e-13 and explains(got, candidate, truth, floor=1e-17):
             return hint
-    return "q = [cos(θ/2), sin(θ/2) u] with θ = atan2(|a × b|, a · b) and u = (a × b) / |a × b| (a, b normalised)"
+    return (
+        "the rotation of q must take the direction of a onto that of b through the angle between them: check "
+        "the half angle, the axis (perpendicular to both), the sense of the turn and the accuracy at tiny angles"
+    )
 
 
 @exercise("quat_from_two_vectors", weight=3)
@@ -119,7 +122,7 @@ def test_two_vectors_opposite_and_parallel(student):
         expect(
             np.shape(got) != (4,) or np.all(np.isfinite(np.asarray(got, dtype=float))),
             f"for opposite directions ({fmt(a)} and its negative) got NaN",
-            "for opposite directions a × b is zero or rounding noise: take a half turn about any axis "
+            "for opposite directions the cross product is zero or rounding noise: take a half turn about any axis "
             "perpendicular to a",
         )
         got = expect_array(got, (4,), "quat_from_two_vectors(a, -3a)")
@@ -128,7 +131,7 @@ def test_two_vectors_opposite_and_parallel(student):
         expect(
             abs(np.linalg.norm(got) - 1.0) <= 1e-14 and np.linalg.norm(_matrix(got) @ a_hat + a_hat) <= 1e-14,
             f"for opposite directions got {fmt(got, 6)}: not a unit half turn sending a to -a",
-            "for opposite directions a × b is zero or rounding noise: take a half turn about any axis "
+            "for opposite directions the cross product is zero or rounding noise: take a half turn about any axis "
             "perpendicular to a"
             if half_turn_wrong_axis
             else hints.OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT,
@@ -137,7 +140,7 @@ def test_two_vectors_opposite_and_parallel(student):
         expect(
             np.max(np.abs(same - [1.0, 0.0, 0.0, 0.0])) <= 1e-15,
             f"parallel directions gave {fmt(same, 6)}, not the identity",
-            "when a × b = 0 and a · b > 0 no turn is needed",
+            "parallel directions need no turn",
         )
 
 

@@ -209,7 +209,7 @@ def _extraction_hint(got, R, eps=None):
         return (
             "next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
             "atan2 of them gives yaw and roll only to ~1e-16/cos(pitch); get yaw first, then roll from the "
-            "large entries (undo Rz(yaw): roll = atan2(s R[0, 2] - c R[1, 2], c R[1, 1] - s R[0, 1]))"
+            "large entries of R, which the yaw you already have makes available"
         )
     if eps is not None and abs(got[2]) == 0.0:
         return (
@@ -648,8 +648,8 @@ def _rates_hint(E, pitch, roll):
         return matching[0]
     # None, or several mistakes that coincide at these angles (at zero angles reversed columns are I).
     return (
-        f"E({pitch:.3g}, {roll:.3g}) should be {fmt(right, 3)}: its columns are the yaw, pitch and roll axes "
-        "seen in the body, Rx(roll)ᵀ Ry(pitch)ᵀ e_z, Rx(roll)ᵀ e_y, e_x"
+        f"E({pitch:.3g}, {roll:.3g}) should be {fmt(right, 3)}: each column is what one rate alone does, the "
+        "body rate of a pure yaw, pitch or roll rate; compare one at a time with finite differences"
     )
 
 

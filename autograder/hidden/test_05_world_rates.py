@@ -60,12 +60,12 @@ def _hint(got, yaw, pitch):
     slips = [
         (
             np.column_stack([ez, _rz(yaw).T @ ey, _ry(pitch).T @ _rz(yaw).T @ ex]),
-            "the axes were turned by transposes, as in the body-rate matrix: in world axes each Euler axis is "
-            "turned by the rotations to its left in Rz Ry Rx",
+            "the axes were turned by transposes, as in the body-rate matrix: a pure pitch rate spins about a "
+            "horizontal axis that turns with the yaw, not against it",
         ),
         (
             np.column_stack([ez, _rz(yaw) @ ey, _rz(yaw) @ ex]),
-            "the roll axis is the body x axis after the yaw and the pitch: Rz(ψ) Ry(θ) e_x",
+            "the roll axis is the body x axis after the yaw and the pitch: it tilts out of the horizontal plane",
         ),
         (_world_rates(0.0, pitch), "the yaw turns the pitch and roll axes about the vertical"),
         (truth[:, ::-1], hints.COLUMNS_GO_ORDER_RATES_HINT),

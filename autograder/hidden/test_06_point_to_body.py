@@ -29,7 +29,10 @@ def _hint(J, R, p):
         (R.T @ _skew(p), hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT),
         (-truth, "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ, and -[δ]× v = +[v]× δ"),
         (_skew(p), hints.POINT_SEEN_BODY_RT_HINT),
-        (-R @ _skew(p), "-R [p]× is the Jacobian of R p (body to world); here the map is Rᵀ p_w"),
+        (
+            -R @ _skew(p),
+            "that is Exercise 5's answer, which is the Jacobian of R p (body to world); here the map is Rᵀ p_w",
+        ),
     ]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 * size and explains(

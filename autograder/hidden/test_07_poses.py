@@ -97,7 +97,7 @@ def _random_twists(count, seed, max_angle):
 
 SERIES_HINT_V = (
     "below θ = 1e-2 use the Taylor series of the two coefficients of V (1/2 - θ²/24, 1/6 - θ²/120): "
-    "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2"
+    "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not 1/2"
 )
 SERIES_NAN_HINT_V = (
     "NaN or inf at a tiny angle: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
@@ -184,7 +184,7 @@ def _inverse_hint(got, T):
         _inverse(T),
         [
             (T.T, "that is the plain transpose of T: a pose is not orthogonal; only the rotation block is transposed"),
-            (_pose(R.T, -t), "the translation must be turned as well as negated: -Rᵀ t"),
+            (_pose(R.T, -t), "the translation must be turned as well as negated: -t is written in a's axes, not b's"),
             (_pose(R.T, t), hints.KEPT_T_UNCHANGED_INVERSE_HINT),
             (_pose(R, -R @ t), hints.ROTATION_BLOCK_INVERSE_RT_HINT),
         ],
@@ -194,7 +194,7 @@ def _inverse_hint(got, T):
 
 @exercise("pose_inverse", weight=3)
 def test_pose_inverse_formula(student):
-    """returns [[Rᵀ, -Rᵀ t], [0, 0, 0, 1]] for 20 random poses"""
+    """returns the inverse matrix of T for 20 random poses"""
     for T in _random_poses(20, seed=711):
         got = expect_array(student.pose_inverse(T), (4, 4), "pose_inverse(T)")
         expect_close(got, _inverse(T), TOL, "pose_inverse(T)", _inverse_hint(got, T))

@@ -69,9 +69,12 @@ def build_course(root: str | Path, solutions_dir: Path, lessons: list[str] | Non
 
 def _write_student_master(master, target):
     """``master`` as nbgrader's source: the lab's edition, without the cells only the book shows
-    (tagged ``reader-only``, :mod:`autograder.lessons.cells`), as ``release`` leaves them out."""
+    (tagged ``reader-only``, :mod:`autograder.lessons.cells`) and the exercises' giveaways, as ``release``
+    leaves them out."""
     nb = nbformat.read(str(master), as_version=4)
     nb.cells = [cell for cell in nb.cells if not cells.is_reader_only(cell)]
+    for cell in nb.cells:
+        cells.drop_giveaways(cell)
     nbformat.write(nb, str(target))
     shutil.copystat(master, target)
 

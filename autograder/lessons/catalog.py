@@ -3,6 +3,16 @@
 The masters are the single source of truth: an exercise exists because its
 answer cell exists, and it is worth what its check cell's ``points`` say.
 
+What kind of thinking an exercise asks for is recorded on its answer cell, as cell metadata
+(COURSE_SPEC.md, "Exercise kinds")::
+
+    "exercise": {"kind": "derive", "minutes": 20, "giveaways": ["1 + a·b", "np.cross(a, b)"]}
+
+``kind`` is one of :data:`KINDS`; ``minutes`` is the estimated time a student spends on it;
+``giveaways`` (required for the kinds of :data:`THINKING_KINDS`) are the phrases, in LaTeX and in
+code, that would hand its result away: they must appear nowhere in the student edition
+(``tests/test_answers_off_page.py``), and ``release`` leaves them out of ``course/``.
+
 Examples
 --------
 >>> catalog = load_catalog(Path("solutions"))
@@ -12,6 +22,7 @@ Examples
 
 from __future__ import annotations
 
+import ast
 import re
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
@@ -23,6 +34,10 @@ from autograder.lessons import cells
 from autograder.lessons.notebook_files import read_master
 
 LESSON_FILE = re.compile(r"^(\d\d)_[a-z0-9_]+\.ipynb$")
+EXERCISE_METADATA = "exercise"  # the answer cell's metadata key (see the module docstring)
+KINDS = ("transcribe", "assemble", "derive", "design", "diagnose")
+THINKING_KINDS = ("derive", "design", "diagnose")  # the page never gives their result
+GIVEAWAYS = "giveaways"
 
 
 @dataclass(frozen=True)
@@ -30,6 +45,14 @@ class Exercise:
     name: str
     lesson: str
     points: float
+    kind: str = ""  # one of KINDS; "" when the master does not say
+    minutes: int = 0  # estimated student time; 0 when the master does not say
+    giveaways: tuple[str, ...] = ()
+    meaning: str = ""  # the first line of the answer function's docstring
+
+    @property
+    def asks_for_thinking(self) -> bool:
+        return self.kind in THINKING_KINDS
 
 
 @dataclass(frozen=True)
@@ -79,6 +102,44 @@ class CatalogError(ValueError):
     """A master notebook breaks the conventions of :mod:`autograder.lessons.cells`."""
 
 
+def exercise_metadata(cell: dict, where: str = "answer cell") -> tuple[str, int, tuple[str, ...]]:
+    """``(kind, minutes, giveaways)`` of an answer cell's ``"exercise"`` metadata; ``("", 0, ())`` without it.
+
+    Raises :class:`CatalogError` when the metadata is there but malformed.
+
+    Examples
+    --------
+    >>> exercise_metadata({"metadata": {"exercise": {"kind": "derive", "minutes": 15, "giveaways": ["1 + a·b"]}}})
+    ('derive', 15, ('1 + a·b',))
+    """
+    meta = cell.get("metadata", {}).get(EXERCISE_METADATA)
+    if meta is None:
+        return "", 0, ()
+    if not isinstance(meta, dict):
+        raise CatalogError(f"{where}: metadata {EXERCISE_METADATA!r} must be a mapping")
+    kind, minutes, giveaways = meta.get("kind"), meta.get("minutes"), meta.get(GIVEAWAYS, [])
+    if kind not in KINDS:
+        raise CatalogError(f"{where}: exercise kind {kind!r} is not one of {', '.join(KINDS)}")
+    if not isinstance(minutes, int) or isinstance(minutes, bool) or minutes <= 0:
+        raise CatalogError(f"{where}: exercise minutes must be a positive whole number, not {minutes!r}")
+    if not isinstance(giveaways, list) or not all(isinstance(g, str) and g.strip() for g in giveaways):
+        raise CatalogError(f"{where}: exercise giveaways must be a list of non-empty strings")
+    unknown = sorted(set(meta) - {"kind", "minutes", GIVEAWAYS})
+    if unknown:
+        raise CatalogError(f"{where}: unknown exercise metadata {unknown}")
+    return kind, minutes, tuple(giveaways)
+
+
+def _meaning(cell: dict, name: str) -> str:
+    """The first line of the docstring of the function ``name`` defined in ``cell``."""
+    tree = cells.parse_source(cells.source_text(cell))
+    for node in tree.body if tree else ():
+        if isinstance(node, ast.FunctionDef) and node.name == name:
+            doc = (ast.get_docstring(node) or "").strip()
+            return doc.splitlines()[0].strip() if doc else ""
+    return ""
+
+
 def lesson_from_notebook(path: Path, nb: nbformat.NotebookNode) -> Lesson:
     """Read one master's lesson number, title, exercises and setup cell."""
     match = LESSON_FILE.match(Path(path).name)
@@ -93,6 +154,7 @@ def lesson_from_notebook(path: Path, nb: nbformat.NotebookNode) -> Lesson:
                 title = re.sub(r"^Lesson\s+\d+\s*[—:-]\s*", "", first[2:].strip())
                 break
     exercises, setup_source, pending, hand_in_points = [], "", None, 0.0
+    details = {}
     for cell in nb.cells:
         if cells.is_setup_cell(cell):
             setup_source = cells.source_text(cell)
@@ -102,11 +164,13 @@ def lesson_from_notebook(path: Path, nb: nbformat.NotebookNode) -> Lesson:
             if pending:
                 raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")
             pending = cells.grade_id(cell)
+            kind, minutes, giveaways = exercise_metadata(cell, f"{path}: answer cell {pending!r}")
+            details = dict(kind=kind, minutes=minutes, giveaways=giveaways, meaning=_meaning(cell, pending))
         elif cells.is_check_cell(cell):
             name = (cells.grade_id(cell) or "")[len(cells.CHECK_PREFIX) :]
             if name != pending:
                 raise CatalogError(f"{path}: check cell {cells.grade_id(cell)!r} does not follow its answer cell")
-            exercises.append(Exercise(name=name, lesson=number, points=cells.points(cell)))
+            exercises.append(Exercise(name=name, lesson=number, points=cells.points(cell), **details))
             pending = None
     if pending:
         raise CatalogError(f"{path}: answer cell {pending!r} has no check cell after it")

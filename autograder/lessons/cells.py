@@ -87,6 +87,16 @@ def is_reader_only(cell: dict) -> bool:
     return READER_ONLY_TAG in tags(cell)
 
 
+def drop_giveaways(cell: dict) -> None:
+    """Leave out the ``giveaways`` of an answer cell's ``exercise`` metadata (they are the answer:
+    ``lessons/catalog.py``); its ``kind`` and ``minutes`` stay. Every edition a student gets goes through it.
+    The cell gets a new mapping, so a notebook sharing the old one (the master) keeps its giveaways."""
+    metadata = cell.get("metadata", {})
+    exercise = metadata.get("exercise")
+    if isinstance(exercise, dict) and "giveaways" in exercise:
+        metadata["exercise"] = type(exercise)({k: v for k, v in exercise.items() if k != "giveaways"})
+
+
 def checks_output(cell: dict) -> bool:
     return cell.get("cell_type") == "code" and CHECK_OUTPUT_TAG in tags(cell)
 

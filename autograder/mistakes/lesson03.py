@@ -552,8 +552,8 @@ def log_so3(R):
         u = -u
     return theta * u
 """,
-        hint="largest diagonal entry",
-        public_hint="largest diagonal entry",
+        hint="a fixed column of B",
+        public_hint="a fixed column of B",
     ),
 ]
 

@@ -159,8 +159,8 @@ def matrix_to_quat(R):
     z = (R[1, 0] - R[0, 1]) / (4 * w)
     return np.array([w, x, y, z])
 """,
-        hint="Shepperd",
-        public_hint="Shepperd",
+        hint="cannot be small",
+        public_hint="cannot be small",
     ),
     Mistake(
         "matrix_to_quat_no_canonical",

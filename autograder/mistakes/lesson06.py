@@ -398,8 +398,8 @@ def numerical_jacobian(f, x, boxplus=None):
 def jacobian_rotate_point(R, p):
     return (-np.asarray(R, dtype=float) @ skew(p)).T
 """,
-        hint="transpose of -R [p]×",
-        public_hint="transpose of -R [p]×",
+        hint="transpose of the Jacobian",
+        public_hint="transpose of the Jacobian",
     ),
     Mistake(
         "jacobian_rotate_point_no_R",

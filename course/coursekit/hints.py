@@ -51,7 +51,7 @@ USE_EXACTLY_KEYS_CLOSURE_HINT = "use exactly the keys closure, identity, inverse
 
 # ---------------------------------------------------------------- checks/lesson03.py
 AB_BA_BRACKET_DIFFERENCE_HINT = "that is AB + BA: the bracket is the difference AB - BA"
-ANGLE_FORMULA_HINT = "θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2), in radians, in [0, π]"
+ANGLE_FORMULA_HINT = "θ must be the rotation angle in radians, in [0, π], accurate at tiny angles and near π alike"
 AXIS_AT_ZERO_ANGLE_HINT = "u = vee(R - Rᵀ)/(2 sin θ) is 0/0 at θ = 0: the axis is arbitrary there, return [1, 0, 0]"
 COEFFICIENTS_SWAPPED_R_I_HINT = "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
 COMPARE_ENTRY_ENTRY_W3_HINT = "compare entry by entry with [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
@@ -60,7 +60,8 @@ ENTRYWISE_POWER_HINT = "W ** k is an entry-wise power: use the matrix product (t
 FACTORIAL_MISSING_HINT = "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
 GOT_ZERO_MULTIPLIES_ENTRY_HINT = "got zero: * multiplies entry by entry (A * B = B * A), use @ for the matrix product"
 IDENTITY_TERM_MISSING_SUM_HINT = "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
-LOG_FORMULA_HINT = "w = θ a/|a| with a = vee(R - Rᵀ)/2 and θ = atan2(|a|, (tr R - 1)/2)"
+LOG_FORMULA_HINT = ("w must satisfy exp(w) = R with |w| in [0, π]: check the axis (R leaves it fixed), the angle "
+                    "and the sense of the turn")
 LOG_OFF_NEAR_TAKE_HINT = ("the log is off near π: take the axis from the symmetric part (R + Rᵀ)/2 there, and its "
                           "sign from R - Rᵀ")
 MINUS_SIGNS_MISSING_SYMMETRIC_HINT = ("the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, "
@@ -75,8 +76,8 @@ ONE_TERM_TOO_MANY_HINT = "one term too many: n_terms terms means k = 0 … n_ter
 ONLY_AB_BRACKET_SUBTRACTS_HINT = "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
 OPPOSITE_ROTATION_CHECK_SIGN_HINT = ("the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u "
                                      "points along u)")
-RETURNED_ZERO_TINY_ROTATION_HINT = ("returned zero for a tiny rotation: arccos rounds tiny angles to 0; use θ = "
-                                    "atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
+RETURNED_ZERO_TINY_ROTATION_HINT = ("returned zero for a tiny rotation: arccos rounds tiny angles to 0, so the angle "
+                                    "must come from numbers that keep it")
 RODRIGUES_FORMULA_HINT = "R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]× and θ = |w|"
 RODRIGUES_FORMULA_NEEDS_UNIT_HINT = ("Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin "
                                      "θ and cos θ)")
@@ -114,7 +115,8 @@ SLERP_STAYS_UNIT_SPHERE_HINT = "slerp stays on the unit sphere: the sine weights
 TOOK_Q_ENTRY_ENTRY_HINT = "took 1/q entry by entry: the inverse of a quaternion is q* / |q|²"
 
 # ---------------------------------------------------------------- checks/lesson04_two_vectors.py
-ARCCOS_LOSES_SMALL_ANGLES_HINT = "arccos loses small angles (cos θ rounds to 1): take θ = atan2(|a × b|, a · b)"
+ARCCOS_LOSES_SMALL_ANGLES_HINT = ("arccos loses small angles (cos θ rounds to 1): a turn of 1e-10 rad came out "
+                                  "as none; find θ from its sine and its cosine together, not the cosine alone")
 OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT = ("for opposite directions the answer is a half turn, [0, u] with u "
                                         "perpendicular to a")
 
@@ -158,13 +160,17 @@ CLOSED_FORM_LOSES_DIGITS_HINT = ("the closed form loses its digits at tiny θ (1
                                  "so (1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a "
                                  "threshold")
 CLOSED_FORM_USE_TAYLOR_HINT = "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle"
-COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT = ("the coefficients are swapped: (1 - cos θ)/θ² multiplies [w]× and (θ - "
-                                            "sin θ)/θ³ multiplies [w]×²")
-FACTORS_WRONG_ORDER_R_HINT = "the factors are in the wrong order: -R [p]×, not -[p]× R"
+COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT = ("the coefficients are swapped: the one in front of [w]× starts at 1/2 and the "
+                                            "one in front of [w]×² at 1/6, as the series Σ (-[w]×)^k/(k+1)! says")
+FACTORS_WRONG_ORDER_R_HINT = ("the factors are in the wrong order: in R Exp(δ) p the turn δ acts on the body point "
+                              "first, and R then carries the result into the world")
 FIRST_ORDER_PART_ONLY_HINT = ("that is I + [w]×/2, only the first-order part: add the [w]×² term with the coefficient 1/θ² - "
                        "(1 + cos θ)/(2θ sin θ)")
 JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT = "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
-LEFT_JACOBIAN_OF_ROTATED_POINT_HINT = "that is -[R p]×, the Jacobian of the left perturbation; the right one is -R [p]×"
+ROTATED_POINT_SIGN_FLIPPED_HINT = "the sign is flipped: turning δ × p round to put δ on the right changes its sign"
+ROTATED_POINT_R_MISSING_HINT = "R is missing: the point turns in the body frame, and R carries the result into the world"
+LEFT_JACOBIAN_OF_ROTATED_POINT_HINT = ("that is -[R p]×, the Jacobian of the left perturbation Exp(δ) R p; here δ turns "
+                                       "the body about its own axes, R Exp(δ) p")
 LEFT_QUAT_PERTURBATION_HINT = "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the right: q ⊗ Exp_q(δ)"
 LEFT_UPDATE_IS_A_ROTATION_HINT = "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"
 LOGS_DO_NOT_SUBTRACT_HINT = ("that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not commute); the "
@@ -172,14 +178,15 @@ LOGS_DO_NOT_SUBTRACT_HINT = ("that is Log(R_a) - Log(R_b): rotation vectors do n
 Q_WITHOUT_NORMALISING_NORM_HINT = ("that is q ⊗ [1, δ/2] without normalising: its norm is √(1 + |δ|²/4), not 1; use "
                                    "the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]")
 RETURNED_SHAPE_F_R3_HINT = "returned shape 3×2 for f: R³ → R²: the Jacobian is transposed"
-RIGHT_JACOBIAN_FORMULA_HINT = "Jr = I - (1 - cos θ)/θ² [w]× + (θ - sin θ)/θ³ [w]×²"
+RIGHT_JACOBIAN_FORMULA_HINT = ("Jr must satisfy Exp(w + dw) ≈ Exp(w) Exp(Jr dw): check your closed form against the "
+                               "series Σ (-[w]×)^k/(k+1)! and a numerical Jacobian of dw ↦ Log(Exp(w)ᵀ Exp(w + dw))")
 RIGHT_JACOBIAN_INVERSE_FORMULA_HINT = "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²"
 RIGHT_UPDATE_IS_A_ROTATION_HINT = "Exp(δ) is a rotation and so is R @ Exp(δ): build the result from it"
 ROW_I_OUTPUT_F_HINT = "row i is output f_i, column j is input x_j: shape (len(f(x)), n)"
 ROW_I_OUTPUT_F_I_HINT = "row i is output f_i, column j is the direction δ_j: that is the transpose of the Jacobian"
 R_ROTATIONS_DO_ADD_HINT = ("that is R + [δ]×: rotations do not add, the sum is not a rotation; compose with Exp(δ) "
                            "instead")
-TRANSPOSE_R_P_ROW_HINT = "that is the transpose of -R [p]×: row i is output i, column j is δ_j"
+TRANSPOSE_R_P_ROW_HINT = "that is the transpose of the Jacobian: row i is output i, column j is δ_j"
 TURNED_CHECK_SIGN_EXP_HINT = "turned by -δ: check the sign (Exp(δ) @ R, not Exp(δ)ᵀ @ R)"
 TURNED_CHECK_SIGN_R_HINT = "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)"
 TURNED_TWICE_FAR_QUATERNION_HINT = "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and sin(|δ|/2)"
@@ -193,10 +200,11 @@ POINT_SEEN_BODY_RT_HINT = "the point seen from the body is Rᵀ p_w, not p_w: R 
 # ---------------------------------------------------------------- checks/lesson07.py
 DIVIDED_FIRST_COORDINATE_X_HINT = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
 HOMOGENEOUS_ROWS_TRANSPOSE_HINT = "P_h @ T applies the transpose of T; rows need P_h @ T.T"
-INVERSE_R_T_RT_HINT = "the inverse of [[R, t], [0, 1]] is [[Rᵀ, -Rᵀ t], [0, 1]]"
-KEPT_T_UNCHANGED_INVERSE_HINT = "kept t unchanged: the inverse translation is -Rᵀ t (undo the shift, then the turn)"
+INVERSE_R_T_RT_HINT = ("the inverse must undo the pose: T_ba (R p + t) = p for every point p; solve "
+                       "p_a = R p_b + t for p_b and read off the blocks")
+KEPT_T_UNCHANGED_INVERSE_HINT = "kept t unchanged: the inverse must undo the shift as well as the turn"
 MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT = "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"
-ROTATION_BLOCK_INVERSE_RT_HINT = "the rotation block of the inverse is Rᵀ, not R (and its translation -Rᵀ t)"
+ROTATION_BLOCK_INVERSE_RT_HINT = "the rotation block of the inverse is Rᵀ, not R: it must undo the turn"
 SERIES_VALUE_AT_ZERO_ONLY_HINT = ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use c(θ) = (1 - (θ/2) "
                            "cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
 SMALL_ANGLE_SERIES_HINT = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: the closed form is 0/0 at θ = "
@@ -205,13 +213,14 @@ TRANSFORM_ROWS_FORMULA_HINT = "p_a = R p_b + t: for rows P of shape (N, 3), P @ 
 TRANSPOSES_T_AB_T_HINT = "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"
 
 # ---------------------------------------------------------------- checks/lesson07_relative_pose.py
-INVERSE_POSE_TRANSPOSE_T1_HINT = "the inverse of a pose is not its transpose: T⁻¹ = [[Rᵀ, -Rᵀ t], [0, 1]]"
+INVERSE_POSE_TRANSPOSE_T1_HINT = ("the inverse of a pose is not its transpose: Tᵀ puts t in the bottom row and "
+                                  "never undoes the shift")
 SHIFT_IN_WORLD_AXES_HINT = "the shift t_wb - t_wa is written in world axes: turn it into a's axes with R_waᵀ"
 
 # ---------------------------------------------------------------- checks/lesson08.py
 ALIGNMENT_SVD_FORMULA_HINT = "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
-AVERAGING_LOG_R_I_HINT = ("averaging Log(R_i) about the identity is not the mean: average Log(Mᵀ R_i) about the "
-                          "current M")
+AVERAGING_LOG_R_I_HINT = ("averaging Log(R_i) about the identity is not the mean: the balance Σ Log(Mᵀ R_i) = 0 is "
+                          "seen from M, so each step must look at the samples from the current estimate")
 INVERSE_ROTATION_TRANSPOSE_USE_HINT = ("that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q "
                                        "gives Rᵀ)")
 RETURNED_FIRST_ROTATION_RS_HINT = "returned the first rotation Rs[0]: the mean must weigh all of them"
@@ -238,4 +247,4 @@ TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rate
                              "on the right, R ← R Exp(ω_b dt)")
 UNIT_AXIS_FROM_VECTOR_PART_HINT = "v = sin α u: divide the vector part by its length to get the unit axis u"
 WEIGHTS_K_R_BEYOND_HINT = ("weights (k/r)² beyond k belong to another cost, whose pull fades with distance: the Huber "
-                           "cost keeps a constant pull k, so its weight is k/r")
+                           "cost keeps a constant pull k on every pair beyond k")

@@ -389,20 +389,20 @@ def explore_gimbal(figure=None):
 # ---------------------------------------------------------------------------------------------------------
 
 def explore_step_size(figure=None, R=None, p=None):
-    """Move the step h along the V-curve of a numerical Jacobian of R Exp(δ) p, forward and central.
+    """Move the step h along the V-curve of a numerical Jacobian of Exp(δ) R p, forward and central.
 
     Left of the V's bottom, rounding noise grows like 1/h; right of it, the
     truncation error grows like h (forward) or h² (central).
     """
     R = Exp([0.3, -0.5, 0.8]) if R is None else np.asarray(R, dtype=float)
     p = np.array([1.0, 2.0, -0.5]) if p is None else np.asarray(p, dtype=float)
-    J_exact = -R @ skew(p)
+    J_exact = -skew(R @ p)          # the left perturbation's Jacobian (lesson 06, section 6)
 
     def jacobian(h, central):
         columns = []
         for axis in np.eye(3):
-            ahead = R @ Exp(h * axis) @ p
-            behind = R @ Exp(-h * axis) @ p if central else R @ p
+            ahead = Exp(h * axis) @ R @ p
+            behind = Exp(-h * axis) @ R @ p if central else R @ p
             columns.append((ahead - behind) / (2 * h if central else h))
         return np.column_stack(columns)
 

@@ -363,8 +363,9 @@ def _(exp_so3):
 
 
 # ---------------------------------------------------------------- log_so3
-COLUMN_HINT = ("near π take the axis from the column of B = (R + Rᵀ)/2 - cos θ I with the largest diagonal entry: "
-               "a fixed column of B = (1 - cos θ) u uᵀ is zero when u is nearly perpendicular to its axis")
+COLUMN_HINT = ("a fixed column of B = (R + Rᵀ)/2 - cos θ I is not a safe source of the axis near π: B = "
+               "(1 - cos θ) u uᵀ, and its column j is nearly zero when u_j is (here u is nearly perpendicular to that "
+               "column's axis)")
 
 
 def _symmetric_part(R):
@@ -380,14 +381,15 @@ def weak_column(R):
 
 
 def column_logs(R, theta, a):
-    """θ u with u from a fixed column j = 0, 1, 2 of B (signed by a): what a near-π branch without argmax gives."""
+    """θ u with u read from each non-zero column of B, signed by a: what a near-π branch that always reads one
+    fixed column returns (``explains`` never matches the columns that give the right answer)."""
     B = _symmetric_part(R)
     logs = []
     for j in range(3):
         norm = np.sqrt(B[:, j] @ B[:, j])
-        if norm > 0.0 and j != int(np.argmax(np.diag(B))):
+        if norm > 0.0:
             u = B[:, j] / norm
-            logs.append(theta * (-u if u @ a < 0.0 else u))
+            logs.append(theta * u * (1.0 if u @ a >= 0.0 else -1.0))
     return logs
 
 
@@ -418,7 +420,7 @@ def _log_hint(got, R, expected, slips):
         if theta_acos == 0.0:
             return hints.RETURNED_ZERO_TINY_ROTATION_HINT
         return (f"θ from arccos is off by {abs(theta_acos - angle):.1e}: arccos loses accuracy where its argument "
-                "is near ±1; use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
+                "is near ±1, so the angle must come from numbers that keep it")
     if any(explains(got, candidate, expected) for candidate in slips.get("no_branch", ())) or (
             angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
@@ -488,7 +490,7 @@ def _theta_hint(theta, true_angle, theta_acos):
         return hints.DEGREES_VALUE_RADIANS_COURSE_HINT
     if explains(theta, theta_acos, true_angle):
         return (f"θ from arccos is off by {abs(theta_acos - true_angle):.1e}: arccos is inaccurate next to ±1; "
-                "use θ = atan2(|vee(R - Rᵀ)|/2, (tr R - 1)/2)")
+                "the angle must come from numbers that keep it")
     return hints.ANGLE_FORMULA_HINT
 
 
@@ -572,8 +574,8 @@ def _(axis_angle):
                        _theta_hint(theta, np.pi, LOG_SLIPS["half_diagonal"]["arccos_angle"]))
     if not (close(u, DIAGONAL, 1e-10) or close(u, -DIAGONAL, 1e-10)):
         raise Mismatch(f"got u = {fmt(u)}, expected ±(1, 1, 1)/√3",
-                       "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: take u from (R + I)/2, "
-                       "the column with the largest diagonal entry" if np.max(np.abs(R - R.T)) <= 1e-9 else
+                       "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: the symmetric part (R + I)/2 "
+                       "still does, in every column that is not nearly zero" if np.max(np.abs(R - R.T)) <= 1e-9 else
                        "near π take the axis from the symmetric part (R + Rᵀ)/2")
 
 

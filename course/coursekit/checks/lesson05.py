@@ -120,11 +120,11 @@ def _extraction_hint(angles, R, pitch, no_branch, asin=None, near=False):
         if not near:
             return NO_LOCK_BRANCH_HINT
         return ("next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
-                "get yaw first, then roll from the large entries (undo Rz(yaw))")
+                "the roll read from them rebuilds the large entries of R badly; take it from entries that stay large")
     if near and angles[2] == 0.0:
         return "treated a matrix 1e-9 rad from the lock as locked: call it gimbal lock only when cos(pitch) < 1e-12"
     return ("take pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), call it locked only when cos(pitch) < 1e-12, "
-            "and get roll from the large entries once yaw is known")
+            "and read the roll from entries of R that stay large next to the lock")
 
 
 def _random_attitudes(seed, count=5):
@@ -505,7 +505,8 @@ def _(euler_rates_matrix):
     for candidate, hint in candidates:
         if close(E_got, candidate, 1e-9):
             raise Mismatch(seen, hint)
-    raise Mismatch(seen, "ω_b = roll_rate e_x + pitch_rate Rx(roll)ᵀ e_y + yaw_rate Rx(roll)ᵀ Ry(pitch)ᵀ e_z")
+    raise Mismatch(seen, "each rate alone spins the body about one axis: try one rate at a time (each gives one "
+                         "column of E) and compare it with the finite difference of a pure yaw, pitch or roll")
 
 
 @public_check("euler_rates_matrix", "|det E| = cos(pitch): it vanishes at pitch = ±π/2")

@@ -22,8 +22,8 @@ FORWARD = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [2.0, -1.0, 0.0]])
 LEFT_HINT = (hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT)
 SIGN_HINT = "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ ≈ (I - [δ]×) Rᵀ, and -[δ]× v = +[v]× δ"
 NO_R_HINT = hints.POINT_SEEN_BODY_RT_HINT
-FORWARD_HINT = ("-R [p]× is the Jacobian of R p (body to world); here the map is Rᵀ p_w (world to body), "
-                "and the perturbation sits inside a transpose")
+FORWARD_HINT = ("that is Exercise 5's answer, which is the Jacobian of R p (body to world); here the map is Rᵀ p_w "
+                "(world to body), and the perturbation sits inside a transpose")
 SLIPS = [(LEFT, LEFT_HINT), (SIGN, SIGN_HINT), (NO_R, NO_R_HINT), (FORWARD, FORWARD_HINT)]
 
 

@@ -74,7 +74,8 @@ ROTATION_FIRST_HINT = ("the coupling block sits bottom-left: that is the layout 
 NO_COUPLING_HINT = ("diag(R, R) is the adjoint of a pure rotation: with a translation t, a spin also moves the origin, "
                     "so the translation rows need a block that multiplies phi")
 COUPLING_WITHOUT_R_HINT = "the spin phi is turned by R before it meets t: the coupling block is a product with R in it"
-COUPLING_SIGN_HINT = "the coupling block has the wrong sign: rewrite -[R phi]× t as +[t]× (R phi)"
+COUPLING_SIGN_HINT = ("the coupling block has the wrong sign: check the step that moves phi to the right of the cross "
+                      "product, a × b = -b × a")
 COUPLING_ORDER_HINT = "R [t]× is not [t]× R: the spin is turned first (R phi), then crossed with t"
 ADJOINT_SLIPS = [(ADJ_ROTATION_FIRST, ROTATION_FIRST_HINT), (ADJ_NO_COUPLING, NO_COUPLING_HINT),
                  (ADJ_COUPLING_WITHOUT_R, COUPLING_WITHOUT_R_HINT), (ADJ_COUPLING_SIGN, COUPLING_SIGN_HINT),
@@ -122,8 +123,8 @@ def _(adjoint_se3):
 
 
 # ---------------------------------------------------------------- jacobians_of_compose
-TRANSPOSE_HINT = ("J1 is the transpose of what is needed: Exp(d) R2 = R2 Exp(R2ᵀ d), because R2ᵀ Exp(d) R2 = "
-                  "Exp(R2ᵀ d) (the adjoint of R2⁻¹)")
+TRANSPOSE_HINT = ("J1 is the transpose of what is needed: moving Exp(d) to the right of R2 is a conjugation by R2⁻¹, "
+                  "so its adjoint is that of R2⁻¹, not of R2")
 IGNORES_R2_HINT = ("a turn d of R1 reaches the end of the product only after crossing R2: move Exp(d) past R2 with "
                    "the adjoint")
 LEFT_COMPOSE_HINT = ("those are the left Jacobians (Exp(d) on the left of R1 and of R2); here both the input and the "
@@ -194,9 +195,10 @@ def _(jacobians_of_compose):
 INVERSE_LEFT_HINT = ("-Rᵀ is the Jacobian for perturbations on the left of R and of R⁻¹; with R Exp(d), the turn "
                      "Exp(-d) lands on the left of Rᵀ and must be moved to the right")
 INVERSE_NOT_MOVED_HINT = ("(R Exp(d))⁻¹ = Exp(-d) Rᵀ: that -d sits on the left of Rᵀ; move it to the right with the "
-                          "adjoint, Exp(-d) Rᵀ = Rᵀ Exp(-R d)")
+                          "adjoint before you read off J")
 INVERSE_SIGN_HINT = hints.SIGN_INVERTING_SMALL_TURN_HINT
-INVERSE_TRANSPOSE_HINT = "Rᵀ is neither the sign nor the side: (R Exp(d))⁻¹ = Exp(-d) Rᵀ = Rᵀ Exp(-R d)"
+INVERSE_TRANSPOSE_HINT = ("Rᵀ is neither the sign nor the side: invert R Exp(d) factor by factor, then move the small "
+                          "turn to the right of Rᵀ with the adjoint")
 
 
 @public_check("jacobian_of_inverse", "matches finite differences of Log(R (R Exp(d))⁻¹), for a third of a turn "
@@ -479,8 +481,8 @@ COV_RIGHT = np.array([[0.04, 0.005, 0.02], [0.005, 0.01, -0.01], [0.02, -0.01, 0
 COV_RIGHT_WRONG_WAY = np.array([[0.01, -0.01, 0.005], [-0.01, 0.09, 0.02], [0.005, 0.02, 0.04]])
 COV_RIGHT_ONE_SIDED = np.array([[0.02, 0.04, 0.005], [-0.01, 0.005, 0.01], [0.09, 0.02, -0.01]])
 COV_RIGHT_OTHER_SIDE = np.array([[0.02, -0.01, 0.09], [0.04, 0.005, 0.02], [0.005, 0.01, -0.01]])
-WRONG_WAY_HINT = ("that converts right to left: Exp(ε_L) R = R Exp(Rᵀ ε_L), so ε_R = Rᵀ ε_L and its covariance "
-                  "has Rᵀ on the left")
+WRONG_WAY_HINT = ("that converts right to left: write Exp(ε_L) R as R Exp(A ε_L) with the adjoint, and check which "
+                  "rotation A is on the body lying on its side")
 UNCHANGED_HINT = ("the covariance must change frame: a world-axis uncertainty (left) is a different body-axis "
                   "uncertainty (right) unless R = I")
 ONE_SIDED_LEFT_HINT = hints.COVARIANCE_TAKES_LINEAR_MAP_HINT

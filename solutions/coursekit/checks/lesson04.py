@@ -330,12 +330,14 @@ def _(quat_to_matrix):
     R = require_shape(quat_to_matrix(QUARTER_Z), (3, 3))
     if close(R, QUARTER_TURN_Z.T, 1e-9):
         raise Mismatch("got the transpose (the inverse rotation)",
-                       "looks like the transpose: check the sign of the 2w[v]× part, R[1, 0] = 2(xy + wz)")
+                       "looks like the transpose: the quarter turn about z sent x to -y; check the sign of "
+                       "every term linear in w")
     if close(R, np.array([[1.0, 0, 0], [0, 0, -1.0], [0, 1.0, 0]]), 1e-9):
         raise Mismatch("got a quarter turn about x", "scalar last? this course stores q = [w, x, y, z]")
     # Without the factor 2, w = z = sin 45° gives 1 - z² = 0.5 on the diagonal and ±wz = ±0.5 off it.
     if close(R, [[0.5, -0.5, 0.0], [0.5, 0.5, 0.0], [0.0, 0.0, 1.0]], 1e-9):
-        raise Mismatch(f"got\n{fmt(R)}", "the factor 2 is missing: R = I + 2w[v]× + 2[v]×²")
+        raise Mismatch(f"got\n{fmt(R)}", "the factor 2 is missing: the quarter turn about z came out with "
+                       "0.5 where cos 90° = 0 and sin 90° = 1 belong, so every term beyond I is half its size")
     if not close(R, QUARTER_TURN_Z, 1e-9):
         raise Mismatch(f"got\n{fmt(R)}\n{off_by(R, QUARTER_TURN_Z)}")
     R = require_shape(quat_to_matrix(ONE), (3, 3))
@@ -361,14 +363,12 @@ def _(matrix_to_quat):
     got = matrix_to_quat(np.diag([1.0, -1.0, -1.0]))
     problem = shape_problem(got, (4,))
     if problem == "returned NaN or inf values":
-        raise Mismatch(problem, "at θ = π, w = 0 and dividing by 4w fails: start from the largest of "
-                                "w², x², y², z² (Shepperd's method)")
+        raise Mismatch(problem, "at θ = π, w = 0 and dividing by 4w fails: divide only by a component that cannot be small")
     got = require_shape(got, (4,))
     if not same_rotation_quat(got, I_, 1e-12):
         hint = quaternion_hint(got, I_)
         if hint is None and np.max(np.abs(got[1:])) < 1e-6:
-            hint = ("the vector part vanished at θ = π, where R - Rᵀ = 0: start from the largest of "
-                    "w², x², y², z² (Shepperd's method)")
+            hint = "the vector part vanished at θ = π, where R - Rᵀ = 0: divide only by a component that cannot be small"
         raise Mismatch(f"got {fmt(got)}, expected ±[0, 1, 0, 0]", hint)
 
 
@@ -391,7 +391,7 @@ def _(matrix_to_quat):
 def _(matrix_to_quat):
     u = np.array([-0.8, 0.6, 0.0])
     K = np.array([[0.0, -u[2], u[1]], [u[2], 0.0, -u[0]], [-u[1], u[0], 0.0]])
-    R = np.eye(3) + np.sin(3.0) * K + (1 - np.cos(3.0)) * K @ K      # R[0, 0] is the largest diagonal entry
+    R = np.eye(3) + np.sin(3.0) * K + (1 - np.cos(3.0)) * K @ K      # x is the largest component here
     got = require_shape(matrix_to_quat(R), (4,))
     expected = np.concatenate([[np.cos(1.5)], np.sin(1.5) * u])      # w = cos 1.5 > 0
     if close(got, -expected, 1e-9):
@@ -407,15 +407,15 @@ def _rotation_of(q):
     return Exp(2.0 * half * q[1:] / np.linalg.norm(q[1:]))
 
 
-# Generic unit quaternions (w >= 0): each of w, x, y, z the largest in turn, then each one vanishing, so every
-# branch of Shepperd's method runs, also next to the boundary where a wrong pivot would vanish (w is 1e-6, not 0,
-# so that the canonical sign w >= 0 names one of ±q).
+# Generic unit quaternions (w >= 0): each of w, x, y, z the largest in turn, then each one vanishing, so that a
+# method is tried wherever one of its divisions could be small (w is 1e-6, not 0, so that the canonical sign
+# w >= 0 names one of ±q).
 SHEPPERD_CASES = [q / np.linalg.norm(q) for q in np.array([
     [0.9, 0.3, -0.4, 0.2], [0.3, -0.9, 0.4, 0.2], [0.2, 0.4, 0.9, -0.3], [0.4, -0.2, 0.3, 0.9],
     [1e-6, 0.6, -0.5, 0.7], [0.5, 0.0, 0.6, -0.7], [0.6, -0.5, 0.0, 0.7], [0.5, 0.7, -0.6, 0.0]])]
 
 
-@public_check("matrix_to_quat", "exact to 1e-12 in every branch: w, x, y or z the largest, and one of them 0")
+@public_check("matrix_to_quat", "exact to 1e-12 for eight rotations: w, x, y or z the largest, and one of them 0")
 def _(matrix_to_quat):
     for q in SHEPPERD_CASES:
         R = _rotation_of(q)
@@ -427,9 +427,8 @@ def _(matrix_to_quat):
             if hint is None and float32_rounding(got, q):
                 hint = FLOAT32_HINT
             raise Mismatch(f"the rotation of q = {fmt(q)} gave {fmt(got)} ({off_by(got, q)})",
-                           hint or "check the branch of the largest component: its pivot ½√(1 + 2 R_kk - tr R), "
-                                   "and each other component from the sums and differences of R's off-diagonal "
-                                   "pairs, divided by 4 × the pivot")
+                           hint or "one of the components is wrong although no angle is near π: check each of "
+                                   "the ten combinations you use, and divide only by a component that cannot be small")
 
 
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz

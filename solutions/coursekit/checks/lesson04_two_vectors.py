@@ -18,14 +18,17 @@ X_ONTO_Y = np.array([HALF, 0.0, 0.0, HALF])                    # a quarter turn 
 X_ONTO_Y_FULL_ANGLE = np.array([0.0, 0.0, 0.0, 1.0])           # [cos θ, sin θ u]: a half turn
 X_ONTO_Y_REVERSED = np.array([HALF, 0.0, 0.0, -HALF])          # about y × x
 EIGHTH = np.array([0.9238795325112867, 0.0, 0.0, 0.3826834323650898])       # 45° about z
-EIGHTH_UNNORMALISED = np.array([0.7592566023652966, 0.0, 0.0, 0.6507913734559685])   # [1 + a·b, a × b] for raw a, b
+EIGHTH_UNNORMALISED = np.array([0.7592566023652966, 0.0, 0.0, 0.6507913734559685])   # a and b used unnormalised
+# the answer for the pair 1e-6 rad apart of the scaling check, to the last digit
+MICRO = np.array([0.999999999999877, -4.91862567841899e-07, -3.2549728759549535e-08, 5.424954791639181e-08])
 
 FULL_ANGLE_HINT = "the quaternion holds half the angle: [cos(θ/2), sin(θ/2) u], with θ the angle between a and b"
-REVERSED_HINT = "the axis points the wrong way: a positive turn about a × b (not b × a) takes a towards b"
+REVERSED_HINT = ("the axis points the wrong way: the turn takes a away from b (x went to -y); a positive turn "
+                 "about an axis follows the right-hand rule")
 UNNORMALISED_HINT = "only the directions count: normalise a and b first (a · b is |a| |b| cos θ)"
 ARCCOS_HINT = hints.ARCCOS_LOSES_SMALL_ANGLES_HINT
-OPPOSITE_HINT = ("for opposite directions a × b is zero, or only rounding noise pointing anywhere: take a half turn "
-                 "about any axis perpendicular to a (for instance a × e, with e the coordinate axis least parallel to a)")
+OPPOSITE_HINT = ("for opposite directions the cross product of a and b is zero, or only rounding noise pointing "
+                 "anywhere: take a half turn about any axis perpendicular to a, found without that cross product")
 
 
 def _rotate(q, v):
@@ -75,7 +78,7 @@ def _(quat_from_two_vectors):
     same = require_shape(quat_from_two_vectors(a, 0.5 * a), (4,), "quat_from_two_vectors(a, a/2)")
     if not close(same, [1.0, 0.0, 0.0, 0.0], 1e-12):
         raise Mismatch(f"parallel directions gave {fmt(same, 4)}, not the identity [1, 0, 0, 0]",
-                       "when a × b = 0 and a · b > 0 no turn is needed")
+                       "parallel directions need no turn: the identity [1, 0, 0, 0]")
 
 
 @public_check("quat_from_two_vectors", "keeps its accuracy at a tiny angle: 1e-10 rad, to 1e-6 of the angle")
@@ -93,12 +96,9 @@ def _(quat_from_two_vectors):
 def _(quat_from_two_vectors):
     a, b = np.array([0.3, -1.2, 2.0]), np.array([0.3, -1.2 + 2e-6, 2.0 + 1.2e-6])   # about 1e-6 rad apart
     base = require_shape(quat_from_two_vectors(a, b), (4,), "quat_from_two_vectors(a, b)")
-    # [1 + â·b̂, â × b̂], normalised, is accurate at 1e-6 rad: when the unscaled answer misses it, the answer is
-    # inaccurate at small angles (the check above says why), and its noise, not the scaling, moves it
-    ah, bh = a / np.linalg.norm(a), b / np.linalg.norm(b)
-    exact = np.concatenate([[1.0 + ah @ bh], np.cross(ah, bh)])
-    exact /= np.linalg.norm(exact)
-    accurate = close(base, exact, 1e-13) or close(base, -exact, 1e-13)
+    # when the unscaled answer misses MICRO, the answer is inaccurate at small angles (the check above says why),
+    # and its noise, not the scaling, moves it
+    accurate = close(base, MICRO, 1e-13) or close(base, -MICRO, 1e-13)
     for scale_a, scale_b in ((1.0, 1e-12), (1e-12, 1.0), (1e4, 1.0)):
         got = require_shape(quat_from_two_vectors(scale_a * a, scale_b * b), (4,),
                             f"quat_from_two_vectors({scale_a:g} a, {scale_b:g} b)")
@@ -112,8 +112,10 @@ def _(quat_from_two_vectors):
     a, b = np.array([0.3, -1.2, 2.0]), np.array([-0.5, 0.4, 1.5])
     got = require_shape(quat_from_two_vectors(a, b), (4,), "quat_from_two_vectors(a, b)")
     if abs(np.linalg.norm(got) - 1.0) > 1e-12:
-        raise Mismatch(f"|q| = {np.linalg.norm(got):.6f}, not 1", "normalise the axis: u = (a × b) / |a × b|")
+        raise Mismatch(f"|q| = {np.linalg.norm(got):.6f}, not 1",
+                       "q = [cos(θ/2), sin(θ/2) u] is a unit quaternion only when its axis u is a unit vector")
     if not close(_rotate(got, a / np.linalg.norm(a)), b / np.linalg.norm(b), 1e-12):
         raise Mismatch("the rotation of q does not take the direction of a onto that of b",
-                       "q = [cos(θ/2), sin(θ/2) u], u along a × b")
+                       "R(q) must take the direction of a onto that of b: check that the axis is perpendicular "
+                       "to both and that the turn goes from a towards b")
     require_same_with_lists(quat_from_two_vectors, (a, b), (4,), "quat_from_two_vectors(a, b)")

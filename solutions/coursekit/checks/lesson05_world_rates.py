@@ -23,9 +23,10 @@ IGNORES_YAW = np.array([[0.0, 0.0, 0.8660254037844387], [0.0, 1.0, 0.0], [1.0, 0
 REVERSED = np.array([[0.4330127018922194, -0.8660254037844386, 0.0],
                      [0.75, 0.5000000000000001, 0.0],
                      [-0.4999999999999999, 0.0, 1.0]])
-TRANSPOSED_HINT = ("the axes were turned by transposes, as in the body-rate matrix: in world axes each Euler axis is "
-                   "turned by the rotations to its left in Rz Ry Rx (the pitch axis by Rz, the roll axis by Rz Ry)")
-ROLL_UNPITCHED_HINT = "the roll axis is the body x axis after the yaw and the pitch: turn e_x by Rz(ψ) Ry(θ), not Rz(ψ) alone"
+TRANSPOSED_HINT = ("the axes were turned by transposes, as in the body-rate matrix: a pure pitch rate at yaw π/3 "
+                   "spins about a horizontal axis that has turned with the yaw, not against it")
+ROLL_UNPITCHED_HINT = ("the roll axis is the body x axis after the yaw and the pitch: at pitch π/6 it must tilt "
+                       "out of the horizontal plane")
 IGNORES_YAW_HINT = "the yaw turns the pitch and roll axes about the vertical: the answer depends on the yaw"
 REVERSED_HINT = hints.COLUMNS_GO_ORDER_RATES_HINT
 SLIPS = [(TRANSPOSED_TURNS, TRANSPOSED_HINT), (ROLL_UNPITCHED, ROLL_UNPITCHED_HINT), (IGNORES_YAW, IGNORES_YAW_HINT),
@@ -73,7 +74,8 @@ def _(euler_rates_matrix_world):
         det = np.linalg.det(require_shape(euler_rates_matrix_world(0.8, pitch), (3, 3), "euler_rates_matrix_world"))
         if abs(det + np.cos(pitch)) > 1e-12:
             raise Mismatch(f"det E_w = {det:.6f} at pitch {pitch:.3g}, expected -cos(pitch) = {-np.cos(pitch):.6f}",
-                           "E_w = R E with a rotation R, so both determinants are -cos(pitch)")
+                           "E_w must lose rank exactly at the lock, as the body-rate matrix does: compare "
+                           "the yaw and roll columns at pitch ±π/2")
 
 
 @public_check("euler_rates_matrix_world", "accepts integers and NumPy scalars alike")

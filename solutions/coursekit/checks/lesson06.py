@@ -530,14 +530,18 @@ def _(jacobian_rotate_point):
                        if close(got, -expected, 1e-12) else None)
 
 
-# The slips of J = -R [p]× at R_SAMPLE, p = (0.5, -1, 2), stored as numbers (recomputed by the constants test).
+# The slips of the right-perturbation Jacobian of R p at R_SAMPLE, p = (0.5, -1, 2), and the Jacobian itself at
+# R_SAMPLE, P_GENERIC, stored as numbers (recomputed by the constants test).
 JRP_SIGN_FLIPPED = np.array([[-2.1322562953451767, -0.7048768454571468, 0.18062565110772072],
                              [0.21367394182495136, -1.6474546040256322, -0.8771457874690539],
-                             [0.6386129794686697, -1.0193340769409853, -0.6693202833376601]])   # R [p]×
-JRP_TRANSPOSED = -JRP_SIGN_FLIPPED.T                                                          # (-R [p]×)ᵀ
+                             [0.6386129794686697, -1.0193340769409853, -0.6693202833376601]])   # sign flipped
+JRP_TRANSPOSED = -JRP_SIGN_FLIPPED.T                                                          # transposed
 JRP_FACTORS_SWAPPED = np.array([[2.029740617511133, 0.7877424815292698, -0.5095240999399673],
                                 [-0.20256687321586808, 1.7969566342002792, 0.9899058120241296],
-                                [-0.6087185909857173, 0.7015426967178221, 0.6223339309970566]])  # -[p]× R
+                                [-0.6087185909857173, 0.7015426967178221, 0.6223339309970566]])  # factors swapped
+JRP_AT_GENERIC = np.array([[2.4083548374554673, 0.8225192144346913, -0.28026063975169463],
+                           [-0.11185358876016993, 1.9045908748636529, 1.1610298406613035],
+                           [-0.8469449519220964, 1.0129144787551643, 0.868022858512355]])     # the Jacobian itself
 
 
 @public_check("jacobian_rotate_point", "first order: R Exp(δ) p - R p - J δ shrinks like |δ|²")
@@ -549,15 +553,15 @@ def _(jacobian_rotate_point):
         d = size * direction
         remainder = np.linalg.norm(R_SAMPLE @ Exp(d) @ p - R_SAMPLE @ p - J @ d)
         if remainder > 2.0 * np.linalg.norm(p) * size**2:
-            hint = "d(R Exp(δ) p)/dδ = -R [p]×"
+            hint = "column j of J is how R Exp(δ) p moves per radian of δ_j, at δ = 0"
             if close(J, -skew(R_SAMPLE @ p), 1e-9):
                 hint = hints.LEFT_JACOBIAN_OF_ROTATED_POINT_HINT
             elif close(J, JRP_SIGN_FLIPPED, 1e-9):
-                hint = "the sign is flipped: R [δ]× p = -R [p]× δ"
+                hint = hints.ROTATED_POINT_SIGN_FLIPPED_HINT
             elif close(J, JRP_TRANSPOSED, 1e-9):
                 hint = hints.TRANSPOSE_R_P_ROW_HINT
             elif close(J, -skew(p), 1e-9):
-                hint = "R is missing: the Jacobian is -R [p]×"
+                hint = hints.ROTATED_POINT_R_MISSING_HINT
             elif close(J, JRP_FACTORS_SWAPPED, 1e-9):
                 hint = hints.FACTORS_WRONG_ORDER_R_HINT
             raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²", hint)
@@ -566,7 +570,7 @@ def _(jacobian_rotate_point):
 @public_check("jacobian_rotate_point", "exact (to 1e-12) at a generic attitude and point, and accepts plain lists")
 def _(jacobian_rotate_point):
     got = require_shape(jacobian_rotate_point(R_SAMPLE, P_GENERIC), (3, 3), "jacobian_rotate_point(R, p)")
-    exact = -R_SAMPLE @ skew(P_GENERIC)
+    exact = JRP_AT_GENERIC
     if not close(got, exact, 1e-12):
         raise Mismatch(f"jacobian_rotate_point(R, p) is {off_by(got, exact)} from the exact Jacobian",
                        FLOAT32_HINT if single_precision_error(got, exact) else

@@ -33,6 +33,8 @@ T_QUARTER_X = np.array([[1.0, 0.0, 0.0, 0.0],
 
 MIRROR_HINT = "xi = [rho, phi]: translation part first (xi[:3]), rotation part last (xi[3:])"
 FORGETS_V_HINT = "the translation of exp(xi) is V(phi) @ rho, not rho"
+V_SERIES_HINT = ("T = [[Exp(phi), V(phi) rho], [0, 1]] with V = I + W/2 + W²/6 + W³/24 + … (W = [phi]×): compare "
+                 "your closed form of V with that series, and your pose with expm of the twist matrix")
 SERIES_NAN_HINT_V = ("NaN or inf: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
                      "below θ = 1e-2 use their series (1/2 - θ²/24, 1/6 - θ²/120)")
 SERIES_HINT_C = (hints.SMALL_ANGLE_SERIES_HINT)
@@ -326,10 +328,10 @@ def _inverse_mistake(got, T, slips):
     negated_t, kept_t, kept_R = slips
     return _first_match(got, [
         (T.T, "returned the transpose of T",
-         "the plain transpose of T is not its inverse (a pose is not orthogonal): transpose the rotation block "
-         "and use -Rᵀ t"),
+         "the plain transpose of T is not its inverse (a pose is not orthogonal): it puts t in the bottom row "
+         "and never undoes the shift"),
         (negated_t, f"the translation of the inverse is -t = {fmt(-T[:3, 3])}",
-         "-t must be turned as well as negated: the inverse translation is -Rᵀ t"),
+         "-t must be turned as well as negated: -t is written in a's axes, and the inverse needs it in b's"),
         (kept_t, "the translation of the inverse is t itself",
          hints.KEPT_T_UNCHANGED_INVERSE_HINT),
         (kept_R, "the rotation block of the inverse is R",
@@ -350,7 +352,8 @@ def _(pose_inverse):
 @public_check("pose_inverse", "a generic pose: T T⁻¹ = I to 1e-12 (float64 kept), and plain lists are accepted")
 def _(pose_inverse):
     got = require_shape(pose_inverse(T_GENERIC), (4, 4), "pose_inverse(T)")
-    require_exact(T_GENERIC @ got, np.eye(4), "T @ pose_inverse(T)", hint="T⁻¹ = [[Rᵀ, -Rᵀ t], [0, 0, 0, 1]]")
+    require_exact(T_GENERIC @ got, np.eye(4), "T @ pose_inverse(T)",
+                  hint="T T⁻¹ must be I to rounding: build the blocks of the inverse from R and t directly, in float64")
     require_same_with_lists(pose_inverse, (T_GENERIC,), (4, 4), "pose_inverse(T)")
 
 
@@ -422,7 +425,7 @@ def _(exp_se3):
     if close(T, EXP_MIRRORED_QUARTER, 1e-9):
         raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])}", MIRROR_HINT)
     raise Mismatch(f"got translation {fmt(T[:3, 3])}, expected {fmt(expected[:3, 3])} ({off_by(T, expected)})",
-                   "T = [[Exp(phi), V(phi) rho], [0, 1]] with V = I + (1 - cos θ)/θ² W + (θ - sin θ)/θ³ W²")
+                   V_SERIES_HINT)
 
 
 def _tiny_twist(angle):
@@ -452,7 +455,7 @@ def _(exp_se3):
         hint = FORGETS_V_HINT
     else:
         hint = ("below θ = 1e-2 use the series of V's coefficients (1/2 - θ²/24, 1/6 - θ²/120): "
-                "once cos θ rounds to 1, (1 - cos θ)/θ² is 0, not 1/2")
+                "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not 1/2")
     raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the pose is {off_by(T, expected)} (allowed 5e-11)", hint)
 
 
@@ -510,8 +513,7 @@ def _(exp_se3):
     if first:
         theta, error, single = first
         raise Mismatch(f"at |phi| = {theta:.2g}, |rho| = 50 the pose is off by {error:.1e} (tolerance {tol:.1g})",
-                       _decade_hint(theta, errors, single, "T = [[Exp(phi), V(phi) rho], [0, 1]] with "
-                                    "V = I + (1 - cos θ)/θ² W + (θ - sin θ)/θ³ W²"))
+                       _decade_hint(theta, errors, single, V_SERIES_HINT))
 
 
 # ---------------------------------------------------------------- log_se3

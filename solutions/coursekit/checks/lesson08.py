@@ -190,7 +190,7 @@ def _mean_hint(M, Rs, truth=None):
     if matches(Rs[0]):
         return hints.RETURNED_FIRST_ROTATION_RS_HINT
     return ("the residuals Log(Mᵀ R_i) do not balance yet; if you stop after a single step from Rs[0], "
-            "iterate M ← M Exp(mean of Log(Mᵀ R_i)) until |δ| < 1e-12 (at most 100 iterations)")
+            "repeat your step M ← M Exp(δ) until |δ| < 1e-12 (at most 100 iterations)")
 
 
 @public_check("rotation_mean", "the mean of one rotation repeated is that rotation")

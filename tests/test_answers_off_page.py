@@ -1,0 +1,165 @@
+"""A course that asks students to think (issue 42): what each exercise asks for, and no answer on the page.
+
+Every answer cell of a master carries ``exercise`` metadata (``autograder/lessons/catalog.py``): its kind, its
+estimated minutes and, for derive, design and diagnose exercises, the *giveaways*, the phrases in LaTeX and in
+code that would hand its result away. Here:
+
+- every exercise has a kind and minutes, and the thinking kinds have giveaways;
+- each giveaway is real: it appears in the reader's edition or the reference solution (the master);
+- none appears in what a student gets: the lesson's notebook in ``course/`` (markdown, code with the stubs'
+  docstrings, outputs) and the modules that ship beside it with hint strings (the lesson's public checks,
+  ``coursekit/hints.py``). Whitespace is ignored on both sides;
+- ``docs/EXERCISES.md`` is what ``python -m autograder course-stats --catalog`` prints, and the README's
+  course table gives each lesson's exercises by kind;
+- the share of derive/design/diagnose points does not fall below a ratchet (:data:`RATCHET`), and the gap to
+  the issue's targets is printed.
+"""
+
+import re
+
+import nbformat
+import pytest
+
+from autograder.lessons import cells
+from autograder.lessons.catalog import THINKING_KINDS
+from autograder.lessons.course_stats import (
+    THINKING_TARGET,
+    catalog_page,
+    course_totals,
+    kinds_summary,
+    lesson_stats,
+    target_gaps,
+)
+from autograder.lessons.notebook_files import read_master
+from autograder.lessons.paths import COURSE, PROJECT_ROOT, SOLUTIONS
+from support import THIS_COURSE
+
+CATALOG = THIS_COURSE.catalog
+THINKING = [e for e in CATALOG.exercises if e.kind in THINKING_KINDS]
+CHECKS = SOLUTIONS / "coursekit" / "checks"
+HINTS = SOLUTIONS / "coursekit" / "hints.py"
+
+# Derive/design/diagnose points per lesson, and exercises in all, that the course may not fall below. Raise a
+# figure when a lesson gains such an exercise; never lower one (issue 42's targets are printed by the test).
+RATCHET = {"03": 5.0, "04": 7.0, "05": 9.0, "06": 7.0, "07": 7.0}
+RATCHET_EXERCISES = 15
+
+
+def _squeezed(text: str) -> str:
+    return re.sub(r"\s+", "", text)
+
+
+def _notebook_text(nb: nbformat.NotebookNode) -> str:
+    parts = []
+    for cell in nb.cells:
+        parts.append(cells.source_text(cell))
+        for output in cell.get("outputs", []):
+            text = output.get("text", "")
+            parts.append("".join(text) if isinstance(text, list) else str(text))
+            for value in output.get("data", {}).values():
+                parts.append("".join(value) if isinstance(value, list) else str(value))
+            parts.extend(str(line) for line in output.get("traceback", []))
+    return "\n".join(parts)
+
+
+def _lesson_filename(exercise):
+    return CATALOG.lesson(exercise.lesson).filename
+
+
+def _student_texts(exercise) -> dict[str, str]:
+    """What a student of the exercise's lesson reads: the released notebook, the lesson's public checks (their
+    hints, and everything else in the modules, ship to students) and the catalogue of hints."""
+    texts = {f"course/{_lesson_filename(exercise)}": _notebook_text(read_master(COURSE / _lesson_filename(exercise)))}
+    for path in sorted(CHECKS.glob(f"lesson{exercise.lesson}*.py")):
+        texts[f"coursekit/checks/{path.name}"] = path.read_text(encoding="utf-8")
+    texts["coursekit/hints.py"] = HINTS.read_text(encoding="utf-8")
+    return texts
+
+
+def test_every_exercise_has_a_kind_and_minutes():
+    missing = [f"{e.lesson} {e.name}" for e in CATALOG.exercises if not e.kind or e.minutes <= 0]
+    assert not missing, f"answer cells without 'exercise' metadata (kind and minutes): {missing}"
+
+
+def test_thinking_exercises_name_their_giveaways():
+    missing = [e.name for e in THINKING if not e.giveaways]
+    assert not missing, f"derive/design/diagnose exercises without giveaways: {missing}"
+
+
+@pytest.mark.parametrize("exercise", THINKING, ids=lambda e: e.name)
+def test_giveaways_are_real(exercise):
+    """Each giveaway is written somewhere in the master (the book's cells or the reference solution):
+    a string that appears nowhere could never be caught on the student's page."""
+    master = _squeezed(_notebook_text(read_master(SOLUTIONS / _lesson_filename(exercise))))
+    invented = [g for g in exercise.giveaways if _squeezed(g) not in master]
+    assert not invented, (
+        f"{exercise.name}: giveaways found nowhere in the master {_lesson_filename(exercise)}: {invented}"
+    )
+
+
+@pytest.mark.parametrize("exercise", THINKING, ids=lambda e: e.name)
+def test_the_answer_is_off_the_students_page(exercise):
+    found = [
+        f"{giveaway!r} in {where}"
+        for where, text in _student_texts(exercise).items()
+        for giveaway in exercise.giveaways
+        if _squeezed(giveaway) in _squeezed(text)
+    ]
+    assert not found, (
+        f"{exercise.name} ({exercise.kind}) gives its result away to students: {found}. Move it to a reader-only "
+        "cell or after the check cell, or make the hint name the property that failed instead of the formula."
+    )
+
+
+def test_released_notebooks_carry_no_giveaways_in_metadata():
+    leaked = [
+        f"{path.name}: {cells.grade_id(cell)}"
+        for path in sorted(COURSE.glob("[0-9][0-9]_*.ipynb"))
+        for cell in read_master(path).cells
+        if "giveaways" in cell.get("metadata", {}).get("exercise", {})
+    ]
+    assert not leaked, leaked
+
+
+def test_the_exercise_catalog_is_current():
+    path = PROJECT_ROOT / "docs" / "EXERCISES.md"
+    assert path.exists() and path.read_text(encoding="utf-8") == catalog_page(CATALOG), (
+        "docs/EXERCISES.md is stale: python -m autograder course-stats --catalog > docs/EXERCISES.md"
+    )
+
+
+def test_the_readme_course_table_gives_the_kinds():
+    readme = (PROJECT_ROOT / "README.md").read_text(encoding="utf-8")
+    wrong = []
+    for lesson in CATALOG.graded_lessons:
+        row = next((line for line in readme.splitlines() if line.startswith(f"| {lesson.number} |")), "")
+        if kinds_summary(lesson) not in row:
+            wrong.append(f"lesson {lesson.number}: the row should say {kinds_summary(lesson)!r}")
+    assert not wrong, wrong
+
+
+def test_thinking_points_do_not_fall_below_the_ratchet():
+    fallen = []
+    for number, floor in RATCHET.items():
+        stats = lesson_stats(CATALOG.lesson(number))
+        if stats.thinking_points < floor:
+            fallen.append(
+                f"lesson {number}: {stats.thinking_points:g} derive/design/diagnose points, ratchet {floor:g}"
+            )
+    total = course_totals(CATALOG).thinking_count
+    if total < RATCHET_EXERCISES:
+        fallen.append(f"{total} derive/design/diagnose exercises in all, ratchet {RATCHET_EXERCISES}")
+    gaps = target_gaps(CATALOG)
+    print(f"issue 42's targets (≥ 1/3 of the points from lesson 03 on, ≥ {THINKING_TARGET} exercises):")
+    print("\n".join(f"  {gap}" for gap in gaps) or "  all met")
+    assert not fallen, fallen
+
+
+def test_course_stats_prints_the_table_and_the_catalog(capsys):
+    from autograder.cli import main
+
+    assert main(["course-stats"]) == 0
+    table = capsys.readouterr().out
+    assert "derive+design+diagnose" in table and "Targets (issue 42)" in table
+    assert main(["course-stats", "--catalog"]) == 0
+    assert capsys.readouterr().out == catalog_page(CATALOG)
