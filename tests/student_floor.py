@@ -19,11 +19,23 @@ Examples
 $ python3 tests/student_floor.py --out /tmp/floor --jobs 2
 $ python3 tests/student_floor.py --out /tmp/floor --python /usr/bin/python3 --lessons 01 03
 $ python3 tests/student_floor.py --out /tmp/debian --python /usr/bin/python3 --newest   # a student's install
+$ python3 tests/student_floor.py --out /tmp/floor --record tests/student_floor.lock.json --if-recorded 03 05
+
+``--record FILE`` keeps a full run's result in the repository (``tests/student_floor.lock.json``), keyed by a hash of
+everything the run reads from it: the floors and the Python floor, the Python it ran with (its full version), this
+file, the code cells of every solved master and the hand-out's ``coursekit``. When the record is of the same key,
+ran clean and is at most ``MAX_AGE_DAYS`` old, only the lessons of ``--if-recorded`` run (the ones
+``tests/test_student_floor_grading.py`` grades), and ``summary.json`` carries the record for the rest. A change to a
+master's code, to coursekit, to a floor or to this machine's oldest Python runs every lesson again. What the record
+does not pin: the versions pip picks for the packages that are not direct requirements (they move on PyPI), hence the
+age limit; and outputs, markdown and metadata of the masters, which do not change what runs.
 """
 
 import argparse
 import concurrent.futures
+import datetime
 import glob
+import hashlib
 import importlib.util
 import json
 import os
@@ -34,6 +46,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+MAX_AGE_DAYS = 30  # the longest a clean record of the same key stands in for a full run
 
 # Run inside the floor venv: execute one notebook with nbclient (a jupyterlab dependency), save it, and
 # print its errors as JSON. MPLBACKEND=Agg as in grading: no front end, no figures to draw twice.
@@ -154,6 +167,62 @@ def run_lesson(floor_python, notebook, out):
     return {"seconds": seconds, "errors": json.loads(run.stdout.strip().splitlines()[-1])}
 
 
+def running(out):
+    """True while the floor run writing to ``out`` is alive (its ``pid`` file names a live process)."""
+    try:
+        os.kill(int((Path(out) / "pid").read_text(encoding="utf-8")), 0)
+    except (OSError, ValueError):
+        return False
+    return True
+
+
+def masters():
+    return sorted((ROOT / "solutions").glob("[0-9][0-9]_*.ipynb"))
+
+
+def run_key(module, python_version):
+    """A digest of what a full floor run reads: floors, Python, this file, the masters' code cells, coursekit."""
+    digest = hashlib.sha256()
+
+    def part(name, data):
+        digest.update(f"{name}\0{len(data)}\0".encode() + data)
+
+    part("floors", json.dumps([list(p[:3]) for p in module.PACKAGES] + [list(module.PYTHON_FLOOR)]).encode())
+    part("python", ".".join(map(str, python_version)).encode())
+    part("runner", Path(__file__).read_bytes())
+    for path in masters():
+        cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+        code = [
+            "".join(c["source"]) if isinstance(c["source"], list) else c["source"]
+            for c in cells
+            if c["cell_type"] == "code"
+        ]
+        part(path.name, json.dumps(code).encode())
+    kit = ROOT / "course" / "coursekit"
+    for path in sorted(p for p in kit.rglob("*") if p.is_file() and "__pycache__" not in p.parts):
+        part(str(path.relative_to(kit)), path.read_bytes())
+    return digest.hexdigest()[:20]
+
+
+def read_record(path):
+    try:
+        return json.loads(Path(path).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def record_stands(record, key, today=None):
+    """``(True, why)`` when ``record`` is a clean full run of ``key`` at most ``MAX_AGE_DAYS`` old."""
+    if not record or record.get("key") != key:
+        return False, "no record of this content, these floors and this Python"
+    if not record.get("ok") or {p.name for p in masters()} - set(record.get("lessons", {})):
+        return False, "the recorded run failed or left lessons out"
+    age = ((today or datetime.date.today()) - datetime.date.fromisoformat(record["date"])).days
+    if age > MAX_AGE_DAYS:
+        return False, f"the record is {age} days old (over {MAX_AGE_DAYS})"
+    return True, f"every lesson ran clean on {record['date']} with the same key"
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--out", required=True, type=Path)
@@ -165,13 +234,28 @@ def main(argv=None):
         action="store_true",
         help="install as a student does, the newest versions for this Python, not the floors",
     )
+    parser.add_argument("--record", type=Path, help="the record of the last full run (read, and written after one)")
+    parser.add_argument(
+        "--if-recorded", nargs="*", default=None, help="with --record: the lessons to run when the record stands"
+    )
     args = parser.parse_args(argv)
     module = student_install()
     out = args.out.resolve()
     out.mkdir(parents=True, exist_ok=True)
     (out / "summary.json").unlink(missing_ok=True)
+    (out / "pid").write_text(
+        f"{os.getpid()}\n", encoding="utf-8"
+    )  # tests/test_student_floor_grading.py waits while it lives
     start = time.monotonic()
     python = args.python or oldest_python(module.PYTHON_FLOOR)
+    key = run_key(module, version_of(python))
+    recorded = None
+    if args.record and not args.newest and not args.lessons:
+        stands, why = record_stands(read_record(args.record), key)
+        print(f"floor run: {why}; " + (f"running lessons {args.if_recorded or []} only" if stands else "every lesson"))
+        if stands and args.if_recorded is not None:
+            recorded = read_record(args.record)
+            args.lessons = args.if_recorded
     floor_python, install_seconds = install(python, out, module, floors=not args.newest)
     notebooks = lessons_folder(out, tuple(args.lessons))
     shutil.rmtree(out / "executed", ignore_errors=True)
@@ -187,7 +271,21 @@ def main(argv=None):
         "seconds": round(time.monotonic() - start, 1),
         "lessons": runs,
         "ok": all(not run["errors"] for run in runs.values()),
+        "key": key,
+        "recorded": recorded,  # the record that stands in for the lessons not run, or None
     }
+    if run_key(module, version_of(python)) != key:
+        print("floor run: the masters or coursekit changed while it ran; nothing recorded")
+    elif args.record and not args.newest and not args.lessons and recorded is None:
+        record = {
+            "key": key,
+            "date": datetime.date.today().isoformat(),
+            "ok": summary["ok"],
+            "python": summary["python"],
+            "versions": summary["versions"],
+            "lessons": {name: len(run["errors"]) for name, run in runs.items()},
+        }
+        args.record.write_text(json.dumps(record, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     (out / "summary.json").write_text(json.dumps(summary, indent=1), encoding="utf-8")
     for name, run in runs.items():
         print(f"{name}: {run['seconds']} s, {len(run['errors'])} error(s) {run['errors'][:2] if run['errors'] else ''}")

@@ -45,11 +45,20 @@ def test_a_saved_transcript_loads_back_field_for_field(fresh):
 
 
 def test_the_file_name_follows_the_kernel_and_the_content(fresh, monkeypatch):
-    first = transcript_cache.path(THIS_COURSE)
-    monkeypatch.setenv("OPENBLAS_CORETYPE", "Prescott-test")
-    assert transcript_cache.path(THIS_COURSE) != first
+    # Whatever the environment holds (.ci/run sets OPENBLAS_CORETYPE=Prescott, a machine may set Haswell):
+    # monkeypatch puts the variables back as they were, set or unset.
+    monkeypatch.delenv("OPENBLAS_L2_SIZE", raising=False)
+    monkeypatch.delenv("OPENBLAS_CORETYPE", raising=False)
+    unset = transcript_cache.path(THIS_COURSE)
+    names = {unset}
+    for kernel in ("Prescott", "Haswell"):
+        monkeypatch.setenv("OPENBLAS_CORETYPE", kernel)
+        names.add(transcript_cache.path(THIS_COURSE))
+    assert len(names) == 3
     monkeypatch.delenv("OPENBLAS_CORETYPE")
-    assert transcript_cache.path(THIS_COURSE) == first
+    assert transcript_cache.path(THIS_COURSE) == unset
+    monkeypatch.setenv("OPENBLAS_CORETYPE", "Prescott")
+    first = transcript_cache.path(THIS_COURSE)
     parts = fingerprint.content_parts(THIS_COURSE)
     monkeypatch.setattr(transcript_cache, "content_parts", lambda course: dict(parts, **{"hidden suite": "other"}))
     assert transcript_cache.path(THIS_COURSE) != first
