@@ -675,6 +675,63 @@ except NameError:
     )
 
 
+@case("sandbox", "exercises")
+def looks_for_what_it_was_not_given(class_dir):
+    """rot_x answers right only while the sandbox hides everything it was not given: the hidden suite, the
+    masters and the class folder by path, the grader's session and user keyrings, a second network interface"""
+    hidden = [str(THIS_COURSE.hidden_suite), str(THIS_COURSE.solutions), str(Path(class_dir).resolve())]
+    return _answer_with(
+        class_dir,
+        "looks_around",
+        "rot_x",
+        f"""
+import ctypes, os
+_seen = [path for path in {hidden!r} if os.path.exists(path)]
+_libc = ctypes.CDLL(None, use_errno=True)
+_libc.syscall.restype = ctypes.c_long
+for _ring in (-3, -4, -5):  # KEY_SPEC_SESSION_KEYRING, _USER_, _USER_SESSION_: keyctl(GET_KEYRING_ID, ring, 0)
+    if _libc.syscall(250, 0, _ring, 0) > 0:
+        _seen.append(f"keyring {{_ring}}")
+_seen += [name for name in os.listdir("/sys/class/net") if name != "lo"] if os.path.isdir("/sys/class/net") else []
+if _seen:
+    raise RuntimeError(f"saw {{_seen}}")
+""",
+    )
+
+
+@case("budget", "exercises")
+def forges_an_error_for_every_answer(class_dir):
+    """every answer cell writes a forged traceback of about 6 MB to stderr and 2 MB to stdout at load, while
+    its function loads and answers right: what the grader keeps of it is bounded"""
+    from support import references
+
+    flood = (
+        "import sys\nsys.stderr.write('Traceback (most recent call last):\\n  RuntimeError: forged\\n' * 120_000)\n"
+        "print('x' * 2_000_000)\n"
+    )
+    student_with(class_dir, "forges_errors", {name: flood + source for name, source in references().items()})
+    return "forges_errors"
+
+
+@case("class reading", "full")
+def student_named_submitted(class_dir):
+    """a student whose id is `submitted`, with an nbgrader-like tree inside: nobody else vanishes"""
+    folder = student_with(class_dir, "submitted")
+    (folder / "zed" / "lesson01").mkdir(parents=True)
+    shutil.copy(folder / NOTEBOOK, folder / "zed" / "lesson01" / NOTEBOOK)
+    return "submitted"
+
+
+@case("class reading", "full")
+def dates_its_own_hand_in(class_dir):
+    """in the one-folder-per-student layout, hands in lesson01/timestamp.txt saying 9999-12-31 (and a notebook
+    dated by the file system): the file's own time is read, never the student's word"""
+    folder = Path(class_dir) / "own_date"
+    student_with(folder, "lesson01")
+    (folder / "lesson01" / "timestamp.txt").write_text("9999-12-31 23:59:59.999999 UTC", encoding="utf-8")
+    return "own_date"
+
+
 def build_class(class_dir):
     """Write the honest students and every case into ``class_dir``; ``{case name: student id or None}``."""
     class_dir = Path(class_dir)

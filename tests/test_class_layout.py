@@ -208,7 +208,7 @@ def test_output_files_are_private_unless_shared(tmp_path):
     outputs = class_run.Outputs(out)
     class_run.write_atomically(outputs.student_json("ana"), "{}")
     class_run.write_atomically(outputs.gradebook, "student_id\n")
-    assert _mode(out) == 0o700 and _mode(out / "students") == 0o700
+    assert _mode(out) == 0o711 and _mode(out / "students") == 0o700
     assert _mode(outputs.student_json("ana")) == 0o600 and _mode(outputs.gradebook) == 0o600
     (out / "notes.txt").write_text("the instructor's", encoding="utf-8")
     os.chmod(out / "notes.txt", 0o640)
@@ -255,7 +255,8 @@ def test_grade_says_how_it_read_the_class_grades_everyone_and_keeps_its_output_p
     saved = class_run.load_saved(class_run.Outputs(out), "bo").result
     assert saved.lessons[0].submitted_from == "file time"
     assert saved.lessons[0].submitted_at == "2027-01-15T08:00:00+00:00"
-    for path in [out, *out.rglob("*")]:
+    assert _mode(out) == 0o711  # crossed, never listed: a class kept inside stays reachable in limits mode
+    for path in out.rglob("*"):
         assert not _mode(path) & 0o077, path
     _grade(class_dir, *common, "--share-output")
     assert _mode(out) == 0o755 and _mode(out / "grades.csv") == 0o644 and _mode(out / "report.html") == 0o644

@@ -119,7 +119,7 @@ def _output_folder(folder):
         folder = folder.parent
     for made in reversed(missing):
         made.mkdir(exist_ok=True)
-        os.chmod(made, PRIVATE_FOLDER | (os.stat(made.parent).st_mode & SHARED_READ))
+        os.chmod(made, PRIVATE_FOLDER | (SHARED_READ if os.stat(made.parent).st_mode & 0o044 else 0))
 
 
 def set_output_sharing(root: str | Path, share: bool = False) -> None:
@@ -132,7 +132,9 @@ def set_output_sharing(root: str | Path, share: bool = False) -> None:
     root = Path(root)
     root.mkdir(parents=True, exist_ok=True)
     extra = SHARED_READ if share else 0
-    os.chmod(root, PRIVATE_FOLDER | extra)
+    # the top may be crossed, never listed (0711): a class folder the instructor keeps inside it (the sample
+    # class) stays readable by the sandbox's user in limits mode; what the grader writes is 0700/0600 below
+    os.chmod(root, PRIVATE_FOLDER | extra | 0o011)
     for entry in _grader_outputs(root):
         folder = entry.is_dir(follow_symlinks=False)
         os.chmod(entry.path, PRIVATE_FOLDER | extra if folder else 0o600 | (extra & 0o044))

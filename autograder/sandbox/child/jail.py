@@ -60,6 +60,7 @@ import os
 import platform
 import signal
 import socket
+import stat
 import struct
 
 NOBODY = 65534
@@ -203,7 +204,11 @@ def _fresh_tmp(libc, size):
         "mount a tmpfs on /tmp",
     )
     for point, fd in kept:
-        os.makedirs(point, mode=0o755, exist_ok=True)
+        if stat.S_ISDIR(os.fstat(fd).st_mode):
+            os.makedirs(point, mode=0o755, exist_ok=True)
+        else:  # the allow-list binds single files too (a module, a shared library): their mount point is a file
+            os.makedirs(os.path.dirname(point), mode=0o755, exist_ok=True)
+            os.close(os.open(point, os.O_WRONLY | os.O_CREAT | os.O_CLOEXEC, 0o644))
         _check(
             libc.mount(f"/proc/self/fd/{fd}".encode(), point.encode(), None, MS_BIND | MS_REC, None), f"keep {point}"
         )
