@@ -261,3 +261,18 @@ def test_grade_says_how_it_read_the_class_grades_everyone_and_keeps_its_output_p
     _grade(class_dir, *common, "--share-output")
     assert _mode(out) == 0o755 and _mode(out / "grades.csv") == 0o644 and _mode(out / "report.html") == 0o644
     assert _mode(class_run.Outputs(out).feedback_html("ana")) == 0o644
+
+
+def test_a_class_named_by_a_relative_path_is_read(tmp_path, monkeypatch):
+    """`grade --out results` builds the sample class at a relative path: the notebooks the walk found are the
+    ones grading asks for (every student lost every lesson when a relative name was read as inside the folder)."""
+    monkeypatch.chdir(tmp_path)
+    _student(tmp_path / "class" / "ana")
+    student = submissions.read_student_folder(Path("class") / "ana")
+    for asked in (
+        Path("class") / "ana" / LESSON.filename,
+        tmp_path / "class" / "ana" / LESSON.filename,
+        LESSON.filename,
+    ):
+        assert student.file(asked) is not None, asked
+        assert student.read(asked).cells

@@ -593,9 +593,16 @@ class StudentFolder:
     digest: str
 
     def file(self, path: str | Path) -> NotebookFile | None:
-        """The :class:`NotebookFile` at ``path`` (absolute, or relative to the folder), or None."""
+        """The :class:`NotebookFile` at ``path`` (as the walk named it: below ``self.path``, absolute or relative
+        to the working folder alike; or relative to the folder), or None."""
         path = Path(path)
-        relative = path.relative_to(self.path).as_posix() if path.is_absolute() else path.as_posix()
+        relative = path.as_posix()
+        for base, candidate in ((self.path, path), (Path(os.path.abspath(self.path)), Path(os.path.abspath(path)))):
+            try:
+                relative = candidate.relative_to(base).as_posix()
+                break
+            except ValueError:
+                continue
         return next((n for n in self.notebooks if n.relative == relative), None)
 
     def read(self, path: str | Path) -> nbformat.NotebookNode:
