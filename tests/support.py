@@ -11,6 +11,7 @@ import os
 import subprocess
 import sys
 import zlib
+from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
 
@@ -118,3 +119,18 @@ def grade_sample_class(out, sandbox=None):
     with open(Path(out) / "grades.csv", newline="", encoding="utf-8") as handle:
         rows = {row["student_id"]: row for row in csv.DictReader(handle)}
     return out, result.stdout, rows
+
+
+@contextmanager
+def started_warm_slot():
+    """A warm slot of this course with the default limits, its zygote started and ready; closed after."""
+    from autograder.sandbox import launcher, warm
+
+    slot = warm.WarmSlot(0, launcher.Limits(), THIS_COURSE.support)
+    slot.spawn()
+    slot.wait_ready()
+    assert slot.usable(), "the slot's zygote did not start"
+    try:
+        yield slot
+    finally:
+        slot.close()

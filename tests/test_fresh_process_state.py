@@ -37,7 +37,7 @@ import pytest
 from autograder.sandbox import launcher, warm
 from autograder.sandbox.child import jail
 from autograder.sandbox.session import LessonProgram, StudentSandbox
-from support import THIS_COURSE
+from support import THIS_COURSE, started_warm_slot
 
 NAMESPACES = ("user", "mnt", "pid", "ipc", "uts", "net", "cgroup")
 KEY_SYSCALLS = {"x86_64": (248, 249, 250), "aarch64": (217, 218, 219)}  # add_key, request_key, keyctl
@@ -213,12 +213,8 @@ def slot(grader):
     """A warm slot started by the dirty grader (its zygote inherits everything the grader has)."""
     if not warm.enabled():
         pytest.skip("warm slots need the namespace sandbox")
-    started = warm.WarmSlot(0, launcher.Limits(), THIS_COURSE.support)
-    started.spawn()
-    started.wait_ready()
-    assert started.usable(), "the slot's zygote did not start"
-    yield started
-    started.close()
+    with started_warm_slot() as started:
+        yield started
 
 
 def _two_students(kind, slot, grader):

@@ -17,7 +17,7 @@ import pytest
 
 from autograder.sandbox import launcher, process_tree, warm
 from autograder.sandbox.session import LessonProgram, StudentError, StudentSandbox
-from support import THIS_COURSE
+from support import THIS_COURSE, started_warm_slot
 
 pytestmark = pytest.mark.skipif(not warm.enabled(), reason="warm slots need the namespace sandbox")
 
@@ -136,12 +136,8 @@ def _program(source):
 
 @pytest.fixture
 def slot():
-    started = warm.WarmSlot(0, launcher.Limits(), THIS_COURSE.support)
-    started.spawn()
-    started.wait_ready()
-    assert started.usable(), "the slot's zygote did not start"
-    yield started
-    started.close()
+    with started_warm_slot() as started:
+        yield started
 
 
 def test_workers_are_forked_from_the_slot(slot):
