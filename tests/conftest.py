@@ -128,6 +128,15 @@ QUICK = (
 )
 
 
+@pytest.fixture(scope="module")
+def warm_slot():
+    """One warm slot per test module (and worker): its zygote forks each student's sandbox, as in a class run."""
+    from support import started_warm_slot
+
+    with started_warm_slot() as slot:
+        yield slot
+
+
 @pytest.hookimpl(tryfirst=True)  # before pytest's own -m selection reads the marks
 def pytest_collection_modifyitems(config, items):
     """Mark the tests of ``QUICK``; put the files of ``SLOWEST_FILES_FIRST`` at the front, in that order, and

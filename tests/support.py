@@ -85,12 +85,17 @@ def _drawn_mistakes(student, by_exercise, share=3):
     return chosen
 
 
-def grade(folder, lessons=(), nbval=False):
-    """Grade one folder in this process and return its StudentResult."""
+def grade(folder, lessons=(), nbval=False, slot=None):
+    """Grade one folder in this process and return its StudentResult.
+
+    ``slot``: a started warm slot (the ``warm_slot`` fixture of ``tests/conftest.py``) whose zygote forks the
+    student's sandbox, as a class run does (about 0.2 s a student instead of 0.6 s for a cold sandbox).
+    """
     return grade_student(
         Path(folder).name,
         Path(folder),
         GradingContext(THIS_COURSE, GradingOptions(nbval=nbval, lessons=tuple(lessons))),
+        slot=slot,
     )
 
 

@@ -60,12 +60,12 @@ def _ids(name):
     ],
     ids=_ids,
 )
-def test_mistake_costs_points_on_its_exercise_only(name, tmp_path):
+def test_mistake_costs_points_on_its_exercise_only(name, tmp_path, warm_slot):
     mistake = MISTAKES[name]
     lesson = _lesson(mistake)
     assert lesson != "??", f"{name}: no master defines {mistake.exercise}"
     folder = build_submission(tmp_path / "student", {mistake.exercise: mistake.source}, lessons=(lesson,))
-    result = grade(folder, lessons=(lesson,))
+    result = grade(folder, lessons=(lesson,), slot=warm_slot)
     points = points_by_exercise(result)
     earned, available = points[mistake.exercise]
     assert earned < available, f"{name} ({mistake.description}) kept full marks on {mistake.exercise}"

@@ -25,10 +25,6 @@ def quarter(axis):
     return Rotation.from_rotvec(np.pi / 2 * np.eye(3)[axis]).as_matrix()
 
 
-def block(top_left, top_right, bottom_left, bottom_right):
-    return np.block([[top_left, top_right], [bottom_left, bottom_right]])
-
-
 def test_hand_written_rotations_and_pose():
     same(checks.QUARTER_X, quarter(0))
     same(checks.QUARTER_Y, quarter(1))
@@ -38,31 +34,6 @@ def test_hand_written_rotations_and_pose():
     T = np.eye(4)
     T[:3, :3], T[:3, 3] = checks.QUARTER_Z, checks.SHIFT
     same(checks.T_QUARTER, T)
-
-
-def test_adjoint_slips():
-    R, t, Z = checks.QUARTER_Z, checks.SHIFT, np.zeros((3, 3))
-    same(checks.ADJ_ROTATION_FIRST, block(R, Z, skew(t) @ R, R))
-    same(checks.ADJ_NO_COUPLING, block(R, Z, Z, R))
-    same(checks.ADJ_COUPLING_WITHOUT_R, block(R, skew(t), Z, R))
-    same(checks.ADJ_COUPLING_SIGN, block(R, -skew(t) @ R, Z, R))
-    same(checks.ADJ_COUPLING_R_FIRST, block(R, R @ skew(t), Z, R))
-
-
-def test_point_jacobian_slips():
-    R, t, p = checks.QUARTER_Z, checks.SHIFT, checks.POINT
-    same(checks.JTP_ROTATION_FIRST, np.hstack([-R @ skew(p), R]))
-    same(checks.JTP_TRANSLATION_I, np.hstack([np.eye(3), -R @ skew(p)]))
-    same(checks.JTP_LEFT, np.hstack([np.eye(3), -skew(R @ p + t)]))
-    same(checks.JTP_SIGN, np.hstack([R, R @ skew(p)]))
-    same(checks.JTP_WORLD_ROTATION, np.hstack([R, -skew(R @ p)]))
-
-
-def test_quaternion_power_slips():
-    alpha, axis = 1.0, np.array([0.0, 0.6, 0.8])
-    same(checks.Q_TWO_RAD, np.concatenate([[np.cos(alpha)], np.sin(alpha) * axis]))
-    same(checks.Q_ONE_FULL_ANGLE, np.concatenate([[np.cos(2 * alpha)], np.sin(2 * alpha) * axis]))
-    same(checks.HALF_WITHOUT_UNIT_AXIS, np.sin(0.5 * alpha) * np.linalg.norm(np.sin(alpha) * axis))
 
 
 def exp(w):

@@ -54,6 +54,7 @@ from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_
 from autograder.grading.context import GradingContext
 from autograder.grading.pipeline import GradingOptions, grade_student
 from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
+from autograder.grading.nbval_stage import record_notebook_calls
 from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
 from autograder.lessons.course import Course
 from autograder.lessons.untrusted_text import one_line, safe_name
@@ -516,6 +517,8 @@ def grade_class(
             learn_reference_in_sandbox(
                 course.reference, course, options.limits, slots.slots[0] if slots else None, lessons=options.lessons
             )
+            if options.nbval:  # the notebook stage's transcripts: a kernel run skipped when the calls agree
+                record_notebook_calls(course, options, slots.slots[0] if slots else None, lessons=options.lessons)
             fork_each(grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
     if progress:
         progress.finish()

@@ -33,6 +33,7 @@ from pathlib import Path
 
 import nbformat
 
+from autograder.grading import notebook_calls
 from autograder.grading.options import GradingOptions
 from autograder.grading.results import LessonResult, NotebookRun
 from autograder.lessons import cells
@@ -95,16 +96,91 @@ def run_notebooks(
     options: GradingOptions,
     course: Course,
     slot: WarmSlot | None = None,
+    replay: bool = True,
 ) -> dict[str, NotebookRun]:
     """Run nbval on every readable lesson notebook of one student, against ``course``'s masters.
 
     ``slot``: the grader's warm slot, whose zygote forks the lessons' sandboxes; None: cold starts.
+    ``replay``: a lesson with a notebook transcript (:mod:`autograder.grading.notebook_calls`, learned by
+    :func:`record_notebook_calls`) whose recorded calls all return the reference's values in a fresh sandbox of
+    the student's is ``passed`` without a kernel run; False runs every kernel.
 
     Returns ``{lesson number: NotebookRun}`` with points decided later by
     :func:`award`; here ``points`` is 0 and ``status`` is nbval's verdict.
     """
     runnable = [(shell, program) for shell, _, program in lessons if program is not None]
     runs = {}
+    if replay:
+        learned = notebook_calls.memo(course)
+        to_run = []
+        for shell, program in runnable:
+            transcript = learned.get(shell.number)
+            if transcript is not None and _replays(shell.number, program, transcript, options, course, slot):
+                runs[shell.number] = NotebookRun(status="passed", max_points=options.notebook_points, failures=[])
+            else:
+                to_run.append((shell, program))
+        runnable = to_run
+    if runnable:
+        runs.update(_kernel_runs(runnable, options, course, slot)[0])
+    return runs
+
+
+def _replays(lesson, program, transcript, options, course, slot):
+    """Do the lesson's recorded calls return the reference's values in a fresh sandbox of the student's?"""
+    try:
+        with StudentSandbox(
+            {lesson: program}, course.support, limits=options.limits, slot=slot, resets_slot=False
+        ) as box:
+            return notebook_calls.replays_as_recorded(box, transcript)
+    except (StudentError, SandboxUnavailable):
+        return False
+
+
+def record_notebook_calls(
+    course: Course, options: GradingOptions, slot: WarmSlot | None = None, lessons: tuple = (), times: int = 2
+) -> dict:
+    """Learn the notebook transcripts of ``course``'s lessons (all, or ``lessons``): run the masters with the
+    reference's functions ``times`` times, noting every call (:mod:`autograder.grading.notebook_calls`).
+
+    Kept on the reference's memo and on disk; a lesson learned before (here or by an earlier run on this
+    machine) is not run again. Speed only: a failure leaves the lesson without a transcript (its kernel runs).
+    Returns the memo, ``{lesson: NotebookTranscript or None}``.
+    """
+    from autograder.grading.suite import reference_programs
+
+    learned = notebook_calls.memo(course)
+    wanted = [lesson.number for lesson in course.catalog.graded_lessons if not lessons or lesson.number in lessons]
+    if any(number not in learned for number in wanted):
+        saved = notebook_calls.load(course)
+        if saved:
+            learned.update({number: t for number, t in saved.items() if number not in learned})
+    todo = [number for number in wanted if number not in learned]
+    if not todo:
+        return learned
+    programs = reference_programs(course)
+    shells = [
+        (LessonResult(number=number, title="", notebook="", status="graded"), programs[number]) for number in todo
+    ]
+    recorded = {number: [] for number in todo}
+    try:
+        for _ in range(times):
+            runs, records = _kernel_runs(shells, options, course, slot, record=True)
+            for number in todo:
+                ok = runs.get(number) is not None and runs[number].status == "passed" and records is not None
+                mine = [r for r in records if isinstance(r, dict) and r.get("lesson") == number] if ok else None
+                recorded[number].append(mine)
+    except Exception:  # speed only: these lessons simply run their kernels
+        return learned
+    for number in todo:
+        learned[number] = notebook_calls.transcript_from(recorded[number])
+    notebook_calls.save(course, learned)
+    return learned
+
+
+def _kernel_runs(runnable, options, course, slot, record=False):
+    """nbval on the lessons of ``runnable`` (``[(LessonResult, LessonProgram)]``) in one runner: returns
+    ``({lesson: NotebookRun}, the calls noted when ``record`` (reference code only), else None)``."""
+    runs, records = {}, None
     catalog = course.catalog
     sandboxes, channels, problems = _student_channels(runnable, options, course.support, slot)
     try:
@@ -131,6 +207,7 @@ def run_notebooks(
                     "JUPYTER_RUNTIME_DIR": "/tmp/.jupyter-runtime",
                     "IPYTHONDIR": "/tmp/.ipython",
                     "JUPYTER_PLATFORM_DIRS": "1",
+                    **(notebook_calls.environment_flag() if record else {}),
                 },
             )
             summary, error = (
@@ -138,6 +215,8 @@ def run_notebooks(
                 if names
                 else ({}, "")
             )
+            if record:
+                records = notebook_calls.read_records(notebook_calls.records_file(scratch_dir))
     finally:
         for box in sandboxes:
             box.close()
@@ -152,7 +231,7 @@ def run_notebooks(
         runs[shell.number] = NotebookRun(
             status="failed" if failures else "passed", max_points=options.notebook_points, failures=failures
         )
-    return runs
+    return runs, records
 
 
 def _run(names, channels, sandbox_dir, scratch_dir, limits, timeout):

@@ -440,7 +440,9 @@ class StudentSandbox:
             raise StudentError(kind, f"{name} {error.get('message', '')}", stdout)
         raise StudentError(kind, f"{name} raised {_format_error(error)}", stdout)
 
-    def call_batch(self, calls: list[str], timeouts: list[float | None], budget: float = 2.0) -> list[dict] | None:
+    def call_batch(
+        self, calls: list[str], timeouts: list[float | None], budget: float = 2.0, expect: list[str] | None = None
+    ) -> list[dict] | None:
         """Make several calls in one round trip; return their raw replies, in order, or None.
 
         ``calls`` are the calls as wire text (``{"lesson", "name", "args",
@@ -451,6 +453,8 @@ class StudentSandbox:
         each to :meth:`take_reply`. None means the batch could not be made (the
         process died or hung): nothing is counted against the student, and
         the caller makes its calls one at a time, which says what happened.
+        ``expect``: the wire text of each call's expected value; the batch also stops after the first call
+        whose value is another (the inputs of the calls after it may have been computed from that value).
         """
         try:
             self._ensure_loaded()
@@ -466,6 +470,8 @@ class StudentSandbox:
             default,
             ",".join(calls),
         )
+        if expect is not None:
+            line = line[:-2] + ',["expect",%s]]}' % wire.dumps(list(expect))
         started = time.monotonic()
         try:
             self._send_line(line)

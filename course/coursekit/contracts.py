@@ -60,7 +60,10 @@ FORBIDDEN = {
     # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)
     "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
     "log_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
-    # lesson 09: q^t is the job (scipy's Slerp and Rotation powers do it)
+    # lesson 07, section 10: the adjoint and the Jacobian of Exp are the job
+    "adjoint_se3": ("coursekit.lie.AdSE3",),
+    "right_jacobian_se3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS,
+    # lesson 04, section 14: q^t is the job (scipy's Slerp and Rotation powers do it)
     "quat_power": SCIPY_ROTATIONS,
 }
 

@@ -120,6 +120,17 @@ ARCCOS_LOSES_SMALL_ANGLES_HINT = ("arccos loses small angles (cos θ rounds to 1
 OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT = ("for opposite directions the answer is a half turn, [0, u] with u "
                                         "perpendicular to a")
 
+# ---------------------------------------------------------------- checks/lesson04_powers.py
+POWER_ARCCOS_HINT = ("arccos(w) rounds small half-angles to 0 (cos α is 1.0 below about 1e-8): read α off both w and "
+                     "|v|, as lesson 03's Log reads its angle")
+POWER_DEFINITION_HINT = "q^t = Exp_q(t Log_q q): write q as [cos α, sin α u] with α in [0, π], then apply the definition"
+POWER_HALF_ANGLE_HINT = ("q = [cos α, sin α u] already holds the half angle: Log_q doubles α and Exp_q halves it "
+                         "again, so q¹ must come back as q")
+POWER_IDENTITY_HINT = "at the identity |v| = 0: guard the division (any axis will do there)"
+POWER_SIGN_FLIP_HINT = ("q and -q are one rotation but not one quaternion: -q has half-angle π - α about -u, so its "
+                        "powers turn the other way; do not flip the sign of q")
+POWER_UNIT_AXIS_HINT = "the vector part is sin α u, not u: divide it by its length to get the unit axis"
+
 # ---------------------------------------------------------------- checks/lesson05.py
 ANGLES_MUST_SATISFY_R_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
                               "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
@@ -197,6 +208,24 @@ LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("Rᵀ [p_w]× belongs to the left pertu
                        "body-frame point Rᵀ p_w")
 POINT_SEEN_BODY_RT_HINT = "the point seen from the body is Rᵀ p_w, not p_w: R belongs in the answer"
 
+# ---------------------------------------------------------------- checks/lesson06_compose.py
+COMPOSE_IGNORES_R2_HINT = ("a turn of R1 reaches the end of the product only after crossing R2: move it past R2 "
+                           "with the adjoint")
+COMPOSE_LEFT_HINT = ("those are the left Jacobians (the turn on the left of R1 and of R2); here both the input and "
+                     "the output are perturbed on the right")
+COMPOSE_SWAPPED_HINT = "J1 and J2 are swapped: return (J1, J2), the first for a turn of R1, the second for a turn of R2"
+COMPOSE_TRANSPOSE_HINT = ("J1 is the transpose of what is needed: moving a turn from the left of R2 to its right "
+                          "conjugates it by R2⁻¹, so the adjoint to use is that of R2⁻¹, not of R2")
+COMPOSE_WRONG_FACTOR_HINT = "J1 depends on R2 (the factor the perturbation must cross), not on R1"
+INVERSE_LEFT_HINT = ("-Rᵀ is the Jacobian for perturbations on the left of R and of R⁻¹; with R Exp(d), the inverted "
+                     "turn lands on the left of Rᵀ and must be moved to its right")
+INVERSE_NOT_MOVED_HINT = ("the inverted turn sits on the left of Rᵀ: move it to the right with the adjoint before "
+                          "you read off J")
+INVERSE_AT_IDENTITY_HINT = "at the identity, inverting a small turn simply reverses it: the Jacobian there is -I"
+INVERSE_SIGN_HINT = "the sign: the inverse of a small turn Exp(d) is Exp(-d)"
+INVERSE_TRANSPOSE_HINT = ("Rᵀ is neither the sign nor the side: invert R Exp(d) factor by factor, then move the "
+                          "small turn to the right of Rᵀ with the adjoint")
+
 # ---------------------------------------------------------------- checks/lesson07.py
 DIVIDED_FIRST_COORDINATE_X_HINT = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
 HOMOGENEOUS_ROWS_TRANSPOSE_HINT = "P_h @ T applies the transpose of T; rows need P_h @ T.T"
@@ -236,7 +265,7 @@ CONVERT_INPUTS_NP_ASARRAY_HINT = "convert the inputs with np.asarray(..., dtype=
 COVARIANCE_TAKES_LINEAR_MAP_HINT = "a covariance takes the linear map on both sides: Cov(A ε) = A Σ Aᵀ"
 MINIMISES_SQUARED_COST_LEAST_HINT = ("that minimises the squared cost (least squares): the Huber cost counts "
                                      "residuals above k linearly, so large residuals must pull less")
-QUAT_POWER_FORMULA_HINT = "q^t = [cos tα, sin tα u] with α = atan2(|v|, w) and u = v / |v|"
+QUAT_POWER_FORMULA_HINT = "q^t = Exp_q(t Log_q q): read α in [0, π] and the unit axis u off q, then apply the definition"
 RETURNED_R0_UNCHANGED_APPLY_HINT = "returned R0 unchanged: apply one update per sample"
 RETURNED_T0_UNCHANGED_DO_HINT = "returned T0 unchanged: do iters updates T ← T Exp(xi)"
 RETURNED_T0_UNCHANGED_ITERATE_HINT = ("returned T0 unchanged: iterate from T0 until the gradient of the Huber cost "
@@ -248,3 +277,18 @@ TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rate
 UNIT_AXIS_FROM_VECTOR_PART_HINT = "v = sin α u: divide the vector part by its length to get the unit axis u"
 WEIGHTS_K_R_BEYOND_HINT = ("weights (k/r)² beyond k belong to another cost, whose pull fades with distance: the Huber "
                            "cost keeps a constant pull k on every pair beyond k")
+
+# ---------------------------------------------------------------- checks/lesson09_filter.py, _update.py
+NEES_NOT_DIVIDED_HINT = "the NEES is the full quadratic form, not divided by the dimension"
+UPDATE_WRONG_SIDE_HINT = "the correction is applied on the wrong side: the error state is R_true = R Exp(ε)"
+
+# ---------------------------------------------------------------- checks/lesson09_compound.py
+COMPOUND_PAIR_REASON = "compound_pose_covariance must return a pair (T, S)"
+COMPOUND_EXPAND_HINT = "expand T1 Exp(ξ1) T2 Exp(ξ2) to first order, gathering both twists on the right"
+
+# ---------------------------------------------------------------- checks/lesson09_capstone.py
+HAND_EYE_LISTS_REASON = "hand_eye_rotation answers differently for plain lists"
+
+# ---------------------------------------------------------------- checks/lesson09_pose_graph.py
+EDGE_NOT_INVERTED_HINT = "Log's Jacobian at r is the inverse of Exp's right Jacobian there, not the Jacobian itself"
+EDGE_SIGN_HINT = "the sign: T_i appears inverted in the residual, (T_i Exp(δ_i))⁻¹ = Exp(-δ_i) T_i⁻¹"

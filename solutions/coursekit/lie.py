@@ -11,7 +11,7 @@ otherwise spend on every student whose code never calls them).
 
 import numpy as np
 
-__all__ = ["skew", "unskew", "Exp", "Log", "ExpSE3", "LogSE3", "quat_product"]
+__all__ = ["skew", "unskew", "Exp", "Log", "ExpSE3", "LogSE3", "AdSE3", "JrSE3", "quat_product"]
 
 
 def skew(v):
@@ -99,6 +99,56 @@ def LogSE3(T):
     block[:3, 3:] = np.eye(3)
     V = expm(block)[:3, 3:]                     # Σ [φ]×^k / (k+1)!, read off a larger exponential
     return np.concatenate([np.linalg.solve(V, pose[:3, 3]), rotation_vector])
+
+
+def _vee_twist(M):
+    """The twist [ρ, φ] of a 4×4 twist matrix (the inverse of ``_twist_matrix``)."""
+    return np.concatenate([M[:3, 3], unskew(M[:3, :3])])
+
+
+def AdSE3(T):
+    """The adjoint of a pose ``T`` (shape (4, 4)): the 6×6 matrix with T Exp(ξ) T⁻¹ = Exp(Ad_T ξ).
+
+    Built from its definition, one column per basis twist e_j: column j is the twist of the
+    matrix T e_j^ T⁻¹ (conjugation by T is linear in the twist). Twists are ``[rho, phi]``.
+
+    Examples
+    --------
+    >>> T = ExpSE3([0.5, -1.0, 2.0, 0.3, -0.2, 0.9])
+    >>> xi = np.array([0.1, 0.2, -0.3, 0.05, 0.0, -0.1])
+    >>> bool(np.allclose(T @ ExpSE3(xi) @ np.linalg.inv(T), ExpSE3(AdSE3(T) @ xi)))
+    True
+    """
+    pose = np.asarray(T, dtype=float)
+    inverse = np.linalg.inv(pose)
+    return np.column_stack([_vee_twist(pose @ _twist_matrix(e) @ inverse) for e in np.eye(6)])
+
+
+def JrSE3(xi):
+    """The right Jacobian of SE(3) at the twist ``xi = [rho, phi]``, shape (6, 6).
+
+    Defined by Exp(ξ + dξ) ≈ Exp(ξ) Exp(J_r(ξ) dξ) for small dξ; it equals
+    ∫₀¹ Ad(Exp(-s ξ)) ds, the series Σ (-ad_ξ)^k / (k+1)!, read here off scipy's matrix
+    exponential of a 12×12 block matrix [[-ad_ξ, I], [0, 0]] (no closed form is written out).
+    Its inverse is the Jacobian of Log: Log(Exp(ξ) Exp(δ)) ≈ ξ + J_r(ξ)⁻¹ δ.
+
+    Examples
+    --------
+    >>> xi = np.array([0.5, -1.0, 2.0, 0.3, -0.2, 0.9]); d = 1e-6 * np.array([1.0, 2, 3, 4, 5, 6])
+    >>> step = LogSE3(np.linalg.inv(ExpSE3(xi)) @ ExpSE3(xi + d))
+    >>> bool(np.allclose(step, JrSE3(xi) @ d, atol=1e-11))
+    True
+    """
+    from scipy.linalg import expm
+
+    twist = np.asarray(xi, dtype=float).reshape(6)
+    ad = np.zeros((6, 6))                          # ad_ξ: the adjoint's derivative, [[φ×, ρ×], [0, φ×]]
+    ad[:3, :3] = ad[3:, 3:] = skew(twist[3:])
+    ad[:3, 3:] = skew(twist[:3])
+    block = np.zeros((12, 12))
+    block[:6, :6] = -ad
+    block[:6, 6:] = np.eye(6)
+    return expm(block)[:6, 6:]
 
 
 def quat_product(p, q):

@@ -20,7 +20,8 @@ Protocol (JSON lines, :mod:`wire`): the grader's requests are those of
 ``worker.py`` (``exec``, ``call``, ``batch``, ``bye``). The feeder forwards
 ``exec``, ``call`` and ``bye`` as they are and the runner's reply back. For a
 ``batch`` it sends the runner one ``call`` at a time and answers with
-``{"ok": true, "replies": [...]}``, stopping after the first call that fails,
+``{"ok": true, "replies": [...]}``, stopping after the first call that fails (or that returns another value than
+the batch names in its ``expect`` list),
 once the calls have run ``budget`` seconds, or once the replies reach
 :data:`MAX_BATCH_BYTES`. If the runner dies, the feeder says
 ``{"died": <raw wait status>, "id": <request>}`` and exits (taking every
@@ -245,6 +246,7 @@ class Feeder:
     def batch(self, request: dict) -> None:
         replies, spent, size = [], 0.0, 0
         timeout = request.get("timeout") or 5.0
+        expect = request.get("expect") if isinstance(request.get("expect"), list) else None
         for number, call in enumerate(request.get("calls") or []):
             if not isinstance(call, dict):
                 break
@@ -257,6 +259,8 @@ class Feeder:
             size += len(line)
             if not reply.get("ok") or spent > request.get("budget", 2.0) or size > MAX_BATCH_BYTES:
                 break
+            if expect is not None and (number >= len(expect) or reply.get("text") != expect[number]):
+                break  # a value other than the one expected: the inputs of later calls may come from it
         self.send_upstream({"ok": True, "replies": replies, "id": self.request_id})
 
     def report_death(self, why: str | None = None) -> None:

@@ -154,11 +154,29 @@ def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, t
     except (StudentSandboxGone, RunnerGone, OSError, wire.WireError) as error:
         channel.gone = str(error) or type(error).__name__
         raise StudentSandboxGone(f"calling {name}, the student's code {channel.gone}") from None
+    if os.environ.get("AUTOGRADER_RECORD_CALLS"):
+        _record(request, callables, message)
     if message.get("stdout"):
         sys.stdout.write(str(message["stdout"]))
     if not message.get("ok"):
         _raise(name, message.get("error") or {})
     return wire.loads(message["text"], max_bytes=MAX_REPLY_BYTES)
+
+
+def _record(request, callables, message):
+    """Note one call and its reply for the grader (only when the kernel runs the *reference*'s functions,
+    once per lesson: ``nbval_stage.record_notebook_calls``), one JSON line per call in the file named by
+    ``AUTOGRADER_RECORD_CALLS``."""
+    call_text = wire.dumps({key: request[key] for key in ("lesson", "name", "args", "kwargs", "timeout")})
+    entry = {
+        "lesson": request["lesson"],
+        "call": call_text,
+        "ok": bool(message.get("ok")),
+        "text": message.get("text") if isinstance(message.get("text"), str) else None,
+        "callbacks": len(callables),
+    }
+    with open(os.environ["AUTOGRADER_RECORD_CALLS"], "a", encoding="utf-8") as out:
+        out.write(json.dumps(entry) + "\n")
 
 
 def _answer_callback(callables, message):

@@ -1,0 +1,191 @@
+"""The notebook stage's transcripts: a lesson's kernel run skipped when the student's calls return the reference's.
+
+The notebook stage (:mod:`autograder.grading.nbval_stage`) runs each lesson's
+master in a kernel that holds no student code; every call the master makes to
+an exercise function goes to the student's sandbox and only its value comes
+back. The kernel is therefore a deterministic function of the values those
+calls return, provided the master itself is deterministic. So, once per
+lesson and grader version:
+
+1. **Record.** The masters run as the notebook stage runs them, with the
+   *reference's* functions in the student's place, twice; each call the kernel
+   makes (lesson, function, arguments, time limit, as wire text) is noted with
+   the wire text of the value it got back (``child/student_client.py`` when
+   ``AUTOGRADER_RECORD_CALLS`` is set). A lesson gets a transcript only when
+   its notebook passed both times and both runs made the same calls and got
+   the same values: a master that reads randomness, the clock or anything
+   else that changes between runs, and feeds it to a call, records two
+   different lists and is never skipped. A lesson whose master passes a
+   function to a student function (a callback) or gets an exception back is
+   not skipped either.
+2. **Replay.** For a student, the lesson's calls go, in order, in one batch, to
+   a fresh sandbox of the student's functions for that lesson, as the kernel's
+   would (the same program, limits and walls as the hidden suite's calls;
+   the feeder hands the student's process one call at a time). The batch stops
+   at the first call whose value is not the reference's, bit for bit, so no
+   call is made with an input computed from a value the student's own
+   function did not return.
+3. **Same values, same notebook.** When every call returned the reference's
+   value, the kernel run would have made exactly these calls (by induction:
+   each call's inputs come from the master and the values before it, all the
+   reference's) and got exactly these values, so every cell's output is the
+   reference run's, which passed: the lesson's run is ``passed`` without a
+   kernel. Any other outcome (a different value, an error, a timeout, a batch
+   over :data:`REPLAY_BUDGET` seconds, which could have been a cell over its
+   time limit) runs the kernel as before. What the student's functions print
+   is not compared by the notebook stage, and in-place changes to arguments
+   never reach the kernel (values cross as data), so neither can differ.
+
+The transcripts are kept on the reference's memo (``ReferenceSolutions.memo``,
+recorded once by the batch before its graders fork) and on disk beside the
+hidden suite's (:mod:`autograder.grading.transcript_cache`'s key: the grader,
+the masters, coursekit, the hidden suite, the libraries, the BLAS kernel).
+``run_notebooks(..., replay=False)`` runs every kernel, as before;
+``tests/test_notebook_replay.py`` holds both paths to the same verdicts.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from autograder.grading import transcript_cache
+from autograder.grading.fingerprint import cache_dir, write_private
+from autograder.lessons.course import Course
+from autograder.sandbox.session import StudentSandbox
+
+FORMAT = 1
+REPLAY_BUDGET = 20.0  # seconds of student calls in a replay; a nbval cell may take 60 (nbval_runner.py)
+CHUNK_CALLS = 4000  # calls per batch (a batch's replies stop at 8 MiB in the feeder)
+CHUNK_BYTES = 2 * 1024**2  # of call text per batch
+MAX_CALLS = 50_000  # a lesson recording more calls than this is not replayed (a batch this large is not worth it)
+RECORD_BYTES = 64 * 1024**2  # a recording file larger than this is not read
+
+
+@dataclass
+class NotebookTranscript:
+    """The calls a lesson's master made to the reference's functions, in order, and the values it got."""
+
+    calls: list  # wire text of {"lesson", "name", "args", "kwargs", "timeout"} per call
+    results: list  # wire text of the value the reference returned, per call
+    timeouts: list  # each call's time limit
+
+
+MEMO_KEY = "notebook calls"
+
+
+def memo(course: Course) -> dict:
+    """``{lesson: NotebookTranscript or None}`` learned so far for ``course`` (on its reference's memo)."""
+    holder = getattr(course.reference, "memo", None)
+    if not isinstance(holder, dict):
+        return {}
+    return holder.setdefault(MEMO_KEY, {})
+
+
+def read_records(path: Path) -> list[dict] | None:
+    """The calls noted in ``path`` by ``student_client`` (reference code only), or None if unreadable."""
+    try:
+        if path.stat().st_size > RECORD_BYTES:
+            return None
+        lines = path.read_text(encoding="utf-8").splitlines()
+        return [json.loads(line) for line in lines]
+    except FileNotFoundError:
+        return []
+    except (OSError, ValueError):
+        return None
+
+
+def transcript_from(runs: list[list[dict] | None]) -> NotebookTranscript | None:
+    """The lesson's transcript from its recorded runs, or None when it must not be replayed: a run
+    unreadable, runs that differ, a callback, a call that raised, or too many calls."""
+    if not runs or any(run is None for run in runs):
+        return None
+    first = runs[0]
+    if any(run != first for run in runs[1:]) or len(first) > MAX_CALLS:
+        return None
+    calls, results, timeouts = [], [], []
+    for entry in first:
+        if not isinstance(entry, dict) or entry.get("callbacks") or not entry.get("ok"):
+            return None
+        if not isinstance(entry.get("call"), str) or not isinstance(entry.get("text"), str):
+            return None
+        try:
+            timeout = json.loads(entry["call"])["__dict__"]
+            timeout = float(dict(timeout)["timeout"])
+        except (ValueError, KeyError, TypeError):
+            return None
+        calls.append(entry["call"])
+        results.append(entry["text"])
+        timeouts.append(timeout)
+    return NotebookTranscript(calls=calls, results=results, timeouts=timeouts)
+
+
+def replays_as_recorded(box: StudentSandbox, transcript: NotebookTranscript) -> bool:
+    """Make the lesson's recorded calls in ``box`` (a fresh sandbox of the student's functions), in order, in
+    batches of at most :data:`CHUNK_CALLS` calls or :data:`CHUNK_BYTES` of call text; True when every one
+    returned the reference's value, bit for bit (the kernel run can then be skipped)."""
+    spent, start = 0.0, 0
+    total = len(transcript.calls)
+    while start < total:
+        end, size = start, 0
+        while end < total and end - start < CHUNK_CALLS and (size < CHUNK_BYTES or end == start):
+            size += len(transcript.calls[end])
+            end += 1
+        before = box.time_used
+        expected = transcript.results[start:end]
+        replies = box.call_batch(
+            transcript.calls[start:end], transcript.timeouts[start:end], budget=REPLAY_BUDGET - spent, expect=expected
+        )
+        spent += box.time_used - before
+        if (
+            replies is None
+            or len(replies) != end - start
+            or not all(r.get("ok") and r.get("text") == e for r, e in zip(replies, expected))
+            or spent > REPLAY_BUDGET
+        ):
+            return False
+        start = end
+    return True
+
+
+def path(course: Course) -> Path:
+    """This machine's, this grader's and this course's file of notebook transcripts."""
+    return cache_dir() / f"notebook-calls-{transcript_cache.key(course)}.json"
+
+
+def save(course: Course, learned: dict) -> None:
+    """Write ``{lesson: NotebookTranscript or None}``; never raises (recording again is always safe)."""
+    document = {
+        "format": FORMAT,
+        "lessons": {lesson: (vars(t) if t is not None else None) for lesson, t in learned.items()},
+    }
+    try:
+        write_private(path(course), json.dumps(document))
+    except OSError:
+        pass
+
+
+def load(course: Course) -> dict | None:
+    """``{lesson: NotebookTranscript or None}`` from this machine's file, or None."""
+    try:
+        document = json.loads(path(course).read_text(encoding="utf-8"))
+        if document.get("format") != FORMAT:
+            return None
+        return {
+            lesson: (NotebookTranscript(**fields) if fields is not None else None)
+            for lesson, fields in document["lessons"].items()
+        }
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def environment_flag() -> dict[str, str]:
+    """The kernel's environment entry that makes ``student_client`` note its calls (recording runs only)."""
+    return {"AUTOGRADER_RECORD_CALLS": "/tmp/notebook-calls.jsonl"}
+
+
+def records_file(scratch_dir: Path) -> Path:
+    """Where a recording run's calls are, seen from the grader."""
+    return Path(scratch_dir) / os.path.basename(environment_flag()["AUTOGRADER_RECORD_CALLS"])

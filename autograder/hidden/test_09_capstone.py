@@ -1,0 +1,132 @@
+"""Hidden checks for lesson 09, section 7: the capstone hand_eye_rotation (design).
+
+Judged by the result only, never by the method: on datasets the grader draws here with its own seeds (6 to 40
+pairs, noise σ = 0.01 to 0.05 rad per axis on A_i, up to 40 % outliers drawn uniformly on SO(3), turns of B_i
+between 0.3 and 2.5 rad, and near-degenerate sets whose axes lie within about 0.1 to 0.15 rad of one direction),
+the angle of X from the truth must stay below 5 σ_X, where σ_X = σ √trace(H⁻¹), H = Σ [b_i]×ᵀ [b_i]× over the
+good pairs, is the first-order spread of the best estimate (1e-9 rad for exact data). Core idea (3 of 6 points):
+surviving outliers at the noise's accuracy. Every test calls hand_eye_rotation only.
+"""
+
+import numpy as np
+from coursekit import hints
+from scipy.spatial.transform import Rotation
+
+from .helpers import Wrong, exercise, expect, expect_array, rotation_problem
+
+SLOW = 20  # seconds per call: a search over pairs of pairs is allowed
+
+
+def _exp(w):
+    return Rotation.from_rotvec(np.asarray(w, dtype=float)).as_matrix()
+
+
+def _log(R):
+    return Rotation.from_matrix(R).as_rotvec()
+
+
+def _skew(v):
+    return np.column_stack([np.cross(np.asarray(v, dtype=float), e) for e in np.eye(3)])
+
+
+def _dataset(seed, pairs, sigma, outliers, cone=None):
+    rng = np.random.default_rng(seed)
+    X = Rotation.random(random_state=rng).as_matrix()
+    main_axis = rng.normal(size=3)
+    main_axis /= np.linalg.norm(main_axis)
+    As, Bs = [], []
+    for _ in range(pairs):
+        axis = rng.normal(size=3) if cone is None else main_axis + cone * rng.normal(size=3) / np.sqrt(3)
+        B = _exp(rng.uniform(0.3, 2.5) * axis / np.linalg.norm(axis))
+        Bs.append(B)
+        As.append(X @ B @ X.T @ _exp(sigma * rng.normal(size=3)))
+    wrong = rng.choice(pairs, outliers, replace=False)
+    for i in wrong:
+        As[i] = Rotation.random(random_state=rng).as_matrix()
+    good = sorted(set(range(pairs)) - set(wrong))
+    H = sum(_skew(_log(Bs[i])).T @ _skew(_log(Bs[i])) for i in good)
+    bound = 5.0 * sigma * np.sqrt(np.trace(np.linalg.inv(H))) if sigma > 0 else 1e-9
+    return np.array(As), np.array(Bs), X, bound, good
+
+
+def _nearest(M):
+    U, _, Vt = np.linalg.svd(M)
+    return U @ np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ Vt
+
+
+def _judge(student, seed, pairs, sigma, outliers, cone=None):
+    As, Bs, X_true, bound, good = _dataset(seed, pairs, sigma, outliers, cone)
+    X = expect_array(student.with_timeout(SLOW).hand_eye_rotation(As, Bs), (3, 3), "hand_eye_rotation(As, Bs)")
+    problem = rotation_problem(X)
+    expect(
+        not problem,
+        f"hand_eye_rotation returned a matrix that is not a rotation: {problem}",
+        "project your fit onto SO(3)",
+    )
+    error = float(np.linalg.norm(_log(X.T @ X_true)))
+    what = f"{pairs} pairs, σ = {sigma:g} rad, {outliers} outliers" + (
+        "" if cone is None else f", axes within {cone:g} rad"
+    )
+    if not error <= bound:
+        transposed = float(np.linalg.norm(_log(X @ X_true)))
+        if transposed < 0.05:
+            hint = "that is Xᵀ: in A X = X B, X carries B's frame into A's"
+        else:  # the same student on the good pairs alone tells outliers apart from imprecision
+            hint = "with noise, every good pair adds precision: use all the good ones"
+            if outliers:
+                X_good = np.asarray(student.with_timeout(SLOW).hand_eye_rotation(As[good], Bs[good]), dtype=float)
+                if X_good.shape == (3, 3) and float(np.linalg.norm(_log(_nearest(X_good).T @ X_true))) <= bound:
+                    hint = "the wrong pairs pulled X away: find out which pairs disagree with most of the others"
+        raise Wrong(f"X is {error:.3g} rad from the truth ({what}); the bound is {bound:.3g} rad", hint)
+
+
+@exercise("hand_eye_rotation", weight=3)
+def test_hand_eye_with_outliers(student):
+    """within 5 σ_X of the truth on 4 grader-drawn datasets: 12 to 40 pairs, σ = 0.01 to 0.05 rad, 20 to 40 % outliers"""
+    for seed, pairs, sigma, outliers in [
+        (9700, 20, 0.01, 4),
+        (9701, 40, 0.02, 16),
+        (9702, 12, 0.05, 3),
+        (9703, 30, 0.03, 9),
+    ]:
+        _judge(student, seed, pairs, sigma, outliers)
+
+
+@exercise("hand_eye_rotation", weight=1)
+def test_hand_eye_without_outliers(student):
+    """exact to 1e-9 rad on 6 exact pairs, and within 5 σ_X on 8 noisy pairs without outliers"""
+    _judge(student, 9710, 6, 0.0, 0)
+    _judge(student, 9711, 8, 0.02, 0)
+
+
+@exercise("hand_eye_rotation", weight=1)
+def test_hand_eye_near_degenerate(student):
+    """within 5 σ_X when every turn's axis lies within about 0.1 to 0.15 rad of one direction (with outliers)"""
+    for seed, pairs, cone, outliers in [(9720, 20, 0.15, 4), (9721, 14, 0.1, 3)]:
+        _judge(student, seed, pairs, 0.01, outliers, cone)
+
+
+@exercise("hand_eye_rotation", weight=1)
+def test_hand_eye_lists_and_inputs(student):
+    """accepts plain lists, leaves its inputs unchanged, and answers within 5 σ_X (16 pairs, 4 outliers)"""
+    As, Bs, X_true, bound, _ = _dataset(9730, 16, 0.01, 4)
+    copies = [As.copy(), Bs.copy()]
+    X = expect_array(student.with_timeout(SLOW).hand_eye_rotation(*copies), (3, 3), "hand_eye_rotation")
+    expect(
+        np.array_equal(copies[0], As) and np.array_equal(copies[1], Bs),
+        "hand_eye_rotation changed its inputs",
+        "work on copies",
+    )
+    X_lists = expect_array(
+        student.with_timeout(SLOW).hand_eye_rotation(As.tolist(), Bs.tolist()), (3, 3), "hand_eye_rotation with lists"
+    )
+    expect(
+        float(np.linalg.norm(_log(X.T @ X_true))) <= bound,
+        "X is beyond 5 σ_X of the truth",
+        "find out which pairs disagree with most of the others, and use all the good ones",
+    )
+    expect(
+        np.allclose(X_lists, X, atol=1e-12),
+        hints.HAND_EYE_LISTS_REASON,
+        "convert the arguments with np.asarray(x, dtype=float)",
+    )

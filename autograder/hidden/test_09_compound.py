@@ -1,0 +1,153 @@
+"""Hidden checks for lesson 09, section 4: compound_pose_covariance.
+
+Oracles: the first-order covariance of the definition T1 Exp(ξ1) T2 Exp(ξ2) = T1 T2 Exp(ξ), with the Jacobians
+of ξ taken here by central differences (scipy's expm and logm-free Log via scipy's Rotation), and a Monte-Carlo
+propagation of that definition with a tolerance from the sample size. Core idea (3 of 6 points): carrying the
+first twist across T2, for rotations of T2 at every decade from 1e-12 to π and translations up to 10 m.
+Every test calls compound_pose_covariance only.
+"""
+
+import numpy as np
+from coursekit import hints
+from scipy.linalg import expm
+from scipy.spatial.transform import Rotation
+
+from .helpers import exercise, expect, expect_array, expect_close
+
+ANGLES = (1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 0.3, 1.0, 2.0, 3.0, np.pi - 1e-6)
+
+
+def _skew(v):
+    return np.column_stack([np.cross(np.asarray(v, dtype=float), e) for e in np.eye(3)])
+
+
+def _exp_se3(xi):
+    M = np.zeros((4, 4))
+    M[:3, :3], M[:3, 3] = _skew(xi[3:]), xi[:3]
+    return expm(M)
+
+
+def _log_se3(T):
+    phi = Rotation.from_matrix(T[:3, :3]).as_rotvec()
+    block = np.zeros((6, 6))
+    block[:3, :3], block[:3, 3:] = _skew(phi), np.eye(3)
+    V = expm(block)[:3, 3:]
+    return np.concatenate([np.linalg.solve(V, T[:3, 3]), phi])
+
+
+def _pose(angle, axis, t):
+    T = np.eye(4)
+    T[:3, :3] = Rotation.from_rotvec(angle * np.asarray(axis) / np.linalg.norm(axis)).as_matrix()
+    T[:3, 3] = t
+    return T
+
+
+def _covariance(rng, size):
+    A = rng.normal(size=(6, 6))
+    return size * (A @ A.T + 0.3 * np.eye(6))
+
+
+def _pair(value):
+    expect(isinstance(value, (tuple, list)) and len(value) == 2, hints.COMPOUND_PAIR_REASON)
+    return expect_array(value[0], (4, 4), "T"), expect_array(value[1], (6, 6), "S")
+
+
+def _linearised(T1, S1, T2, S2, h=1e-6):
+    inverse = np.linalg.inv(T1 @ T2)
+
+    def error(x):
+        return _log_se3(inverse @ T1 @ _exp_se3(x[:6]) @ T2 @ _exp_se3(x[6:]))
+
+    J = np.column_stack([(error(h * e) - error(-h * e)) / (2.0 * h) for e in np.eye(12)])
+    return J[:, :6] @ S1 @ J[:, :6].T + J[:, 6:] @ S2 @ J[:, 6:].T, J
+
+
+def _hint(S, T1, S1, T2, S2):
+    _, J = _linearised(T1, S1, T2, S2)
+    A = J[:, :6]
+    R2 = np.kron(np.eye(2), T2[:3, :3].T)
+    B = np.linalg.inv(A)
+    slips = [
+        (S1 + S2, "S1 must be carried across T2 before S2 is added"),
+        (B @ S1 @ B.T + S2, "the adjoint goes the other way"),
+        (R2 @ S1 @ R2.T + S2, "the adjoint of a pose has a coupling block"),
+        (A @ S1 + S2, "a covariance takes the linear map on both sides"),
+    ]
+    scale = np.max(np.abs(S1)) + np.max(np.abs(S2))
+    matching = [hint for value, hint in slips if np.max(np.abs(S - value)) <= 1e-6 * scale]
+    # two slips that agree at this input (T2 barely turning) cannot be told apart here: name neither
+    return matching[0] if len(matching) == 1 else hints.COMPOUND_EXPAND_HINT
+
+
+@exercise("compound_pose_covariance", weight=3)
+def test_compound_every_angle(student):
+    """S equals the linearised covariance to 1e-7 (relative), for T2 turning 1e-12 to π rad and shifted up to 10 m"""
+    rng = np.random.default_rng(9800)
+    for angle in ANGLES:
+        T1 = _pose(rng.uniform(0, 3), rng.normal(size=3), rng.normal(size=3))
+        T2 = _pose(angle, rng.normal(size=3), rng.uniform(0.1, 10.0) * rng.normal(size=3) / np.sqrt(3))
+        S1, S2 = _covariance(rng, 1e-3), _covariance(rng, 1e-3)
+        _, S = _pair(student.compound_pose_covariance(T1, S1, T2, S2))
+        expected, _ = _linearised(T1, S1, T2, S2)
+        scale = np.max(np.abs(expected))
+        expect_close(
+            S / scale, expected / scale, 1e-7, f"S / |S| for T2 turning {angle:.3g} rad", _hint(S, T1, S1, T2, S2)
+        )
+
+
+@exercise("compound_pose_covariance", weight=1)
+def test_compound_pose(student):
+    """T equals T1 T2 to 1e-12 (relative to the translations)"""
+    rng = np.random.default_rng(9810)
+    for angle in ANGLES[::3]:
+        T1 = _pose(1.0, rng.normal(size=3), 3 * rng.normal(size=3))
+        T2 = _pose(angle, rng.normal(size=3), 3 * rng.normal(size=3))
+        T, _ = _pair(student.compound_pose_covariance(T1, 1e-3 * np.eye(6), T2, 1e-3 * np.eye(6)))
+        hint = "T2 T1 is the other chain" if np.allclose(T, T2 @ T1, atol=1e-9) else ""
+        expect_close(T, T1 @ T2, 1e-12, f"T for T2 turning {angle:.3g} rad", hint, scale=10.0)
+
+
+@exercise("compound_pose_covariance", weight=1)
+def test_compound_against_monte_carlo(student):
+    """S agrees with the covariance of 40 000 sampled chains (twists drawn, composed exactly) within 4 %"""
+    rng = np.random.default_rng(9820)
+    T1 = _pose(1.2, [0.3, -0.5, 0.8], [1.0, -2.0, 0.5])
+    T2 = _pose(2.1, [-0.6, 0.2, 0.4], [3.0, 1.0, -1.0])
+    S1, S2 = _covariance(rng, 1e-6), _covariance(rng, 1e-6)
+    _, S = _pair(student.compound_pose_covariance(T1, S1, T2, S2))
+    inverse = np.linalg.inv(T1 @ T2)
+    draws1 = rng.multivariate_normal(np.zeros(6), S1, size=40_000)
+    draws2 = rng.multivariate_normal(np.zeros(6), S2, size=40_000)
+    errors = np.array([_log_se3(inverse @ T1 @ _exp_se3(a) @ T2 @ _exp_se3(b)) for a, b in zip(draws1, draws2)])
+    sampled = np.cov(errors.T)
+    scale = np.max(np.abs(sampled))
+    # sample covariance entries scatter by about sqrt(2 / 40 000) = 0.7 % of the scale: 4 % is over five of those
+    expect_close(S / scale, sampled / scale, 0.04, "S / |S| against Monte Carlo", _hint(S, T1, S1, T2, S2))
+
+
+@exercise("compound_pose_covariance", weight=1)
+def test_compound_lists_and_inputs(student):
+    """accepts plain lists, leaves its inputs unchanged, and returns a symmetric S"""
+    rng = np.random.default_rng(9830)
+    args = (
+        _pose(0.7, [1, 2, 3], [1, 0, 2]),
+        _covariance(rng, 1e-3),
+        _pose(1.9, [0, 1, -1], [0, 3, 1]),
+        _covariance(rng, 1e-3),
+    )
+    copies = [a.copy() for a in args]
+    T, S = _pair(student.compound_pose_covariance(*copies))
+    expect(
+        all(np.array_equal(a, b) for a, b in zip(args, copies)),
+        "compound_pose_covariance changed its inputs",
+        "work on copies",
+    )
+    T_lists, S_lists = _pair(student.compound_pose_covariance(*[a.tolist() for a in args]))
+    scale = np.max(np.abs(S))
+    expect_close(T_lists, T, 1e-14, "T with lists", "convert every argument with np.asarray(x, dtype=float)")
+    expect_close(
+        S_lists / scale, S / scale, 1e-14, "S with lists", "convert every argument with np.asarray(x, dtype=float)"
+    )
+    expect_close(
+        S / scale, S.T / scale, 1e-12, "S against its transpose", "a covariance takes the linear map on both sides"
+    )

@@ -1,0 +1,205 @@
+"""Hidden checks for lesson 09, section 6: filter_predict and attitude_nees.
+
+The error state is the right perturbation, R_true = R Exp(ε). Oracles: the definitions, differentiated here by
+central differences (scipy's Exp and Log), never a closed form.
+
+- filter_predict: R_new = R Exp(ω Δt) to 1e-12; P_new the first-order covariance of ε' with
+  R_new Exp(ε') = R Exp(ε) Exp((ω - n) Δt), n ~ N(0, Q), to 1e-7 of max |P_new|, for steps |ω Δt| at every decade
+  from 1e-12 to π. Core idea (3 of 5 points): the old error crosses the step's turn and the noise enters through
+  the step.
+- attitude_nees: εᵀ P⁻¹ ε with ε = Log(R_estᵀ R_true), to 1e-9 relative, for errors at every decade from 1e-12 to
+  π - 1e-9 (core, 3 of 5 points).
+Every test calls its own exercise's student function only.
+"""
+
+import numpy as np
+from coursekit import hints
+from scipy.spatial.transform import Rotation
+from scipy.stats import chi2
+
+from .helpers import Wrong, exercise, expect, expect_array, expect_close, expect_same_with_lists, random_rotations
+
+DECADES = (0.7, 2.0, 1e-12, 1e-9, 1e-6, 1e-3, 1e-2, 0.1, 3.0, np.pi - 1e-9)
+
+
+def _skew(v):
+    return np.column_stack([np.cross(np.asarray(v, dtype=float), e) for e in np.eye(3)])
+
+
+def _exp(w):
+    return Rotation.from_rotvec(np.asarray(w, dtype=float)).as_matrix()
+
+
+def _log(R):
+    return Rotation.from_matrix(R).as_rotvec()
+
+
+def _central(f, n, h=1e-6):
+    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
+
+
+def _unit(rng):
+    v = rng.normal(size=3)
+    return v / np.linalg.norm(v)
+
+
+def _covariance(rng, size):
+    A = rng.normal(size=(3, 3))
+    return size * (A @ A.T + 0.3 * np.eye(3))
+
+
+def _pair(value, what):
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise Wrong(f"{what} returned {type(value).__name__}, not a pair (R_new, P_new)", "return both: R_new, P_new")
+    return expect_array(value[0], (3, 3), f"{what}'s R_new"), expect_array(value[1], (3, 3), f"{what}'s P_new")
+
+
+def _first(got, candidates, truth, tol):
+    for candidate, hint in candidates:
+        if np.max(np.abs(candidate - truth)) > 10 * tol and np.max(np.abs(got - candidate)) <= tol:
+            return hint
+    return ""
+
+
+# ---------------------------------------------------------------- filter_predict
+def _predict_jacobians(R, omega, dt):
+    R_new = R @ _exp(omega * dt)
+    J = _central(lambda x: _log(R_new.T @ R @ _exp(x[:3]) @ _exp((omega - x[3:]) * dt)), 6, h=1e-5 * max(1.0, dt))
+    return J[:, :3], J[:, 3:]
+
+
+def _predict_hint(P_new, R, P, omega, dt, Q, truth, tol):
+    F, G = _predict_jacobians(R, omega, dt)
+    return _first(
+        P_new,
+        [
+            (P + G @ Q @ G.T, "P was not carried across the step: the old error must cross the step's turn"),
+            (F.T @ P @ F + G @ Q @ G.T, "the error crosses the step's turn the wrong way round"),
+            (
+                F @ P @ F.T + dt * dt * Q,
+                "the noise sits inside the step's Exp: the Jacobian of Exp there, which is not I",
+            ),
+            (
+                F @ P @ F.T + G @ Q @ G.T / dt,
+                "Q is in (rad/s)² and the noise turns the body by n Δt: it scales with dt²",
+            ),
+            (F @ P @ F.T, "the gyro noise must add to P"),
+            (F @ P @ F.T + G.T @ Q @ G, "the noise's Jacobian, to first order in ε and n, is the right one of Exp"),
+        ],
+        truth,
+        tol,
+    )
+
+
+def _predict_cases(seed):
+    rng = np.random.default_rng(seed)
+    for step in DECADES:
+        dt = float(rng.choice([0.005, 0.01, 0.1, 0.5]))
+        omega = step / dt * _unit(rng)
+        yield _exp(rng.uniform(0.2, 3.0) * _unit(rng)), _covariance(rng, 1e-3), omega, dt, _covariance(rng, 1e-2)
+
+
+@exercise("filter_predict", weight=3)
+def test_predict_covariance_first_order(student):
+    """P_new is the first-order covariance of the new error, to 1e-7, for steps |ω Δt| from 1e-12 to π"""
+    for R, P, omega, dt, Q in _predict_cases(9100):
+        _, P_new = _pair(student.filter_predict(R, P, omega, dt, Q), "filter_predict")
+        F, G = _predict_jacobians(R, omega, dt)
+        truth = F @ P @ F.T + G @ Q @ G.T
+        tol = 1e-7 * np.max(np.abs(truth))
+        expect_close(
+            P_new,
+            truth,
+            tol,
+            f"filter_predict's P_new for a step of {np.linalg.norm(omega * dt):.3g} rad",
+            _predict_hint(P_new, R, P, omega, dt, Q, truth, tol),
+        )
+
+
+@exercise("filter_predict", weight=1)
+def test_predict_attitude(student):
+    """R_new = R Exp(ω Δt) to 1e-12 for steps from 1e-12 to π"""
+    for R, P, omega, dt, Q in _predict_cases(9110):
+        R_new, _ = _pair(student.filter_predict(R, P, omega, dt, Q), "filter_predict")
+        truth = R @ _exp(omega * dt)
+        hint = ""
+        if np.max(np.abs(R_new - _exp(omega * dt) @ R)) < 1e-12:
+            hint = "that is the step on the world side: a gyro measures body rates, so the step goes on the right of R"
+        expect_close(
+            R_new, truth, 1e-12, f"filter_predict's R_new for a step of {np.linalg.norm(omega * dt):.3g} rad", hint
+        )
+
+
+@exercise("filter_predict", weight=1)
+def test_predict_accepts_lists(student):
+    """gives the same answer for plain lists as for arrays"""
+    rng = np.random.default_rng(9120)
+    args = (random_rotations(1, 9121)[0], _covariance(rng, 1e-3), [0.3, -1.0, 2.0], 0.05, _covariance(rng, 1e-2))
+    expect_same_with_lists(
+        lambda *a: np.vstack(student.filter_predict(*a)), args, (6, 3), "filter_predict(R, P, omega_meas, dt, Q)"
+    )
+
+
+# ---------------------------------------------------------------- attitude_nees
+def _nees_hint(got, R_true, R_est, P, truth):
+    e = _log(R_est.T @ R_true)
+    w = _log(R_true @ R_est.T)
+    d = _log(R_true) - _log(R_est)
+    candidates = [
+        (w @ np.linalg.solve(P, w), "that is a turn in world axes, Log(R_true R_estᵀ)"),
+        (e @ P @ e, "the NEES uses P's inverse"),
+        (truth / 3.0, hints.NEES_NOT_DIVIDED_HINT),
+        (np.sqrt(truth), "that is the Mahalanobis distance; the NEES is its square"),
+        (d @ np.linalg.solve(P, d), "rotation vectors do not subtract"),
+        (float(e @ (e / np.diag(P))), "the off-diagonal entries of P count too"),
+    ]
+    for value, hint in candidates:
+        if abs(value - truth) > 1e-6 * truth and abs(got - value) <= 1e-9 * max(truth, value):
+            return hint
+    return ""
+
+
+@exercise("attitude_nees", weight=3)
+def test_nees_definition(student):
+    """equals εᵀ P⁻¹ ε, ε = Log(R_estᵀ R_true), to 1e-9 relative (and Log's rounding) for errors from 1e-12 to π - 1e-9 rad"""
+    rng = np.random.default_rng(9300)
+    for angle in DECADES:
+        R_est = _exp(rng.uniform(0.1, 3.0) * _unit(rng))
+        P = _covariance(rng, float(rng.choice([1e-6, 1e-2, 1.0])))
+        e = angle * _unit(rng)
+        R_true = R_est @ _exp(e)
+        truth = float(e @ np.linalg.solve(P, e))
+        value = expect_array(student.attitude_nees(R_true, R_est, P), (), "attitude_nees(R_true, R_est, P)")
+        expect_close(
+            float(value),
+            truth,
+            1e-9 * truth + 1e-14 * np.linalg.norm(np.linalg.solve(P, e)),  # and Log's rounding, 5e-15 rad
+            f"attitude_nees for an error of {angle:.3g} rad",
+            _nees_hint(float(value), R_true, R_est, P, truth),
+        )
+
+
+@exercise("attitude_nees", weight=1)
+def test_nees_chi_square(student):
+    """errors drawn from N(0, P) give an average NEES in the 99 % χ² band (400 draws)"""
+    rng = np.random.default_rng(9310)
+    P = _covariance(rng, 1e-2)
+    values = []
+    for _ in range(400):
+        R_est = _exp(rng.uniform(0.1, 3.0) * _unit(rng))
+        R_true = R_est @ _exp(rng.multivariate_normal(np.zeros(3), P))
+        values.append(float(expect_array(student.attitude_nees(R_true, R_est, P), (), "attitude_nees")))
+    low, high = chi2.ppf(0.005, 1200) / 400, chi2.ppf(0.995, 1200) / 400
+    average = float(np.mean(values))
+    expect(
+        low <= average <= high,
+        f"the average NEES is {average:.3g}, outside the 99 % χ² band [{low:.3g}, {high:.3g}]",
+        "for a consistent error the NEES averages the dimension, 3",
+    )
+
+
+@exercise("attitude_nees", weight=1)
+def test_nees_accepts_lists(student):
+    """gives the same answer for plain lists as for arrays"""
+    R = random_rotations(2, 9320)
+    expect_same_with_lists(student.attitude_nees, (R[0], R[1], np.diag([0.1, 0.2, 0.3])), (), "attitude_nees")

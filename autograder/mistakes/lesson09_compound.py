@@ -1,0 +1,86 @@
+"""Typical mistakes and correct alternatives for lesson 09, section 4: compound_pose_covariance."""
+
+from . import Alternative, Mistake
+
+_COMPOUND = """
+def compound_pose_covariance(T1, S1, T2, S2):
+    T1 = np.asarray(T1, dtype=float)
+    T2 = np.asarray(T2, dtype=float)
+    S1 = np.asarray(S1, dtype=float)
+    S2 = np.asarray(S2, dtype=float)
+    A = {adjoint}
+    return {pose}, {carried} + S2
+"""
+
+
+def _compound(adjoint="AdSE3(np.linalg.inv(T2))", pose="T1 @ T2", carried="A @ S1 @ A.T"):
+    return _COMPOUND.format(adjoint=adjoint, pose=pose, carried=carried)
+
+
+MISTAKES = [
+    Mistake(
+        "compound_no_transport",
+        "compound_pose_covariance",
+        "S1 + S2: the first twist not carried across T2",
+        _compound(carried="S1"),
+        hint="carried across T2",
+        public_hint="S1 was not carried across T2",
+        classic=True,
+    ),
+    Mistake(
+        "compound_wrong_way",
+        "compound_pose_covariance",
+        "Ad(T2) instead of Ad(T2⁻¹)",
+        _compound(adjoint="AdSE3(T2)"),
+        hint="the adjoint goes the other way",
+        public_hint="the adjoint goes the other way",
+    ),
+    Mistake(
+        "compound_other_pose",
+        "compound_pose_covariance",
+        "Ad(T1⁻¹): the adjoint of the wrong factor",
+        _compound(adjoint="AdSE3(np.linalg.inv(T1))"),
+        hint="gathering both twists on the right",
+        public_hint="belongs to the factor it passes",
+    ),
+    Mistake(
+        "compound_rotation_only",
+        "compound_pose_covariance",
+        "diag(R2ᵀ, R2ᵀ): the coupling block forgotten",
+        _compound(adjoint="np.kron(np.eye(2), T2[:3, :3].T)"),
+        hint="coupling block",
+        public_hint="coupling block",
+    ),
+    Mistake(
+        "compound_one_sided",
+        "compound_pose_covariance",
+        "A S1 + S2: the map on one side only",
+        _compound(carried="A @ S1"),
+        hint="on both sides",
+        public_hint="on both sides",
+    ),
+    Mistake(
+        "compound_swapped",
+        "compound_pose_covariance",
+        "T = T2 T1",
+        _compound(pose="T2 @ T1"),
+        hint="T2 T1 is the other chain",
+        public_hint="T2 T1 is the other chain",
+    ),
+]
+
+ALTERNATIVES = [
+    Alternative(
+        "compound_by_blocks",
+        "compound_pose_covariance",
+        "the adjoint of T2⁻¹ written by blocks, lists returned",
+        """
+def compound_pose_covariance(T1, S1, T2, S2):
+    T1, T2 = np.asarray(T1, dtype=float), np.asarray(T2, dtype=float)
+    R, t = T2[:3, :3].T, -T2[:3, :3].T @ T2[:3, 3]
+    A = np.block([[R, skew(t) @ R], [np.zeros((3, 3)), R]])
+    S = A @ np.asarray(S1, dtype=float) @ A.T + np.asarray(S2, dtype=float)
+    return (T1 @ T2).tolist(), S.tolist()
+""",
+    ),
+]

@@ -1,0 +1,96 @@
+"""Typical mistakes and correct alternatives for lesson 09, section 6: the filter's update with a measured direction."""
+
+from . import Alternative, Mistake
+
+_UPDATE = """
+def filter_update(R, P, y, g_w, Rn):
+    R, P = np.asarray(R, dtype=float), np.asarray(P, dtype=float)
+    g_w = np.asarray(g_w, dtype=float)
+    g_b = R.T @ g_w
+    H = {H}
+    S = H @ P @ H.T + np.asarray(Rn, dtype=float)
+    K = np.linalg.solve(S, H @ P).T
+    delta = K @ (np.asarray(y, dtype=float) - g_b)
+    return {R_new}, {P_new}
+"""
+
+
+def _update(H="skew(g_b)", R_new="R @ Exp(delta)", P_new="(np.eye(3) - K @ H) @ P"):
+    return _UPDATE.format(H=H, R_new=R_new, P_new=P_new)
+
+
+MISTAKES = [
+    Mistake(
+        "update_left_jacobian",
+        "filter_update",
+        "H = Rᵀ [g_w]×: the measurement Jacobian of a left error",
+        _update(H="R.T @ skew(g_w)"),
+        hint="belongs to a left (world-frame) error",
+        public_hint="belongs to a left (world-frame) error",
+        classic=True,
+    ),
+    Mistake(
+        "update_sign",
+        "filter_update",
+        "H = -[Rᵀ g_w]×: the sign of Exp(-ε) lost",
+        _update(H="-skew(g_b)"),
+        hint="moves away from the measurement",
+        public_hint="moves away from the measurement",
+    ),
+    Mistake(
+        "update_no_attitude",
+        "filter_update",
+        "H = [g_w]×: the attitude forgotten",
+        _update(H="skew(g_w)"),
+        hint="must depend on the attitude R",
+        public_hint="must depend on the attitude R",
+    ),
+    Mistake(
+        "update_left_correction",
+        "filter_update",
+        "R ← Exp(δ) R: the correction applied on the left",
+        _update(R_new="Exp(delta) @ R"),
+        hint="applied on the wrong side",
+        public_hint="applied on the wrong side",
+    ),
+    Mistake(
+        "update_covariance_kept",
+        "filter_update",
+        "P_new = P: the covariance not updated",
+        _update(P_new="P"),
+        hint="a measurement adds information",
+        public_hint="a measurement adds information",
+    ),
+]
+
+ALTERNATIVES = [
+    Alternative(
+        "update_information_form",
+        "filter_update",
+        "the information form (P⁻¹ + Hᵀ Rn⁻¹ H)⁻¹, H by the cross product of the predicted direction, lists returned",
+        """
+def filter_update(R, P, y, g_w, Rn):
+    R = np.asarray(R, dtype=float)
+    predicted = R.T @ np.asarray(g_w, dtype=float)
+    H = -np.column_stack([np.cross(e, predicted) for e in np.eye(3)])
+    information = np.linalg.inv(np.asarray(P, dtype=float)) + H.T @ np.linalg.solve(np.asarray(Rn, dtype=float), H)
+    P_new = np.linalg.inv(information)
+    delta = P_new @ H.T @ np.linalg.solve(np.asarray(Rn, dtype=float), np.asarray(y, dtype=float) - predicted)
+    return [(R @ Exp(delta)).tolist(), P_new.tolist()]
+""",
+    ),
+    Alternative(
+        "update_joseph_form",
+        "filter_update",
+        "the Joseph form (I - K H) P (I - K H)ᵀ + K Rn Kᵀ of the same covariance",
+        """
+def filter_update(R, P, y, g_w, Rn):
+    R, P, Rn = (np.asarray(a, dtype=float) for a in (R, P, Rn))
+    predicted = R.T @ np.asarray(g_w, dtype=float)
+    H = skew(predicted)
+    K = P @ H.T @ np.linalg.inv(H @ P @ H.T + Rn)
+    A = np.eye(3) - K @ H
+    return R @ Exp(K @ (np.asarray(y, dtype=float) - predicted)), A @ P @ A.T + K @ Rn @ K.T
+""",
+    ),
+]

@@ -1,0 +1,238 @@
+"""Public checks for lesson 07, section 10: the adjoint of a pose and three Jacobians.
+
+The checks use a quarter turn and a shift written out by hand, the defining identities
+(T Exp(ξ) T⁻¹ = Exp(Ad_T ξ), Exp(ξ + dξ) ≈ Exp(ξ) Exp(J dξ)), central differences of those definitions
+(computed here with the course's ``ExpSE3`` and ``LogSE3``), exact identities a true Jacobian of Exp
+satisfies (J(-ξ) = Ad_Exp(ξ) J(ξ) and J(ξ) ξ = ξ), and, to name a slip of the adjoint or of the point
+Jacobian, the values of the usual slips at the checks' fixed inputs stored as numbers
+(``tests/test_public_check_constants_lesson07_adjoint.py`` recomputes every one of them).
+"""
+
+import numpy as np
+
+from .. import hints
+from ..checking import Mismatch, public_check
+from ..diagnose import close
+from ..lie import AdSE3, ExpSE3, LogSE3, skew
+from .common import off_by, require_same_with_lists, require_shape
+
+# A quarter turn about z (x goes to y) and a shift, written out.
+QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+SHIFT = np.array([1.0, 2.0, 3.0])
+T_QUARTER = np.array([[0.0, -1.0, 0.0, 1.0],
+                      [1.0, 0.0, 0.0, 2.0],
+                      [0.0, 0.0, 1.0, 3.0],
+                      [0.0, 0.0, 0.0, 1.0]])
+
+
+def _first_match(got, candidates, tol=1e-6):
+    """The hint of the first candidate (a slip's value at the check's inputs) that ``got`` equals."""
+    for candidate, hint in candidates:
+        if np.shape(got) == np.shape(candidate) and close(got, candidate, tol):
+            return hint
+    return None
+
+
+def _central(f, n, h=1e-6):
+    """Central differences of the vector function f(d) of a small n-vector d, at d = 0."""
+    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
+
+
+def _unchanged_inputs(function, args, what):
+    """Call ``function`` on copies and complain if it changed them."""
+    copies = [np.array(a, dtype=float) for a in args]
+    function(*copies)
+    for before, after in zip(args, copies):
+        if not np.array_equal(np.asarray(before, dtype=float), after):
+            raise Mismatch(f"{what} changed its input array", "work on a copy (np.array(x, dtype=float)), "
+                           "never on the caller's array")
+
+
+# ---------------------------------------------------------------- adjoint_se3
+XI = np.array([0.3, -0.2, 0.5, 0.2, 0.4, -0.3])
+ADJ_ROTATION_FIRST = np.array([[0.0, -1.0, 0.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                               [0.0, 0.0, 1.0, 0.0, 0.0, 0.0], [-3.0, 0.0, 2.0, 0.0, -1.0, 0.0],
+                               [0.0, -3.0, -1.0, 1.0, 0.0, 0.0], [1.0, 2.0, 0.0, 0.0, 0.0, 1.0]])
+ADJ_NO_COUPLING = np.array([[0.0, -1.0, 0.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                            [0.0, 0.0, 1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0, -1.0, 0.0],
+                            [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0, 0.0, 1.0]])
+ADJ_COUPLING_WITHOUT_R = np.array([[0.0, -1.0, 0.0, 0.0, -3.0, 2.0], [1.0, 0.0, 0.0, 3.0, 0.0, -1.0],
+                                   [0.0, 0.0, 1.0, -2.0, 1.0, 0.0], [0.0, 0.0, 0.0, 0.0, -1.0, 0.0],
+                                   [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0, 0.0, 1.0]])
+ADJ_COUPLING_SIGN = np.array([[0.0, -1.0, 0.0, 3.0, 0.0, -2.0], [1.0, 0.0, 0.0, 0.0, 3.0, 1.0],
+                              [0.0, 0.0, 1.0, -1.0, -2.0, 0.0], [0.0, 0.0, 0.0, 0.0, -1.0, 0.0],
+                              [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0, 0.0, 1.0]])
+ADJ_COUPLING_R_FIRST = np.array([[0.0, -1.0, 0.0, -3.0, 0.0, 1.0], [1.0, 0.0, 0.0, 0.0, -3.0, 2.0],
+                                 [0.0, 0.0, 1.0, -2.0, 1.0, 0.0], [0.0, 0.0, 0.0, 0.0, -1.0, 0.0],
+                                 [0.0, 0.0, 0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0, 0.0, 1.0]])
+ROTATION_FIRST_HINT = ("the coupling block sits bottom-left: that is the layout for twists written rotation first; "
+                       "here xi = [rho, phi], so it multiplies phi in the translation rows (top-right)")
+NO_COUPLING_HINT = ("diag(R, R) is the adjoint of a pure rotation: with a translation t, a spin also moves the origin, "
+                    "so the translation rows need a block that multiplies phi")
+COUPLING_WITHOUT_R_HINT = "the spin phi is turned by R before it meets t: the coupling block is a product with R in it"
+COUPLING_SIGN_HINT = ("the coupling block has the wrong sign: check the step that moves phi to the right of the cross "
+                      "product, a × b = -b × a")
+COUPLING_ORDER_HINT = "R [t]× has the factors in the wrong order: the spin is turned first (R phi), then crossed with t"
+ADJOINT_SLIPS = [(ADJ_ROTATION_FIRST, ROTATION_FIRST_HINT), (ADJ_NO_COUPLING, NO_COUPLING_HINT),
+                 (ADJ_COUPLING_WITHOUT_R, COUPLING_WITHOUT_R_HINT), (ADJ_COUPLING_SIGN, COUPLING_SIGN_HINT),
+                 (ADJ_COUPLING_R_FIRST, COUPLING_ORDER_HINT)]
+
+
+def _twist_matrix(xi):
+    M = np.zeros((4, 4))
+    M[:3, :3], M[:3, 3] = skew(xi[3:]), xi[:3]
+    return M
+
+
+@public_check("adjoint_se3", "T Exp(ξ) T⁻¹ = Exp(Ad_T ξ) for a quarter turn about z and a shift of (1, 2, 3)")
+def _(adjoint_se3):
+    from scipy.linalg import expm
+
+    Ad = require_shape(adjoint_se3(T_QUARTER), (6, 6), "adjoint_se3(T)")
+    conjugated = T_QUARTER @ expm(_twist_matrix(XI)) @ np.linalg.inv(T_QUARTER)
+    got = expm(_twist_matrix(Ad @ XI))
+    if not close(got, conjugated, 1e-9):
+        hint = _first_match(Ad, ADJOINT_SLIPS) or ("conjugate the twist matrix block by block, T ξ^ T⁻¹, and read "
+                                                    "off how its rho and phi parts depend on those of ξ")
+        raise Mismatch(f"Exp(Ad_T ξ) misses T Exp(ξ) T⁻¹ ({off_by(got, conjugated)})", hint)
+
+
+@public_check("adjoint_se3", "Ad(T1 T2) = Ad(T1) Ad(T2), and Ad(I) = I")
+def _(adjoint_se3):
+    T2 = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, -1.0, -1.0], [0.0, 1.0, 0.0, 0.5], [0.0, 0.0, 0.0, 1.0]])
+    identity = require_shape(adjoint_se3(np.eye(4)), (6, 6), "adjoint_se3(I)")
+    if not close(identity, np.eye(6), 1e-12):
+        raise Mismatch(f"Ad(I) is not the 6×6 identity ({off_by(identity, np.eye(6))})",
+                       "conjugating by the identity changes nothing")
+    product = require_shape(adjoint_se3(T_QUARTER @ T2), (6, 6), "adjoint_se3(T1 T2)")
+    separate = require_shape(adjoint_se3(T_QUARTER), (6, 6), "adjoint_se3(T1)") @ \
+        require_shape(adjoint_se3(T2), (6, 6), "adjoint_se3(T2)")
+    if not close(product, separate, 1e-9):
+        raise Mismatch(f"Ad(T1 T2) differs from Ad(T1) Ad(T2) ({off_by(product, separate)})",
+                       "conjugating by T1 T2 is conjugating by T2, then by T1: the adjoint must respect that")
+
+
+@public_check("adjoint_se3", "accepts plain lists and leaves its input unchanged")
+def _(adjoint_se3):
+    require_same_with_lists(adjoint_se3, (T_QUARTER,), (6, 6), "adjoint_se3(T)")
+    _unchanged_inputs(adjoint_se3, (T_QUARTER,), "adjoint_se3")
+
+
+# ---------------------------------------------------------------- jacobian_transform_point
+POINT = np.array([1.0, -2.0, 0.5])
+JTP_ROTATION_FIRST = np.array([[0.5, 0.0, -1.0, 0.0, -1.0, 0.0], [0.0, 0.5, 2.0, 1.0, 0.0, 0.0],
+                               [-2.0, -1.0, 0.0, 0.0, 0.0, 1.0]])
+JTP_TRANSLATION_I = np.array([[1.0, 0.0, 0.0, 0.5, 0.0, -1.0], [0.0, 1.0, 0.0, 0.0, 0.5, 2.0],
+                              [0.0, 0.0, 1.0, -2.0, -1.0, 0.0]])
+JTP_LEFT = np.array([[1.0, 0.0, 0.0, 0.0, 3.5, -3.0], [0.0, 1.0, 0.0, -3.5, 0.0, 3.0],
+                     [0.0, 0.0, 1.0, 3.0, -3.0, 0.0]])
+JTP_SIGN = np.array([[0.0, -1.0, 0.0, -0.5, 0.0, 1.0], [1.0, 0.0, 0.0, 0.0, -0.5, -2.0],
+                     [0.0, 0.0, 1.0, 2.0, 1.0, 0.0]])
+JTP_WORLD_ROTATION = np.array([[0.0, -1.0, 0.0, 0.0, 0.5, -1.0], [1.0, 0.0, 0.0, -0.5, 0.0, 2.0],
+                               [0.0, 0.0, 1.0, 1.0, -2.0, 0.0]])
+POINT_ROTATION_FIRST_HINT = "xi = [rho, phi]: the first three columns are for the translation rho, the last three for phi"
+POINT_TRANSLATION_HINT = ("rho is a shift in the body frame: T turns it into the world, so its block is R, not I "
+                          "(I belongs to a left perturbation)")
+POINT_LEFT_HINT = ("[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T; for T Exp(xi) both blocks carry R")
+POINT_SIGN_HINT = hints.SIGN_ROTATION_BLOCK_PHI_HINT
+POINT_WORLD_ROTATION_HINT = ("-[R p]× is the rotation block of a left perturbation; for T Exp(xi) the turn is about "
+                             "body axes, so the block is R times lesson 06's rotated-point block")
+POINT_SLIPS = [(JTP_ROTATION_FIRST, POINT_ROTATION_FIRST_HINT), (JTP_TRANSLATION_I, POINT_TRANSLATION_HINT),
+               (JTP_LEFT, POINT_LEFT_HINT), (JTP_SIGN, POINT_SIGN_HINT), (JTP_WORLD_ROTATION, POINT_WORLD_ROTATION_HINT)]
+
+
+@public_check("jacobian_transform_point", "matches finite differences of T Exp(ξ) p (quarter turn, shift (1, 2, 3))")
+def _(jacobian_transform_point):
+    J = require_shape(jacobian_transform_point(T_QUARTER, POINT), (3, 6), "jacobian_transform_point(T, p)")
+    numeric = _central(lambda xi: (T_QUARTER @ ExpSE3(xi) @ np.append(POINT, 1.0))[:3], 6)
+    if not close(J, numeric, 1e-6):
+        raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
+                       _first_match(J, POINT_SLIPS) or "expand T (I + ξ^) [p; 1] and collect the terms in rho and phi")
+
+
+@public_check("jacobian_transform_point", "accepts plain lists and leaves its inputs unchanged")
+def _(jacobian_transform_point):
+    require_same_with_lists(jacobian_transform_point, (T_QUARTER, POINT), (3, 6), "jacobian_transform_point(T, p)")
+    _unchanged_inputs(jacobian_transform_point, (T_QUARTER, POINT), "jacobian_transform_point")
+
+
+# ---------------------------------------------------------------- right_jacobian_se3
+# A twist of about 1 rad with |rho| ≈ 2 m; one tiny turn; one of 3.08 rad with |rho| ≈ 37 m.
+XI_MODERATE = np.array([0.8, -1.5, 1.1, 0.6, -0.3, 0.7])
+XI_TINY = np.array([0.5, 0.2, -0.4, 3e-7, -2e-7, 6e-7])
+XI_LARGE = np.array([30.0, -20.0, 10.0, 1.5, 2.0, -1.8])
+JR_NO_COUPLING_HINT = ("the top-right block is zero: with a translation part rho, a change of phi also changes the "
+                       "translation of Exp(ξ), so that block couples the two")
+JR_SIGN_HINT = "the coupling (top-right) block has the wrong sign; the diagonal blocks are right"
+JR_LEFT_HINT = ("that is the left Jacobian, Exp(ξ + dξ) ≈ Exp(J dξ) Exp(ξ); here the small step goes on the right: "
+                "carry the nudge felt at instant s to the end of the motion, Exp(-s ξ)")
+JR_INVERSE_HINT = "that is the inverse of the Jacobian of Exp (the Jacobian of Log); return J itself"
+JR_SERIES_HINT = ("exact at a tiny angle but not at {angle}: a series cut off after a few terms; near π its terms "
+                  "shrink slowly, so sum many more (or use a closed form or a quadrature rule)")
+JR_DIFFERENCES_HINT = ("close but not exact ({error}): finite differences stop near 1e-8; these identities need an "
+                       "exact route (a closed form, a long enough series or a quadrature rule)")
+
+
+def _numeric_jr(xi):
+    base_inverse = np.linalg.inv(ExpSE3(xi))
+    return _central(lambda d: LogSE3(base_inverse @ ExpSE3(xi + d)), 6)
+
+
+def _jr(right_jacobian_se3, xi, what="right_jacobian_se3(xi)"):
+    return require_shape(right_jacobian_se3(xi), (6, 6), what)
+
+
+@public_check("right_jacobian_se3", "matches central differences of Log(Exp(ξ)⁻¹ Exp(ξ + dξ)) at θ ≈ 1 (|ρ| ≈ 2 m)")
+def _(right_jacobian_se3):
+    xi = XI_MODERATE
+    J = _jr(right_jacobian_se3, xi)
+    numeric = _numeric_jr(xi)
+    scale = 1.0 + np.linalg.norm(xi[:3])
+    if close(J, numeric, 1e-7 * scale):
+        return
+    hint = "compare Exp(ξ + dξ) with Exp(ξ) Exp(J dξ) for a small dξ: J must make them agree to first order"
+    if close(J[:3, 3:], np.zeros((3, 3)), 1e-12):
+        hint = JR_NO_COUPLING_HINT
+    elif close(J[:3, :3], numeric[:3, :3], 1e-6) and close(J[:3, 3:], -numeric[:3, 3:], 1e-6 * scale):
+        hint = JR_SIGN_HINT
+    elif close(J @ numeric, np.eye(6), 1e-6 * scale):
+        hint = JR_INVERSE_HINT
+    elif close(_jr(right_jacobian_se3, -xi, "right_jacobian_se3(-xi)"), numeric, 1e-6 * scale):
+        hint = JR_LEFT_HINT
+    raise Mismatch(f"J disagrees with finite differences of its definition ({off_by(J, numeric)})", hint)
+
+
+@public_check("right_jacobian_se3", "exact identities of the true Jacobian, to 1e-11 (1 + |ρ|): J(-ξ) = Ad_Exp(ξ) J(ξ) "
+              "and J(ξ) ξ = ξ, at θ = 7e-7, 1 and 3.08 (|ρ| up to 37 m)")
+def _(right_jacobian_se3):
+    tiny_passed = False
+    for xi in (XI_TINY, XI_MODERATE, XI_LARGE):
+        scale = 1.0 + np.linalg.norm(xi[:3])
+        angle = f"θ = {np.linalg.norm(xi[3:]):.3g}"
+        J = _jr(right_jacobian_se3, xi)
+        J_minus = _jr(right_jacobian_se3, -xi, "right_jacobian_se3(-xi)")
+        flipped = AdSE3(ExpSE3(xi)) @ J
+        errors = [np.max(np.abs(J_minus - flipped)), np.max(np.abs(J @ xi - xi))]
+        error = max(errors) / scale
+        if error <= 1e-11:
+            tiny_passed = tiny_passed or xi is XI_TINY
+            continue
+        if tiny_passed and error > 1e-5:
+            hint = JR_SERIES_HINT.format(angle=angle)
+        elif error < 1e-5:
+            hint = JR_DIFFERENCES_HINT.format(error=f"off by {error * scale:.2g}")
+        else:
+            hint = ("J(-ξ) = Ad_Exp(ξ) J(ξ) says the left and right Jacobians are one matrix seen from the two ends "
+                    "of the motion; check the coupling block and the sign of each term")
+        which = "J(-ξ) ≠ Ad_Exp(ξ) J(ξ)" if errors[0] >= errors[1] else "J(ξ) ξ ≠ ξ"
+        raise Mismatch(f"{which} at {angle}, |ρ| = {np.linalg.norm(xi[:3]):.3g} m ({error * scale:.2g})", hint)
+
+
+@public_check("right_jacobian_se3", "J(0) = I, accepts plain lists and leaves its input unchanged")
+def _(right_jacobian_se3):
+    J0 = _jr(right_jacobian_se3, np.zeros(6), "right_jacobian_se3(0)")
+    if not close(J0, np.eye(6), 1e-14):
+        raise Mismatch(f"J(0) is not the identity ({off_by(J0, np.eye(6))})",
+                       "at ξ = 0 the motion is not bent at all: Exp(dξ) = Exp(0) Exp(dξ)")
+    require_same_with_lists(right_jacobian_se3, (XI_MODERATE,), (6, 6), "right_jacobian_se3(xi)")
+    _unchanged_inputs(right_jacobian_se3, (XI_MODERATE,), "right_jacobian_se3")

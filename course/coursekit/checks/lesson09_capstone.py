@@ -1,0 +1,112 @@
+"""Public checks for lesson 09, section 7: the capstone, hand_eye_rotation.
+
+Judged by the result only: the angle of the returned X from the truth, on datasets drawn here with fixed seeds
+(the hidden checks draw their own), against 5 σ_X, the first-order spread of the best estimate computed here from
+the noise and the good pairs (or 1e-9 rad for exact data).
+"""
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from .. import hints
+from ..checking import Mismatch, public_check
+from ..diagnose import rotation_problem
+from ..lie import Exp, Log, skew
+from .common import require_shape
+
+
+def _dataset(seed, pairs, sigma, outliers):
+    rng = np.random.default_rng(seed)
+    X = Rotation.random(random_state=rng).as_matrix()
+    Bs, As, information = [], [], np.zeros((3, 3))
+    for _ in range(pairs):
+        axis = rng.normal(size=3)
+        B = Exp(rng.uniform(0.3, 2.5) * axis / np.linalg.norm(axis))
+        Bs.append(B)
+        As.append(X @ B @ X.T @ Exp(sigma * rng.normal(size=3)))
+    wrong = rng.choice(pairs, outliers, replace=False)
+    for i in wrong:
+        As[i] = Rotation.random(random_state=rng).as_matrix()
+    for i in sorted(set(range(pairs)) - set(wrong)):
+        information += skew(Log(Bs[i])).T @ skew(Log(Bs[i]))
+    spread = sigma * np.sqrt(np.trace(np.linalg.inv(information)))
+    return np.array(As), np.array(Bs), X, spread
+
+
+def _answer(hand_eye_rotation, As, Bs):
+    X = require_shape(hand_eye_rotation(As, Bs), (3, 3), "hand_eye_rotation(As, Bs)")
+    problem = rotation_problem(X)
+    if problem:
+        raise Mismatch(
+            f"hand_eye_rotation returned a matrix that is not a rotation: {problem}",
+            "X must be a rotation: a linear least-squares fit of a 3×3 matrix is not one until you "
+            "project it onto SO(3) (lesson 08)",
+        )
+    return X
+
+
+def _angle(X, Y):
+    return float(np.linalg.norm(Log(X.T @ Y)))
+
+
+def _hint(X, As, Bs, X_true):
+    if _angle(X.T, X_true) < 0.05:
+        return (
+            "that is Xᵀ: in A X = X B, X carries B's frame into A's; check your answer on one exact pair, "
+            "A X against X B"
+        )
+    if _angle(X, _fit_all(As[:2], Bs[:2])) < 1e-9 or _angle(X, _fit_all(As[:1], Bs[:1])) < 1e-9:
+        return "the answer comes from the first pairs alone: the noise averages out only over all the good pairs"
+    if _angle(X, _fit_all(As, Bs)) < 1e-9:
+        return (
+            "every pair was trusted equally, and the wrong ones pulled the answer away: find out which pairs "
+            "disagree with most of the others, and leave them out"
+        )
+    return "compare your X with the truth pair by pair: which pairs does it explain, and which not?"
+
+
+def _fit_all(As, Bs):
+    """The rotation that one equally weighted fit of all the given pairs returns (to recognise that slip)."""
+    a = np.array([Log(A) for A in As])
+    b = np.array([Log(B) for B in Bs])
+    U, _, Vt = np.linalg.svd(a.T @ b)
+    return U @ np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ Vt
+
+
+@public_check("hand_eye_rotation", "recovers X to 1e-9 rad from 10 exact pairs")
+def _(hand_eye_rotation):
+    As, Bs, X_true, _ = _dataset(90, 10, 0.0, 0)
+    X = _answer(hand_eye_rotation, As, Bs)
+    if _angle(X, X_true) > 1e-9:
+        raise Mismatch(f"X is {_angle(X, X_true):.3g} rad from the truth on exact data", _hint(X, As, Bs, X_true))
+
+
+@public_check("hand_eye_rotation", "within 5 σ_X of the truth: 20 pairs, σ = 0.01 rad, 4 outliers")
+def _(hand_eye_rotation):
+    As, Bs, X_true, spread = _dataset(91, 20, 0.01, 4)
+    X = _answer(hand_eye_rotation, As, Bs)
+    if _angle(X, X_true) > 5 * spread:
+        raise Mismatch(
+            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
+            _hint(X, As, Bs, X_true),
+        )
+
+
+@public_check("hand_eye_rotation", "within 5 σ_X: 30 pairs, σ = 0.03 rad, 12 outliers; accepts lists, keeps inputs")
+def _(hand_eye_rotation):
+    As, Bs, X_true, spread = _dataset(92, 30, 0.03, 12)
+    copies = [As.copy(), Bs.copy()]
+    X = _answer(hand_eye_rotation, *copies)
+    if not (np.array_equal(copies[0], As) and np.array_equal(copies[1], Bs)):
+        raise Mismatch("hand_eye_rotation changed its input arrays", "work on copies (np.array(x, dtype=float))")
+    if _angle(X, X_true) > 5 * spread:
+        raise Mismatch(
+            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
+            _hint(X, As, Bs, X_true),
+        )
+    from_lists = _answer(hand_eye_rotation, As.tolist(), Bs.tolist())
+    if _angle(from_lists, X) > 1e-12:
+        raise Mismatch(
+            hints.HAND_EYE_LISTS_REASON,
+            "convert the arguments with np.asarray(x, dtype=float) first",
+        )

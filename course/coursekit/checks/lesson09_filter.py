@@ -1,0 +1,221 @@
+"""Public checks for lesson 09, section 6: the attitude filter's prediction and its consistency test (NEES).
+
+The error state is the right perturbation, R_true = R Exp(ε). The prediction's covariance is compared with the
+first-order covariance of its definition, whose Jacobians the checks take by central differences (scipy's Exp);
+the NEES with its value where P = L Lᵀ and ε = L u (so that the NEES is |u|²) and with its invariance under a
+common turn. The values the usual slips return at the checks' fixed inputs are stored as numbers
+(``tests/test_public_check_constants_lesson09_filter.py`` recomputes them from their definitions).
+"""
+
+import numpy as np
+
+from .. import hints
+from ..checking import Mismatch, public_check
+from ..diagnose import close
+from ..lie import Exp, Log
+from .common import off_by, require_same_with_lists, require_shape
+
+QUARTER_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
+QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+P0 = np.array([[4.0, 1.0, 0.0], [1.0, 3.0, -1.0], [0.0, -1.0, 2.0]]) * 1e-3
+OMEGA = np.array([2.0, -1.0, 3.0])  # rad/s
+DT = 0.25  # s: a long step, so that every first-order term shows
+Q_GYRO = np.array([[9.0, 0.0, 2.0], [0.0, 1.0, 0.0], [2.0, 0.0, 4.0]]) * 1e-2
+
+# What the usual slips return for filter_predict(QUARTER_Z, P0, OMEGA, DT, Q_GYRO)'s covariance.
+PREDICT_NOT_CARRIED = np.array(
+    [
+        [0.009100175052334604, -0.000451088209824607, 0.0011357971902082997],
+        [-0.0004510882098246072, 0.004152836377555839, -0.0009969586808962075],
+        [0.0011357971902082997, -0.0009969586808962075, 0.0041839769117700525],
+    ]
+)
+PREDICT_WRONG_WAY = np.array(
+    [
+        [0.0075462786076198815, -0.001365231216613687, 0.0020319417246335014],
+        [-0.0013652312166136866, 0.0056052875231580885, 0.0007630712356061859],
+        [0.0020319417246335014, 0.000763071235606186, 0.0042854222108825255],
+    ]
+)
+PREDICT_NO_JR = np.array(
+    [
+        [0.009353197689496644, -0.0010478571086972358, 0.00019649744716920825],
+        [-0.0010478571086972358, 0.00269911846339176, -0.00028075639229964216],
+        [0.00019649744716920868, -0.00028075639229964205, 0.0056976838471115955],
+    ]
+)
+PREDICT_NOISE_DT = np.array(
+    [
+        [0.024128897898835055, -0.006852209947995664, 0.0034896862080024066],
+        [-0.006852209947995664, 0.006685463973615118, -0.0002685911158844717],
+        [0.0034896862080024075, -0.0002685911158844717, 0.011933591494191808],
+    ]
+)
+PREDICT_NO_NOISE = np.array(
+    [
+        [0.0037281976894966437, -0.0010478571086972358, -0.0010535025528307918],
+        [-0.0010478571086972358, 0.00207411846339176, -0.00028075639229964216],
+        [-0.0010535025528307913, -0.00028075639229964205, 0.0031976838471115955],
+    ]
+)
+PREDICT_LEFT_JACOBIAN = np.array(
+    [
+        [0.00825342713624529, 0.00013404522039368676, 0.0007141248518997437],
+        [0.00013404522039368676, 0.003111152451000655, -0.00013585714551084323],
+        [0.0007141248518997441, -0.00013585714551084304, 0.006072408754414548],
+    ]
+)
+PREDICT_SLIPS = [
+    (
+        PREDICT_NOT_CARRIED,
+        "P was not carried through the step: the old error ε sits before the step's Exp, and "
+        "reaches the new attitude only after crossing that turn",
+    ),
+    (PREDICT_WRONG_WAY, "the error crosses the step's turn the wrong way round: check which of Exp(±ω Δt) it meets"),
+    (
+        PREDICT_NO_JR,
+        "the noise enters inside the step's Exp: splitting it off to first order needs the Jacobian of "
+        "Exp at the step, which is not I for a long step",
+    ),
+    (
+        PREDICT_NOISE_DT,
+        "Q is in (rad/s)², and the noise turns the body by n Δt: its covariance scales with dt², not dt",
+    ),
+    (
+        PREDICT_NO_NOISE,
+        "the gyro's noise makes the truth drift from the estimate: P must grow by the covariance it adds",
+    ),
+    (PREDICT_LEFT_JACOBIAN, "that is the left Jacobian of Exp: the noise is split off on the right of the step"),
+]
+
+# attitude_nees: P = L Lᵀ and ε = L u, so that εᵀ P⁻¹ ε = |u|² = 1.69.
+NEES_L = np.array([[0.1, 0.0, 0.0], [0.05, 0.2, 0.0], [-0.1, 0.1, 0.3]])
+NEES_U = np.array([0.3, -0.4, 1.2])
+NEES_SLIP_DIAGONAL = 0.9539572192513368  # Σ ε_i² / P_ii
+# an error of 0.6 rad about the body's x axis of a quarter turn about z, P = diag(0.01, 0.04, 0.09) rad².
+NEES_R_EST = QUARTER_Z
+NEES_P = np.diag([0.01, 0.04, 0.09])
+NEES_SLIPS = [
+    (
+        9.0,
+        "that is a turn in world axes, Log(R_true R_estᵀ); P is the covariance of the body-frame (right) error "
+        "Log(R_estᵀ R_true)",
+    ),
+    (0.0036, "the NEES uses P's inverse, not P itself"),
+    (12.0, hints.NEES_NOT_DIVIDED_HINT),
+    (6.0, "the NEES is the square of the Mahalanobis distance: do not take its square root"),
+    (27.636399339621907, "rotation vectors do not subtract: Log(R_true) - Log(R_est) is not the error between them"),
+]
+
+
+def _central(f, n, h=1e-6):
+    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
+
+
+def _pair(value, what):
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise Mismatch(
+            f"{what} returned {type(value).__name__}, not a pair (R_new, P_new)", "return both: R_new, P_new"
+        )
+    return (require_shape(value[0], (3, 3), f"{what}'s R_new"), require_shape(value[1], (3, 3), f"{what}'s P_new"))
+
+
+# ---------------------------------------------------------------- filter_predict
+def _predicted_covariance(R, P, omega, dt, Q):
+    """First-order covariance of ε' with R Exp(ω Δt) Exp(ε') = R Exp(ε) Exp((ω - n) Δt), by central differences."""
+    R_new = R @ Exp(omega * dt)
+    J = _central(lambda x: Log(R_new.T @ R @ Exp(x[:3]) @ Exp((omega - x[3:]) * dt)), 6)
+    return J[:, :3] @ P @ J[:, :3].T + J[:, 3:] @ Q @ J[:, 3:].T
+
+
+@public_check("filter_predict", "the attitude takes one gyro step on the body side, R Exp(ω Δt)")
+def _(filter_predict):
+    R_new, _ = _pair(filter_predict(QUARTER_Z, P0, OMEGA, DT, Q_GYRO), "filter_predict")
+    expected = QUARTER_Z @ Exp(OMEGA * DT)
+    if not close(R_new, expected, 1e-12):
+        hint = (
+            "that is the step on the world side, Exp(ω Δt) R: a gyro measures body rates, so apply the step "
+            "on the right of R"
+            if close(R_new, Exp(OMEGA * DT) @ QUARTER_Z, 1e-12)
+            else "R_new = R Exp(ω Δt), as in integrate_gyro"
+        )
+        raise Mismatch(f"R_new is not R Exp(ω Δt) ({off_by(R_new, expected)})", hint)
+
+
+@public_check("filter_predict", "P_new is the first-order covariance of the new error (central differences)")
+def _(filter_predict):
+    _, P_new = _pair(filter_predict(QUARTER_Z, P0, OMEGA, DT, Q_GYRO), "filter_predict")
+    expected = _predicted_covariance(QUARTER_Z, P0, OMEGA, DT, Q_GYRO)
+    if not close(P_new, expected, 1e-8):
+        hint = next((h for value, h in PREDICT_SLIPS if close(P_new, value, 1e-9)), None)
+        raise Mismatch(
+            f"P_new disagrees with the first-order covariance of the definition ({off_by(P_new, expected)})",
+            hint
+            or "write the new error in terms of ε and n, keep first-order terms, and propagate: "
+            "Cov(A ε + B n) = A P Aᵀ + B Q Bᵀ",
+        )
+
+
+@public_check("filter_predict", "no gyro noise and no turn: the covariance is carried unchanged")
+def _(filter_predict):
+    R_new, P_new = _pair(filter_predict(QUARTER_X, P0, np.zeros(3), 0.01, np.zeros((3, 3))), "filter_predict")
+    if not close(P_new, P0, 1e-15) or not close(R_new, QUARTER_X, 1e-15):
+        raise Mismatch(
+            f"with ω = 0 and Q = 0 the prediction changed (P off by {np.max(np.abs(P_new - P0)):.2g})",
+            "a step that does not turn and adds no noise leaves R and P as they are",
+        )
+
+
+@public_check("filter_predict", "accepts plain lists")
+def _(filter_predict):
+    require_same_with_lists(
+        lambda *a: np.vstack(filter_predict(*a)),
+        (QUARTER_Z, P0, OMEGA, DT, Q_GYRO),
+        (6, 3),
+        "filter_predict(R, P, omega_meas, dt, Q)",
+    )
+
+
+# ---------------------------------------------------------------- attitude_nees
+def _nees(attitude_nees, R_true, R_est, P):
+    return float(require_shape(attitude_nees(R_true, R_est, P), (), "attitude_nees(R_true, R_est, P)"))
+
+
+@public_check("attitude_nees", "0.6 rad about the body's x axis with P = diag(0.01, 0.04, 0.09) gives 36")
+def _(attitude_nees):
+    got = _nees(attitude_nees, NEES_R_EST @ Exp([0.6, 0.0, 0.0]), NEES_R_EST, NEES_P)
+    if abs(got - 36.0) > 1e-9:
+        hint = next((h for value, h in NEES_SLIPS if abs(got - value) < 1e-9 * max(1.0, value)), None)
+        raise Mismatch(f"gave {got:.6g}, expected 0.36 / 0.01 = 36", hint or "ε = Log(R_estᵀ R_true), then εᵀ P⁻¹ ε")
+
+
+@public_check("attitude_nees", "with P = L Lᵀ and ε = L u, the NEES is |u|² (a P with correlations)")
+def _(attitude_nees):
+    R_est = Exp([0.3, -0.2, 1.4])
+    got = _nees(attitude_nees, R_est @ Exp(NEES_L @ NEES_U), R_est, NEES_L @ NEES_L.T)
+    if abs(got - 1.69) > 1e-9:
+        hint = (
+            "only the variances of P were used: the off-diagonal entries of P count too"
+            if abs(got - NEES_SLIP_DIAGONAL) < 1e-9
+            else None
+        )
+        raise Mismatch(f"gave {got:.6g}, expected |u|² = 1.69", hint or "εᵀ P⁻¹ ε with the whole of P")
+
+
+@public_check("attitude_nees", "unchanged when both attitudes turn by the same world rotation")
+def _(attitude_nees):
+    P = np.array([[4.0, 1.0, 0.5], [1.0, 3.0, -1.0], [0.5, -1.0, 2.0]]) * 1e-2
+    R_est, R_true = Exp([0.3, -0.2, 1.4]), Exp([0.45, -0.35, 1.2])
+    turn = Exp([1.0, 2.0, -0.5])
+    a, b = _nees(attitude_nees, R_true, R_est, P), _nees(attitude_nees, turn @ R_true, turn @ R_est, P)
+    if abs(a - b) > 1e-9 * max(1.0, a):
+        raise Mismatch(
+            f"turning both attitudes by the same world rotation changed the NEES from {a:.6g} to {b:.6g}",
+            "that error is a turn in world axes: the body-frame error R_estᵀ R_true does not change "
+            "when both attitudes turn together",
+        )
+
+
+@public_check("attitude_nees", "accepts plain lists")
+def _(attitude_nees):
+    require_same_with_lists(attitude_nees, (QUARTER_X, NEES_R_EST, NEES_P), (), "attitude_nees(R_true, R_est, P)")

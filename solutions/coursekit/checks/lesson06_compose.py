@@ -1,0 +1,138 @@
+"""Public checks for lesson 06, section 10: the Jacobians of composition and inversion.
+
+The checks use quarter turns written out by hand, finite differences of each Jacobian's definition (central
+differences, computed here with the library's Exp and Log), the identity, and the fact that both Jacobians keep
+the size of a small turn. The usual slips are recognised by their values at the checks' fixed inputs, which are
+products of the hand-written quarter turns (``tests/test_public_check_constants_lesson06_compose.py`` checks
+those turns against scipy).
+"""
+
+import numpy as np
+
+from .. import hints
+from ..checking import Mismatch, public_check
+from ..diagnose import FLOAT32_HINT, close, single_precision_error
+from ..lie import Exp, Log
+from .common import fmt, off_by, require_same_with_lists, require_shape
+
+# Quarter turns, written out: about z (x goes to y), about x (y goes to z), and their product (a third of
+# a turn about (1, 1, 1), which permutes the axes x → y → z → x).
+QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+QUARTER_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
+PERMUTATION = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])   # QUARTER_Z @ QUARTER_X
+
+
+def _first_match(got, candidates, tol=1e-6):
+    """The hint of the first candidate (a slip's value at the check's inputs) that ``got`` equals."""
+    for candidate, hint in candidates:
+        if np.shape(got) == np.shape(candidate) and close(got, candidate, tol):
+            return hint
+    return None
+
+
+def _central(f, n, h=1e-6):
+    """Central differences of the vector function f(d) of a small n-vector d, at d = 0."""
+    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
+
+
+def _unchanged_inputs(function, args, what):
+    """Call ``function`` on copies and complain if it changed them."""
+    copies = [np.array(a, dtype=float) for a in args]
+    function(*copies)
+    for before, after in zip(args, copies):
+        if not np.array_equal(np.asarray(before, dtype=float), after):
+            raise Mismatch(f"{what} changed its input array", "work on a copy (np.array(x, dtype=float)), "
+                           "never on the caller's array")
+
+
+def _require_turn_preserving(J, what, why):
+    """Mismatch unless Jᵀ J = I to 1e-12 at generic rotations (float64 stays near 1e-16, float32 near 1e-7)."""
+    error = float(np.max(np.abs(J.T @ J - np.eye(3))))
+    if error > 1e-12:
+        raise Mismatch(f"{what}ᵀ {what} is off from I by {error:.2g} for generic rotations (allowed 1e-12): {why}",
+                       FLOAT32_HINT if single_precision_error(J.T @ J, np.eye(3)) else None)
+
+
+# ---------------------------------------------------------------- jacobians_of_compose
+# The usual slips at (R1, R2) = (QUARTER_Z, QUARTER_X), as (J1, J2).
+COMPOSE_SLIPS = [((QUARTER_X, np.eye(3)), hints.COMPOSE_TRANSPOSE_HINT),
+                 ((np.eye(3), np.eye(3)), hints.COMPOSE_IGNORES_R2_HINT),
+                 ((np.eye(3), QUARTER_Z), hints.COMPOSE_LEFT_HINT),
+                 ((np.eye(3), QUARTER_X.T), hints.COMPOSE_SWAPPED_HINT),
+                 ((QUARTER_Z.T, np.eye(3)), hints.COMPOSE_WRONG_FACTOR_HINT)]
+
+
+def _pair(value, what):
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise Mismatch(f"{what} returned {type(value).__name__}, not a pair (J1, J2)",
+                       "return two 3×3 arrays: return J1, J2")
+    return (require_shape(value[0], (3, 3), f"{what}'s J1"), require_shape(value[1], (3, 3), f"{what}'s J2"))
+
+
+@public_check("jacobians_of_compose", "J1 and J2 match finite differences of Log((R1 R2)ᵀ R1 Exp(d) R2) and of "
+                                      "Log((R1 R2)ᵀ R1 R2 Exp(d))")
+def _(jacobians_of_compose):
+    R1, R2 = QUARTER_Z, QUARTER_X   # quarter turns about z and x
+    J1, J2 = _pair(jacobians_of_compose(R1, R2), "jacobians_of_compose(R1, R2)")
+    numeric1 = _central(lambda d: Log((R1 @ R2).T @ R1 @ Exp(d) @ R2), 3)
+    numeric2 = _central(lambda d: Log((R1 @ R2).T @ R1 @ R2 @ Exp(d)), 3)
+    if close(J1, numeric1, 1e-6) and close(J2, numeric2, 1e-6):
+        return
+    hint = _first_match(np.stack([J1, J2]), [(np.stack(pair), h) for pair, h in COMPOSE_SLIPS])
+    which = "J1" if not close(J1, numeric1, 1e-6) else "J2"
+    error = off_by(J1, numeric1) if which == "J1" else off_by(J2, numeric2)
+    raise Mismatch(f"{which} disagrees with finite differences ({error})",
+                   hint or "write R1 Exp(d) R2 as (R1 R2) Exp(J1 d), and R1 R2 Exp(d) likewise, then read off J1 and J2")
+
+
+@public_check("jacobians_of_compose", "accepts plain lists and leaves its inputs unchanged")
+def _(jacobians_of_compose):
+    R1, R2 = Exp([0.3, -0.5, 0.2]), Exp([-0.4, 0.1, 0.9])
+    arrays = _pair(jacobians_of_compose(R1.copy(), R2.copy()), "jacobians_of_compose(R1, R2)")
+    try:
+        lists = _pair(jacobians_of_compose(R1.tolist(), R2.tolist()), "jacobians_of_compose with lists")
+    except Mismatch:
+        raise
+    except Exception as error:
+        raise Mismatch(f"jacobians_of_compose with lists raised {type(error).__name__}: {error}",
+                       hints.CONVERT_INPUTS_NP_ASARRAY_HINT) from None
+    if not (close(arrays[0], lists[0], 1e-12) and close(arrays[1], lists[1], 1e-12)):
+        raise Mismatch("jacobians_of_compose with lists differs from arrays",
+                       hints.CONVERT_INPUTS_NP_ASARRAY_HINT)
+    _unchanged_inputs(jacobians_of_compose, (R1, R2), "jacobians_of_compose")
+
+
+@public_check("jacobians_of_compose", "for generic rotations, J1 and J2 keep a small turn's size to 1e-12 (Jᵀ J = I)")
+def _(jacobians_of_compose):
+    J1, J2 = _pair(jacobians_of_compose(Exp([0.3, -0.5, 0.2]), Exp([-0.4, 0.1, 0.9])), "jacobians_of_compose(R1, R2)")
+    _require_turn_preserving(J1, "J1", "a turn of R1 moved past R2 changes its axis, never its angle")
+    _require_turn_preserving(J2, "J2", "a turn of R2 is already at the end of the product")
+
+
+# ---------------------------------------------------------------- jacobian_of_inverse
+@public_check("jacobian_of_inverse", "matches finite differences of Log(R (R Exp(d))⁻¹), for a third of a turn "
+                                     "about (1, 1, 1)")
+def _(jacobian_of_inverse):
+    R = PERMUTATION
+    J = require_shape(jacobian_of_inverse(R), (3, 3), "jacobian_of_inverse(R)")
+    numeric = _central(lambda d: Log(R @ (R @ Exp(d)).T), 3)
+    if not close(J, numeric, 1e-6):
+        hint = _first_match(J, [(-R.T, hints.INVERSE_LEFT_HINT), (-np.eye(3), hints.INVERSE_NOT_MOVED_HINT),
+                                (R, hints.INVERSE_SIGN_HINT), (R.T, hints.INVERSE_TRANSPOSE_HINT)])
+        raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
+                       hint or "write (R Exp(d))⁻¹ as R⁻¹ Exp(J d) and read off J")
+
+
+@public_check("jacobian_of_inverse", "is -I at the identity (inverting a small turn reverses it), accepts lists")
+def _(jacobian_of_inverse):
+    J = require_shape(jacobian_of_inverse(np.eye(3)), (3, 3), "jacobian_of_inverse(I)")
+    if not close(J, -np.eye(3), 1e-12):
+        raise Mismatch(f"jacobian_of_inverse(I) = {fmt(J)}, expected -I", hints.INVERSE_AT_IDENTITY_HINT)
+    require_same_with_lists(jacobian_of_inverse, (PERMUTATION,), (3, 3), "jacobian_of_inverse(R)")
+    _unchanged_inputs(jacobian_of_inverse, (PERMUTATION,), "jacobian_of_inverse")
+
+
+@public_check("jacobian_of_inverse", "for a generic rotation, J keeps a small turn's size to 1e-12 (Jᵀ J = I)")
+def _(jacobian_of_inverse):
+    J = require_shape(jacobian_of_inverse(Exp([0.3, -0.5, 0.2])), (3, 3), "jacobian_of_inverse(R)")
+    _require_turn_preserving(J, "J", "inverting R Exp(d) reverses the small turn and moves it, by the same angle")

@@ -1,0 +1,273 @@
+"""Public checks for lesson 09, section 4: compound_pose_covariance, a chain of two uncertain poses.
+
+The covariance is compared with the first-order covariance of its definition, T1 Exp(ξ1) T2 Exp(ξ2) = T Exp(ξ),
+linearised here by central differences (coursekit's ExpSE3 and LogSE3). The values the usual slips return at the
+checks' fixed inputs are stored as numbers (``tests/test_public_check_constants_lesson09_compound.py`` recomputes
+them from their definitions; T1 = ExpSE3([1, -0.5, 0.3, 0.2, -0.4, 0.9]), T2 = ExpSE3([0.4, 1.2, -0.8, -0.7, 0.3, 0.5])).
+"""
+
+import numpy as np
+
+from .. import hints
+from ..checking import Mismatch, public_check
+from ..diagnose import close
+from ..lie import ExpSE3, LogSE3
+from .common import off_by, require_pose, require_shape
+
+S1 = np.diag([4.0, 1.0, 2.0, 0.5, 1.5, 1.0]) * 1e-3
+S2 = np.diag([1.0, 3.0, 1.0, 2.0, 0.5, 1.0]) * 1e-3
+S_NO_TRANSPORT = np.array(
+    [
+        [0.005, 0.0, 0.0, 0.0, 0.0, 0.0],
+        [0.0, 0.004, 0.0, 0.0, 0.0, 0.0],
+        [0.0, 0.0, 0.003, 0.0, 0.0, 0.0],
+        [0.0, 0.0, 0.0, 0.0025, 0.0, 0.0],
+        [0.0, 0.0, 0.0, 0.0, 0.002, 0.0],
+        [0.0, 0.0, 0.0, 0.0, 0.0, 0.002],
+    ]
+)
+S_WRONG_WAY = np.array(
+    [
+        [
+            0.006276675781945219,
+            0.0010284656937134607,
+            -0.0009298718353027596,
+            -9.28158730862278e-05,
+            0.0012617537097782587,
+            0.000782025703413295,
+        ],
+        [
+            0.0010284656937134607,
+            0.005862271915404569,
+            0.0008496335050429544,
+            -0.0009159631154905163,
+            0.0003670562670865757,
+            -0.0003650387511222786,
+        ],
+        [
+            -0.0009298718353027596,
+            0.0008496335050429543,
+            0.0036441630892652763,
+            -0.00067226581125302,
+            0.0002599459339279174,
+            -0.0002742403940003479,
+        ],
+        [
+            -9.281587308622781e-05,
+            -0.0009159631154905163,
+            -0.0006722658112530199,
+            0.0027872815410101264,
+            -0.0003153057812777916,
+            0.00032090913824064005,
+        ],
+        [
+            0.0012617537097782587,
+            0.0003670562670865758,
+            0.0002599459339279174,
+            -0.00031530578127779164,
+            0.0016580917551038837,
+            -0.0001048164013134443,
+        ],
+        [
+            0.0007820257034132949,
+            -0.00036503875112227856,
+            -0.00027424039400034784,
+            0.00032090913824064005,
+            -0.00010481640131344436,
+            0.00205462670388599,
+        ],
+    ]
+)
+S_OTHER_POSE = np.array(
+    [
+        [
+            0.003800503906490656,
+            -0.0007419653590252738,
+            -9.1668199597306e-05,
+            4.9958901367063825e-05,
+            1.1459500962604378e-05,
+            0.0008258116363961531,
+        ],
+        [
+            -0.0007419653590252741,
+            0.00646397153394985,
+            0.000998339803335561,
+            -0.00026698067087040507,
+            -0.00023542009089300975,
+            0.0007366988792326471,
+        ],
+        [
+            -9.166819959730597e-05,
+            0.000998339803335561,
+            0.004779674728748258,
+            -0.0012487835333775846,
+            -0.0009908863856126061,
+            0.00018546118952594587,
+        ],
+        [
+            4.9958901367063825e-05,
+            -0.00026698067087040496,
+            -0.0012487835333775848,
+            0.0031049229935993473,
+            0.0004389838470985398,
+            -4.9647886512820056e-05,
+        ],
+        [
+            1.1459500962604417e-05,
+            -0.00023542009089300972,
+            -0.0009908863856126061,
+            0.00043898384709853975,
+            0.001371601053172016,
+            -0.0002020028393245682,
+        ],
+        [
+            0.0008258116363961531,
+            0.0007366988792326471,
+            0.00018546118952594585,
+            -4.964788651281999e-05,
+            -0.0002020028393245682,
+            0.002023475953228637,
+        ],
+    ]
+)
+S_ROTATION_ONLY = np.array(
+    [
+        [0.00430333245367128, -0.0011144442256536388, -6.412117813425682e-05, 0.0, 0.0, 0.0],
+        [-0.001114444225653639, 0.005136275107504019, -0.0005464905704965748, 0.0, 0.0, 0.0],
+        [-6.412117813425678e-05, -0.0005464905704965747, 0.0025603924388247004, 0.0, 0.0, 0.0],
+        [0.0, 0.0, 0.0, 0.0027023425561678717, 0.00033357503447738066, 7.285467447038563e-05],
+        [0.0, 0.0, 0.0, 0.00033357503447738066, 0.0015731527702616294, 0.000247473387904471],
+        [0.0, 0.0, 0.0, 7.285467447038565e-05, 0.00024747338790447103, 0.0022245046735704993],
+    ]
+)
+S_ONE_SIDED = np.array(
+    [
+        [
+            0.0043657511874932746,
+            0.00033571219570156807,
+            -0.0008468288035965892,
+            1.4366379178078446e-05,
+            -0.0014788141683188083,
+            -0.000724571021033547,
+        ],
+        [
+            -0.0021263326100204624,
+            0.0036548940284889878,
+            -0.0010743056612011086,
+            0.0001518623347281532,
+            0.0009233751163895366,
+            0.0004499408153526491,
+        ],
+        [
+            0.0003878512285028626,
+            0.0006770606568888026,
+            0.002459023071685441,
+            0.0007078904399698016,
+            -0.00015989246634916487,
+            -8.924714643023675e-05,
+        ],
+        [0.0, 0.0, 0.0, 0.0024207188984366594, 0.0005035682935523522, -0.0004234144017982947],
+        [0.0, 0.0, 0.0, -0.0002657915762525578, 0.001482341042733482, -0.0005371528306005544],
+        [0.0, 0.0, 0.0, 4.8481403562857786e-05, 0.0010155909853332037, 0.0017295115358427202],
+    ]
+)
+T1 = np.array(
+    [
+        [0.5544710424085266, -0.7927139812935674, -0.2533108899990359, 1.0127698686054392],
+        [0.7192246687011593, 0.6095880268528326, -0.33334413666566537, -0.07662855666144801],
+        [0.4186618433319538, 0.0026422299998294582, 0.90813835925949, 0.4853273373492588],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+)
+T2 = np.array(
+    [
+        [0.8414377968733187, -0.5315831525051156, 0.09696280712571555, -0.009009506852490329],
+        [0.3357121957015681, 0.6548940284889879, 0.6770606568888026, 0.8575160545284378],
+        [-0.42341440179829465, -0.5371528306005543, 0.7295115358427202, -1.1671229423105494],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+)
+T_SWAPPED = np.array(
+    [
+        [0.12481980317256629, -0.9908100329762831, 0.05211041440536387, 0.9309664908527935],
+        [0.9406180944348733, 0.1348807573802455, 0.31152011445529365, 1.4759277125208288],
+        [-0.3156859470386189, 0.010132119327579925, 0.9488096347530742, -1.2007311530138114],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+)
+NO_TRANSPORT_HINT = (
+    "S1 was not carried across T2: ξ1 is a twist in T1's body frame, and the chain's end is "
+    "another frame; move Exp(ξ1) to the right of T2 (lesson 07's adjoint) before adding S2"
+)
+WRONG_WAY_HINT = "the adjoint goes the other way: write Exp(ξ1) T2 as T2 Exp(?) and solve for the twist"
+OTHER_POSE_HINT = "ξ1 crosses T2, not T1: the adjoint that moves it belongs to the factor it passes"
+ROTATION_ONLY_HINT = (
+    "turning both halves of the twist by R2ᵀ forgets that a spin about T1's origin also shifts "
+    "T2's origin: the adjoint of a pose has a coupling block"
+)
+ONE_SIDED_HINT = "a covariance takes the linear map on both sides: J S Jᵀ (the result must be symmetric)"
+SLIPS = [
+    (S_NO_TRANSPORT, NO_TRANSPORT_HINT),
+    (S_WRONG_WAY, WRONG_WAY_HINT),
+    (S_OTHER_POSE, OTHER_POSE_HINT),
+    (S_ROTATION_ONLY, ROTATION_ONLY_HINT),
+    (S_ONE_SIDED, ONE_SIDED_HINT),
+]
+
+
+def _compound(compound_pose_covariance, *args):
+    got = compound_pose_covariance(*args)
+    if not isinstance(got, (tuple, list)) or len(got) != 2:
+        raise Mismatch(hints.COMPOUND_PAIR_REASON)
+    return require_shape(got[0], (4, 4), "T of compound_pose_covariance"), require_shape(
+        got[1], (6, 6), "S of compound_pose_covariance"
+    )
+
+
+def _linearised(T1, S1, T2, S2, h=1e-6):
+    T = T1 @ T2
+    inverse = np.linalg.inv(T)
+
+    def error(x):
+        return LogSE3(inverse @ T1 @ ExpSE3(x[:6]) @ T2 @ ExpSE3(x[6:]))
+
+    J = np.column_stack([(error(h * e) - error(-h * e)) / (2.0 * h) for e in np.eye(12)])
+    return J[:, :6] @ S1 @ J[:, :6].T + J[:, 6:] @ S2 @ J[:, 6:].T
+
+
+@public_check("compound_pose_covariance", "T is T1 T2, in that order")
+def _(compound_pose_covariance):
+    T, _ = _compound(compound_pose_covariance, T1, S1, T2, S2)
+    require_pose(T, "T")
+    if not close(T, T1 @ T2, 1e-12):
+        hint = "T2 T1 is the other chain: T1 first, then T2 in T1's frame" if close(T, T_SWAPPED, 1e-9) else None
+        raise Mismatch(f"T is not T1 T2 ({off_by(T, T1 @ T2)})", hint)
+
+
+@public_check("compound_pose_covariance", "S is the first-order covariance of ξ, linearised here by finite differences")
+def _(compound_pose_covariance):
+    _, S = _compound(compound_pose_covariance, T1, S1, T2, S2)
+    expected = _linearised(T1, S1, T2, S2)
+    scale = np.max(np.abs(expected))
+    if not close(S / scale, expected / scale, 1e-7):
+        hint = next((h for value, h in SLIPS if close(S / scale, value / scale, 1e-6)), None)
+        raise Mismatch(
+            f"S disagrees with the linearised definition ({off_by(S, expected)})",
+            hint or hints.COMPOUND_EXPAND_HINT,
+        )
+
+
+@public_check("compound_pose_covariance", "accepts plain lists and leaves its inputs unchanged")
+def _(compound_pose_covariance):
+    args = (T1, S1, T2, S2)
+    copies = [np.array(a, dtype=float) for a in args]
+    T, S = _compound(compound_pose_covariance, *copies)
+    for before, after in zip(args, copies):
+        if not np.array_equal(before, after):
+            raise Mismatch("compound_pose_covariance changed its input array", "work on copies")
+    T_lists, S_lists = _compound(compound_pose_covariance, *[a.tolist() for a in args])
+    if not (close(T_lists, T, 1e-14) and close(S_lists, S, 1e-16)):
+        raise Mismatch(
+            "compound_pose_covariance answers differently for plain lists",
+            "convert every argument with np.asarray(x, dtype=float) first",
+        )

@@ -1,0 +1,101 @@
+"""The notebook stage's skip path gives the verdicts of its full path (autograder/grading/notebook_calls.py).
+
+Oracle: the same submission graded with the notebook transcripts (a lesson whose recorded calls all return
+the reference's values, bit for bit, is ``passed`` without a kernel) and without them (every kernel runs, as
+before): the same notebook status, points and failures, lesson by lesson. Cases, on lesson 01's real master:
+the reference answers (the skip path is taken); ``rotate_point`` off by one unit in the last place (full
+hidden marks, not bit for bit the reference's: the kernel runs); ``rotate_point`` right on its first call
+and wrong on every later one (stateful: the replay stops at the second call, the kernel runs and fails);
+the demonstration's own point raising (the walls test's flaw: the replay's call fails, the kernel runs).
+"""
+
+import pytest
+
+from autograder.grading import nbval_stage, notebook_calls
+from autograder.grading.options import GradingOptions
+from autograder.sandbox import launcher
+from support import THIS_COURSE, build_submission, grade, references
+
+pytestmark = pytest.mark.skipif(launcher.isolation()[0] != "namespaces", reason="needs the namespace sandbox")
+
+BODY = "    R_wb = np.asarray(R_wb, dtype=float)"
+
+
+def _rotate_point(prefix, replacement):
+    source = references()["rotate_point"]
+    changed = source.replace(BODY, replacement + BODY, 1)
+    assert changed != source
+    return prefix + changed
+
+
+ONE_ULP = _rotate_point(
+    "",
+    "    if np.asarray(p_b).ndim == 1:\n"
+    "        out = np.asarray(p_b, dtype=float) @ np.asarray(R_wb, dtype=float).T\n"
+    "        return np.nextafter(out, np.inf)\n",
+)
+FIRST_CALL_ONLY = _rotate_point(
+    "_CALLS = [0]\n\n",
+    "    _CALLS[0] += 1\n    if _CALLS[0] > 1:\n        return np.asarray(p_b, dtype=float) * 2.0\n",
+)
+DEMONSTRATION_RAISES = _rotate_point(
+    "",
+    "    if np.array_equal(np.asarray(p_b, dtype=float), [0.5, 0.3, 2.0]):\n"
+    '        raise RuntimeError("only on the demonstration\'s point")\n',
+)
+CASES = {"reference": None, "one_ulp": ONE_ULP, "first_call_only": FIRST_CALL_ONLY, "raises": DEMONSTRATION_RAISES}
+
+
+@pytest.fixture(scope="module")
+def transcripts():
+    learned = nbval_stage.record_notebook_calls(THIS_COURSE, GradingOptions(), lessons=("01",))
+    assert learned.get("01") is not None and learned["01"].calls, "lesson 01's master should be replayable"
+    return learned
+
+
+def _notebook_verdicts(result):
+    return {
+        lesson.number: (lesson.run.status, lesson.run.points, tuple(lesson.run.failures))
+        for lesson in result.lessons
+        if lesson.run is not None
+    }
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_skip_path_gives_the_full_paths_verdicts(tmp_path, monkeypatch, transcripts, case):
+    overrides = {"rotate_point": CASES[case]} if CASES[case] else {}
+    folder = build_submission(tmp_path / case, overrides, lessons=("01",))
+    replayed = []
+    original = notebook_calls.replays_as_recorded
+
+    def spy(box, transcript):
+        replayed.append(original(box, transcript))
+        return replayed[-1]
+
+    monkeypatch.setattr(notebook_calls, "replays_as_recorded", spy)
+    with_skip = grade(folder, lessons=("01",), nbval=True)
+    monkeypatch.setitem(THIS_COURSE.reference.memo, notebook_calls.MEMO_KEY, {})  # the old path: every kernel runs
+    full = grade(folder, lessons=("01",), nbval=True)
+
+    assert _notebook_verdicts(with_skip) == _notebook_verdicts(full)
+    assert with_skip.score == full.score
+    full_hidden = nbval_stage.full_hidden_marks(full.lessons[0])
+    if case == "reference":
+        assert replayed == [True], "the reference's calls return the reference's values: no kernel"
+        assert _notebook_verdicts(full)["01"][0] == "passed"
+    elif case == "one_ulp":  # within every tolerance, not bit for bit: the kernel decides
+        assert full_hidden and replayed == [False]
+    elif case == "first_call_only":
+        assert replayed == ([False] if full_hidden else []) and _notebook_verdicts(full)["01"][0] != "passed"
+    else:
+        assert _notebook_verdicts(full)["01"][0] != "passed"
+
+
+def test_a_master_that_passes_a_function_or_differs_between_runs_gets_no_transcript():
+    call = '{"__dict__":[["lesson","01"],["name","f"],["args",[1.0]],["kwargs",{"__dict__":[]}],["timeout",5.0]]}'
+    entry = {"lesson": "01", "call": call, "ok": True, "text": "2.0", "callbacks": 0}
+    assert notebook_calls.transcript_from([[entry], [dict(entry)]]).results == ["2.0"]
+    assert notebook_calls.transcript_from([[entry], [dict(entry, text="2.0000000000000004")]]) is None
+    assert notebook_calls.transcript_from([[dict(entry, callbacks=1)]] * 2) is None
+    assert notebook_calls.transcript_from([[dict(entry, ok=False, text=None)]] * 2) is None
+    assert notebook_calls.transcript_from([[entry], None]) is None
