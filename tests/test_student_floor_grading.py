@@ -3,7 +3,7 @@
 A student on Python 3.10 with numpy 1.23 hands in a notebook whose outputs, metadata (kernel, language
 version) and widget state come from that setup; the grader, on its own newer lock, must give it the
 points it gives the same answers never run: full marks, exercise by exercise and the notebook stage's
-point, as the reference answers get them (``tests/test_sample_class.py``: ada, 150/150). The floor run's
+point, as the reference answers get them (``tests/test_sample_class.py``: ada, 176/176). The floor run's
 notebooks are the solved masters, so their answers are the reference answers.
 
 The floor-run notebooks come from ``tests/student_floor.py``: its output in ``$STUDENT_FLOOR_OUT``

@@ -62,6 +62,12 @@ def _linearised(T1, S1, T2, S2, h=1e-6):
     return J[:, :6] @ S1 @ J[:, :6].T + J[:, 6:] @ S2 @ J[:, 6:].T, J
 
 
+def _adjoint_of(T):
+    """Ad_T from its definition: column j is the twist of T e_j^ T⁻¹ (central differences of Exp)."""
+    inverse = np.linalg.inv(T)
+    return np.column_stack([_log_se3(T @ _exp_se3(1e-7 * e) @ inverse) / 1e-7 for e in np.eye(6)])
+
+
 def _hint(S, T1, S1, T2, S2):
     _, J = _linearised(T1, S1, T2, S2)
     A = J[:, :6]
@@ -72,6 +78,10 @@ def _hint(S, T1, S1, T2, S2):
         (B @ S1 @ B.T + S2, "the adjoint goes the other way"),
         (R2 @ S1 @ R2.T + S2, "the adjoint of a pose has a coupling block"),
         (A @ S1 + S2, "a covariance takes the linear map on both sides"),
+        (
+            _adjoint_of(np.linalg.inv(T1)) @ S1 @ _adjoint_of(np.linalg.inv(T1)).T + S2,
+            "the adjoint belongs to the factor it passes: ξ1 crosses T2, not T1",
+        ),
     ]
     scale = np.max(np.abs(S1)) + np.max(np.abs(S2))
     matching = [hint for value, hint in slips if np.max(np.abs(S - value)) <= 1e-6 * scale]

@@ -40,7 +40,7 @@ MISTAKES = [
         "compound_pose_covariance",
         "Ad(T1⁻¹): the adjoint of the wrong factor",
         _compound(adjoint="AdSE3(np.linalg.inv(T1))"),
-        hint="gathering both twists on the right",
+        hint="belongs to the factor it passes",
         public_hint="belongs to the factor it passes",
     ),
     Mistake(
