@@ -337,6 +337,7 @@ EQUIVALENT = {
     "quat_slerp.e5470d82": POSITIVE_SCALE,  # np.sin(omega) → np.sin(np.deg2rad(omega)) (line 31)
     # POWERS_COMMUTE
     "exp_series.8df0e89a": POWERS_COMMUTE,  # term @ W → W @ term (line 26)
+    "right_jacobian_se3.3accef9e": POWERS_COMMUTE,  # A @ S → S @ A (line 30); S is a polynomial in A
     # REBOUND
     "align_gauss_newton.9ff006cd": REBOUND,  # np.array(R0, dtype=float) → np.asarray(R0, dtype=float) (line 31)
     "rotation_mean.cb6be289": REBOUND,  # Rs[0].copy() → Rs[0] (line 21)
@@ -465,6 +466,8 @@ EQUIVALENT = {
     "weighted_rotation_mean.ff77c17e": CONVERGED,  # range(100) → range(1, 100) (line 26)
     "quat_from_two_vectors.1dda287b": FLOAT32_EXACT,  # np.eye(3) → np.eye(3, dtype=np.float32) (line 38)
     "quat_power.5301af62": FLOAT32_EXACT,  # np.array([1.0, 0.0, 0.0]) → np.array([1.0, 0.0, 0.0], dtype=np.float32) (line 28)
+    "right_jacobian_se3.05b48a5a": FLOAT32_EXACT,  # np.eye(6) → np.eye(6, dtype=np.float32) (line 28)
+    "right_jacobian_se3.01bfbcfb": FLOAT32_EXACT,  # np.eye(6) → np.eye(6, dtype=np.float32) (line 30)
     "adjoint_se3.2ad162ed": INTEGERS,  # np.asarray(T, dtype=float) → np.asarray(T) (line 19)
     "align_pose_gauss_newton.5b330214": INTEGERS,  # np.asarray(P, dtype=float) → np.asarray(P) (line 25)
     "align_pose_gauss_newton.60b2758e": INTEGERS,  # np.asarray(Q, dtype=float) → np.asarray(Q) (line 26)
@@ -489,6 +492,7 @@ EQUIVALENT = {
     "quat_power.451c9754": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 24)
     "relative_pose.2e77ed47": INTEGERS,  # np.asarray(T_wa, dtype=float) → np.asarray(T_wa) (line 20)
     "relative_pose.dff0d878": INTEGERS,  # np.asarray(T_wb, dtype=float) → np.asarray(T_wb) (line 21)
+    "right_jacobian_se3.c6d6e3bc": INTEGERS,  # np.asarray(xi, dtype=float) → np.asarray(xi) (line 22)
     "rotated_point_covariance.9c0cf3e2": INTEGERS,  # np.asarray(R, dtype=float) → np.asarray(R) (line 25)
     "rotated_point_covariance.e88f6bef": INTEGERS,  # np.asarray(Sigma, dtype=float) → np.asarray(Sigma) (line 26)
     "weighted_rotation_mean.84dca0ee": INTEGERS,  # np.asarray(weights, dtype=float) → np.asarray(weights) (line 24)
