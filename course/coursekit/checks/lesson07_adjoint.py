@@ -14,7 +14,7 @@ from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
 from ..lie import AdSE3, ExpSE3, LogSE3, skew
-from .common import off_by, require_same_with_lists, require_shape
+from .common import central_differences, first_match, off_by, require_same_with_lists, require_shape, require_unchanged_inputs
 
 # A quarter turn about z (x goes to y) and a shift, written out.
 QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -23,29 +23,6 @@ T_QUARTER = np.array([[0.0, -1.0, 0.0, 1.0],
                       [1.0, 0.0, 0.0, 2.0],
                       [0.0, 0.0, 1.0, 3.0],
                       [0.0, 0.0, 0.0, 1.0]])
-
-
-def _first_match(got, candidates, tol=1e-6):
-    """The hint of the first candidate (a slip's value at the check's inputs) that ``got`` equals."""
-    for candidate, hint in candidates:
-        if np.shape(got) == np.shape(candidate) and close(got, candidate, tol):
-            return hint
-    return None
-
-
-def _central(f, n, h=1e-6):
-    """Central differences of the vector function f(d) of a small n-vector d, at d = 0."""
-    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
-
-
-def _unchanged_inputs(function, args, what):
-    """Call ``function`` on copies and complain if it changed them."""
-    copies = [np.array(a, dtype=float) for a in args]
-    function(*copies)
-    for before, after in zip(args, copies):
-        if not np.array_equal(np.asarray(before, dtype=float), after):
-            raise Mismatch(f"{what} changed its input array", "work on a copy (np.array(x, dtype=float)), "
-                           "never on the caller's array")
 
 
 # ---------------------------------------------------------------- adjoint_se3
@@ -92,7 +69,7 @@ def _(adjoint_se3):
     conjugated = T_QUARTER @ expm(_twist_matrix(XI)) @ np.linalg.inv(T_QUARTER)
     got = expm(_twist_matrix(Ad @ XI))
     if not close(got, conjugated, 1e-9):
-        hint = _first_match(Ad, ADJOINT_SLIPS) or ("conjugate the twist matrix block by block, T ξ^ T⁻¹, and read "
+        hint = first_match(Ad, ADJOINT_SLIPS) or ("conjugate the twist matrix block by block, T ξ^ T⁻¹, and read "
                                                     "off how its rho and phi parts depend on those of ξ")
         raise Mismatch(f"Exp(Ad_T ξ) misses T Exp(ξ) T⁻¹ ({off_by(got, conjugated)})", hint)
 
@@ -115,7 +92,7 @@ def _(adjoint_se3):
 @public_check("adjoint_se3", "accepts plain lists and leaves its input unchanged")
 def _(adjoint_se3):
     require_same_with_lists(adjoint_se3, (T_QUARTER,), (6, 6), "adjoint_se3(T)")
-    _unchanged_inputs(adjoint_se3, (T_QUARTER,), "adjoint_se3")
+    require_unchanged_inputs(adjoint_se3, (T_QUARTER,), "adjoint_se3")
 
 
 # ---------------------------------------------------------------- jacobian_transform_point
@@ -144,16 +121,16 @@ POINT_SLIPS = [(JTP_ROTATION_FIRST, POINT_ROTATION_FIRST_HINT), (JTP_TRANSLATION
 @public_check("jacobian_transform_point", "matches finite differences of T Exp(ξ) p (quarter turn, shift (1, 2, 3))")
 def _(jacobian_transform_point):
     J = require_shape(jacobian_transform_point(T_QUARTER, POINT), (3, 6), "jacobian_transform_point(T, p)")
-    numeric = _central(lambda xi: (T_QUARTER @ ExpSE3(xi) @ np.append(POINT, 1.0))[:3], 6)
+    numeric = central_differences(lambda xi: (T_QUARTER @ ExpSE3(xi) @ np.append(POINT, 1.0))[:3], 6)
     if not close(J, numeric, 1e-6):
         raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
-                       _first_match(J, POINT_SLIPS) or "expand T (I + ξ^) [p; 1] and collect the terms in rho and phi")
+                       first_match(J, POINT_SLIPS) or "expand T (I + ξ^) [p; 1] and collect the terms in rho and phi")
 
 
 @public_check("jacobian_transform_point", "accepts plain lists and leaves its inputs unchanged")
 def _(jacobian_transform_point):
     require_same_with_lists(jacobian_transform_point, (T_QUARTER, POINT), (3, 6), "jacobian_transform_point(T, p)")
-    _unchanged_inputs(jacobian_transform_point, (T_QUARTER, POINT), "jacobian_transform_point")
+    require_unchanged_inputs(jacobian_transform_point, (T_QUARTER, POINT), "jacobian_transform_point")
 
 
 # ---------------------------------------------------------------- right_jacobian_se3
@@ -175,7 +152,7 @@ JR_DIFFERENCES_HINT = ("close but not exact ({error}): finite differences stop n
 
 def _numeric_jr(xi):
     base_inverse = np.linalg.inv(ExpSE3(xi))
-    return _central(lambda d: LogSE3(base_inverse @ ExpSE3(xi + d)), 6)
+    return central_differences(lambda d: LogSE3(base_inverse @ ExpSE3(xi + d)), 6)
 
 
 def _jr(right_jacobian_se3, xi, what="right_jacobian_se3(xi)"):
@@ -235,4 +212,4 @@ def _(right_jacobian_se3):
         raise Mismatch(f"J(0) is not the identity ({off_by(J0, np.eye(6))})",
                        "at ξ = 0 the motion is not bent at all: Exp(dξ) = Exp(0) Exp(dξ)")
     require_same_with_lists(right_jacobian_se3, (XI_MODERATE,), (6, 6), "right_jacobian_se3(xi)")
-    _unchanged_inputs(right_jacobian_se3, (XI_MODERATE,), "right_jacobian_se3")
+    require_unchanged_inputs(right_jacobian_se3, (XI_MODERATE,), "right_jacobian_se3")

@@ -10,9 +10,19 @@ Examples
 import numpy as np
 
 from ..checking import Mismatch
-from ..diagnose import LISTS_HINT, pose_problem, rotation_problem, shape_problem
+from ..diagnose import LISTS_HINT, close, pose_problem, rotation_problem, shape_problem
 
-__all__ = ["require_shape", "require_rotation", "require_pose", "require_same_with_lists", "fmt", "off_by"]
+__all__ = [
+    "require_shape",
+    "require_rotation",
+    "require_pose",
+    "require_same_with_lists",
+    "require_unchanged_inputs",
+    "fmt",
+    "off_by",
+    "first_match",
+    "central_differences",
+]
 
 
 def _prefixed(what, problem):
@@ -76,3 +86,28 @@ def require_same_with_lists(function, args, shape, what):
     if np.max(np.abs(with_lists - with_arrays), initial=0.0) > 1e-12:
         raise Mismatch(f"{what} with lists differs from {what} with arrays ({off_by(with_lists, with_arrays)})",
                        LISTS_HINT)
+
+
+def first_match(got, candidates, tol=1e-6):
+    """The hint of the first candidate (a slip's value at the check's inputs) that ``got`` equals, else None."""
+    for candidate, hint in candidates:
+        if np.shape(got) == np.shape(candidate) and close(got, candidate, tol):
+            return hint
+    return None
+
+
+def central_differences(f, n, h=1e-6):
+    """Central differences of the vector function f(d) of a small n-vector d, at d = 0: shape (len(f), n)."""
+    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
+
+
+def require_unchanged_inputs(function, args, what):
+    """Call ``function`` on copies of ``args`` and raise :class:`Mismatch` if it changed them."""
+    copies = [np.array(a, dtype=float) for a in args]
+    function(*copies)
+    for before, after in zip(args, copies):
+        if not np.array_equal(np.asarray(before, dtype=float), after):
+            raise Mismatch(
+                f"{what} changed its input array",
+                "work on a copy (np.array(x, dtype=float)), never on the caller's array",
+            )

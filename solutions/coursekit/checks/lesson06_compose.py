@@ -13,36 +13,13 @@ from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, single_precision_error
 from ..lie import Exp, Log
-from .common import fmt, off_by, require_same_with_lists, require_shape
+from .common import central_differences, first_match, fmt, off_by, require_same_with_lists, require_shape, require_unchanged_inputs
 
 # Quarter turns, written out: about z (x goes to y), about x (y goes to z), and their product (a third of
 # a turn about (1, 1, 1), which permutes the axes x → y → z → x).
 QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 QUARTER_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 PERMUTATION = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])   # QUARTER_Z @ QUARTER_X
-
-
-def _first_match(got, candidates, tol=1e-6):
-    """The hint of the first candidate (a slip's value at the check's inputs) that ``got`` equals."""
-    for candidate, hint in candidates:
-        if np.shape(got) == np.shape(candidate) and close(got, candidate, tol):
-            return hint
-    return None
-
-
-def _central(f, n, h=1e-6):
-    """Central differences of the vector function f(d) of a small n-vector d, at d = 0."""
-    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
-
-
-def _unchanged_inputs(function, args, what):
-    """Call ``function`` on copies and complain if it changed them."""
-    copies = [np.array(a, dtype=float) for a in args]
-    function(*copies)
-    for before, after in zip(args, copies):
-        if not np.array_equal(np.asarray(before, dtype=float), after):
-            raise Mismatch(f"{what} changed its input array", "work on a copy (np.array(x, dtype=float)), "
-                           "never on the caller's array")
 
 
 def _require_turn_preserving(J, what, why):
@@ -74,11 +51,11 @@ def _pair(value, what):
 def _(jacobians_of_compose):
     R1, R2 = QUARTER_Z, QUARTER_X   # quarter turns about z and x
     J1, J2 = _pair(jacobians_of_compose(R1, R2), "jacobians_of_compose(R1, R2)")
-    numeric1 = _central(lambda d: Log((R1 @ R2).T @ R1 @ Exp(d) @ R2), 3)
-    numeric2 = _central(lambda d: Log((R1 @ R2).T @ R1 @ R2 @ Exp(d)), 3)
+    numeric1 = central_differences(lambda d: Log((R1 @ R2).T @ R1 @ Exp(d) @ R2), 3)
+    numeric2 = central_differences(lambda d: Log((R1 @ R2).T @ R1 @ R2 @ Exp(d)), 3)
     if close(J1, numeric1, 1e-6) and close(J2, numeric2, 1e-6):
         return
-    hint = _first_match(np.stack([J1, J2]), [(np.stack(pair), h) for pair, h in COMPOSE_SLIPS])
+    hint = first_match(np.stack([J1, J2]), [(np.stack(pair), h) for pair, h in COMPOSE_SLIPS])
     which = "J1" if not close(J1, numeric1, 1e-6) else "J2"
     error = off_by(J1, numeric1) if which == "J1" else off_by(J2, numeric2)
     raise Mismatch(f"{which} disagrees with finite differences ({error})",
@@ -99,7 +76,7 @@ def _(jacobians_of_compose):
     if not (close(arrays[0], lists[0], 1e-12) and close(arrays[1], lists[1], 1e-12)):
         raise Mismatch("jacobians_of_compose with lists differs from arrays",
                        hints.CONVERT_INPUTS_NP_ASARRAY_HINT)
-    _unchanged_inputs(jacobians_of_compose, (R1, R2), "jacobians_of_compose")
+    require_unchanged_inputs(jacobians_of_compose, (R1, R2), "jacobians_of_compose")
 
 
 @public_check("jacobians_of_compose", "for generic rotations, J1 and J2 keep a small turn's size to 1e-12 (Jᵀ J = I)")
@@ -115,9 +92,9 @@ def _(jacobians_of_compose):
 def _(jacobian_of_inverse):
     R = PERMUTATION
     J = require_shape(jacobian_of_inverse(R), (3, 3), "jacobian_of_inverse(R)")
-    numeric = _central(lambda d: Log(R @ (R @ Exp(d)).T), 3)
+    numeric = central_differences(lambda d: Log(R @ (R @ Exp(d)).T), 3)
     if not close(J, numeric, 1e-6):
-        hint = _first_match(J, [(-R.T, hints.INVERSE_LEFT_HINT), (-np.eye(3), hints.INVERSE_NOT_MOVED_HINT),
+        hint = first_match(J, [(-R.T, hints.INVERSE_LEFT_HINT), (-np.eye(3), hints.INVERSE_NOT_MOVED_HINT),
                                 (R, hints.INVERSE_SIGN_HINT), (R.T, hints.INVERSE_TRANSPOSE_HINT)])
         raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
                        hint or "write (R Exp(d))⁻¹ as R⁻¹ Exp(J d) and read off J")
@@ -129,7 +106,7 @@ def _(jacobian_of_inverse):
     if not close(J, -np.eye(3), 1e-12):
         raise Mismatch(f"jacobian_of_inverse(I) = {fmt(J)}, expected -I", hints.INVERSE_AT_IDENTITY_HINT)
     require_same_with_lists(jacobian_of_inverse, (PERMUTATION,), (3, 3), "jacobian_of_inverse(R)")
-    _unchanged_inputs(jacobian_of_inverse, (PERMUTATION,), "jacobian_of_inverse")
+    require_unchanged_inputs(jacobian_of_inverse, (PERMUTATION,), "jacobian_of_inverse")
 
 
 @public_check("jacobian_of_inverse", "for a generic rotation, J keeps a small turn's size to 1e-12 (Jᵀ J = I)")

@@ -12,7 +12,16 @@ from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
 from ..lie import Exp, ExpSE3
-from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape
+from .common import (
+    central_differences,
+    first_match,
+    fmt,
+    off_by,
+    require_pose,
+    require_same_with_lists,
+    require_shape,
+    require_unchanged_inputs,
+)
 
 # Quarter turns, written out: about z (x goes to y), about x (y goes to z), and their product (a third of
 # a turn about (1, 1, 1), which permutes the axes x → y → z → x).
@@ -22,31 +31,6 @@ QUARTER_Y = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]])
 PERMUTATION = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])  # QUARTER_Z @ QUARTER_X
 SHIFT = np.array([1.0, 2.0, 3.0])
 T_QUARTER = np.array([[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
-
-
-def _first_match(got, candidates, tol=1e-6):
-    """The hint of the first candidate (a slip's value at the check's inputs) that ``got`` equals."""
-    for candidate, hint in candidates:
-        if np.shape(got) == np.shape(candidate) and close(got, candidate, tol):
-            return hint
-    return None
-
-
-def _central(f, n, h=1e-6):
-    """Central differences of the vector function f(d) of a small n-vector d, at d = 0."""
-    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
-
-
-def _unchanged_inputs(function, args, what):
-    """Call ``function`` on copies and complain if it changed them."""
-    copies = [np.array(a, dtype=float) for a in args]
-    function(*copies)
-    for before, after in zip(args, copies):
-        if not np.array_equal(np.asarray(before, dtype=float), after):
-            raise Mismatch(
-                f"{what} changed its input array",
-                "work on a copy (np.array(x, dtype=float)), never on the caller's array",
-            )
 
 
 # ---------------------------------------------------------------- integrate_gyro
@@ -79,7 +63,7 @@ def _(integrate_gyro):
     rates = np.tile([0.0, 0.0, np.pi / 2], (50, 1))
     got = require_shape(integrate_gyro(QUARTER_X, rates, 0.02), (3, 3), "integrate_gyro(R0, ω, dt)")
     if not close(got, QUARTER_BODY_Z, 1e-9):
-        hint = _first_match(
+        hint = first_match(
             got,
             [
                 (QUARTER_WORLD_Z, WORLD_SIDE_HINT),
@@ -97,7 +81,7 @@ def _(integrate_gyro):
     rates = np.array([[np.pi / 2, 0.0, 0.0], [0.0, np.pi / 2, 0.0]])
     got = require_shape(integrate_gyro(np.eye(3), rates, 1.0), (3, 3), "integrate_gyro(I, ω, 1)")
     if not close(got, GYRO_X_THEN_Y, 1e-9):
-        hint = _first_match(
+        hint = first_match(
             got,
             [
                 (GYRO_Y_THEN_X, WORLD_SIDE_HINT + " (or the samples were taken in reverse order)"),
@@ -142,7 +126,7 @@ def _(integrate_gyro):
     require_same_with_lists(
         lambda R0, omegas: integrate_gyro(R0, omegas, 0.1), (QUARTER_X, rates), (3, 3), "integrate_gyro(R0, ω, dt)"
     )
-    _unchanged_inputs(lambda R0, omegas: integrate_gyro(R0, omegas, 0.1), (QUARTER_X, rates), "integrate_gyro")
+    require_unchanged_inputs(lambda R0, omegas: integrate_gyro(R0, omegas, 0.1), (QUARTER_X, rates), "integrate_gyro")
 
 
 # ---------------------------------------------------------------- rotated_point_covariance
@@ -178,7 +162,7 @@ def _(rotated_point_covariance):
     if not close(got, COV_POINT, 1e-12):
         raise Mismatch(
             f"got {fmt(got)}, expected {fmt(COV_POINT)} ({off_by(got, COV_POINT)})",
-            _first_match(got, COV_POINT_SLIPS, 1e-12)
+            first_match(got, COV_POINT_SLIPS, 1e-12)
             or "to first order y ≈ R p + J ε with lesson 06's J; the covariance of J ε is J Σ Jᵀ",
         )
 
@@ -206,7 +190,7 @@ def _(rotated_point_covariance):
     require_same_with_lists(
         rotated_point_covariance, (PERMUTATION, SIGMA, COV_P), (3, 3), "rotated_point_covariance(R, Σ, p)"
     )
-    _unchanged_inputs(rotated_point_covariance, (PERMUTATION, SIGMA, COV_P), "rotated_point_covariance")
+    require_unchanged_inputs(rotated_point_covariance, (PERMUTATION, SIGMA, COV_P), "rotated_point_covariance")
 
 
 # ---------------------------------------------------------------- covariance_left_to_right
@@ -238,7 +222,7 @@ def _(covariance_left_to_right):
     if not close(got, COV_RIGHT, 1e-12):
         raise Mismatch(
             f"got {fmt(got)}, expected {fmt(COV_RIGHT)} ({off_by(got, COV_RIGHT)})",
-            _first_match(got, COV_RIGHT_SLIPS, 1e-12)
+            first_match(got, COV_RIGHT_SLIPS, 1e-12)
             or "write Exp(ε_L) R as R Exp(A ε_L) with the adjoint, then Cov(A ε_L) = A Σ_L Aᵀ",
         )
 
@@ -255,7 +239,7 @@ def _(covariance_left_to_right):
             "only the axes change: the result is Σ_L turned by a rotation on both sides",
         )
     require_same_with_lists(covariance_left_to_right, (R, SIGMA_LEFT), (3, 3), "covariance_left_to_right(R, Σ)")
-    _unchanged_inputs(covariance_left_to_right, (R, SIGMA_LEFT), "covariance_left_to_right")
+    require_unchanged_inputs(covariance_left_to_right, (R, SIGMA_LEFT), "covariance_left_to_right")
 
 
 # ---------------------------------------------------------------- align_pose_gauss_newton
@@ -340,7 +324,7 @@ def _(align_pose_gauss_newton):
         (4, 4),
         "align_pose_gauss_newton(P, Q, T0)",
     )
-    _unchanged_inputs(
+    require_unchanged_inputs(
         lambda P, Q, T0: align_pose_gauss_newton(P, Q, T0, iters=3),
         (BOARD, BOARD_SEEN, np.eye(4)),
         "align_pose_gauss_newton",
@@ -364,7 +348,7 @@ def _log_tail_cost(T, P, Q, k):
 
 def _numeric_gradient(cost, T):
     """Central differences of cost(T Exp(xi)) with respect to xi at 0 (a 6-vector)."""
-    return _central(lambda xi: np.array([cost(T @ ExpSE3(xi))]), 6)[0]
+    return central_differences(lambda xi: np.array([cost(T @ ExpSE3(xi))]), 6)[0]
 
 
 def _outlier_data():
@@ -431,4 +415,4 @@ def _(align_pose_robust):
         (4, 4),
         "align_pose_robust(P, Q, T0, k)",
     )
-    _unchanged_inputs(lambda P, Q, T: align_pose_robust(P, Q, T, HUBER_K), (BOARD, BOARD_SEEN, T0), "align_pose_robust")
+    require_unchanged_inputs(lambda P, Q, T: align_pose_robust(P, Q, T, HUBER_K), (BOARD, BOARD_SEEN, T0), "align_pose_robust")
