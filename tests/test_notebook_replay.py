@@ -9,6 +9,8 @@ and wrong on every later one (stateful: the replay stops at the second call, the
 the demonstration's own point raising (the walls test's flaw: the replay's call fails, the kernel runs).
 """
 
+import json
+
 import pytest
 
 from autograder.grading import nbval_stage, notebook_calls
@@ -99,3 +101,25 @@ def test_a_master_that_passes_a_function_or_differs_between_runs_gets_no_transcr
     assert notebook_calls.transcript_from([[dict(entry, callbacks=1)]] * 2) is None
     assert notebook_calls.transcript_from([[dict(entry, ok=False, text=None)]] * 2) is None
     assert notebook_calls.transcript_from([[entry], None]) is None
+
+
+def test_a_lesson_whose_notes_are_damaged_or_too_long_alone_loses_its_transcript(tmp_path):
+    call = '{"__dict__":[["lesson","01"],["name","f"],["args",[1.0]],["kwargs",{"__dict__":[]}],["timeout",5.0]]}'
+    entry = {"lesson": "01", "call": call, "ok": True, "text": "2.0", "callbacks": 0}
+    prefix = tmp_path / notebook_calls.RECORD_PREFIX
+    (tmp_path / f"{prefix.name}-01.jsonl").write_text(json.dumps(entry) + "\n")
+    (tmp_path / f"{prefix.name}-03.jsonl").write_text(json.dumps(dict(entry, lesson="03"))[:40])  # cut by a full disk
+    (tmp_path / f"{prefix.name}-04.jsonl").write_text(json.dumps({"lesson": "04", "overflow": True}) + "\n")
+    records = notebook_calls.read_records(tmp_path)
+    by_lesson = {n: [r for r in records if r.get("lesson") == n] for n in ("01", "03", "04")}
+    assert notebook_calls.transcript_from([by_lesson["01"]] * 2).results == ["2.0"]
+    assert notebook_calls.transcript_from([by_lesson["03"]] * 2) is None
+    assert notebook_calls.transcript_from([by_lesson["04"]] * 2) is None
+
+
+def test_every_master_that_passes_no_function_is_replayable():
+    """The course's own masters, all lessons recorded in one run as a class run records them: each lesson's
+    notes stay within its budget, so only the lessons whose masters pass callbacks (02, 06) run kernels."""
+    learned = nbval_stage.record_notebook_calls(THIS_COURSE, GradingOptions())
+    not_replayable = {number for number, transcript in learned.items() if transcript is None}
+    assert not_replayable == {"02", "06"}

@@ -216,7 +216,7 @@ def _kernel_runs(runnable, options, course, slot, record=False):
                 else ({}, "")
             )
             if record:
-                records = notebook_calls.read_records(notebook_calls.records_file(scratch_dir))
+                records = notebook_calls.read_records(scratch_dir)
     finally:
         for box in sandboxes:
             box.close()

@@ -47,7 +47,6 @@ the masters, coursekit, the hidden suite, the libraries, the BLAS kernel).
 from __future__ import annotations
 
 import json
-import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -61,7 +60,8 @@ REPLAY_BUDGET = 20.0  # seconds of student calls in a replay; a nbval cell may t
 CHUNK_CALLS = 4000  # calls per batch (a batch's replies stop at 8 MiB in the feeder)
 CHUNK_BYTES = 2 * 1024**2  # of call text per batch
 MAX_CALLS = 50_000  # a lesson recording more calls than this is not replayed (a batch this large is not worth it)
-RECORD_BYTES = 64 * 1024**2  # a recording file larger than this is not read
+LESSON_RECORD_BYTES = 24 * 1024**2  # of calls noted per lesson; a lesson noting more is not replayed
+# (each lesson has a file of its own, below the sandbox's 32 MiB limit on a file's size)
 
 
 @dataclass
@@ -84,17 +84,26 @@ def memo(course: Course) -> dict:
     return holder.setdefault(MEMO_KEY, {})
 
 
-def read_records(path: Path) -> list[dict] | None:
-    """The calls noted in ``path`` by ``student_client`` (reference code only), or None if unreadable."""
+def read_records(scratch_dir: Path) -> list[dict] | None:
+    """The calls noted in ``scratch_dir`` by ``student_client`` (reference code only), lesson by lesson.
+
+    A lesson whose file cannot be read or went over :data:`LESSON_RECORD_BYTES` gets one entry without
+    ``ok``, so that lesson alone is not replayed. None only when the folder cannot be listed.
+    """
     try:
-        if path.stat().st_size > RECORD_BYTES:
-            return None
-        lines = path.read_text(encoding="utf-8").splitlines()
-        return [json.loads(line) for line in lines]
-    except FileNotFoundError:
-        return []
-    except (OSError, ValueError):
+        paths = sorted(Path(scratch_dir).glob(RECORD_PREFIX + "-*.jsonl"))
+    except OSError:
         return None
+    entries = []
+    for path in paths:
+        lesson = path.name[len(RECORD_PREFIX) + 1 : -len(".jsonl")]
+        try:
+            if path.stat().st_size > LESSON_RECORD_BYTES + 64 * 1024:
+                raise ValueError("over the budget")
+            entries.extend(json.loads(line) for line in path.read_text(encoding="utf-8").splitlines())
+        except (OSError, ValueError):
+            entries.append({"lesson": lesson, "overflow": True})
+    return entries
 
 
 def transcript_from(runs: list[list[dict] | None]) -> NotebookTranscript | None:
@@ -181,11 +190,13 @@ def load(course: Course) -> dict | None:
         return None
 
 
+RECORD_PREFIX = "notebook-calls"
+
+
 def environment_flag() -> dict[str, str]:
-    """The kernel's environment entry that makes ``student_client`` note its calls (recording runs only)."""
-    return {"AUTOGRADER_RECORD_CALLS": "/tmp/notebook-calls.jsonl"}
-
-
-def records_file(scratch_dir: Path) -> Path:
-    """Where a recording run's calls are, seen from the grader."""
-    return Path(scratch_dir) / os.path.basename(environment_flag()["AUTOGRADER_RECORD_CALLS"])
+    """The kernel's environment entries that make ``student_client`` note its calls (recording runs only):
+    one file per lesson, ``/tmp/notebook-calls-<lesson>.jsonl``, of at most :data:`LESSON_RECORD_BYTES`."""
+    return {
+        "AUTOGRADER_RECORD_CALLS": f"/tmp/{RECORD_PREFIX}",
+        "AUTOGRADER_RECORD_BYTES": str(LESSON_RECORD_BYTES),
+    }

@@ -163,20 +163,36 @@ def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, t
     return wire.loads(message["text"], max_bytes=MAX_REPLY_BYTES)
 
 
+_RECORDED_BYTES = {}  # lesson -> bytes noted so far (-1 once over the budget)
+
+
 def _record(request, callables, message):
     """Note one call and its reply for the grader (only when the kernel runs the *reference*'s functions,
-    once per lesson: ``nbval_stage.record_notebook_calls``), one JSON line per call in the file named by
-    ``AUTOGRADER_RECORD_CALLS``."""
+    once per lesson: ``nbval_stage.record_notebook_calls``), one JSON line per call in the lesson's own file,
+    ``$AUTOGRADER_RECORD_CALLS-<lesson>.jsonl``. Past ``$AUTOGRADER_RECORD_BYTES`` one line saying so
+    ends the lesson's notes (it will not be replayed); a failed write never reaches the notebook."""
+    lesson = str(request["lesson"])
+    written = _RECORDED_BYTES.get(lesson, 0)
+    if written < 0 or not lesson.isalnum():
+        return
     call_text = wire.dumps({key: request[key] for key in ("lesson", "name", "args", "kwargs", "timeout")})
     entry = {
-        "lesson": request["lesson"],
+        "lesson": lesson,
         "call": call_text,
         "ok": bool(message.get("ok")),
         "text": message.get("text") if isinstance(message.get("text"), str) else None,
         "callbacks": len(callables),
     }
-    with open(os.environ["AUTOGRADER_RECORD_CALLS"], "a", encoding="utf-8") as out:
-        out.write(json.dumps(entry) + "\n")
+    line = json.dumps(entry) + "\n"
+    if written + len(line) > int(os.environ.get("AUTOGRADER_RECORD_BYTES", "0")):
+        line, _RECORDED_BYTES[lesson] = json.dumps({"lesson": lesson, "overflow": True}) + "\n", -1
+    else:
+        _RECORDED_BYTES[lesson] = written + len(line)
+    try:
+        with open(f"{os.environ['AUTOGRADER_RECORD_CALLS']}-{lesson}.jsonl", "a", encoding="utf-8") as out:
+            out.write(line)
+    except OSError:
+        _RECORDED_BYTES[lesson] = -1
 
 
 def _answer_callback(callables, message):
