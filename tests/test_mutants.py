@@ -11,6 +11,8 @@ correct answer). The whole run is a benchmark command (README, "Mutation
 testing"), not a test.
 """
 
+import ast
+
 import pytest
 
 from autograder.mistakes import all_mistakes
@@ -49,7 +51,74 @@ FAMILY_EXAMPLES = {
     "relative_tolerance": ("is_rotation_matrix", "- 1e-05 * np.abs(np.eye(M.shape"),
     "unwrap": ("matrix_to_euler_zyx", "half_open(yaw) → yaw"),
     "delegation": ("exp_so3", "the library's version"),
+    "return_type": ("is_rotation_matrix", "→ return int(orthogonality_error <= tol"),
+    "return_dtype": ("rot_z", "returned as float32"),
+    "argument_write": ("quat_from_axis_angle", "u /= np.linalg.norm(u) (in place)"),
+    "threshold": ("is_rotation_matrix", "orthogonality_error ** 2 <= tol"),
+    "small_guard": ("quat_to_euler_zyx", "b < 1e-12 → b == 0.0"),
+    "iterations": ("rotation_mean", "range(100) → range(3)"),
+    "input_form": ("compose", "np.asarray(R_ab, dtype=float) → R_ab.astype(float)"),
 }
+
+# The families of issue #43, item 5, each on a small answer: (family, answer, a piece of one mutant's source).
+SMALL_EXAMPLES = [
+    ("return_type", "def f(x):\n    return np.array([x, 1.0])\n", ".tolist()"),
+    ("return_type", "def f(x):\n    return bool(x > 0)\n", "return int(x > 0)"),
+    ("return_type", "def f(x):\n    return float(x), 2.0\n", "return [float(x), 2.0]"),
+    ("return_type", "def f(x):\n    return float(x @ x)\n", "np.array([x @ x])"),
+    ("return_dtype", "def f(x):\n    return np.eye(3)\n", "np.eye(3, dtype=int)"),
+    ("return_dtype", "def f(x):\n    return np.array([1.0, 0.0, 0.0])\n", "np.array([1, 0, 0])"),
+    ("return_dtype", "def f(x):\n    return x @ x.T\n", "dtype=np.float32"),
+    (
+        "argument_write",
+        "def f(u):\n    u = np.asarray(u, dtype=float)\n    return u / np.linalg.norm(u)\n",
+        "if np.linalg.norm(u) != 1.0:\n        u /= np.linalg.norm(u)",
+    ),
+    (
+        "argument_write",
+        "def f(q):\n    q = np.asarray(q, dtype=float)\n    if q[0] < 0:\n        q = -q\n    return q\n",
+        "q[...] = -q",
+    ),
+    ("threshold", "def f(x, tol=1e-9):\n    return bool(np.linalg.norm(x) <= tol)\n", "<= tol * 10"),
+    ("threshold", "def f(x, tol=1e-9):\n    return bool(np.linalg.norm(x) <= tol)\n", "np.linalg.norm(x) ** 2 <= tol"),
+    ("threshold", "def f(x):\n    return bool(np.sqrt(x @ x) < 0.5)\n", "x @ x < 0.5"),
+    ("small_guard", "def f(x, n):\n    return x / n\n", "x / max(n, 1e-12)"),
+    ("small_guard", "def f(t):\n    if t < 1e-08:\n        return 1.0\n    return np.sin(t) / t\n", "if t == 0.0"),
+    ("iterations", "def f(x, iters=10):\n    for _ in range(iters):\n        x = x / 2\n    return x\n", "range(3)"),
+    (
+        "iterations",
+        "def f(x):\n    while abs(x) > 1e-09:\n        x = x / 2\n    return x\n",
+        "for _ in range(3):\n        if not abs(x) > 1e-09:\n            break",
+    ),
+    (
+        "iterations",
+        "def f(x):\n    for _ in range(100):\n        x = x / 2\n        if abs(x) < 1e-12:\n"
+        "            break\n    return x\n",
+        "abs(x) < 1e-09",
+    ),
+    ("input_form", "def f(x):\n    x = np.asarray(x, dtype=float)\n    return x + 1.0\n", "x = x.astype(float)"),
+    (
+        "input_form",
+        "def f(x):\n    x = np.asarray(x, dtype=float)\n    return x + 1.0\n",
+        "np.asarray(x, dtype=float) if isinstance(x, list) else x",
+    ),
+    (
+        "input_form",
+        "def f(M):\n    try:\n        M = np.asarray(M, dtype=float)\n    except (TypeError, ValueError):\n"
+        "        return False\n    if M.ndim != 2 or M.shape[0] != M.shape[1]:\n        return False\n    return True\n",
+        "if M.shape[0] != M.shape[1]:",
+    ),
+]
+
+
+@pytest.mark.parametrize("family, answer, piece", SMALL_EXAMPLES)
+def test_each_new_family_mutates_a_small_answer(family, answer, piece):
+    tree = ast.parse(answer)
+    sources = [operators.apply(tree, e) for e in operators.edits(tree, "f") if e.family == family]
+    for source in sources:
+        compile(source, "<mutant>", "exec")
+        assert source != ast.unparse(tree)
+    assert any(piece in source for source in sources), f"no {family} mutant holds {piece!r}: {sources}"
 
 
 def _example(family):

@@ -28,10 +28,7 @@ def _vee(W):
 
 def _hint(got, R, R_dot, omega_b):
     slips = [
-        (
-            _vee(R_dot @ R.T),
-            "that is the world rate ω_w (Ṙ Rᵀ = [ω_w]×); the gyroscope's rate is in body axes, ω_b = Rᵀ ω_w",
-        ),
+        (_vee(R_dot @ R.T), hints.BODY_RATE_IS_WORLD_RATE_HINT),
         (-omega_b, "the opposite spin: ω_b came out negated"),
         (_vee(R_dot), "Ṙ alone is not skew-symmetric: it still holds the attitude R"),
         (R.T @ omega_b, hints.RATE_TURNED_INTO_BODY_HINT),
@@ -42,7 +39,10 @@ def _hint(got, R, R_dot, omega_b):
             got / size, candidate / size, omega_b / size, floor=1e-12
         ):
             return hint
-    return "Ṙ = [R ω_b]× R = R [ω_b]× R ᵀ R: solve for [ω_b]×, then read ω_b off it"
+    return (
+        "ω_b is off: combine section 8's two facts with the identity for [R v]×, and test your formula on "
+        "R(t) = R0 Exp(t ω_b), whose body rate you know"
+    )
 
 
 @exercise("body_angular_velocity", weight=3)

@@ -431,8 +431,8 @@ def _log_hint(got, R, expected):
         return hints.TWICE_ROTATION_VECTOR_VEE_HINT
     if angle < 0.5 and explains(got, a, expected):
         return (
-            f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle**3 / 6:.1e}: you dropped the θ²/6 term, "
-            "keep θ/sin θ ≈ 1 + θ²/6 for small θ"
+            f"returned vee(R - Rᵀ)/2 = sin θ u, off by about {angle**3 / 6:.1e} at θ = {angle:.3g}: below your "
+            "threshold the factor θ/sin θ was cut to its first term; keep its θ² term too"
         )
     if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
@@ -447,7 +447,8 @@ def _log_hint(got, R, expected):
     ):
         return (
             f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
-            "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ"
+            "needs its own branch near π that does not divide by sin θ (section 5: which part of R still holds "
+            "the axis there?)"
         )
     if angle > 3.0 and any(explains(got, candidate, expected) for candidate in column_logs(R, theta, a)):
         return COLUMN_HINT
@@ -478,7 +479,7 @@ def test_log_so3_random(student):
 
 @exercise("log_so3", weight=2)
 def test_log_so3_small_angles(student):
-    """θ = 0, 1e-12, 1e-8, 1e-5, 1e-3: off by at most 1e-15 + 1e-10 θ (a dropped θ²/6 term shows), never NaN"""
+    """θ = 0, 1e-12, 1e-8, 1e-5, 1e-3: off by at most 1e-15 + 1e-10 θ (a dropped series term shows), never NaN"""
     got = _log(student, np.eye(3), "log_so3(I)")
     expect_close(got, np.zeros(3), 1e-15, "log_so3(I)", _log_hint(got, np.eye(3), np.zeros(3)))
     for index, P in enumerate(_nearly_identities()):
@@ -574,13 +575,10 @@ def _axis_hint(u, R, axis):
     """Name the slip behind a wrong axis u from axis_angle(R) (``axis`` the right unit axis, sign included)."""
     a, _, _, _ = _log_parts(R)
     if np.linalg.norm(a) <= 1e-9 and (np.linalg.norm(a) == 0.0 or abs(abs(u @ a) / np.linalg.norm(a) - 1.0) <= 1e-6):
-        return (
-            "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: the symmetric part (R + I)/2 "
-            "still does, in every column that is not nearly zero (sign from R - Rᵀ just below π)"
-        )
+        return hints.AXIS_AT_HALF_TURN_HINT
     if explains(u, -axis, axis):
         return hints.U_POINTS_WRONG_WAY_HINT
-    return "u = vee(R - Rᵀ)/(2 sin θ) away from π; near π take it from (R + Rᵀ)/2, with its sign from R - Rᵀ"
+    return "u is off: check it against R u = u, its length 1 and the sense of the turn, near π as well as far from it"
 
 
 def _axis_angle(student, R, what):

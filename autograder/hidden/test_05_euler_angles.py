@@ -208,8 +208,8 @@ def _extraction_hint(got, R, eps=None):
             return NO_LOCK_BRANCH_HINT
         return (
             "next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
-            "atan2 of them gives yaw and roll only to ~1e-16/cos(pitch); get yaw first, then roll from the "
-            "large entries of R, which the yaw you already have makes available"
+            "atan2 of them gives yaw and roll only to ~1e-16/cos(pitch), and the angles rebuild the large entries "
+            "of R badly; the roll must come from entries of R that stay large next to the lock"
         )
     if eps is not None and abs(got[2]) == 0.0:
         return (
@@ -218,7 +218,7 @@ def _extraction_hint(got, R, eps=None):
         )
     return (
         "at and next to the lock: pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), a lock branch when "
-        "cos(pitch) < 1e-12 (roll = 0), and the roll from the large entries once the yaw is known"
+        "cos(pitch) < 1e-12 (roll = 0), and a roll read from entries of R that stay large next to the lock"
     )
 
 

@@ -73,12 +73,15 @@ def _hint(got, yaw, pitch):
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(got, candidate, truth, floor=1e-13):
             return hint
-    return "E_w = [e_z, Rz(ψ) e_y, Rz(ψ) Ry(θ) e_x]: each rate spins about its own axis, written in world axes"
+    return (
+        "E_w @ rates must be the world angular velocity: each rate alone spins about its own axis, written in "
+        "world axes; compare one column at a time with a finite difference of a pure yaw, pitch or roll rate"
+    )
 
 
 @exercise("euler_rates_matrix_world", weight=3)
 def test_world_rates_everywhere(student):
-    """equals [e_z, Rz(ψ) e_y, Rz(ψ) Ry(θ) e_x] to 1e-12 for 10 states: generic, tiny angles, next to and at the lock"""
+    """E_w @ rates is the world angular velocity, to 1e-12 for 10 states: generic, tiny angles, next to and at the lock"""
     for yaw, pitch in STATES:
         got = expect_array(
             student.euler_rates_matrix_world(yaw, pitch), (3, 3), f"euler_rates_matrix_world({yaw:.3g}, {pitch:.3g})"

@@ -134,15 +134,15 @@ def _inverse_hint(J, R):
             (R.T, hints.INVERSE_TRANSPOSE_HINT),
             (
                 np.eye(3),
-                "the sign and the side: invert R Exp(d) factor by factor, then move the small turn to the "
-                "right of Rᵀ with the adjoint",
+                "the sign and the side: inverting reverses the small turn, and J must act on a turn to the right "
+                "of R⁻¹; at the identity J is -I",
             ),
         ],
         -R,
     ) or (
         FLOAT32_HINT
         if single_precision_error(J, -R)
-        else "invert R Exp(d) factor by factor, then move the small turn to the right of Rᵀ with the adjoint"
+        else "J must satisfy (R Exp(d))⁻¹ ≈ R⁻¹ Exp(J d): compare it with finite differences, and with -I at the identity"
     )
 
 

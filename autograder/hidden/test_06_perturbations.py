@@ -629,7 +629,7 @@ def test_numerical_jacobian_rotation_left(student):
 
 @exercise("numerical_jacobian", weight=1)
 def test_numerical_jacobian_unrotate(student):
-    """with a right boxplus, the Jacobian of R ↦ Rᵀ p is [Rᵀ p]×"""
+    """with a right boxplus, the Jacobian of R ↦ Rᵀ p matches the exact one"""
     for R, p in _rotation_cases(645, count=4):
         value = student.numerical_jacobian(Probe("unrotate_point_by", p), R, Probe("so3_plus_right"))
         expect(
@@ -830,13 +830,13 @@ def _jr_candidates(w):
         (
             np.eye(3),
             f"returned I at θ = {theta:.2g}: the first-order term -[w]×/2 is missing; below a small angle use "
-            "the series I - [w]×/2 + [w]×²/6",
+            "the Taylor series of a and b in Jr = I - a [w]× + b [w]×², not I",
         ),
         (_jr_naive(w), hints.CLOSED_FORM_LOSES_DIGITS_HINT),
         (
             _jr_series(w),
-            f"that is the one-term series I - [w]×/2 + [w]×²/6 at θ = {theta:.2g}, off by about θ³/24 "
-            "there: below your threshold keep the θ² terms, a = 1/2 - θ²/24 and b = 1/6 - θ²/120",
+            f"that is a one-term series of each coefficient at θ = {theta:.2g}, off by about θ³/24 there: "
+            "below your threshold keep the θ² term of each coefficient's series",
         ),
     ]
     return candidates
@@ -954,8 +954,8 @@ def test_right_jacobian_tiny_angles(student):
         [_jr_series(w) for w in ws],
         _jr_candidates,
         "right_jacobian_so3",
-        "Jr = I - a [w]× + b [w]×² with a → 1/2 and b → 1/6: below a small angle use the series "
-        "a = 1/2 - θ²/24, b = 1/6 - θ²/120",
+        "Jr = I - a [w]× + b [w]×² with a → 1/2 and b → 1/6: below a small angle use the Taylor series of a and "
+        "b, each with its θ² term",
         sign=-1.0,
     )
 

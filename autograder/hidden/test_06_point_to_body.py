@@ -27,7 +27,7 @@ def _hint(J, R, p):
     size = np.linalg.norm(p)
     slips = [
         (R.T @ _skew(p), hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT),
-        (-truth, "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ, and -[δ]× v = +[v]× δ"),
+        (-truth, hints.POINT_TO_BODY_SIGN_HINT),
         (_skew(p), hints.POINT_SEEN_BODY_RT_HINT),
         (
             -R @ _skew(p),
@@ -39,12 +39,15 @@ def _hint(J, R, p):
             J / size, candidate / size, truth / size, floor=1e-13
         ):
             return hint
-    return "(R Exp(δ))ᵀ p_w ≈ (I - [δ]×) Rᵀ p_w = Rᵀ p_w + [Rᵀ p_w]× δ"
+    return (
+        "J must match the finite differences of (R Exp(δ))ᵀ p_w column by column: column j is how the body-frame "
+        "point moves per radian of turn about the body's axis j"
+    )
 
 
 @exercise("jacobian_point_to_body", weight=3)
 def test_point_to_body_exact(student):
-    """equals [Rᵀ p_w]× to 1e-12 |p_w| for R at every angle from 1e-12 to π and |p_w| from 1e-6 to 1e3 m"""
+    """equals d((R Exp(δ))ᵀ p_w)/dδ at δ = 0 to 1e-12 |p_w|, R at every angle from 1e-12 to π, |p_w| from 1e-6 to 1e3 m"""
     rng = np.random.default_rng(6300)
     for angle, size in zip(ANGLES, SIZES):
         axis, p = rng.normal(size=(2, 3))

@@ -118,14 +118,15 @@ def _adjoint_hint(got, T):
                     "diag(R, R) is the adjoint of a pure rotation: a translation t adds the coupling "
                     "block that multiplies phi in the translation rows",
                 ),
-                (_adjoint(R, t, "no_R"), "the spin is turned by R before it meets t: R belongs in the coupling block"),
+                (_adjoint(R, t, "no_R"), hints.ADJOINT_COUPLING_WITHOUT_R_HINT),
                 (
                     _adjoint(R, t, "sign"),
                     "the coupling block has the wrong sign: moving phi across the cross product flips it, a × b = -b × a",
                 ),
                 (
                     _adjoint(R, t, "R_first"),
-                    "R [t]× multiplies in the wrong order: turn the spin first, then cross t with it",
+                    "R [t]× multiplies in the wrong order: conjugate the twist matrix block by block, T ξ^ T⁻¹, "
+                    "and follow which of R and t acts on phi first",
                 ),
                 (_adjoint(R.T, t), "used Rᵀ where R belongs: T ξ^ T⁻¹ turns the twist by R"),
             ],
@@ -227,7 +228,10 @@ def _point_hint(J, T, p):
             J,
             [
                 (_point_jacobian(T, p, "rotation_first"), "xi = [rho, phi]: the first three columns are for rho"),
-                (_point_jacobian(T, p, "translation_I"), "rho is a shift in the body frame: its block is R, not I"),
+                (
+                    _point_jacobian(T, p, "translation_I"),
+                    "the rho block is I, as for a left perturbation: here rho is a shift in the body frame",
+                ),
                 (_point_jacobian(T, p, "left"), "[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T"),
                 (_point_jacobian(T, p, "sign"), hints.SIGN_ROTATION_BLOCK_PHI_HINT),
                 (

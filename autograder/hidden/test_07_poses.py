@@ -95,13 +95,10 @@ def _random_twists(count, seed, max_angle):
     return [_twist(rng.normal(size=3), rng.uniform(0.0, max_angle), rng.normal(size=3)) for _ in range(count)]
 
 
-SERIES_HINT_V = (
-    "below θ = 1e-2 use the Taylor series of the two coefficients of V (1/2 - θ²/24, 1/6 - θ²/120): "
-    "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not 1/2"
-)
+SERIES_HINT_V = hints.V_SERIES_TINY_ANGLE_HINT
 SERIES_NAN_HINT_V = (
     "NaN or inf at a tiny angle: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
-    "below θ = 1e-2 use their Taylor series (1/2 - θ²/24, 1/6 - θ²/120)"
+    "below θ = 1e-2 use their Taylor series, each with its θ² term"
 )
 SERIES_HINT_C = hints.SMALL_ANGLE_SERIES_HINT
 
@@ -183,8 +180,12 @@ def _inverse_hint(got, T):
         got,
         _inverse(T),
         [
-            (T.T, "that is the plain transpose of T: a pose is not orthogonal; only the rotation block is transposed"),
-            (_pose(R.T, -t), "the translation must be turned as well as negated: -t is written in a's axes, not b's"),
+            (
+                T.T,
+                "that is the plain transpose of T: a pose is not orthogonal, and Tᵀ puts t in the bottom row "
+                "without undoing the shift",
+            ),
+            (_pose(R.T, -t), hints.INVERSE_TRANSLATION_FRAME_HINT),
             (_pose(R.T, t), hints.KEPT_T_UNCHANGED_INVERSE_HINT),
             (_pose(R, -R @ t), hints.ROTATION_BLOCK_INVERSE_RT_HINT),
         ],
@@ -507,7 +508,7 @@ def _one_term_series_hint(got, xi):
     if gap > 0.0 and float(np.max(np.abs(np.asarray(got)[:3, 3] - short))) <= 1e-2 * gap:
         return (
             f"that is V's one-term series I + W/2 + W²/6 at |phi| = {theta:.2g}, off by about θ³/24 |rho| there: "
-            "below your threshold keep the θ² terms (1/2 - θ²/24, 1/6 - θ²/120)"
+            "below your threshold keep the θ² term of each coefficient's series"
         )
     return ""
 

@@ -29,13 +29,13 @@ def _hint(got, T_wa, T_wb):
     slips = [
         (T_wb @ np.linalg.inv(T_wa), "that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain"),
         (T_wa.T @ T_wb, hints.INVERSE_POSE_TRANSPOSE_T1_HINT),
-        (np.linalg.inv(T_wb) @ T_wa, "that is T_ba, a seen from b: T_ab = T_wa⁻¹ T_wb"),
+        (np.linalg.inv(T_wb) @ T_wa, hints.RELATIVE_POSE_REVERSED_HINT),
         (_pose(T_wa[:3, :3].T @ T_wb[:3, :3], T_wb[:3, 3] - T_wa[:3, 3]), hints.SHIFT_IN_WORLD_AXES_HINT),
     ]
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(got, candidate, truth, floor=1e-12):
             return hint
-    return "T_ab = T_aw T_wb = T_wa⁻¹ T_wb"
+    return hints.RELATIVE_POSE_CHAIN_HINT
 
 
 def _random_pose(rng, angle, shift):

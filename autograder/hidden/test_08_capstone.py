@@ -285,7 +285,10 @@ def _mean_hint(M, Rs):
     Rs = np.asarray(Rs, dtype=float)
     truth = _geodesic_mean(Rs)
     if _explains(M, _chordal(Rs), truth):
-        return "that is the chordal mean (the projected arithmetic mean); iterate M ← M Exp(mean Log(Mᵀ R_i))"
+        return (
+            "that is the chordal mean (the projected arithmetic mean): its residuals Log(Mᵀ R_i) do not balance; "
+            "the geodesic mean needs an iteration"
+        )
     one_step = Rs[0] @ _exp(np.mean([_log(Rs[0].T @ R) for R in Rs], axis=0))
     if _explains(M, one_step, truth):
         return "that is a single step from Rs[0]: repeat until the step is tiny (|δ| < 1e-12)"
@@ -293,7 +296,7 @@ def _mean_hint(M, Rs):
         return hints.AVERAGING_LOG_R_I_HINT
     if _explains(M, Rs[0], truth):
         return hints.RETURNED_FIRST_ROTATION_RS_HINT
-    return "iterate δ = mean of Log(Mᵀ R_i), M ← M Exp(δ), until |δ| < 1e-12"
+    return "the residuals Log(Mᵀ R_i) must balance, Σ Log(Mᵀ R_i) = 0: iterate until your step is tiny (|δ| < 1e-12)"
 
 
 def _imbalance(M, Rs):

@@ -61,7 +61,7 @@ def _hint(M, Rs, w):
     for candidate, hint in slips:
         if np.max(np.abs(candidate - truth)) > 1e-9 and explains(M, candidate, truth, floor=1e-12):
             return hint
-    return "iterate δ = Σ w_i Log(Mᵀ R_i) / Σ w_i, M ← M Exp(δ), until |δ| < 1e-12"
+    return "the weighted residuals must balance, Σ w_i Log(Mᵀ R_i) = 0: iterate until your step is tiny (|δ| < 1e-12)"
 
 
 def _mean(student, Rs, w, what):
@@ -107,7 +107,7 @@ def test_weights_are_counts(student):
             M,
             1e-9,
             f"the mean with every weight multiplied by {scale:g}",
-            "only the ratios of the weights matter: divide by Σ w_i",
+            hints.WEIGHT_RATIOS_HINT,
         )
 
 

@@ -2,7 +2,8 @@
 
 Judged by the result only, never by the method: on datasets the grader draws here with its own seeds (6 to 40
 pairs, noise σ = 0.01 to 0.05 rad per axis on A_i, up to 40 % outliers drawn uniformly on SO(3), turns of B_i
-between 0.3 and 2.5 rad, and near-degenerate sets whose axes lie within about 0.1 to 0.15 rad of one direction),
+between 0.3 and 2.5 rad, near-degenerate sets whose axes lie within about 0.1 to 0.15 rad of one direction, and
+exact sets whose axes all lie in one plane),
 the angle of X from the truth must stay below 5 σ_X, where σ_X = σ √trace(H⁻¹), H = Σ [b_i]×ᵀ [b_i]× over the
 good pairs, is the first-order spread of the best estimate (1e-9 rad for exact data). Core idea (3 of 6 points):
 surviving outliers at the noise's accuracy. Every test calls hand_eye_rotation only.
@@ -14,6 +15,7 @@ from scipy.spatial.transform import Rotation
 
 from .helpers import Wrong, exercise, expect, expect_array, rotation_problem
 
+PLANE_SEEDS = (9712, 9713, 9714, 9715, 9716, 9717)  # exact pairs whose axes share one plane (X is still determined)
 SLOW = 20  # seconds per call: a search over pairs of pairs is allowed
 
 
@@ -29,7 +31,7 @@ def _skew(v):
     return np.column_stack([np.cross(np.asarray(v, dtype=float), e) for e in np.eye(3)])
 
 
-def _dataset(seed, pairs, sigma, outliers, cone=None):
+def _dataset(seed, pairs, sigma, outliers, cone=None, plane=False):
     rng = np.random.default_rng(seed)
     X = Rotation.random(random_state=rng).as_matrix()
     main_axis = rng.normal(size=3)
@@ -37,6 +39,8 @@ def _dataset(seed, pairs, sigma, outliers, cone=None):
     As, Bs = [], []
     for _ in range(pairs):
         axis = rng.normal(size=3) if cone is None else main_axis + cone * rng.normal(size=3) / np.sqrt(3)
+        if plane:  # every turn's axis in the plane normal to main_axis
+            axis = axis - (axis @ main_axis) * main_axis
         B = _exp(rng.uniform(0.3, 2.5) * axis / np.linalg.norm(axis))
         Bs.append(B)
         As.append(X @ B @ X.T @ _exp(sigma * rng.normal(size=3)))
@@ -54,8 +58,8 @@ def _nearest(M):
     return U @ np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ Vt
 
 
-def _judge(student, seed, pairs, sigma, outliers, cone=None):
-    As, Bs, X_true, bound, good = _dataset(seed, pairs, sigma, outliers, cone)
+def _judge(student, seed, pairs, sigma, outliers, cone=None, plane=False):
+    As, Bs, X_true, bound, good = _dataset(seed, pairs, sigma, outliers, cone, plane)
     X = expect_array(student.with_timeout(SLOW).hand_eye_rotation(As, Bs), (3, 3), "hand_eye_rotation(As, Bs)")
     problem = rotation_problem(X)
     expect(
@@ -64,8 +68,10 @@ def _judge(student, seed, pairs, sigma, outliers, cone=None):
         "project your fit onto SO(3)",
     )
     error = float(np.linalg.norm(_log(X.T @ X_true)))
-    what = f"{pairs} pairs, σ = {sigma:g} rad, {outliers} outliers" + (
-        "" if cone is None else f", axes within {cone:g} rad"
+    what = (
+        f"{pairs} pairs, σ = {sigma:g} rad, {outliers} outliers"
+        + ("" if cone is None else f", axes within {cone:g} rad")
+        + (", every axis in one plane" if plane else "")
     )
     if not error <= bound:
         transposed = float(np.linalg.norm(_log(X @ X_true)))
@@ -82,20 +88,25 @@ def _judge(student, seed, pairs, sigma, outliers, cone=None):
 
 @exercise("hand_eye_rotation", weight=3)
 def test_hand_eye_with_outliers(student):
-    """within 5 σ_X of the truth on 4 grader-drawn datasets: 12 to 40 pairs, σ = 0.01 to 0.05 rad, 20 to 40 % outliers"""
+    """within 5 σ_X of the truth on 6 grader-drawn datasets: 12 to 40 pairs, σ = 0.01 to 0.05 rad, 20 to 40 % outliers"""
     for seed, pairs, sigma, outliers in [
         (9700, 20, 0.01, 4),
         (9701, 40, 0.02, 16),
         (9702, 12, 0.05, 3),
         (9703, 30, 0.03, 9),
+        (9704, 12, 0.02, 4),
+        (9705, 12, 0.02, 4),
     ]:
         _judge(student, seed, pairs, sigma, outliers)
 
 
 @exercise("hand_eye_rotation", weight=1)
 def test_hand_eye_without_outliers(student):
-    """exact to 1e-9 rad on 6 exact pairs, and within 5 σ_X on 8 noisy pairs without outliers"""
+    """exact to 1e-9 rad on 6 exact pairs and on exact pairs whose axes share one plane, and within 5 σ_X on 8
+    noisy pairs without outliers"""
     _judge(student, 9710, 6, 0.0, 0)
+    for seed in PLANE_SEEDS:
+        _judge(student, seed, 8, 0.0, 0, plane=True)
     _judge(student, 9711, 8, 0.02, 0)
 
 

@@ -118,6 +118,25 @@ def test_compound_pose(student):
 
 
 @exercise("compound_pose_covariance", weight=1)
+def test_compound_exact_when_nothing_is_carried(student):
+    """with T2 = I nothing crosses it: S equals S1 + S2 to 1e-9 (relative), for covariances whose digits need float64"""
+    rng = np.random.default_rng(9815)
+    for size in (1e-8, 1e-3, 1.0):
+        T1 = _pose(rng.uniform(0, 3), rng.normal(size=3), 3 * rng.normal(size=3))
+        S1, S2 = _covariance(rng, size), _covariance(rng, size)
+        _, S = _pair(student.compound_pose_covariance(T1, S1, np.eye(4), S2))
+        scale = np.max(np.abs(S1 + S2))
+        near = np.max(np.abs(S - (S1 + S2))) <= 1e-5 * scale  # near: digits lost; far: the other tests say why
+        expect_close(
+            S / scale,
+            (S1 + S2) / scale,
+            1e-9,
+            f"S with T2 = I (covariances of size {size:g})",
+            hints.COMPOUND_PRECISION_HINT if near else "",
+        )
+
+
+@exercise("compound_pose_covariance", weight=1)
 def test_compound_against_monte_carlo(student):
     """S agrees with the covariance of 40 000 sampled chains (twists drawn, composed exactly) within 4 %"""
     rng = np.random.default_rng(9820)

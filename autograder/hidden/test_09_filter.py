@@ -5,8 +5,9 @@ central differences (scipy's Exp and Log), never a closed form.
 
 - filter_predict: R_new = R Exp(ω Δt) to 1e-12; P_new the first-order covariance of ε' with
   R_new Exp(ε') = R Exp(ε) Exp((ω - n) Δt), n ~ N(0, Q), to 1e-7 of max |P_new|, for steps |ω Δt| at every decade
-  from 1e-12 to π. Core idea (3 of 5 points): the old error crosses the step's turn and the noise enters through
-  the step.
+  from 1e-12 to π (and just below 1e-6, 1e-3, 0.1), and the docstring's special value P + dt² Q at ω = 0 to 1e-14.
+  Core idea (3 of 6 points): the old error crosses the step's turn and the noise enters through the step. Lists
+  and nested tuples are accepted.
 - attitude_nees: εᵀ P⁻¹ ε with ε = Log(R_estᵀ R_true), to 1e-9 relative, for errors at every decade from 1e-12 to
   π - 1e-9 (core, 3 of 5 points).
 Every test calls its own exercise's student function only.
@@ -54,6 +55,11 @@ def _pair(value, what):
     return expect_array(value[0], (3, 3), f"{what}'s R_new"), expect_array(value[1], (3, 3), f"{what}'s P_new")
 
 
+def _tuples(a):
+    """``a`` as nested tuples of floats (array_like, as the docstrings allow)."""
+    return tuple(_tuples(x) for x in a) if np.ndim(a) else float(a)
+
+
 def _first(got, candidates, truth, tol):
     for candidate, hint in candidates:
         if np.max(np.abs(candidate - truth)) > 10 * tol and np.max(np.abs(got - candidate)) <= tol:
@@ -91,9 +97,13 @@ def _predict_hint(P_new, R, P, omega, dt, Q, truth, tol):
     )
 
 
+# every decade, and just below 1e-6, 1e-3 and 0.1, where a small-step branch may switch
+PREDICT_STEPS = DECADES + (9.9e-7, 9.9e-4, 9.9e-2)
+
+
 def _predict_cases(seed):
     rng = np.random.default_rng(seed)
-    for step in DECADES:
+    for step in PREDICT_STEPS:
         dt = float(rng.choice([0.005, 0.01, 0.1, 0.5]))
         omega = step / dt * _unit(rng)
         yield _exp(rng.uniform(0.2, 3.0) * _unit(rng)), _covariance(rng, 1e-3), omega, dt, _covariance(rng, 1e-2)
@@ -131,12 +141,37 @@ def test_predict_attitude(student):
 
 
 @exercise("filter_predict", weight=1)
+def test_predict_no_turn(student):
+    """the docstring's special value: with ω = 0, R_new = R and P_new = P + dt² Q, to 1e-14 (generic R, P, Q)"""
+    rng = np.random.default_rng(9130)
+    for dt in (0.005, 0.1, 0.5):
+        R, P, Q = _exp(rng.uniform(0.2, 3.0) * _unit(rng)), _covariance(rng, 1e-3), _covariance(rng, 1e-2)
+        R_new, P_new = _pair(student.filter_predict(R, P, np.zeros(3), dt, Q), "filter_predict")
+        expect_close(R_new, R, 1e-14, f"filter_predict's R_new with ω = 0 (dt = {dt:g})", hints.PREDICT_NO_TURN_R_HINT)
+        truth = P + dt * dt * Q
+        expect_close(
+            P_new,
+            truth,
+            1e-14 * np.max(np.abs(truth)),
+            f"filter_predict's P_new with ω = 0 (dt = {dt:g})",
+            hints.PREDICT_NO_TURN_P_HINT,
+        )
+
+
+@exercise("filter_predict", weight=1)
 def test_predict_accepts_lists(student):
-    """gives the same answer for plain lists as for arrays"""
+    """gives the same answer for plain lists and for nested tuples as for arrays"""
     rng = np.random.default_rng(9120)
     args = (random_rotations(1, 9121)[0], _covariance(rng, 1e-3), [0.3, -1.0, 2.0], 0.05, _covariance(rng, 1e-2))
     expect_same_with_lists(
         lambda *a: np.vstack(student.filter_predict(*a)), args, (6, 3), "filter_predict(R, P, omega_meas, dt, Q)"
+    )
+    expect_same_with_lists(
+        lambda *a: np.vstack(student.filter_predict(*a)),
+        args,
+        (6, 3),
+        "filter_predict(...) given tuples",
+        lists=[_tuples(a) for a in args],
     )
 
 
@@ -200,6 +235,10 @@ def test_nees_chi_square(student):
 
 @exercise("attitude_nees", weight=1)
 def test_nees_accepts_lists(student):
-    """gives the same answer for plain lists as for arrays"""
+    """gives the same answer for plain lists and for nested tuples as for arrays"""
     R = random_rotations(2, 9320)
-    expect_same_with_lists(student.attitude_nees, (R[0], R[1], np.diag([0.1, 0.2, 0.3])), (), "attitude_nees")
+    args = (R[0], R[1], np.diag([0.1, 0.2, 0.3]))
+    expect_same_with_lists(student.attitude_nees, args, (), "attitude_nees")
+    expect_same_with_lists(
+        student.attitude_nees, args, (), "attitude_nees given tuples", lists=[_tuples(a) for a in args]
+    )

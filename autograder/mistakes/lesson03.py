@@ -486,8 +486,8 @@ def log_so3(R):
     u = B[:, j] / np.linalg.norm(B[:, j])
     return theta * (u if u @ a >= 0.0 else -u)
 """,
-        hint="dropped the θ²/6 term",
-        public_hint="dropped the θ²/6 term",
+        hint="keep its θ² term too",
+        public_hint="keep its θ² term too",
     ),
     Mistake(
         "axis_angle_no_pi_branch",

@@ -486,7 +486,7 @@ def right_jacobian_so3(w):
         return np.eye(3) - W / 2 + W @ W / 6
     return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
 """,
-        hint="one-term series I - [w]×/2 + [w]×²/6",
+        hint="a one-term series of each coefficient",
         public_hint="a one-term series is off by about θ³/24",
     ),
     Mistake(

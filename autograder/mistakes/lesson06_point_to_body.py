@@ -23,8 +23,8 @@ def jacobian_point_to_body(R, p_w):
 def jacobian_point_to_body(R, p_w):
     return -skew(np.asarray(R, dtype=float).T @ np.asarray(p_w, dtype=float))
 """,
-        hint="(R Exp(δ))ᵀ = Exp(-δ) Rᵀ",
-        public_hint="(R Exp(δ))ᵀ = Exp(-δ) Rᵀ",
+        hint="the sign is flipped: J is the negative",
+        public_hint="the sign is flipped: J is the negative",
     ),
     Mistake(
         "point_to_body_no_R",

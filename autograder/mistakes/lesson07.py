@@ -63,8 +63,8 @@ def pose_inverse(T):
     T_inv[:3, 3] = -T[:3, 3]
     return T_inv
 """,
-        hint="turned as well as negated",
-        public_hint="turned as well as negated",
+        hint="written in the wrong frame's axes",
+        public_hint="written in the wrong frame's axes",
     ),
     Mistake(
         "pose_compose_reversed",
@@ -314,8 +314,8 @@ def pose_inverse(T):
     out[:3, 3] = -T[:3, :3] @ T[:3, 3]
     return out
 """,
-        hint="is Rᵀ, not R",
-        public_hint="is Rᵀ, not R",
+        hint="rotation block of the inverse is still R",
+        public_hint="rotation block of the inverse is still R",
     ),
     Mistake(
         "pose_compose_elementwise",

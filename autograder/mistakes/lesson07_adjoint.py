@@ -75,8 +75,8 @@ MISTAKES = [
         "adjoint_se3",
         "coupling block [t]× without R",
         _adjoint("skew(t)"),
-        hint="turned by R before it meets t",
-        public_hint="turned by R before it meets t",
+        hint="the coupling block does not depend on R",
+        public_hint="the coupling block does not depend on R",
     ),
     Mistake(
         "adjoint_coupling_sign",
@@ -129,8 +129,8 @@ def jacobian_transform_point(T, p):
     R = np.asarray(T, dtype=float)[:3, :3]
     return np.hstack([np.eye(3), -R @ skew(p)])
 """,
-        hint="its block is R, not I",
-        public_hint="its block is R, not I",
+        hint="the rho block is I, as for a left perturbation",
+        public_hint="the rho block is I, as for a left perturbation",
     ),
     Mistake(
         "point_sign",

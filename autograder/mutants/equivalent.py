@@ -192,6 +192,7 @@ EQUIVALENT = {
     "rotation_mean.df028641": CONVERGED,  # 1e-12 → 1e-08 (line 25)
     "rotation_mean.ea6f18b4": CONVERGED,  # `np.linalg.norm(delta) < 1e-12` always False (line 25)
     "rotation_mean.ec0c81a9": CONVERGED,  # range(100) → range(100 - 1) (line 22)
+    "rotation_mean.fe3b4591": CONVERGED,  # np.linalg.norm(delta) < 1e-12 loosened ×1000 (1e-09; line 25)
     # DET_NEVER_ZERO
     "align_svd.6e4671df": DET_NEVER_ZERO,  # 1.0 if np.linalg.det(U @ Vt) >= 0 else -1.0 → np.sign(np.linalg.det(U @ Vt))
     "nearest_rotation.7dcd517a": DET_NEVER_ZERO,  # `d == 0` always False (line 23)
@@ -459,6 +460,7 @@ EQUIVALENT = {
     "quat_from_two_vectors.4a1cf116": BOUNDARY,  # a @ b > 0.0 → a @ b >= 0.0 (line 36)
     "weighted_rotation_mean.3e834c2b": CONVERGED,  # range(100) → range(100 - 1) (line 26)
     "weighted_rotation_mean.876e9577": CONVERGED,  # 1e-13 → 1e-08 (line 29)
+    "weighted_rotation_mean.74f35747": CONVERGED,  # np.linalg.norm(delta) < 1e-13 loosened ×1000 (1e-10; line 29)
     "weighted_rotation_mean.a9ca7d6a": CONVERGED,  # range(100) → range(100 + 1) (line 26)
     "weighted_rotation_mean.b4c3eb22": CONVERGED,  # 1e-13 → 1e-15 (line 29)
     "weighted_rotation_mean.bbaae590": CONVERGED,  # np.linalg.norm(delta) < 1e-13 → np.linalg.norm(delta) <= 1e-13 (line 29)
@@ -579,3 +581,165 @@ EQUIVALENT.update(
 # Ω just below 1e-4, t = 0.3), above the promised 2e-15; the hidden suite now tries half-angles just below each
 # decade and kills it.
 del EQUIVALENT["quat_slerp.e0f71f64"]  # 1e-12 → 0.0001 (line 28)
+
+# --- lesson 09: filter_predict, attitude_nees, filter_update, compound_pose_covariance, hand_eye_rotation (#42) ---
+PAIR_AS_LIST = (
+    "the two results come back as a list [R_new, P_new] instead of a tuple: the docstring names two values, "
+    "and unpacking them (R_new, P_new = ...) or indexing them works the same"
+)
+SYMMETRIC_P = "P is a covariance, symmetric by the docstring, so P.T is P and the product is the same"
+SYMMETRIC_Q = "Q is the gyro noise's covariance, symmetric by the docstring, so Q.T is Q and the product is the same"
+SCALAR_INSIDE = "a scalar factor moved into the matrix product: (c W) W and W (c W) are the same matrix, to rounding"
+NESTED_LIST_RESULT = (
+    "P_new comes back as a nested list of the same numbers: the course reads any array_like result alike "
+    "(its alternative update_information_form returns lists too), and np.asarray gives the array back"
+)
+JR_SERIES_ABOVE = (
+    "the series I - W/2 + W²/6 of the right Jacobian used up to θ = 1e-5 … 1e-2: there it differs from the "
+    "closed form by θ³/24 in the W term and less in the W² term, at most 4.2e-8 of I, so P_new moves by less "
+    "than the promised 1e-7 of max |P_new| (measured: 3.3e-9 on the hidden cases; a step just below 0.1 is tried)"
+)
+JR_SERIES_SQUARE = (
+    "the series is used only below θ = 1e-6, where its W² term is at most θ²/6 < 1.7e-13 of I: changing its "
+    "sign or size, or dropping it, moves P_new by far less than the promised 1e-7 of max |P_new|"
+)
+BOOLEAN_WEIGHTS = "boolean weights multiply as 0 and 1: a * w[:, None] gives the same matrix as with w * 1.0"
+SAME_PROPOSALS = (
+    "the outer loop over i runs one step short or long only where the inner range(i + 1, n) is empty "
+    "(i = n - 1, i = n): the same proposals, in the same order"
+)
+REFIT_FIXED_POINT = (
+    "the refit stops where its kept set repeats, a fixed point: there X = fit(keep) gives the same misfits and the "
+    "same set again, so running on (no break) or a bound of 99, 101 rounds returns the same X; the set repeats "
+    "within a few rounds on every dataset the suites draw, far from the bound"
+)
+MORE_PROPOSALS = (
+    "every pair of pairs (i, j), i < j, is still proposed, besides repeats and one-pair fits: the consensus "
+    "still finds a proposal that all good pairs agree with, and the refit on the pairs within three robust "
+    "deviations settles on the same set, so X is as accurate (the answer is judged by its angle only)"
+)
+DESIGN_WITHIN_BOUND = (
+    "another estimator for an open design exercise, graded by its result alone (the angle of X within 5 σ_X of the "
+    "truth on every grader-drawn dataset): proposing from fewer pairs, a tighter consensus, fewer refits or a "
+    "tighter refit threshold keeps fewer good pairs or iterates less, and still meets the bound on every dataset "
+    "both suites draw; the docstring promises that bound, not a method"
+)
+TUPLES_CONVERTED = (
+    "converted only when it is a list: this argument is used only where numpy converts a tuple as it does a list "
+    "(@, + or - with an array on the other side, np.linalg.solve, iteration into coursekit's Log), and an integer "
+    "or float32 array gives the same values (the first operation with a float64 array is float64)"
+)
+
+EQUIVALENT.update(
+    {
+        "filter_predict.d1da126c": INTEGERS,  # np.asarray(R, dtype=float) → np.asarray(R) (line 36)
+        "filter_predict.873a8312": INTEGERS,  # np.asarray(P, dtype=float) → np.asarray(P) (line 37)
+        "filter_predict.fa895ade": INTEGERS,  # np.asarray(Q, dtype=float) → np.asarray(Q) (line 38)
+        "filter_predict.576ebb94": INTEGERS,  # np.asarray(omega_meas, dtype=float) → np.asarray(omega_meas) (line 39)
+        "filter_predict.12d1866c": LISTS,  # np.asarray(R, dtype=float) → R (line 36)
+        "filter_predict.edf97de4": LISTS,  # np.asarray(P, dtype=float) → P (line 37)
+        "filter_predict.b441875a": LISTS,  # np.asarray(Q, dtype=float) → Q (line 38)
+        "filter_update.79511da1": INTEGERS,  # np.asarray(R, dtype=float) → np.asarray(R) (line 38)
+        "filter_update.547c6081": INTEGERS,  # np.asarray(P, dtype=float) → np.asarray(P) (line 38)
+        "filter_update.3637a13a": INTEGERS,  # np.asarray(g_w, dtype=float) → np.asarray(g_w) (line 39)
+        "filter_update.da936ad6": INTEGERS,  # np.asarray(Rn, dtype=float) → np.asarray(Rn) (line 41)
+        "filter_update.428b5038": INTEGERS,  # np.asarray(y, dtype=float) → np.asarray(y) (line 43)
+        "filter_update.0fec7228": LISTS,  # np.asarray(P, dtype=float) → P (line 38)
+        "filter_update.d29956bd": LISTS,  # np.asarray(g_w, dtype=float) → g_w (line 39)
+        "filter_update.dc26388d": LISTS,  # np.asarray(Rn, dtype=float) → Rn (line 41)
+        "filter_update.abc38e52": LISTS,  # np.asarray(y, dtype=float) → y (line 43)
+        "filter_update.cbe9775d": VECTORS,  # R.T @ np.asarray(g_w, dtype=float) → R.T @ np.asarray(g_w, dtype=float).T (line 39)
+        "filter_update.d49d5b2b": VECTORS,  # K @ (np.asarray(y, dtype=float) - g_b) → K @ (np.asarray(y, dtype=float) - g_b).T (line 43)
+        "filter_update.10e709cd": SYMMETRIC_P,  # H @ P → H @ P.T (line 41)
+        "filter_update.d1002bd9": SYMMETRIC_P,  # H @ P → H @ P.T (line 42)
+        "filter_update.5aba464f": SYMMETRIC_P,  # (np.eye(3) - K @ H) @ P → (np.eye(3) - K @ H) @ P.T (line 44)
+        "filter_update.92f8bbac": FLOAT32_EXACT,  # np.eye(3) → np.eye(3, dtype=np.float32) (line 44)
+        "filter_update.c8131ca6": PAIR_AS_LIST,
+        "filter_update.ba6b4f26": TUPLES_CONVERTED,  # np.asarray(P, dtype=float) only for a list (line 38)
+        "filter_update.ebdcc62f": TUPLES_CONVERTED,  # np.asarray(g_w, dtype=float) only for a list (line 39)
+        "filter_update.2f3794a7": TUPLES_CONVERTED,  # np.asarray(Rn, dtype=float) only for a list (line 41)
+        "filter_update.ad174e8a": TUPLES_CONVERTED,  # np.asarray(y, dtype=float) only for a list (line 43)
+        "compound_pose_covariance.52eab310": INTEGERS,  # np.asarray(T1, dtype=float) → np.asarray(T1) (line 27)
+        "compound_pose_covariance.49eee066": LISTS,  # np.asarray(T1, dtype=float) → T1 (line 27)
+        "compound_pose_covariance.4d8a0a2c": TUPLES_CONVERTED,  # np.asarray(T1, dtype=float) only for a list (line 27)
+        "filter_predict.a1dfbb0c": TUPLES_CONVERTED,  # np.asarray(R, dtype=float) only for a list (line 36)
+        "filter_predict.11433da5": TUPLES_CONVERTED,  # np.asarray(P, dtype=float) only for a list (line 37)
+        "filter_predict.f8d45ae0": TUPLES_CONVERTED,  # np.asarray(Q, dtype=float) only for a list (line 38)
+        "filter_predict.12e8bfc2": VECTORS,  # phi @ phi → phi.T @ phi (line 41)
+        "filter_predict.a3f21838": VECTORS,  # phi @ phi → phi @ phi.T (line 41)
+        "filter_predict.74dfacfe": BOUNDARY,  # theta < 1e-06 → theta <= 1e-06 (line 43)
+        "filter_predict.dcd983da": CLOSED_FORM_BELOW,  # theta < 1e-06 → theta == 0.0 (only an exact zero) (line 43)
+        "filter_predict.018d93e3": CLOSED_FORM_BELOW,  # 1e-06 → 1e-15 (line 43)
+        "filter_predict.b574a893": CLOSED_FORM_BELOW,  # 1e-06 → 1e-08 (line 43)
+        "filter_predict.33f68765": CLOSED_FORM_BELOW,  # 1e-06 → 1e-07 (line 43)
+        "filter_predict.cc83730b": JR_SERIES_ABOVE,  # 1e-06 → 1e-05 (line 43)
+        "filter_predict.c1fe2f8d": JR_SERIES_ABOVE,  # 1e-06 → 0.0001 (line 43)
+        "filter_predict.e46cf6df": JR_SERIES_ABOVE,  # 1e-06 → 0.001 (line 43)
+        "filter_predict.1e024ea1": JR_SERIES_ABOVE,  # 1e-06 → 0.01 (line 43)
+        "filter_predict.274383b6": JR_SERIES_SQUARE,  # np.eye(3) - W / 2 + W @ W / 6 → ... - W @ W / 6 (line 44)
+        "filter_predict.70bb9acd": JR_SERIES_SQUARE,  # np.eye(3) - W / 2 + W @ W / 6 → np.eye(3) - W / 2 (line 44)
+        "filter_predict.ff0835e1": JR_SERIES_SQUARE,  # W @ W / 6 → W @ W (line 44)
+        "filter_predict.67c1c589": JR_SERIES_SQUARE,  # W @ W → W.T @ W (line 44)
+        "filter_predict.229925eb": JR_SERIES_SQUARE,  # W @ W → W @ W.T (line 44)
+        "filter_predict.bcd827f5": SCALAR_INSIDE,  # (theta - np.sin(theta)) / theta ** 3 * W @ W → W @ (... * W) (line 46)
+        "filter_predict.69afca42": FLOAT32_EXACT,  # np.eye(3) → np.eye(3, dtype=np.float32) (line 44)
+        "filter_predict.94bb3e4a": FLOAT32_EXACT,  # np.eye(3) → np.eye(3, dtype=np.float32) (line 46)
+        "filter_predict.acb6bca0": PAIR_AS_LIST,  # return (R @ step, ...) → return [R @ step, ...] (line 48)
+        "filter_predict.fc9d58b7": NESTED_LIST_RESULT,  # return (R @ step, (...).tolist()) (line 48)
+        "filter_predict.dcd26bcf": SYMMETRIC_P,  # step.T @ P → step.T @ P.T (line 48)
+        "filter_predict.120bafaf": SYMMETRIC_Q,  # G @ Q → G @ Q.T (line 48)
+        "attitude_nees.d3b8c435": INTEGERS,  # np.asarray(R_true, dtype=float) → np.asarray(R_true) (line 23)
+        "attitude_nees.cccd349a": INTEGERS,  # np.asarray(R_est, dtype=float) → np.asarray(R_est) (line 23)
+        "attitude_nees.e81f686a": INTEGERS,  # np.asarray(P, dtype=float) → np.asarray(P) (line 24)
+        "attitude_nees.d6f82477": LISTS,  # np.asarray(R_true, dtype=float) → R_true (line 23)
+        "attitude_nees.5657e967": LISTS,  # np.asarray(P, dtype=float) → P (line 24)
+        "attitude_nees.8fbfc8b6": TUPLES_CONVERTED,  # np.asarray(R_true, dtype=float) only for a list (line 23)
+        "attitude_nees.c4e02f28": TUPLES_CONVERTED,  # np.asarray(P, dtype=float) only for a list (line 24)
+        "attitude_nees.0b23444c": VECTORS,  # eps @ np.linalg.solve(P, eps) → np.linalg.solve(P, eps) @ eps (line 24)
+        "attitude_nees.3cc74f74": VECTORS,  # eps @ np.linalg.solve(P, eps) → eps.T @ np.linalg.solve(P, eps) (line 24)
+        "attitude_nees.ef10f856": VECTORS,  # eps @ np.linalg.solve(P, eps) → eps @ np.linalg.solve(P, eps).T (line 24)
+        "hand_eye_rotation.49f95242": INTEGERS,  # np.asarray(As, dtype=float) → np.asarray(As) (line 27)
+        "hand_eye_rotation.05744f30": INTEGERS,  # np.asarray(Bs, dtype=float) → np.asarray(Bs) (line 28)
+        "hand_eye_rotation.443953cc": LISTS,  # np.asarray(As, dtype=float) → As (line 27)
+        "hand_eye_rotation.c40a594e": LISTS,  # np.asarray(Bs, dtype=float) → Bs (line 28)
+        "hand_eye_rotation.7cff3b5c": TUPLES_CONVERTED,  # np.asarray(As, dtype=float) only for a list (line 27)
+        "hand_eye_rotation.dcc6d006": TUPLES_CONVERTED,  # np.asarray(Bs, dtype=float) only for a list (line 28)
+        "hand_eye_rotation.41964aa4": DET_OF_PRODUCT,  # U @ Vt → Vt @ U (line 32)
+        "hand_eye_rotation.c031b83b": DET_OF_PRODUCT,  # U @ Vt → U.T @ Vt (line 32)
+        "hand_eye_rotation.6883c2c1": DET_OF_PRODUCT,  # U @ Vt → U @ Vt.T (line 32)
+        "hand_eye_rotation.e55587cd": DIAGONAL_T,  # U @ np.diag([1.0, 1.0, det]) → U @ np.diag([1.0, 1.0, det]).T (line 32)
+        "hand_eye_rotation.3e7a3142": BOOLEAN_WEIGHTS,  # np.isin(np.arange(n), [i, j]) * 1.0 → np.isin(...) (line 39)
+        "hand_eye_rotation.9763fdc0": BOUNDARY,  # misfits(X) < 0.1 → misfits(X) <= 0.1 (line 40)
+        "hand_eye_rotation.7b00a3b5": SAME_PROPOSALS,  # range(n) → range(n - 1) (line 39)
+        "hand_eye_rotation.b03f4fed": SAME_PROPOSALS,  # range(n) → range(n + 1) (line 39)
+        "hand_eye_rotation.3a8bcec1": MORE_PROPOSALS,  # i + 1 → i - 1 (line 39)
+        "hand_eye_rotation.d4cecc08": MORE_PROPOSALS,  # i + 1 → i (line 39)
+        "hand_eye_rotation.76774abf": MORE_PROPOSALS,  # i + 1 → 1 (line 39)
+        "hand_eye_rotation.2d9e3194": BOUNDARY,  # misfits(X) < 0.1 → misfits(X) <= 0.1 (line 42)
+        "hand_eye_rotation.fe6cedf7": BOUNDARY,  # r <= 3.0 * 1.4826 * np.median(r) → r < ... (line 46)
+        "hand_eye_rotation.065ac9e6": BOOLEAN_WEIGHTS,  # keep * 1.0 → keep (line 44)
+        "hand_eye_rotation.1676b951": REFIT_FIXED_POINT,  # range(100) → range(100 - 1) (line 43)
+        "hand_eye_rotation.abfc806a": REFIT_FIXED_POINT,  # range(100) → range(100 + 1) (line 43)
+        "hand_eye_rotation.ff488809": REFIT_FIXED_POINT,  # range(100) → range(1, 100) (line 43)
+        "hand_eye_rotation.8309c60f": REFIT_FIXED_POINT,  # `np.array_equal(new_keep, keep)` always False (line 47)
+        "compound_pose_covariance.f6a2d11f": INTEGERS,  # np.asarray(T2, dtype=float) → np.asarray(T2) (line 28)
+        "compound_pose_covariance.e188f1b7": INTEGERS,  # np.asarray(S2, dtype=float) → np.asarray(S2) (line 30)
+        "compound_pose_covariance.ce20a178": INTEGERS,  # np.asarray(S1, dtype=float) → np.asarray(S1) (line 30)
+        "compound_pose_covariance.a908845c": LISTS,  # np.asarray(T2, dtype=float) → T2 (line 28)
+        "compound_pose_covariance.5e62c5cd": LISTS,  # np.asarray(S2, dtype=float) → S2 (line 30)
+        "compound_pose_covariance.92a0eb3d": LISTS,  # np.asarray(S1, dtype=float) → S1 (line 30)
+        "compound_pose_covariance.46e7550a": TUPLES_CONVERTED,  # np.asarray(T2, dtype=float) only for a list (line 28)
+        "compound_pose_covariance.d2b3b7fb": TUPLES_CONVERTED,  # np.asarray(S2, dtype=float) only for a list (line 30)
+        "compound_pose_covariance.8f29b098": TUPLES_CONVERTED,  # np.asarray(S1, dtype=float) only for a list (line 30)
+        "compound_pose_covariance.7878b50e": SYMMETRIC_P,  # A @ S1 → A @ S1.T (line 30): S1 is a covariance
+        "compound_pose_covariance.9e15908b": PAIR_AS_LIST,  # return (T, S) → return [T, S] (line 30)
+        "compound_pose_covariance.83f47cb5": NESTED_LIST_RESULT,  # S returned as a nested list (line 30)
+        "hand_eye_rotation.519f5542": DESIGN_WITHIN_BOUND,  # range(n) → range(1, n) (line 39)
+        "hand_eye_rotation.f110be92": DESIGN_WITHIN_BOUND,  # 0.1 → 0.01 (line 40)
+        "hand_eye_rotation.c2818a4b": DESIGN_WITHIN_BOUND,  # range(100) → range(3) (line 43)
+        "hand_eye_rotation.859e13b3": DESIGN_WITHIN_BOUND,  # `np.array_equal(new_keep, keep)` always True (line 47)
+        "hand_eye_rotation.e005ec77": DESIGN_WITHIN_BOUND,  # 3.0 * 1.4826 * np.median(r) → np.median(r) (line 46)
+        "hand_eye_rotation.8e406800": DESIGN_WITHIN_BOUND,  # 3.0 * 1.4826 → 3.0 (line 46)
+        "hand_eye_rotation.6dbf401a": DESIGN_WITHIN_BOUND,  # 3.0 * 1.4826 → 1.4826 (line 46)
+    }
+)

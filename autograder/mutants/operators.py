@@ -51,6 +51,18 @@ FAMILIES = {
     "relative_tolerance": "a relative tolerance (np.allclose's rtol=1e-5) where the text says absolute",
     "unwrap": "a helper that wraps an angle into (-π, π] (or another one-argument helper) left out",
     "delegation": "the exercise handed to the library (coursekit.lie, scipy's Rotation, expm)",
+    "return_type": "the right numbers in the wrong type: an array as a nested list, a float as a 0-d or 1-element "
+    "array, a bool as an int or np.bool_, several values as a list",
+    "return_dtype": "an array returned in float32, or with an integer dtype where its entries are whole numbers",
+    "argument_write": "an argument written for some inputs only: normalised or negated in place under a test",
+    "threshold": "a tolerance read another way: a threshold doubled, halved, ×10 or ÷10, or one side of the test "
+    "squared (x**2 < tol, the squared norm for the norm)",
+    "small_guard": "a small value guarded where the answer needs no guard (x / max(n, 1e-12)), or a guard that "
+    "catches only an exact zero (n == 0 for n < 1e-12)",
+    "iterations": "an iteration count fixed (range(iters) → range(3), a while loop run 3 times) or a convergence "
+    "test loosened",
+    "input_form": "an input form dropped: x.astype(float) (tuples and lists fail), np.asarray only for lists "
+    "(tuples and integer arrays pass through)",
 }
 
 # the library versions of the maps that exercises ask for (the ``delegation`` family); each is a whole
@@ -498,6 +510,351 @@ def _unwrap(node, context):
         yield Edit("unwrap", node, _copy(node.args[0]))
 
 
+# ---------------------------------------------------------------- the families of issue #43, item 5
+ARRAY_RETURNING = {
+    "array",
+    "asarray",
+    "concatenate",
+    "hstack",
+    "vstack",
+    "stack",
+    "column_stack",
+    "eye",
+    "identity",
+    "zeros",
+    "ones",
+    "diag",
+    "cross",
+    "outer",
+    "zeros_like",
+    "linalg.solve",
+    "linalg.inv",
+    "Exp",
+    "ExpSE3",
+    "skew",
+}
+ERROR_MEASURES = {"linalg.norm", "sqrt", "max", "abs", "sum"}  # a tolerance on these is on a length or an error
+WHOLE_NUMBER_MAKERS = {"eye", "identity", "zeros", "ones"}
+TOLERANCE_NAMES = ("tol", "eps")
+
+
+def _array_like(node, context):
+    """Is ``node`` an expression that surely gives an array (a maker, a product with a matrix, a known array name)?"""
+    if isinstance(node, ast.Call):
+        name = _call_name(node)
+        if name.split(".")[-1] in ("copy", "astype", "reshape") and isinstance(node.func, ast.Attribute):
+            return True
+        return name in ARRAY_RETURNING
+    if isinstance(node, ast.Attribute):
+        return node.attr == "T"
+    if isinstance(node, ast.Name):
+        return node.id in context.arrays
+    if isinstance(node, ast.BinOp):
+        if isinstance(node.op, ast.MatMult):
+            return (
+                _is_transpose(node.left)
+                or _is_transpose(node.right)
+                or _array_like(node.left, context)
+                and (_array_like(node.right, context))
+            )
+        return _array_like(node.left, context) or _array_like(node.right, context)
+    if isinstance(node, ast.Subscript):
+        return isinstance(node.slice, (ast.Slice, ast.Tuple)) and _array_like(node.value, context)
+    return False
+
+
+def _own_expressions(statement):
+    """The expression nodes of ``statement`` that belong to no statement nested in it."""
+    stack = [child for child in ast.iter_child_nodes(statement) if not isinstance(child, ast.stmt)]
+    while stack:
+        node = stack.pop()
+        yield node
+        stack.extend(child for child in ast.iter_child_nodes(node) if not isinstance(child, ast.stmt))
+
+
+def _method(value, name, *args):
+    return ast.Call(func=ast.Attribute(_copy(value), name, ast.Load()), args=list(args), keywords=[])
+
+
+def _return_type(node, context):
+    if not isinstance(node, ast.Return) or node.value is None or id(node) in context.nested:
+        return
+    value = node.value
+    if isinstance(value, ast.Tuple):
+        yield Edit("return_type", node, ast.Return(ast.List([_copy(e) for e in value.elts], ast.Load())))
+        for position, element in enumerate(value.elts):
+            if _array_like(element, context):
+                new = _copy(value)
+                new.elts[position] = _method(element, "tolist")
+                yield Edit("return_type", node, ast.Return(new))
+        return
+    name = _call_name(value)
+    if name == "bool" and len(value.args) == 1:
+        yield Edit("return_type", node, ast.Return(_copy(value.args[0])))
+        yield Edit("return_type", node, ast.Return(ast.Call(ast.Name("int", ast.Load()), [_copy(value.args[0])], [])))
+    elif name == "float" and len(value.args) == 1:
+        yield Edit("return_type", node, ast.Return(_np("array", _copy(value.args[0]))))
+        yield Edit("return_type", node, ast.Return(_np("array", ast.List([_copy(value.args[0])], ast.Load()))))
+    elif isinstance(value, (ast.Compare, ast.BoolOp)):
+        yield Edit("return_type", node, ast.Return(ast.Call(ast.Name("int", ast.Load()), [_copy(value)], [])))
+    elif _array_like(value, context):
+        yield Edit("return_type", node, ast.Return(_method(value, "tolist")))
+
+
+def _whole_numbers(node):
+    """``node`` with every whole float constant made an int, or None when it holds a constant that is no number."""
+    new = _copy(node)
+    changed = False
+    for part in ast.walk(new):
+        if isinstance(part, ast.Constant):
+            if not _is_number(part):
+                return None
+            if isinstance(part.value, float) and part.value.is_integer():
+                part.value = int(part.value)
+                changed = True
+        elif not isinstance(part, (ast.List, ast.Tuple, ast.UnaryOp, ast.USub, ast.Load)):
+            return None
+    return new if changed else None
+
+
+def _return_dtype(node, context):
+    if not isinstance(node, ast.Return) or node.value is None or id(node) in context.nested:
+        return
+    values = node.value.elts if isinstance(node.value, ast.Tuple) else [node.value]
+    for value in values:
+        if not _array_like(value, context):
+            continue
+        yield Edit(
+            "return_dtype",
+            value,
+            _np("asarray", _copy(value), dtype=_expr("np.float32")),
+            what=f"{ast.unparse(value)} returned as float32",
+        )
+        name = _call_name(value)
+        if name in ("array", "asarray") and value.args:
+            whole = _whole_numbers(value.args[0])
+            if whole is not None:
+                new = _copy(value)
+                new.args[0] = whole
+                new.keywords = [k for k in new.keywords if k.arg != "dtype"]
+                yield Edit("return_dtype", value, new)
+        if name in WHOLE_NUMBER_MAKERS:
+            new = _copy(value)
+            new.keywords = [k for k in new.keywords if k.arg != "dtype"] + [
+                ast.keyword(arg="dtype", value=ast.Name("int", ast.Load()))
+            ]
+            yield Edit("return_dtype", value, new)
+
+
+def _scalar_like(node):
+    return isinstance(node, ast.Name) or (
+        isinstance(node, ast.Call) and _call_name(node) in ("linalg.norm", "sqrt", "float", "sum", "abs", "sin")
+    )
+
+
+def _argument_write(statement, context):
+    """Writes into the caller's array under a test: ``x = e`` in an if-body → ``x[...] = e``; ``x / n`` →
+    ``if n != 1.0: x /= n`` before the statement, then ``x``."""
+    if (
+        isinstance(statement, ast.Assign)
+        and len(statement.targets) == 1
+        and isinstance(statement.targets[0], ast.Name)
+        and statement.targets[0].id in context.writable | context.views
+        and not any(_call_name(n) in ARRAY_MAKERS for n in ast.walk(statement.value))  # a conversion: a copy
+        and id(statement) not in context.nested
+    ):
+        name = statement.targets[0].id
+        conditional = id(statement) in context.conditional
+        if conditional or any(isinstance(n, ast.Name) and n.id == name for n in ast.walk(statement.value)):
+            target = ast.Subscript(ast.Name(name, ast.Load()), ast.Constant(Ellipsis), ast.Store())
+            yield Edit(
+                "argument_write",
+                statement,
+                ast.Assign(targets=[target], value=_copy(statement.value)),
+                what=f"{ast.unparse(statement)} written into the caller's array ({name}[...] = ...)"
+                + (" under a test" if conditional else ""),
+            )
+    if isinstance(statement, (ast.FunctionDef, ast.Expr)) or id(statement) in context.nested:
+        return
+    for node in _own_expressions(statement):
+        if (
+            isinstance(node, ast.BinOp)
+            and isinstance(node.op, ast.Div)
+            and isinstance(node.left, ast.Name)
+            and node.left.id in context.writable
+            and _scalar_like(node.right)
+        ):
+            name = node.left.id
+            guard = ast.If(
+                test=ast.Compare(_copy(node.right), [ast.NotEq()], [ast.Constant(1.0)]),
+                body=[ast.AugAssign(ast.Name(name, ast.Store()), ast.Div(), _copy(node.right))],
+                orelse=[],
+            )
+            yield Edit(
+                "argument_write",
+                statement,
+                [guard, _replace(statement, node, ast.Name(name, ast.Load()))],
+                what=f"{ast.unparse(node)} → if {ast.unparse(node.right)} != 1.0: {name} /= "
+                f"{ast.unparse(node.right)} (in place)",
+            )
+
+
+def _threshold_side(node):
+    """0 or 1: which side of a one-operator comparison is the threshold (a positive float, a tolerance name)."""
+    if not isinstance(node, ast.Compare) or len(node.ops) != 1:
+        return None
+    if not isinstance(node.ops[0], (ast.Lt, ast.LtE, ast.Gt, ast.GtE)):
+        return None
+    sides = [node.left, node.comparators[0]]
+
+    def is_threshold(side):
+        if _is_number(side) and isinstance(side.value, float) and side.value > 0:
+            return True
+        return any(isinstance(n, ast.Name) and n.id.lower() in TOLERANCE_NAMES for n in ast.walk(side))
+
+    found = [position for position, side in enumerate(sides) if is_threshold(side)]
+    if len(found) != 1 or _is_number(sides[1 - found[0]]):
+        return None
+    return found[0]
+
+
+def _with_sides(node, sides):
+    return ast.Compare(left=sides[0], ops=[_copy(node.ops[0])], comparators=[sides[1]])
+
+
+def _threshold(node, context):
+    side = _threshold_side(node)
+    if side is None:
+        return
+    sides = [node.left, node.comparators[0]]
+    threshold, value = sides[side], sides[1 - side]
+    if _is_number(threshold):
+        factors = () if threshold.value <= 0.1 else (2.0, 0.5, 10.0, 0.1)
+        moved = [ast.Constant(float(f"{threshold.value * factor:.12g}")) for factor in factors]
+    else:
+        moved = [ast.BinOp(_copy(threshold), ast.Mult(), ast.Constant(factor)) for factor in (2, 0.5, 10, 0.1)]
+    for new_threshold in moved:
+        new_sides = [_copy(node.left), _copy(node.comparators[0])]
+        new_sides[side] = new_threshold
+        yield Edit("threshold", node, _with_sides(node, new_sides))
+    if not (
+        isinstance(threshold, ast.BinOp | ast.Name)
+        or _call_name(value) in ERROR_MEASURES
+        or isinstance(value, ast.BinOp)
+        and isinstance(value.op, ast.MatMult)
+    ):
+        return  # a small-angle threshold on an angle: its square is a moved threshold (small_constant)
+    squared = (
+        _copy(value.args[0])
+        if _call_name(value) == "sqrt" and len(value.args) == 1
+        else ast.BinOp(_copy(value), ast.Pow(), ast.Constant(2))
+    )
+    new_sides = [_copy(node.left), _copy(node.comparators[0])]
+    new_sides[1 - side] = squared
+    yield Edit("threshold", node, _with_sides(node, new_sides))
+
+
+def _small_guard(node, context):
+    if (
+        isinstance(node, ast.BinOp)
+        and isinstance(node.op, ast.Div)
+        and (_scalar_like(node.right) or isinstance(node.right, ast.BinOp) and isinstance(node.right.op, ast.MatMult))
+        and _call_name(node.right) not in ("linalg.norm", "sqrt", "sum")  # zero only for inputs ruled out
+        and not (isinstance(node.right, ast.Name) and node.right.id in context.lengths)
+        and not any(ast.unparse(node.right) in text for text in context.compared)
+        and _call_name(node.right) not in ("max", "maximum")
+    ):
+        guarded = ast.Call(ast.Name("max", ast.Load()), [_copy(node.right), ast.Constant(1e-12)], [])
+        yield Edit("small_guard", node, ast.BinOp(_copy(node.left), ast.Div(), guarded))
+    side = _threshold_side(node)
+    if (
+        side == 1
+        and _is_number(node.comparators[0])
+        and node.comparators[0].value <= 1e-3
+        and _call_name(node.left) not in ("linalg.norm", "sqrt")  # a convergence test: exact 0 is never met
+    ):
+        below = isinstance(node.ops[0], (ast.Lt, ast.LtE))
+        new = ast.Compare(
+            left=_copy(node.left), ops=[ast.Eq() if below else ast.NotEq()], comparators=[ast.Constant(0.0)]
+        )
+        yield Edit("small_guard", node, new, what=f"{ast.unparse(node)} → {ast.unparse(new)} (only an exact zero)")
+
+
+def _iterations(statement, context):
+    """A loop's count fixed (range(iters) → range(3), range(100) → range(3), a while loop run 3 times),
+    or its convergence test loosened ×1000."""
+    if isinstance(statement, ast.For) and _call_name(statement.iter) == "range":
+        call = statement.iter
+        for position, argument in enumerate(call.args):
+            if (isinstance(argument, ast.Name) and len(call.args) == 1) or (
+                _is_number(argument) and isinstance(argument.value, int) and argument.value >= 5
+            ):
+                new = _copy(call)
+                new.args[position] = ast.Constant(3)
+                yield Edit("iterations", call, new)
+    if isinstance(statement, ast.While):
+        stop = ast.If(test=ast.UnaryOp(ast.Not(), _copy(statement.test)), body=[ast.Break()], orelse=[])
+        loop = ast.For(
+            target=ast.Name("_", ast.Store()),
+            iter=_expr("range(3)"),
+            body=[stop] + [_copy(s) for s in statement.body],
+            orelse=[_copy(s) for s in statement.orelse],
+        )
+        yield Edit("iterations", statement, loop, what=f"`while {ast.unparse(statement.test)}` run 3 times")
+    if isinstance(statement, (ast.For, ast.While)):
+        for inner in ast.walk(statement):
+            if (
+                isinstance(inner, ast.If)
+                and any(isinstance(s, (ast.Break, ast.Return)) for s in inner.body)
+                and _threshold_side(inner.test) is not None
+            ):
+                test = inner.test
+                side = _threshold_side(test)
+                sides = [_copy(test.left), _copy(test.comparators[0])]
+                threshold = sides[side]
+                sides[side] = (
+                    ast.Constant(float(f"{threshold.value * 1000:.12g}"))
+                    if _is_number(threshold)
+                    else ast.BinOp(threshold, ast.Mult(), ast.Constant(1000))
+                )
+                yield Edit("iterations", test, _with_sides(test, sides), what=f"{ast.unparse(test)} loosened ×1000")
+
+
+def _input_form(node, context):
+    if (
+        _call_name(node) in ARRAY_MAKERS
+        and node.args
+        and isinstance(node.args[0], ast.Name)
+        and node.args[0].id in context.parameters
+        and _dtype_keyword(node) is not None
+    ):
+        name = node.args[0]
+        yield Edit("input_form", node, _method(name, "astype", ast.Name("float", ast.Load())))
+        only_lists = ast.IfExp(
+            test=ast.Call(ast.Name("isinstance", ast.Load()), [_copy(name), ast.Name("list", ast.Load())], []),
+            body=_copy(node),
+            orelse=_copy(name),
+        )
+        yield Edit("input_form", node, only_lists, what=f"{ast.unparse(node)} only for a list")
+    if isinstance(node, ast.ExceptHandler) and isinstance(node.type, ast.Tuple) and len(node.type.elts) >= 2:
+        for kept in node.type.elts:
+            new = _copy(node)
+            new.type = _copy(kept)
+            yield Edit("input_form", node, new, what=f"except {ast.unparse(node.type)} → except {ast.unparse(kept)}")
+    if (
+        isinstance(node, ast.If)
+        and isinstance(node.test, ast.BoolOp)
+        and isinstance(node.test.op, ast.Or)
+        and node.body
+        and isinstance(node.body[-1], ast.Return)
+    ):
+        for position, dropped in enumerate(node.test.values):
+            rest = [_copy(v) for k, v in enumerate(node.test.values) if k != position]
+            new = _copy(node)
+            new.test = rest[0] if len(rest) == 1 else ast.BoolOp(ast.Or(), rest)
+            yield Edit("input_form", node, new, what=f"input test `{ast.unparse(dropped)}` dropped")
+
+
 EXPRESSION_OPERATORS = (
     _sign,
     _drop_term,
@@ -522,6 +879,11 @@ EXPRESSION_OPERATORS = (
     _nan_blind,
     _relative_tolerance,
     _unwrap,
+    _return_type,
+    _return_dtype,
+    _threshold,
+    _small_guard,
+    _input_form,
 )
 
 
@@ -579,6 +941,13 @@ class Context:
     parameters: tuple  # the parameter names of the function being mutated (and of its helpers)
     helpers: set  # names of one-argument helper functions defined inside it
     globals: set  # names that need no assignment (np, the setup's imports)
+    arrays: set = frozenset()  # local names every assignment of which surely gives an array
+    writable: set = frozenset()  # array arguments, and names bound to them by np.asarray (the caller's array)
+    views: set = frozenset()  # names bound to a part of a writable name (Rs[k], x[:3]): a view of the caller's array
+    conditional: set = frozenset()  # ids of the statements in the body of an if
+    lengths: set = frozenset()  # names bound to a root, a norm or a max (positive, or guarded already)
+    nested: set = frozenset()  # ids of the nodes of helper functions defined inside the answer
+    compared: tuple = ()  # the source of every comparison (a quantity compared somewhere is guarded)
 
 
 def _replace(tree, target, replacement):
@@ -617,6 +986,28 @@ def edits(tree: ast.Module, exercise: str, known_globals: tuple[str, ...] = ("np
         helpers={f.name for f in nested if len(f.args.args) == 1},
         globals=set(known_globals) | {f.name for f in nested},
     )
+    context.nested = {id(n) for f in nested for n in ast.walk(f)}
+    context.compared = tuple(ast.unparse(n) for n in ast.walk(main) if isinstance(n, ast.Compare))
+    context.arrays = _array_names(main, context)
+    context.writable = _writable_names(main, context)
+    context.views = {
+        name
+        for name, values in _assignments(main, context).items()
+        if any(
+            isinstance(v, ast.Subscript) and isinstance(v.value, ast.Name) and v.value.id in context.writable
+            for v in values
+        )
+    }
+    context.lengths = {
+        name
+        for name, values in _assignments(main, context).items()
+        if all(
+            v is not None and any(_call_name(n) in ("sqrt", "linalg.norm", "max") for n in ast.walk(v)) for v in values
+        )
+    }
+    context.conditional = {
+        id(s) for n in ast.walk(main) if isinstance(n, ast.If) for s in n.body + n.orelse if id(n) not in context.nested
+    }
     found = []
     for statement in main.body:
         if _docstring(statement):
@@ -627,10 +1018,64 @@ def edits(tree: ast.Module, exercise: str, known_globals: tuple[str, ...] = ("np
             if isinstance(node, ast.stmt) and not isinstance(node, ast.FunctionDef):
                 found.extend(_in_place_statement(node, context))
                 found.extend(_nlerp(node, context))
+                found.extend(_argument_write(node, context))
+                found.extend(_iterations(node, context))
             for operator in EXPRESSION_OPERATORS:
                 found.extend(operator(node, context))
     found.extend(_early_returns(main, context))
     return found
+
+
+def _assignments(main, context):
+    """``{name: [values]}`` of the plain ``name = value`` assignments of the answer (helpers left out)."""
+    found = {}
+    for node in ast.walk(main):
+        if id(node) in context.nested:
+            continue
+        if isinstance(node, ast.Assign):
+            for target in node.targets:
+                if isinstance(target, ast.Name):
+                    found.setdefault(target.id, []).append(node.value)
+                elif isinstance(target, ast.Tuple):
+                    for element in target.elts:
+                        if isinstance(element, ast.Name):
+                            found.setdefault(element.id, []).append(None)  # unpacked: unknown
+        elif isinstance(node, (ast.For, ast.comprehension)) and isinstance(node.target, ast.Name):
+            found.setdefault(node.target.id, []).append(None)
+    return found
+
+
+def _array_names(main, context):
+    """Local names all of whose assignments give arrays (found by rounds, as one array name makes another)."""
+    assignments = _assignments(main, context)
+    names = set()
+    for _ in range(4):
+        context.arrays = names
+        names = {
+            name
+            for name, values in assignments.items()
+            if name not in context.parameters and all(v is not None and _array_like(v, context) for v in values)
+        }
+    return names
+
+
+def _writable_names(main, context):
+    """Arguments used as arrays (subscripted, or given to np.asarray) and names bound to them by np.asarray."""
+    subscripted = {n.value.id for n in ast.walk(main) if isinstance(n, ast.Subscript) and isinstance(n.value, ast.Name)}
+    converted = set()
+    aliases = set()
+    for name, values in _assignments(main, context).items():
+        for value in values:
+            if (
+                value is not None
+                and _call_name(value) == "asarray"
+                and value.args
+                and isinstance(value.args[0], ast.Name)
+                and value.args[0].id in context.parameters
+            ):
+                converted.add(value.args[0].id)
+                aliases.add(name)
+    return (set(context.parameters) & (subscripted | converted)) | aliases
 
 
 def apply(tree: ast.Module, edit: Edit) -> str:

@@ -36,7 +36,7 @@ from .plotting import (AXIS_COLORS, book_build, draw_circle, draw_frame, draw_po
 __all__ = ["explore_exp", "explore_slerp", "explore_gimbal", "explore_step_size", "explore_gauss_newton", "draw_gimbal"]
 
 BOOK_FRAME_DPI = 100  # as figure.dpi in the lessons: a frame is as big as the live figure
-RING_COLORS = ("#0072B2", "#009E73", "#D55E00")  # yaw (outer), pitch (middle), roll (inner) rings
+RING_COLORS = ("#0072B2", "#009E73", "#E69F00")  # yaw (outer), pitch (middle), roll (inner, orange: not the x axis's vermilion) rings
 
 
 # ---------------------------------------------------------------------------------------------------------

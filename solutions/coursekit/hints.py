@@ -62,13 +62,14 @@ GOT_ZERO_MULTIPLIES_ENTRY_HINT = "got zero: * multiplies entry by entry (A * B =
 IDENTITY_TERM_MISSING_SUM_HINT = "the identity term is missing: the sum starts at k = 0 (W⁰ = I)"
 LOG_FORMULA_HINT = ("w must satisfy exp(w) = R with |w| in [0, π]: check the axis (R leaves it fixed), the angle "
                     "and the sense of the turn")
-LOG_OFF_NEAR_TAKE_HINT = ("the log is off near π: take the axis from the symmetric part (R + Rᵀ)/2 there, and its "
-                          "sign from R - Rᵀ")
+LOG_OFF_NEAR_TAKE_HINT = ("the log is off near π, where sin θ → 0 and R - Rᵀ no longer knows the axis: section 5 says "
+                          "which part of R still holds it there, and the turn's sense must come out right too")
 MINUS_SIGNS_MISSING_SYMMETRIC_HINT = ("the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, "
                                       "0, -w1], [-w2, w1, 0]]")
-NAN_AT_ZERO_ANGLE_HINT = "NaN or inf at θ = 0: θ/sin θ is 0/0 there; use its series 1 + θ²/6 (or return 0) for tiny θ"
-NAN_NEAR_PI_HINT = ("NaN or inf near θ = π, where sin θ → 0: the log needs a branch there, with the axis from "
-                           "(R + Rᵀ)/2")
+NAN_AT_ZERO_ANGLE_HINT = ("NaN or inf at θ = 0: θ/sin θ is 0/0 there; tiny angles need a branch that divides by "
+                          "nothing that vanishes, as exact as the closed form (relative error 1e-10)")
+NAN_NEAR_PI_HINT = ("NaN or inf near θ = π, where sin θ → 0: the log needs a branch there that does not divide by "
+                    "sin θ (section 5 says which part of R still holds the axis)")
 NP_LINALG_EIGH_ASSUMES_HINT = ("np.linalg.eigh assumes a symmetric matrix (it reads one triangle of R): use "
                                "np.linalg.eig")
 ONE_TERM_TOO_FEW_HINT = "one term too few: n_terms terms means k = 0 … n_terms - 1"
@@ -88,9 +89,14 @@ SVD_NULL_SPACE_R_HINT = "that is the SVD null space of R, but R is invertible: t
 TWICE_ROTATION_VECTOR_VEE_HINT = "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
 U_POINTS_WRONG_WAY_HINT = "u points the wrong way: vee(R - Rᵀ)/2 = sin θ u points along +u"
 W_SITS_DIAGONAL_W_HINT = "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
+AXIS_AT_HALF_TURN_HINT = ("at θ = π, R - Rᵀ is zero up to rounding and carries no axis: section 5 says which part "
+                          "of R still does")
 
 # ---------------------------------------------------------------- checks/lesson03_body_rates.py
-RATE_TURNED_INTO_BODY_HINT = "the rate was turned into body axes twice: one factor Rᵀ is enough"
+RATE_TURNED_INTO_BODY_HINT = ("the rate was turned into body axes twice: your ω_b is the right one turned once "
+                              "more by Rᵀ")
+BODY_RATE_IS_WORLD_RATE_HINT = ("that is the world rate ω_w, the spin written in world axes; the gyroscope's rate "
+                                "ω_b is the same spin in the body's own axes (section 8)")
 
 # ---------------------------------------------------------------- checks/lesson04.py
 ARRAY_REVERSED_ONLY_SCALAR_HINT = "the array was reversed: only the scalar moves, x, y, z keep their order"
@@ -109,14 +115,16 @@ RETURNED_Q_KEEP_SCALAR_HINT = "returned -q: keep the scalar w, negate only x, y,
 RETURNED_Q_Q_ONLY_HINT = "returned -q / |q|²: only the vector part changes sign, q⁻¹ = q* / |q|²"
 RETURNED_Q_UNCHANGED_NEGATE_HINT = "returned q unchanged: negate the vector part x, y, z"
 SCALAR_LAST_HINT = "q was read as scalar last [x, y, z, w]: this course stores [w, x, y, z]"
-SECOND_ORDER_TERM_MISSING_HINT = "the second-order term is missing: with u = q_v, v' = v + 2w (u × v) + 2 u × (u × v)"
+SECOND_ORDER_TERM_MISSING_HINT = ("the second-order term is missing: your v' is right to first order in the vector "
+                                  "part of q, but q ⊗ [0, v] ⊗ q* also has terms quadratic in it; multiply the "
+                                  "sandwich out in full")
 SIN_COS_SWAPPED_SCALAR_HINT = "sin and cos are swapped: the scalar is cos(θ/2), the vector part u sin(θ/2)"
 SLERP_STAYS_UNIT_SPHERE_HINT = "slerp stays on the unit sphere: the sine weights keep it there"
 TOOK_Q_ENTRY_ENTRY_HINT = "took 1/q entry by entry: the inverse of a quaternion is q* / |q|²"
 
 # ---------------------------------------------------------------- checks/lesson04_two_vectors.py
 ARCCOS_LOSES_SMALL_ANGLES_HINT = ("arccos loses small angles (cos θ rounds to 1): a turn of 1e-10 rad came out "
-                                  "as none; find θ from its sine and its cosine together, not the cosine alone")
+                                  "as none; the angle must come from numbers that keep it at tiny angles")
 OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT = ("for opposite directions the answer is a half turn, [0, u] with u "
                                         "perpendicular to a")
 
@@ -155,8 +163,9 @@ PITCH_ARCSIN_R_LOSES_HINT = ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an
                              "√(2ε)): get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
 PITCH_TURNS_WRONG_WAY_HINT = ("the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], [-sin, 0, cos]] "
                               "(about y the minus sign sits bottom-left)")
-ROLL_SIGNS_FLIPPED_EXPRESS_HINT = ("the roll signs are flipped: express the axes in the body frame with Rx(roll)ᵀ, "
-                                   "not Rx(roll)")
+ROLL_SIGNS_FLIPPED_EXPRESS_HINT = ("the roll signs are flipped: every entry with sin(roll) has the wrong sign; the "
+                                   "axes are turned the wrong way into the body frame (try roll = π/2 with a pure "
+                                   "yaw rate and a finite difference)")
 TREATED_ROTATION_NEXT_LOCK_HINT = ("treated a rotation next to the lock as locked (roll = 0): call it gimbal lock "
                                    "only when cos(pitch) is below about 1e-12")
 YAW_ROLL_SWAPPED_YAW_HINT = "yaw and roll are swapped: yaw turns about z, roll about x"
@@ -168,8 +177,8 @@ COLUMNS_GO_ORDER_RATES_HINT = "the columns go in the order of the rates: [yaw_ra
 AXIS_TIMES_SIN_VEE_HINT = ("that is the axis times sin θ (the vee of R_bᵀ R_a - I), right only to first order: take "
                            "Log(R_bᵀ R_a), whose length is the angle θ itself")
 CLOSED_FORM_LOSES_DIGITS_HINT = ("the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, "
-                                 "so (1 - cos θ)/θ² comes out 0 instead of 1/2): use the series 1/2 - θ²/24 below a "
-                                 "threshold")
+                                 "so (1 - cos θ)/θ² comes out 0 instead of 1/2): below a threshold use the Taylor "
+                                 "series of each coefficient, with its θ² term")
 CLOSED_FORM_USE_TAYLOR_HINT = "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle"
 COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT = ("the coefficients are swapped: the one in front of [w]× starts at 1/2 and the "
                                             "one in front of [w]×² at 1/6, as the series Σ (-[w]×)^k/(k+1)! says")
@@ -204,9 +213,11 @@ TURNED_TWICE_FAR_QUATERNION_HINT = "turned twice as far: a quaternion holds the 
 USE_BELOW_TINY_ANGLE_HINT = "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle"
 
 # ---------------------------------------------------------------- checks/lesson06_point_to_body.py
-LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("Rᵀ [p_w]× belongs to the left perturbation Exp(δ) R; for R Exp(δ) the turn acts on the "
-                       "body-frame point Rᵀ p_w")
+LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("Rᵀ [p_w]× belongs to the left perturbation Exp(δ) R, a turn about the "
+                                         "world's axes; here δ turns the body about its own axes, R Exp(δ)")
 POINT_SEEN_BODY_RT_HINT = "the point seen from the body is Rᵀ p_w, not p_w: R belongs in the answer"
+POINT_TO_BODY_SIGN_HINT = ("the sign is flipped: J is the negative of the finite differences; a transpose "
+                           "reverses a small turn, and moving δ to the other side of a cross product changes its sign")
 
 # ---------------------------------------------------------------- checks/lesson06_compose.py
 COMPOSE_IGNORES_R2_HINT = ("a turn of R1 reaches the end of the product only after crossing R2: move it past R2 "
@@ -214,17 +225,17 @@ COMPOSE_IGNORES_R2_HINT = ("a turn of R1 reaches the end of the product only aft
 COMPOSE_LEFT_HINT = ("those are the left Jacobians (the turn on the left of R1 and of R2); here both the input and "
                      "the output are perturbed on the right")
 COMPOSE_SWAPPED_HINT = "J1 and J2 are swapped: return (J1, J2), the first for a turn of R1, the second for a turn of R2"
-COMPOSE_TRANSPOSE_HINT = ("J1 is the transpose of what is needed: moving a turn from the left of R2 to its right "
-                          "conjugates it by R2⁻¹, so the adjoint to use is that of R2⁻¹, not of R2")
+COMPOSE_TRANSPOSE_HINT = ("J1 is the transpose of what is needed: the turn of R1 was carried across R2 the wrong "
+                          "way; check on which side of R2 it starts and on which side it must end")
 COMPOSE_WRONG_FACTOR_HINT = "J1 depends on R2 (the factor the perturbation must cross), not on R1"
-INVERSE_LEFT_HINT = ("-Rᵀ is the Jacobian for perturbations on the left of R and of R⁻¹; with R Exp(d), the inverted "
-                     "turn lands on the left of Rᵀ and must be moved to its right")
-INVERSE_NOT_MOVED_HINT = ("the inverted turn sits on the left of Rᵀ: move it to the right with the adjoint before "
-                          "you read off J")
+INVERSE_LEFT_HINT = ("-Rᵀ is the Jacobian for perturbations on the left of R and of R⁻¹; here both turns sit on "
+                     "the right, R Exp(d) and R⁻¹ Exp(J d)")
+INVERSE_NOT_MOVED_HINT = ("-I is right only at the identity: the inverted turn sits on the left of Rᵀ, but J is "
+                          "defined by a turn on the right of R⁻¹")
 INVERSE_AT_IDENTITY_HINT = "at the identity, inverting a small turn simply reverses it: the Jacobian there is -I"
 INVERSE_SIGN_HINT = "the sign: the inverse of a small turn Exp(d) is Exp(-d)"
-INVERSE_TRANSPOSE_HINT = ("Rᵀ is neither the sign nor the side: invert R Exp(d) factor by factor, then move the "
-                          "small turn to the right of Rᵀ with the adjoint")
+INVERSE_TRANSPOSE_HINT = ("Rᵀ is neither the sign nor the side: inverting reverses the small turn, and J must act "
+                          "on a turn to the right of R⁻¹; at the identity J is -I, check your answer there")
 
 # ---------------------------------------------------------------- checks/lesson07.py
 DIVIDED_FIRST_COORDINATE_X_HINT = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
@@ -233,18 +244,28 @@ INVERSE_R_T_RT_HINT = ("the inverse must undo the pose: T_ba (R p + t) = p for e
                        "p_a = R p_b + t for p_b and read off the blocks")
 KEPT_T_UNCHANGED_INVERSE_HINT = "kept t unchanged: the inverse must undo the shift as well as the turn"
 MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT = "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"
-ROTATION_BLOCK_INVERSE_RT_HINT = "the rotation block of the inverse is Rᵀ, not R: it must undo the turn"
+ROTATION_BLOCK_INVERSE_RT_HINT = ("the rotation block of the inverse is still R: T_ba T_ab must have the identity "
+                                  "as its rotation block, so the inverse must undo the turn")
 SERIES_VALUE_AT_ZERO_ONLY_HINT = ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use c(θ) = (1 - (θ/2) "
                            "cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
 SMALL_ANGLE_SERIES_HINT = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: the closed form is 0/0 at θ = "
                            "0 and cancels catastrophically just above it")
 TRANSFORM_ROWS_FORMULA_HINT = "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t"
 TRANSPOSES_T_AB_T_HINT = "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"
+INVERSE_TRANSLATION_FRAME_HINT = ("the rotation block is right, but the translation -t is written in the wrong "
+                                  "frame's axes: check T_ba (T_ab p) = p for a point p")
+V_SERIES_TINY_ANGLE_HINT = ("below θ = 1e-2 use the Taylor series of V's two coefficients, each with its θ² term: "
+                            "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not 1/2")
+ADJOINT_COUPLING_WITHOUT_R_HINT = ("the coupling block does not depend on R: conjugating by T turns the spin phi as "
+                                   "well as shifting it; compare that block with T ξ^ T⁻¹")
 
 # ---------------------------------------------------------------- checks/lesson07_relative_pose.py
 INVERSE_POSE_TRANSPOSE_T1_HINT = ("the inverse of a pose is not its transpose: Tᵀ puts t in the bottom row and "
                                   "never undoes the shift")
-SHIFT_IN_WORLD_AXES_HINT = "the shift t_wb - t_wa is written in world axes: turn it into a's axes with R_waᵀ"
+SHIFT_IN_WORLD_AXES_HINT = ("the rotation block is right, but the shift t_wb - t_wa is written in world axes; "
+                            "T_ab's translation is b's origin as seen in a's axes")
+RELATIVE_POSE_CHAIN_HINT = "T_wa T_ab must equal T_wb: poses compose only where the inner letters match"
+RELATIVE_POSE_REVERSED_HINT = "that is T_ba, a seen from b: swap the roles of a and b"
 
 # ---------------------------------------------------------------- checks/lesson08.py
 ALIGNMENT_SVD_FORMULA_HINT = "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
@@ -259,6 +280,7 @@ RETURNED_R0_UNCHANGED_DO_HINT = "returned R0 unchanged: do iters updates R ← R
 UNCONSTRAINED_LEAST_SQUARES_MATRIX_HINT = ("that is the unconstrained least-squares matrix, which need not be a "
                                            "rotation: take R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P")
 UPDATED_ADDING_R_R_HINT = "updated by adding R [δ]× to R, which leaves SO(3): use R ← R Exp(δ)"
+WEIGHT_RATIOS_HINT = "only the ratios of the weights matter: scaling every weight must not move the mean"
 
 # ---------------------------------------------------------------- checks/lesson09.py
 CONVERT_INPUTS_NP_ASARRAY_HINT = "convert the inputs with np.asarray(..., dtype=float)"
@@ -280,11 +302,17 @@ WEIGHTS_K_R_BEYOND_HINT = ("weights (k/r)² beyond k belong to another cost, who
 
 # ---------------------------------------------------------------- checks/lesson09_filter.py, _update.py
 NEES_NOT_DIVIDED_HINT = "the NEES is the full quadratic form, not divided by the dimension"
+PREDICT_NO_TURN_R_HINT = "with ω = 0 the step turns nothing: R_new must be R itself, to the last bits"
+PREDICT_NO_TURN_P_HINT = "with ω = 0 the step turns nothing: P grows by the gyro noise's covariance over dt alone"
 UPDATE_WRONG_SIDE_HINT = "the correction is applied on the wrong side: the error state is R_true = R Exp(ε)"
 
 # ---------------------------------------------------------------- checks/lesson09_compound.py
 COMPOUND_PAIR_REASON = "compound_pose_covariance must return a pair (T, S)"
 COMPOUND_EXPAND_HINT = "expand T1 Exp(ξ1) T2 Exp(ξ2) to first order, gathering both twists on the right"
+COMPOUND_PRECISION_HINT = (
+    "with T2 = I nothing is carried across it, so S must be S1 + S2 to double precision: your S lost digits "
+    "(single precision somewhere?)"
+)
 
 # ---------------------------------------------------------------- checks/lesson09_capstone.py
 HAND_EYE_LISTS_REASON = "hand_eye_rotation answers differently for plain lists"

@@ -20,8 +20,7 @@ WORLD_RATE = np.array([0.0, 0.0, 1.0])
 VEE_OF_R_DOT = np.array([0.0, 0.5, 0.5])          # the "vee" of Ṙ itself (not skew-symmetric)
 TURNED_TWICE = np.array([0.0, 0.0, -1.0])         # Rᵀ applied to the body rate once more
 
-WORLD_HINT = ("that is the world rate ω_w (Ṙ Rᵀ = [ω_w]×); the gyroscope's rate is in body axes: "
-              "use ω_w = R ω_b to get back to the body frame")
+WORLD_HINT = hints.BODY_RATE_IS_WORLD_RATE_HINT
 SIGN_HINT = ("the opposite spin: ω_b came out negated; at R = I a body spinning positively about z has "
              "Ṙ = [e_z]× and must give +e_z")
 IGNORES_R_HINT = "Ṙ alone is not skew-symmetric: it still holds the attitude R; remove it first"

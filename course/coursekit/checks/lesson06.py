@@ -630,9 +630,9 @@ def _(right_jacobian_so3):
             raise Mismatch(seen, hints.CLOSED_FORM_LOSES_DIGITS_HINT)
         if close(got, E, 1e-300):
             raise Mismatch(seen, f"returned I at θ = {theta:g}: the first-order term -[w]×/2 is missing; below a "
-                           "small angle use the series I - [w]×/2 + [w]×²/6")
-        raise Mismatch(seen, "below a small angle use the series a = 1/2 - θ²/24, b = 1/6 - θ²/120 of "
-                       "Jr = I - a [w]× + b [w]×²")
+                           "small angle use the Taylor series of a and b in Jr = I - a [w]× + b [w]×², not I")
+        raise Mismatch(seen, "Jr is off at a tiny angle: below a small angle use the Taylor series of a and b in "
+                       "Jr = I - a [w]× + b [w]×² (find them from Σ (-[w]×)^k/(k+1)!), each with its θ² term")
 
 
 @public_check("right_jacobian_so3", "first order: Exp(w + dw) ≈ Exp(w) Exp(Jr dw) with an error of order |dw|²")
@@ -691,17 +691,18 @@ def _every_decade(function, name, expected_of, formula, closed_form, series, fir
                        f"threshold; use the series there, {series}")
     if len(failing) > 1 and errors[failing[-1]] > errors[theta]:
         raise Mismatch(seen + f", and by more at smaller angles ({errors[failing[-1]]:.1e} at θ = {failing[-1]:.2g})",
-                       "the closed form cancels at small angles (1 - cos θ, or θ - sin θ, keeps fewer digits as θ "
-                       f"shrinks): below a small-angle threshold use the series, {series}")
+                       "the closed form cancels at small angles (a difference of nearly equal terms, such as "
+                       f"1 - cos θ, keeps fewer digits as θ shrinks): below a small-angle threshold use the series, "
+                       f"{series}")
     raise Mismatch(seen, _series_hint(theta, False, formula, closed_form))
 
 
 @public_check("right_jacobian_so3", "exact to 1e-13 just below each power of ten, θ = 0.97 … 9.7e-9 (one as a list)")
 def _(right_jacobian_so3):
     _every_decade(right_jacobian_so3, "right_jacobian_so3", lambda W, a, b, c: E - a * W + b * W @ W,
-                  "keep the θ² terms, a = 1/2 - θ²/24 and b = 1/6 - θ²/120 (a one-term series is off by about "
-                  "θ³/24)", hints.RIGHT_JACOBIAN_FORMULA_HINT,
-                  "a = 1/2 - θ²/24, b = 1/6 - θ²/120", "-[w]×/2")
+                  "keep the θ² term of each coefficient's series (a one-term series is off by about θ³/24)",
+                  hints.RIGHT_JACOBIAN_FORMULA_HINT,
+                  "the Taylor series of a and b, each with its θ² term", "-[w]×/2")
 
 
 # ---------------------------------------------------------------- right_jacobian_inv_so3

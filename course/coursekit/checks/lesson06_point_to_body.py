@@ -20,7 +20,7 @@ SIGN = np.array([[0.0, -0.5, 1.0], [0.5, 0.0, 2.0], [-1.0, -2.0, 0.0]])
 NO_R = np.array([[0.0, 0.5, 2.0], [-0.5, 0.0, -1.0], [-2.0, 1.0, 0.0]])
 FORWARD = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [2.0, -1.0, 0.0]])
 LEFT_HINT = (hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT)
-SIGN_HINT = "the sign: (R Exp(δ))ᵀ = Exp(-δ) Rᵀ ≈ (I - [δ]×) Rᵀ, and -[δ]× v = +[v]× δ"
+SIGN_HINT = hints.POINT_TO_BODY_SIGN_HINT
 NO_R_HINT = hints.POINT_SEEN_BODY_RT_HINT
 FORWARD_HINT = ("that is Exercise 5's answer, which is the Jacobian of R p (body to world); here the map is Rᵀ p_w "
                 "(world to body), and the perturbation sits inside a transpose")
@@ -38,7 +38,8 @@ def _(jacobian_point_to_body):
     if not close(J, numeric, 1e-8):
         raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
                        next((hint for value, hint in SLIPS if close(J, value, 1e-12)), None) or
-                       "expand (R (I + [δ]×))ᵀ p_w and move δ to the right of the cross product")
+                       "J must match the finite differences column by column: column j is how the body-frame point "
+                       "moves per radian of turn about the body's axis j")
 
 
 @public_check("jacobian_point_to_body", "a turn about the point's own body-frame direction does not move it")

@@ -36,7 +36,7 @@ FORGETS_V_HINT = "the translation of exp(xi) is V(phi) @ rho, not rho"
 V_SERIES_HINT = ("T = [[Exp(phi), V(phi) rho], [0, 1]] with V = I + W/2 + W²/6 + W³/24 + … (W = [phi]×): compare "
                  "your closed form of V with that series, and your pose with expm of the twist matrix")
 SERIES_NAN_HINT_V = ("NaN or inf: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
-                     "below θ = 1e-2 use their series (1/2 - θ²/24, 1/6 - θ²/120)")
+                     "below θ = 1e-2 use their Taylor series, each with its θ² term")
 SERIES_HINT_C = (hints.SMALL_ANGLE_SERIES_HINT)
 
 
@@ -331,7 +331,7 @@ def _inverse_mistake(got, T, slips):
          "the plain transpose of T is not its inverse (a pose is not orthogonal): it puts t in the bottom row "
          "and never undoes the shift"),
         (negated_t, f"the translation of the inverse is -t = {fmt(-T[:3, 3])}",
-         "-t must be turned as well as negated: -t is written in a's axes, and the inverse needs it in b's"),
+         hints.INVERSE_TRANSLATION_FRAME_HINT),
         (kept_t, "the translation of the inverse is t itself",
          hints.KEPT_T_UNCHANGED_INVERSE_HINT),
         (kept_R, "the rotation block of the inverse is R",
@@ -454,8 +454,7 @@ def _(exp_se3):
     elif all(is_rho):
         hint = FORGETS_V_HINT
     else:
-        hint = ("below θ = 1e-2 use the series of V's coefficients (1/2 - θ²/24, 1/6 - θ²/120): "
-                "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not 1/2")
+        hint = hints.V_SERIES_TINY_ANGLE_HINT
     raise Mismatch(f"at |phi| = {angle:g}, |rho| = 50 the pose is {off_by(T, expected)} (allowed 5e-11)", hint)
 
 

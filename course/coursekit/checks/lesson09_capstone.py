@@ -15,12 +15,15 @@ from ..lie import Exp, Log, skew
 from .common import require_shape
 
 
-def _dataset(seed, pairs, sigma, outliers):
+def _dataset(seed, pairs, sigma, outliers, plane=False):
     rng = np.random.default_rng(seed)
     X = Rotation.random(random_state=rng).as_matrix()
+    normal = rng.normal(size=3) if plane else None
     Bs, As, information = [], [], np.zeros((3, 3))
     for _ in range(pairs):
         axis = rng.normal(size=3)
+        if plane:  # every turn's axis in one plane: X is still determined
+            axis = axis - (axis @ normal) / (normal @ normal) * normal
         B = Exp(rng.uniform(0.3, 2.5) * axis / np.linalg.norm(axis))
         Bs.append(B)
         As.append(X @ B @ X.T @ Exp(sigma * rng.normal(size=3)))
@@ -31,6 +34,12 @@ def _dataset(seed, pairs, sigma, outliers):
         information += skew(Log(Bs[i])).T @ skew(Log(Bs[i]))
     spread = sigma * np.sqrt(np.trace(np.linalg.inv(information)))
     return np.array(As), np.array(Bs), X, spread
+
+
+PLANE_HINT = (
+    "right when the turn axes point every way, wrong when they all lie in one plane: there the data fix only two "
+    "directions, and your fit must still choose a proper rotation for the third"
+)
 
 
 def _answer(hand_eye_rotation, As, Bs):
@@ -81,9 +90,45 @@ def _(hand_eye_rotation):
         raise Mismatch(f"X is {_angle(X, X_true):.3g} rad from the truth on exact data", _hint(X, As, Bs, X_true))
 
 
+@public_check("hand_eye_rotation", "recovers X to 1e-9 rad from exact pairs whose turn axes all lie in one plane")
+def _(hand_eye_rotation):
+    for seed in (93, 95):
+        As, Bs, X_true, _ = _dataset(seed, 8, 0.0, 0, plane=True)
+        X = _answer(hand_eye_rotation, As, Bs)
+        if _angle(X, X_true) > 1e-9:
+            general = _dataset(90, 10, 0.0, 0)
+            right_in_general = _angle(_answer(hand_eye_rotation, *general[:2]), general[2]) <= 1e-9
+            raise Mismatch(
+                f"X is {_angle(X, X_true):.3g} rad from the truth on exact pairs whose axes share one plane",
+                PLANE_HINT if right_in_general else _hint(X, As, Bs, X_true),
+            )
+
+
 @public_check("hand_eye_rotation", "within 5 σ_X of the truth: 20 pairs, σ = 0.01 rad, 4 outliers")
 def _(hand_eye_rotation):
     As, Bs, X_true, spread = _dataset(91, 20, 0.01, 4)
+    X = _answer(hand_eye_rotation, As, Bs)
+    if _angle(X, X_true) > 5 * spread:
+        raise Mismatch(
+            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
+            _hint(X, As, Bs, X_true),
+        )
+
+
+@public_check("hand_eye_rotation", "within 5 σ_X of the truth: 24 pairs, σ = 0.01 rad, 6 outliers (a tight bound)")
+def _(hand_eye_rotation):
+    As, Bs, X_true, spread = _dataset(93, 24, 0.01, 6)
+    X = _answer(hand_eye_rotation, As, Bs)
+    if _angle(X, X_true) > 5 * spread:
+        raise Mismatch(
+            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
+            _hint(X, As, Bs, X_true),
+        )
+
+
+@public_check("hand_eye_rotation", "within 5 σ_X of the truth: only 12 pairs, σ = 0.02 rad, 4 of them outliers")
+def _(hand_eye_rotation):
+    As, Bs, X_true, spread = _dataset(98, 12, 0.02, 4)
     X = _answer(hand_eye_rotation, As, Bs)
     if _angle(X, X_true) > 5 * spread:
         raise Mismatch(

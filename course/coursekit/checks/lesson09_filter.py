@@ -108,6 +108,19 @@ NEES_SLIPS = [
 ]
 
 
+R_GENERIC = Exp([0.4, -1.1, 2.0])
+STEPS = (1e-12, 1e-9, 9.9e-7, 1e-6, 9.9e-4, 1e-3, 1e-2, 9.9e-2, 0.1, 0.7, 2.0, 3.0, np.pi - 1e-9)  # |ω Δt|, rad
+
+
+def _as_tuples(args):
+    """The plain lists among ``args`` as nested tuples (array_like, as the docstrings allow); arrays kept."""
+
+    def tuples(a):
+        return tuple(tuples(x) for x in a) if isinstance(a, list) else a
+
+    return [tuples(a) for a in args]
+
+
 def _central(f, n, h=1e-6):
     return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
 
@@ -128,18 +141,19 @@ def _predicted_covariance(R, P, omega, dt, Q):
     return J[:, :3] @ P @ J[:, :3].T + J[:, 3:] @ Q @ J[:, 3:].T
 
 
-@public_check("filter_predict", "the attitude takes one gyro step on the body side, R Exp(ω Δt)")
+@public_check("filter_predict", "the attitude takes one gyro step on the body side, R Exp(ω Δt) (two attitudes)")
 def _(filter_predict):
-    R_new, _ = _pair(filter_predict(QUARTER_Z, P0, OMEGA, DT, Q_GYRO), "filter_predict")
-    expected = QUARTER_Z @ Exp(OMEGA * DT)
-    if not close(R_new, expected, 1e-12):
-        hint = (
-            "that is the step on the world side, Exp(ω Δt) R: a gyro measures body rates, so apply the step "
-            "on the right of R"
-            if close(R_new, Exp(OMEGA * DT) @ QUARTER_Z, 1e-12)
-            else "R_new = R Exp(ω Δt), as in integrate_gyro"
-        )
-        raise Mismatch(f"R_new is not R Exp(ω Δt) ({off_by(R_new, expected)})", hint)
+    for R in (QUARTER_Z, R_GENERIC):  # a quarter turn's entries are exact in any precision; R_GENERIC's are not
+        R_new, _ = _pair(filter_predict(R, P0, OMEGA, DT, Q_GYRO), "filter_predict")
+        expected = R @ Exp(OMEGA * DT)
+        if not close(R_new, expected, 1e-12):
+            hint = (
+                "that is the step on the world side, Exp(ω Δt) R: a gyro measures body rates, so apply the step "
+                "on the right of R"
+                if close(R_new, Exp(OMEGA * DT) @ R, 1e-12)
+                else "R_new = R Exp(ω Δt), as in integrate_gyro"
+            )
+            raise Mismatch(f"R_new is not R Exp(ω Δt) ({off_by(R_new, expected)})", hint)
 
 
 @public_check("filter_predict", "P_new is the first-order covariance of the new error (central differences)")
@@ -156,6 +170,28 @@ def _(filter_predict):
         )
 
 
+@public_check(
+    "filter_predict", "P_new for steps |ω Δt| at every decade from 1e-12 to π (and just below 1e-6, 1e-3, 0.1)"
+)
+def _(filter_predict):
+    axis = OMEGA / np.linalg.norm(OMEGA)
+    for step in STEPS:
+        omega = step / DT * axis
+        _, P_new = _pair(filter_predict(QUARTER_Z, P0, omega, DT, Q_GYRO), "filter_predict")
+        expected = _predicted_covariance(QUARTER_Z, P0, omega, DT, Q_GYRO)
+        if not close(P_new, expected, 1e-7 * np.max(np.abs(expected))):
+            _, P_long = _pair(filter_predict(QUARTER_Z, P0, OMEGA, DT, Q_GYRO), "filter_predict")
+            right_for_long = close(P_long, _predicted_covariance(QUARTER_Z, P0, OMEGA, DT, Q_GYRO), 1e-8)
+            raise Mismatch(
+                f"P_new for a step of {step:.3g} rad disagrees with the first-order covariance "
+                f"({off_by(P_new, expected)})",
+                f"right for a long step but not for {step:.3g} rad: check the branch your answer takes for steps "
+                "this small, and where it switches"
+                if right_for_long
+                else "the check with one long step above says more",
+            )
+
+
 @public_check("filter_predict", "no gyro noise and no turn: the covariance is carried unchanged")
 def _(filter_predict):
     R_new, P_new = _pair(filter_predict(QUARTER_X, P0, np.zeros(3), 0.01, np.zeros((3, 3))), "filter_predict")
@@ -166,19 +202,39 @@ def _(filter_predict):
         )
 
 
-@public_check("filter_predict", "accepts plain lists")
+@public_check("filter_predict", "with ω = 0: R_new = R and P_new = P + dt² Q, to 1e-14 (the docstring's example)")
 def _(filter_predict):
+    R_new, P_new = _pair(filter_predict(R_GENERIC, P0, np.zeros(3), DT, Q_GYRO), "filter_predict")
+    if not close(R_new, R_GENERIC, 1e-14):
+        raise Mismatch(f"with ω = 0 R_new is not R ({off_by(R_new, R_GENERIC)})", hints.PREDICT_NO_TURN_R_HINT)
+    expected = P0 + DT * DT * Q_GYRO
+    if not close(P_new, expected, 1e-14 * np.max(np.abs(expected))):
+        raise Mismatch(f"with ω = 0 P_new is not P + dt² Q ({off_by(P_new, expected)})", hints.PREDICT_NO_TURN_P_HINT)
+
+
+@public_check("filter_predict", "accepts plain lists and nested tuples")
+def _(filter_predict):
+    args = (QUARTER_Z, P0, OMEGA, DT, Q_GYRO)
     require_same_with_lists(
-        lambda *a: np.vstack(filter_predict(*a)),
-        (QUARTER_Z, P0, OMEGA, DT, Q_GYRO),
+        lambda *a: np.vstack(filter_predict(*a)), args, (6, 3), "filter_predict(R, P, omega_meas, dt, Q)"
+    )
+    require_same_with_lists(
+        lambda *a: np.vstack(filter_predict(*_as_tuples(a))),
+        args,
         (6, 3),
-        "filter_predict(R, P, omega_meas, dt, Q)",
+        "filter_predict(...) given tuples",
     )
 
 
 # ---------------------------------------------------------------- attitude_nees
 def _nees(attitude_nees, R_true, R_est, P):
-    return float(require_shape(attitude_nees(R_true, R_est, P), (), "attitude_nees(R_true, R_est, P)"))
+    value = attitude_nees(R_true, R_est, P)
+    if isinstance(value, np.ndarray):
+        raise Mismatch(
+            f"attitude_nees(R_true, R_est, P) returned a numpy array of shape {value.shape}, not a float",
+            "the NEES is one number: return it as a float",
+        )
+    return float(require_shape(value, (), "attitude_nees(R_true, R_est, P)"))
 
 
 @public_check("attitude_nees", "0.6 rad about the body's x axis with P = diag(0.01, 0.04, 0.09) gives 36")
@@ -216,6 +272,8 @@ def _(attitude_nees):
         )
 
 
-@public_check("attitude_nees", "accepts plain lists")
+@public_check("attitude_nees", "accepts plain lists and nested tuples")
 def _(attitude_nees):
-    require_same_with_lists(attitude_nees, (QUARTER_X, NEES_R_EST, NEES_P), (), "attitude_nees(R_true, R_est, P)")
+    args = (R_GENERIC, NEES_R_EST, NEES_P)
+    require_same_with_lists(attitude_nees, args, (), "attitude_nees(R_true, R_est, P)")
+    require_same_with_lists(lambda *a: attitude_nees(*_as_tuples(a)), args, (), "attitude_nees(...) given tuples")

@@ -413,8 +413,8 @@ def _log_hint(got, R, expected, slips):
     if explains(got, 2.0 * expected, expected):
         return hints.TWICE_ROTATION_VECTOR_VEE_HINT
     if angle < 0.5 and explains(got, slips["sin_angle_axis"], expected):
-        return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by θ³/6 ≈ {angle ** 3 / 6:.1e}: you dropped the θ²/6 term, "
-                "keep θ/sin θ ≈ 1 + θ²/6 for small θ")
+        return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by about {angle ** 3 / 6:.1e} at θ = {angle:.3g}: below your "
+                "threshold the factor θ/sin θ was cut to its first term; keep its θ² term too")
     theta_acos = slips["arccos_angle"]
     if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
@@ -424,7 +424,8 @@ def _log_hint(got, R, expected, slips):
     if any(explains(got, candidate, expected) for candidate in slips.get("no_branch", ())) or (
             angle > 3.0 and np.linalg.norm(got) <= 1e-3 * angle):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
-                "needs its own branch near π, with the axis from (R + Rᵀ)/2 and its sign from R - Rᵀ")
+                "needs its own branch near π that does not divide by sin θ (section 5: which part of R still holds "
+                "the axis there?)")
     if angle > 3.0 and any(explains(got, candidate, expected)
                            for candidate in column_logs(R, angle, expected * np.sin(angle) / angle)):
         return COLUMN_HINT
@@ -514,7 +515,8 @@ def _(axis_angle):
                        _theta_hint(theta, np.pi / 2, LOG_SLIPS["quarter"]["arccos_angle"]))
     if not close(u, [0.0, 0.0, 1.0], 1e-12):
         raise Mismatch(f"got u = {fmt(u)}, expected u = [0, 0, 1] ({off_by(u, [0.0, 0.0, 1.0])})",
-                       "u = vee(R - Rᵀ)/(2 sin θ) away from π")
+                       "u is wrong at a quarter turn, far from 0 and π: check the axis against R u = u and the sense "
+                       "of the turn")
 
 
 @public_check("axis_angle", "the identity, also up to rounding (trace just above 3): θ = 0 with a unit axis (no NaN)")
@@ -574,9 +576,8 @@ def _(axis_angle):
                        _theta_hint(theta, np.pi, LOG_SLIPS["half_diagonal"]["arccos_angle"]))
     if not (close(u, DIAGONAL, 1e-10) or close(u, -DIAGONAL, 1e-10)):
         raise Mismatch(f"got u = {fmt(u)}, expected ±(1, 1, 1)/√3",
-                       "at θ = π, R - Rᵀ is zero up to rounding and carries no axis: the symmetric part (R + I)/2 "
-                       "still does, in every column that is not nearly zero" if np.max(np.abs(R - R.T)) <= 1e-9 else
-                       "near π take the axis from the symmetric part (R + Rᵀ)/2")
+                       hints.AXIS_AT_HALF_TURN_HINT if np.max(np.abs(R - R.T)) <= 1e-9 else
+                       "the axis is off at θ = π, where R - Rᵀ vanishes (section 5)")
 
 
 # ---------------------------------------------------------------- axis_from_eigen

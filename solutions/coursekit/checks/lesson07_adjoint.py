@@ -46,10 +46,11 @@ ROTATION_FIRST_HINT = ("the coupling block sits bottom-left: that is the layout 
                        "here xi = [rho, phi], so it multiplies phi in the translation rows (top-right)")
 NO_COUPLING_HINT = ("diag(R, R) is the adjoint of a pure rotation: with a translation t, a spin also moves the origin, "
                     "so the translation rows need a block that multiplies phi")
-COUPLING_WITHOUT_R_HINT = "the spin phi is turned by R before it meets t: the coupling block is a product with R in it"
+COUPLING_WITHOUT_R_HINT = hints.ADJOINT_COUPLING_WITHOUT_R_HINT
 COUPLING_SIGN_HINT = ("the coupling block has the wrong sign: check the step that moves phi to the right of the cross "
                       "product, a × b = -b × a")
-COUPLING_ORDER_HINT = "R [t]× has the factors in the wrong order: the spin is turned first (R phi), then crossed with t"
+COUPLING_ORDER_HINT = ("R [t]× has the factors in the wrong order: conjugate the twist matrix block by block, "
+                       "T ξ^ T⁻¹, and follow which of R and t acts on phi first")
 ADJOINT_SLIPS = [(ADJ_ROTATION_FIRST, ROTATION_FIRST_HINT), (ADJ_NO_COUPLING, NO_COUPLING_HINT),
                  (ADJ_COUPLING_WITHOUT_R, COUPLING_WITHOUT_R_HINT), (ADJ_COUPLING_SIGN, COUPLING_SIGN_HINT),
                  (ADJ_COUPLING_R_FIRST, COUPLING_ORDER_HINT)]
@@ -108,12 +109,13 @@ JTP_SIGN = np.array([[0.0, -1.0, 0.0, -0.5, 0.0, 1.0], [1.0, 0.0, 0.0, 0.0, -0.5
 JTP_WORLD_ROTATION = np.array([[0.0, -1.0, 0.0, 0.0, 0.5, -1.0], [1.0, 0.0, 0.0, -0.5, 0.0, 2.0],
                                [0.0, 0.0, 1.0, 1.0, -2.0, 0.0]])
 POINT_ROTATION_FIRST_HINT = "xi = [rho, phi]: the first three columns are for the translation rho, the last three for phi"
-POINT_TRANSLATION_HINT = ("rho is a shift in the body frame: T turns it into the world, so its block is R, not I "
-                          "(I belongs to a left perturbation)")
-POINT_LEFT_HINT = ("[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T; for T Exp(xi) both blocks carry R")
+POINT_TRANSLATION_HINT = ("the rho block is I, as for a left perturbation: here rho is a shift in the body frame, "
+                          "and T carries it into the world")
+POINT_LEFT_HINT = ("[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T; here xi perturbs T on the "
+                   "right, in the body frame")
 POINT_SIGN_HINT = hints.SIGN_ROTATION_BLOCK_PHI_HINT
 POINT_WORLD_ROTATION_HINT = ("-[R p]× is the rotation block of a left perturbation; for T Exp(xi) the turn is about "
-                             "body axes, so the block is R times lesson 06's rotated-point block")
+                             "body axes (lesson 06, section 6, makes the same distinction for a rotated point)")
 POINT_SLIPS = [(JTP_ROTATION_FIRST, POINT_ROTATION_FIRST_HINT), (JTP_TRANSLATION_I, POINT_TRANSLATION_HINT),
                (JTP_LEFT, POINT_LEFT_HINT), (JTP_SIGN, POINT_SIGN_HINT), (JTP_WORLD_ROTATION, POINT_WORLD_ROTATION_HINT)]
 

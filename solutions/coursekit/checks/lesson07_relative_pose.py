@@ -21,10 +21,10 @@ WORLD_DIFFERENCE = np.array([[0.0, 0.0, 1.0, 3.0], [0.0, 1.0, 0.0, -3.0], [-1.0,
 TRANSPOSED = np.array([[1.0, 0.0, 0.0, -1.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [2.0, 0.0, 1.0, 2.0]])
 REVERSED = np.array([[1.0, 0.0, 0.0, 3.0], [0.0, 0.0, 1.0, -2.0], [0.0, -1.0, 0.0, -2.0], [0.0, 0.0, 0.0, 1.0]])
 UNROTATED = np.array([[1.0, 0.0, 0.0, 2.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
-WORLD_HINT = ("that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain (b, then w); "
-              "T_ab = T_aw T_wb = T_wa⁻¹ T_wb")
+WORLD_HINT = ("that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain (b, then w), so "
+              "T_wa T_ab misses T_wb")
 TRANSPOSED_HINT = hints.INVERSE_POSE_TRANSPOSE_T1_HINT
-REVERSED_HINT = "that is T_ba, a seen from b: swap the roles, T_ab = T_wa⁻¹ T_wb"
+REVERSED_HINT = hints.RELATIVE_POSE_REVERSED_HINT
 UNROTATED_HINT = hints.SHIFT_IN_WORLD_AXES_HINT
 SLIPS = [(WORLD_DIFFERENCE, WORLD_HINT), (TRANSPOSED, TRANSPOSED_HINT), (REVERSED, REVERSED_HINT),
          (UNROTATED, UNROTATED_HINT)]
@@ -36,7 +36,7 @@ def _(relative_pose):
     if not close(got, T_AB, 1e-12):
         raise Mismatch(f"T_wa @ T_ab misses T_wb ({off_by(T_WA @ got, T_WB)})",
                        next((hint for value, hint in SLIPS if close(got, value, 1e-12)), None) or
-                       "T_ab = T_aw T_wb: the inner letters chain")
+                       hints.RELATIVE_POSE_CHAIN_HINT)
 
 
 @public_check("relative_pose", "a frame seen from itself is the identity; b seen from the world is T_wb")
@@ -58,4 +58,5 @@ def _(relative_pose):
 @public_check("relative_pose", "two generic poses: T_wa T_ab = T_wb to 1e-12 (float64 kept)")
 def _(relative_pose):
     got = require_shape(relative_pose(T_GENERIC, T_GENERIC_2), (4, 4), "relative_pose(T_wa, T_wb)")
-    require_exact(T_GENERIC @ got, T_GENERIC_2, "T_wa @ relative_pose(T_wa, T_wb)", hint="T_ab = T_wa⁻¹ T_wb")
+    require_exact(T_GENERIC @ got, T_GENERIC_2, "T_wa @ relative_pose(T_wa, T_wb)",
+                  hint="T_wa T_ab must equal T_wb to rounding: build T_ab from the two poses in float64")

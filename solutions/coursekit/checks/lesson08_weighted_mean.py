@@ -8,6 +8,7 @@ stored as numbers (``tests/test_public_check_constants_lesson08_weighted_mean.py
 
 import numpy as np
 
+from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close, rotation_problem
 from ..lie import Exp, Log
@@ -73,7 +74,7 @@ def _(weighted_rotation_mean):
     scaled = _mean_of(weighted_rotation_mean, Rs, [1e-3, 2e-3, 1e-3], "weighted_rotation_mean(Rs, w / 1000)")
     if not close(scaled, weighted, 1e-9):
         raise Mismatch(f"dividing every weight by 1000 moved the mean by {np.max(np.abs(scaled - weighted)):.2g}",
-                       "only the ratios of the weights matter: divide the weighted sum by Σ w_i")
+                       hints.WEIGHT_RATIOS_HINT)
 
 
 @public_check("weighted_rotation_mean", "accepts a list of rotations and a list of weights")

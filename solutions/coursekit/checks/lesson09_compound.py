@@ -257,6 +257,23 @@ def _(compound_pose_covariance):
         )
 
 
+FINE_S1 = np.array([[4.1, 0.3, -0.2, 0.1, 0.0, 0.2], [0.3, 1.3, 0.1, 0.0, -0.1, 0.1], [-0.2, 0.1, 2.2, 0.1, 0.2, 0.0],
+                    [0.1, 0.0, 0.1, 0.7, 0.1, 0.0], [0.0, -0.1, 0.2, 0.1, 1.1, 0.1], [0.2, 0.1, 0.0, 0.0, 0.1, 0.9]]) / 3e3
+FINE_S2 = np.array([[1.2, 0.1, 0.0, 0.1, 0.2, 0.0], [0.1, 2.9, 0.3, 0.0, 0.1, -0.1], [0.0, 0.3, 1.7, -0.2, 0.0, 0.1],
+                    [0.1, 0.0, -0.2, 1.9, 0.1, 0.0], [0.2, 0.1, 0.0, 0.1, 0.6, 0.1], [0.0, -0.1, 0.1, 0.0, 0.1, 1.3]]) / 7e3
+
+
+@public_check("compound_pose_covariance", "with T2 = I nothing is carried: S = S1 + S2 to 1e-9 (digits that need float64)")
+def _(compound_pose_covariance):
+    _, S = _compound(compound_pose_covariance, T1, FINE_S1, np.eye(4), FINE_S2)
+    expected = FINE_S1 + FINE_S2
+    scale = np.max(np.abs(expected))
+    if not close(S / scale, expected / scale, 1e-9):
+        precision = close(S / scale, expected / scale, 1e-5)  # near: digits lost; far: another check says why
+        raise Mismatch(f"with T2 = I, S is not S1 + S2 ({off_by(S, expected)})",
+                       hints.COMPOUND_PRECISION_HINT if precision else None)
+
+
 @public_check("compound_pose_covariance", "accepts plain lists and leaves its inputs unchanged")
 def _(compound_pose_covariance):
     args = (T1, S1, T2, S2)
