@@ -82,6 +82,17 @@ def _fit_all(As, Bs):
     return U @ np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ Vt
 
 
+def _require_within_bound(hand_eye_rotation, seed, pairs, sigma, outliers):
+    """The answer on the dataset drawn with these figures must be within 5 σ_X of the truth."""
+    As, Bs, X_true, spread = _dataset(seed, pairs, sigma, outliers)
+    X = _answer(hand_eye_rotation, As, Bs)
+    if _angle(X, X_true) > 5 * spread:
+        raise Mismatch(
+            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
+            _hint(X, As, Bs, X_true),
+        )
+
+
 @public_check("hand_eye_rotation", "recovers X to 1e-9 rad from 10 exact pairs")
 def _(hand_eye_rotation):
     As, Bs, X_true, _ = _dataset(90, 10, 0.0, 0)
@@ -106,35 +117,17 @@ def _(hand_eye_rotation):
 
 @public_check("hand_eye_rotation", "within 5 σ_X of the truth: 20 pairs, σ = 0.01 rad, 4 outliers")
 def _(hand_eye_rotation):
-    As, Bs, X_true, spread = _dataset(91, 20, 0.01, 4)
-    X = _answer(hand_eye_rotation, As, Bs)
-    if _angle(X, X_true) > 5 * spread:
-        raise Mismatch(
-            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
-            _hint(X, As, Bs, X_true),
-        )
+    _require_within_bound(hand_eye_rotation, 91, 20, 0.01, 4)
 
 
 @public_check("hand_eye_rotation", "within 5 σ_X of the truth: 24 pairs, σ = 0.01 rad, 6 outliers (a tight bound)")
 def _(hand_eye_rotation):
-    As, Bs, X_true, spread = _dataset(93, 24, 0.01, 6)
-    X = _answer(hand_eye_rotation, As, Bs)
-    if _angle(X, X_true) > 5 * spread:
-        raise Mismatch(
-            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
-            _hint(X, As, Bs, X_true),
-        )
+    _require_within_bound(hand_eye_rotation, 93, 24, 0.01, 6)
 
 
 @public_check("hand_eye_rotation", "within 5 σ_X of the truth: only 12 pairs, σ = 0.02 rad, 4 of them outliers")
 def _(hand_eye_rotation):
-    As, Bs, X_true, spread = _dataset(98, 12, 0.02, 4)
-    X = _answer(hand_eye_rotation, As, Bs)
-    if _angle(X, X_true) > 5 * spread:
-        raise Mismatch(
-            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
-            _hint(X, As, Bs, X_true),
-        )
+    _require_within_bound(hand_eye_rotation, 98, 12, 0.02, 4)
 
 
 @public_check("hand_eye_rotation", "within 5 σ_X: 30 pairs, σ = 0.03 rad, 12 outliers; accepts lists, keeps inputs")
