@@ -61,6 +61,10 @@ def test_the_handout_holds_the_course_and_nothing_else(handout):
     for name in notebooks:
         assert files[f"rotations-course/{name}"] == (COURSE / name).read_bytes()
     assert "rotations-course/coursekit/checking.py" in files and "rotations-course/README.md" in files
+    for path in (COURSE / "coursekit").rglob("*"):  # its data files too (the real IMU recording)
+        if path.is_file() and "__pycache__" not in path.parts:
+            name = f"rotations-course/{path.relative_to(COURSE).as_posix()}"
+            assert files.get(name) == path.read_bytes(), name
     assert all(name.startswith("rotations-course/") for name in files)
     for name, data in files.items():
         text = data.decode("utf-8")

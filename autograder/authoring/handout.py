@@ -121,8 +121,8 @@ def handout_files(course: Course) -> dict[str, bytes]:
     files, folder, released = {}, course.handout, course.released
     for path in sorted(released.glob("*.ipynb")):
         files[f"{folder}/{path.name}"] = path.read_bytes()
-    for path in sorted((released / SUPPORT_PACKAGE).rglob("*.py")):
-        if "__pycache__" not in path.parts:
+    for path in sorted((released / SUPPORT_PACKAGE).rglob("*")):  # its modules and its data files
+        if path.is_file() and "__pycache__" not in path.parts and path.suffix != ".pyc":
             files[f"{folder}/{path.relative_to(released).as_posix()}"] = path.read_bytes()
     files[f"{folder}/requirements.txt"] = student_requirements().encode()
     files[f"{folder}/check_python.py"] = check_python_text().encode()
