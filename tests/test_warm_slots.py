@@ -268,6 +268,34 @@ def test_a_slot_that_cannot_start_leaves_its_graders_cold(monkeypatch):
             assert not isinstance(box.process, warm.WarmWorker)
 
 
+def test_no_zygote_starts_without_namespaces(monkeypatch):
+    """Limits mode (or a bubblewrap that cannot run here) grades cold: a zygote outside a PID namespace of its
+    own would kill every process the user may signal at its first reset (as root, the whole machine)."""
+    started = []
+    monkeypatch.setattr(launcher, "isolation", lambda: ("limits", "asked for"))
+    monkeypatch.setattr(launcher, "spawn", lambda *args, **kwargs: started.append(args))
+    slot = warm.WarmSlot(0, launcher.Limits(), THIS_COURSE.support)
+    slot.spawn()
+    assert not started and not slot.usable()
+
+
+def test_a_zygote_that_is_not_pid_1_kills_nothing(monkeypatch):
+    """The zygote's reset signals -1 only as PID 1 of its sandbox; run anywhere else it kills nothing and the
+    reset fails (the grader discards the slot)."""
+    import importlib.util
+
+    path = launcher.Path(launcher.__file__).parent / "child" / "zygote.py"
+    spec = importlib.util.spec_from_file_location("zygote_outside", path)
+    zygote = importlib.util.module_from_spec(spec)
+    monkeypatch.syspath_prepend(str(path.parent))
+    monkeypatch.syspath_prepend(str(THIS_COURSE.solutions))  # coursekit, which the zygote preloads
+    spec.loader.exec_module(zygote)
+    signals = []
+    monkeypatch.setattr(zygote.os, "kill", lambda pid, sig: signals.append((pid, sig)))
+    assert os.getpid() != 1
+    assert zygote._kill_others() >= 1 and signals == []
+
+
 def test_a_worker_that_does_not_start_leaves_the_student_cold(slot, monkeypatch):
     """A slot whose workers die before saying hello (before any student code) is dropped, not the student."""
 

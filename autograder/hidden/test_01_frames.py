@@ -19,7 +19,8 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from coursekit import hints
-from coursekit.checks.lesson01 import SQUARE_BATCH_HINT
+from coursekit.checks import tolerance
+from coursekit.checks.lesson01 import NOT_A_MATRIX_HINT, SQUARE_BATCH_HINT
 from coursekit.diagnose import FLOAT32_HINT, SERIES_HINT, close, float32_rounding
 
 from autograder.sandbox.session import StudentError
@@ -294,13 +295,23 @@ def test_rot_z_every_decade(student):
 SHAPE_HINT = hints.CHECK_M_S_SHAPE_HINT
 
 
+def _shape_or_none(M):
+    """``np.shape(M)``, or None for what has no shape (a ragged list, None)."""
+    try:
+        return np.shape(M) if M is not None else None
+    except ValueError:
+        return None
+
+
 def _is_rotation_verdict(student, M, what="is_rotation_matrix", **kwargs):
     """The student's verdict for M; a crash on a matrix that is not 3×3 is named as a missing shape check."""
     try:
         value = student.is_rotation_matrix(M, **kwargs)
     except StudentError as error:
-        if error.kind == "exception" and np.shape(M) != (3, 3):
-            raise Wrong(f"{what} crashed on a {'×'.join(map(str, np.shape(M)))} input: {error}", SHAPE_HINT) from None
+        if error.kind == "exception" and _shape_or_none(M) != (3, 3):
+            shape = _shape_or_none(M)
+            described = f"a {'×'.join(map(str, shape))} input" if shape else f"the input {M!r}"
+            raise Wrong(f"{what} crashed on {described}: {error}", SHAPE_HINT if shape else NOT_A_MATRIX_HINT) from None
         raise
     return expect_bool(value, what)
 
@@ -390,13 +401,33 @@ def test_is_rotation_matrix_respects_tol(student):
 
 
 @exercise("is_rotation_matrix", weight=1)
+def test_is_rotation_matrix_tol_boundary(student):
+    """tol is the largest accepted entry of |MᵀM - I|: M = diag(1 + 2^-k, 1 + 2^-k, 1), its gap exact in
+    binary, at tol 0.1 % below, equal to and 0.1 % above the gap, k = 8 … 26"""
+    for k in tolerance.GAP_EXPONENTS:
+        s = 1.0 + 2.0**-k
+        M = np.diag([s, s, 1.0])
+        name = f"is_rotation_matrix(diag(1 + 2^-{k}, 1 + 2^-{k}, 1), tol)"
+        problem = tolerance.boundary_problem(
+            lambda tol: _is_rotation_verdict(student, M, name, tol=tol), s * s - 1.0, "max |MᵀM - I|", name
+        )
+        if problem:
+            raise Wrong(*problem)
+
+
+@exercise("is_rotation_matrix", weight=1)
 def test_is_rotation_matrix_bad_input(student):
-    """returns False, without crashing, for wrong shapes and NaN"""
+    """returns False, without crashing, for anything else: wrong shapes, NaN, a ragged list,
+    text, None and a dict ("Anything else gives False")"""
     cases = {
         "a 3×4 matrix": np.eye(4)[:3],
         "a vector": np.ones(3),
         "a matrix with NaN": np.full((3, 3), np.nan),
         "a nested list 3×2": [[1.0, 0.0]] * 3,
+        "a ragged nested list": [[1.0, 0.0, 0.0], [0.0, 1.0], [0.0, 0.0, 1.0]],
+        "the text 'identity'": "identity",
+        "None": None,
+        "a dict": {"R": np.eye(3)},
     }
     for name, M in cases.items():
         verdict = _is_rotation_verdict(student, M, f"is_rotation_matrix({name})")

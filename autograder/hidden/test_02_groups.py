@@ -19,6 +19,7 @@ from scipy.spatial.transform import Rotation
 
 from autograder.sandbox.session import StudentError
 from coursekit import hints
+from coursekit.checks import tolerance
 from coursekit.checks.lesson02 import NAN_HINT, commutes_slip_hint
 
 from .helpers import ALLCLOSE_HINT, Probe, Wrong, exercise, expect, expect_bool, random_rotations
@@ -294,6 +295,26 @@ def test_check_group_axioms_single_sample(student):
     _expect_verdict(got, ALL_TRUE, "the trivial group {I}")
 
 
+@exercise("check_group_axioms", weight=1)
+def test_check_group_axioms_tol_boundary(student):
+    """tol is the largest accepted difference: an identity 1 + 2^-k under ×, its largest gap 4·2^-k exact in
+    binary, at tol 0.1 % below, equal to and 0.1 % above the gap, k = 8 … 26"""
+    samples = [4.0, -0.5, 2.0]
+    for k in tolerance.GAP_EXPONENTS:
+        identity = 1.0 + 2.0**-k
+        call = f"check_group_axioms([4, -0.5, 2], ×, identity 1 + 2^-{k}, tol)"
+
+        def verdict(tol):
+            value = student.check_group_axioms(
+                samples, Probe("multiply"), identity, Probe("reciprocal"), Probe("is_nonzero"), tol=tol
+            )
+            return _verdict(value, call)["identity"]
+
+        problem = tolerance.boundary_problem(verdict, 4.0 * 2.0**-k, "max |op(identity, a) - a|", f"{call}['identity']")
+        if problem:
+            raise Wrong(*problem)
+
+
 # ---------------------------------------------------------------- commutes
 def _commutes(student, a, b, op, what, **kwargs):
     return expect_bool(student.commutes(a, b, op, **kwargs), what)
@@ -478,3 +499,23 @@ def test_commutes_tol_is_absolute(student):
             f"with tol=1e-9 said dense matrices commute whose products differ by {gap:.2g} (pair #{index})",
             "compare max |op(a, b) - op(b, a)| with tol, an absolute tolerance",
         )
+
+
+@exercise("commutes", weight=2)
+def test_commutes_tol_boundary(student):
+    """tol is the largest accepted entry of |op(a, b) - op(b, a)|: two shears whose products differ by
+    diag(2^-k, -2^-k) (exact in binary), at tol 0.1 % below, equal to and 0.1 % above 2^-k, k = 8 … 26"""
+    for k in tolerance.GAP_EXPONENTS:
+        A = np.eye(3)
+        A[0, 1] = 2.0**-k
+        B = np.eye(3)
+        B[1, 0] = 1.0
+        name = f"commutes(I + 2^-{k} e₁e₂ᵀ, I + e₂e₁ᵀ, @, tol)"
+        problem = tolerance.boundary_problem(
+            lambda tol: _commutes(student, A, B, Probe("matmul"), name, tol=tol),
+            2.0**-k,
+            "max |a @ b - b @ a|",
+            name,
+        )
+        if problem:
+            raise Wrong(*problem)

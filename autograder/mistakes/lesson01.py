@@ -82,7 +82,10 @@ def rot2d(theta):
         public_hint="det = +1",
         source="""
 def is_rotation_matrix(M, tol=1e-9):
-    M = np.asarray(M, dtype=float)
+    try:
+        M = np.asarray(M, dtype=float)
+    except (TypeError, ValueError):
+        return False
     if M.ndim != 2 or M.shape[0] != M.shape[1]:
         return False
     return bool(np.max(np.abs(M.T @ M - np.eye(M.shape[0]))) <= tol)
@@ -300,7 +303,10 @@ def rot_z(a):
         "np.allclose(MᵀM, I, atol=tol): the default rtol accepts diag(1, 1, 1 + 1e-6)",
         """
 def is_rotation_matrix(M, tol=1e-9):
-    M = np.asarray(M, dtype=float)
+    try:
+        M = np.asarray(M, dtype=float)
+    except (TypeError, ValueError):
+        return False
     if M.ndim != 2 or M.shape[0] != M.shape[1] or not np.all(np.isfinite(M)):
         return False
     return bool(np.allclose(M.T @ M, np.eye(M.shape[0]), atol=tol) and np.linalg.det(M) > 0)
@@ -314,7 +320,10 @@ def is_rotation_matrix(M, tol=1e-9):
         "ignores tol and uses 1e-6",
         """
 def is_rotation_matrix(M, tol=1e-9):
-    M = np.asarray(M, dtype=float)
+    try:
+        M = np.asarray(M, dtype=float)
+    except (TypeError, ValueError):
+        return False
     if M.ndim != 2 or M.shape[0] != M.shape[1] or not np.all(np.isfinite(M)):
         return False
     return bool(np.max(np.abs(M.T @ M - np.eye(M.shape[0]))) <= 1e-6 and np.linalg.det(M) > 0)
@@ -328,7 +337,10 @@ def is_rotation_matrix(M, tol=1e-9):
         "checks det = 1 only, so accepts shears",
         """
 def is_rotation_matrix(M, tol=1e-9):
-    M = np.asarray(M, dtype=float)
+    try:
+        M = np.asarray(M, dtype=float)
+    except (TypeError, ValueError):
+        return False
     if M.ndim != 2 or M.shape[0] != M.shape[1]:
         return False
     return bool(abs(np.linalg.det(M) - 1.0) <= tol)
@@ -547,6 +559,23 @@ def compose(R_ab, R_bc):
     return np.asarray(R_ab, dtype=np.float32) @ np.asarray(R_bc, dtype=np.float32)
 """,
     ),
+    Mistake(
+        "is_rotation_frobenius_norm",
+        "is_rotation_matrix",
+        "compares the Frobenius norm of MᵀM - I with tol, not its largest entry (tol read another way)",
+        """
+def is_rotation_matrix(M, tol=1e-9):
+    try:
+        M = np.asarray(M, dtype=float)
+    except (TypeError, ValueError):
+        return False
+    if M.ndim != 2 or M.shape[0] != M.shape[1] or not np.all(np.isfinite(M)):
+        return False
+    return bool(np.linalg.norm(M.T @ M - np.eye(M.shape[0])) <= tol and np.linalg.det(M) > 0)
+""",
+        hint="equal to tol must pass",
+        public_hint="equal to tol must pass",
+    ),
 ]
 
 ALTERNATIVES = [
@@ -592,10 +621,13 @@ def rot_z(a):
     Alternative(
         "is_rotation_numpy_bool",
         "is_rotation_matrix",
-        "returns a numpy bool, Frobenius norm test",
+        "returns a numpy bool; catches what is not a matrix with one except clause; .max() and len(M)",
         """
 def is_rotation_matrix(M, tol=1e-9):
-    M = np.asarray(M, dtype=float)
+    try:
+        M = np.array(M, dtype=float)
+    except Exception:
+        return False
     if M.ndim != 2 or M.shape[0] != M.shape[1] or not np.isfinite(M).all():
         return False
     return np.abs(M.T @ M - np.eye(len(M))).max() <= tol and np.linalg.det(M) > 0

@@ -177,6 +177,41 @@ def commutes(a, b, op, tol=1e-9):
         hint="swap the arguments",
         public_hint="swap the arguments",
     ),
+    Mistake(
+        "commutes_frobenius_norm",
+        "commutes",
+        "compares the Frobenius norm of op(a, b) - op(b, a) with tol, not its largest entry (tol read another way)",
+        """
+def commutes(a, b, op, tol=1e-9):
+    difference = np.asarray(op(a, b), dtype=float) - np.asarray(op(b, a), dtype=float)
+    return bool(np.linalg.norm(difference) <= tol)
+""",
+        hint="equal to tol must pass",
+        public_hint="equal to tol must pass",
+    ),
+    Mistake(
+        "check_group_axioms_half_tol",
+        "check_group_axioms",
+        "accepts only differences below tol / 2 (\"within tol either side\" read as a band of width tol)",
+        """
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        difference = np.abs(np.asarray(x, dtype=float) - np.asarray(y, dtype=float))
+        return bool(difference.size == 0 or np.max(difference) <= tol / 2)
+
+    closure = all(bool(is_member(op(a, b))) for a in samples for b in samples)
+    has_identity = bool(is_member(identity)) and all(
+        equal(op(identity, a), a) and equal(op(a, identity), a) for a in samples)
+    has_inverses = all(
+        bool(is_member(inverse(a))) and equal(op(a, inverse(a)), identity) and equal(op(inverse(a), a), identity)
+        for a in samples)
+    associative = all(equal(op(op(a, b), c), op(a, op(b, c)))
+                      for a in samples for b in samples for c in samples)
+    return {"closure": closure, "identity": has_identity, "inverse": has_inverses, "associativity": associative}
+""",
+        hint="equal to tol must pass",
+        public_hint="equal to tol must pass",
+    ),
 ]
 
 ALTERNATIVES = [

@@ -122,7 +122,11 @@ class WarmSlot:
     # ------------------------------------------------------------ lifecycle (the batch's parent)
     def spawn(self) -> None:
         """Start the sandbox; :meth:`wait_ready` then waits for its zygote. A slot that cannot start is
-        left broken: its graders use cold sandboxes."""
+        left broken: its graders use cold sandboxes, as they do wherever there are no namespaces (a zygote
+        must be PID 1 of a sandbox of its own: its reset kills every other process it can see)."""
+        if launcher.isolation()[0] != "namespaces":
+            self.discard()
+            return
         try:
             self._spawn()
         except OSError:

@@ -11,6 +11,7 @@ from ..checking import Mismatch, _where_in_student_code, public_check
 from ..diagnose import ALLCLOSE_HINT, FLOAT32_HINT, SERIES_HINT, close, float32_rounding, rotation_problem
 from ..lie import Exp
 from .common import fmt, off_by, require_rotation, require_same_with_lists, require_shape
+from .tolerance import GAP_EXPONENTS, boundary_problem
 
 # A quarter turn about z, written out: x goes to y, y goes to -x.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -55,9 +56,11 @@ def _first_match(got, candidates, otherwise=None):
     return otherwise
 
 
-def _crash(error, hint):
-    """A Mismatch for an exception raised by the student's code, naming its likely cause."""
-    return Mismatch(f"raised {type(error).__name__}: {error}{_where_in_student_code(error)}", hint)
+def _crash(error, hint, given=""):
+    """A Mismatch for an exception raised by the student's code (given ``given``, when named), naming its
+    likely cause."""
+    on = f" on {given}" if given else ""
+    return Mismatch(f"raised {type(error).__name__}{on}: {error}{_where_in_student_code(error)}", hint)
 
 
 def _same_sign_sines(R, i, j, angle):
@@ -198,15 +201,34 @@ def _(is_rotation_matrix):
                        ignores if is_rotation_matrix(QUARTER_TURN_X + 1e-6, tol=1e-15) else None)
 
 
-@public_check("is_rotation_matrix", "rejects a matrix of the wrong shape without crashing")
-def _(is_rotation_matrix):
-    try:
-        verdict = is_rotation_matrix(np.eye(4)[:3])
-    except Exception as error:
-        raise _crash(error, hints.CHECK_M_S_SHAPE_HINT) from None
-    if verdict:
-        raise Mismatch("accepted a 3×4 matrix", "check the shape first: a rotation matrix is square")
+NOT_A_MATRIX_HINT = ("for input that is not a matrix at all (a ragged list, None, a dict) np.asarray raises ValueError "
+                     "or TypeError: \"anything else gives False\", so catch those and return False")
 
+
+@public_check("is_rotation_matrix", "gives False without crashing for anything else: a 3×4, a ragged list, None, a dict")
+def _(is_rotation_matrix):
+    cases = {"a 3×4 matrix": np.eye(4)[:3], "a ragged nested list": [[1.0, 0.0, 0.0], [0.0, 1.0], [0.0, 0.0, 1.0]],
+             "None": None, "a dict": {"R": np.eye(3)}}
+    for name, M in cases.items():
+        try:
+            verdict = is_rotation_matrix(M)
+        except Exception as error:
+            raise _crash(error, NOT_A_MATRIX_HINT if name in ("a ragged nested list", "None", "a dict")
+                         else hints.CHECK_M_S_SHAPE_HINT, name) from None
+        if verdict:
+            raise Mismatch(f"accepted {name}", "check the shape first: a rotation matrix is square")
+
+
+
+@public_check("is_rotation_matrix", "tol is the largest accepted max |MᵀM - I|: just below, at and just above it")
+def _(is_rotation_matrix):
+    for k in GAP_EXPONENTS:
+        s = 1.0 + 2.0**-k  # diag(s, s, 1): max |MᵀM - I| = s² - 1, exact in binary
+        name = f"is_rotation_matrix(diag(1 + 2^-{k}, 1 + 2^-{k}, 1), tol)"
+        M = np.diag([s, s, 1.0])
+        problem = boundary_problem(lambda tol: is_rotation_matrix(M, tol=tol), s * s - 1.0, "max |MᵀM - I|", name)
+        if problem:
+            raise Mismatch(*problem)
 
 # ---------------------------------------------------------------- rotate_point
 @public_check("rotate_point", "expresses a point of frame b in frame w (one point, shape (3,))")

@@ -11,6 +11,7 @@ from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import ALLCLOSE_HINT
 from ..lie import Exp
+from .tolerance import GAP_EXPONENTS, boundary_problem
 
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 QUARTER_TURN_X = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
@@ -172,6 +173,22 @@ def _(check_group_axioms):
                        ALLCLOSE_HINT if allclose else "compare max |op(identity, a) - a| with tol")
 
 
+
+@public_check("check_group_axioms", "tol is the largest accepted difference: just below, at and just above it")
+def _(check_group_axioms):
+    for k in GAP_EXPONENTS:
+        identity = 1.0 + 2.0**-k  # under ×, op(identity, 4) - 4 = 4·2^-k exactly, the largest gap
+        name = f"check_group_axioms([4, -0.5, 2], ×, identity 1 + 2^-{k}, tol)['identity']"
+
+        def verdict(tol):
+            nonzero = lambda x: bool(np.isfinite(x) and x != 0)  # noqa: E731
+            return _verdict(check_group_axioms([4.0, -0.5, 2.0], _multiply, identity, _reciprocal, nonzero,
+                                               tol=tol))["identity"]
+
+        problem = boundary_problem(verdict, 4.0 * 2.0**-k, "max |op(identity, a) - a|", name)
+        if problem:
+            raise Mismatch(*problem)
+
 # ---------------------------------------------------------------- commutes
 SAME_ORDER_HINT = "op(a, b) looks compared with itself: swap the arguments in the second product, op(b, a)"
 IGNORES_OP_HINT = "the verdict follows a @ b whatever op is given: compare op(a, b) with op(b, a)"
@@ -288,3 +305,14 @@ def _(commutes):
     if commutes(M, B, _matmul, tol=1e-9):
         raise Mismatch(f"with tol=1e-9, said two matrices commute whose products differ by {gap:.2g}",
                        _commutes_slip(commutes))
+
+
+@public_check("commutes", "tol is the largest accepted entry of |op(a, b) - op(b, a)|: just below, at and just above it")
+def _(commutes):
+    for k in GAP_EXPONENTS:
+        A, B = np.eye(3), np.eye(3)
+        A[0, 1], B[1, 0] = 2.0**-k, 1.0  # two shears: A @ B - B @ A = diag(2^-k, -2^-k, 0), exact in binary
+        name = f"commutes(I + 2^-{k} e₁e₂ᵀ, I + e₂e₁ᵀ, @, tol)"
+        problem = boundary_problem(lambda tol: commutes(A, B, _matmul, tol=tol), 2.0**-k, "max |a @ b - b @ a|", name)
+        if problem:
+            raise Mismatch(*problem)
