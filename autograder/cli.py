@@ -173,6 +173,21 @@ def _cmd_release(args):
     return 0
 
 
+def _cmd_contracts(args):
+    from autograder.authoring.contracts_file import CONTRACTS_FILE, write_contracts
+
+    course = _course(args)
+    in_sync, problems = write_contracts(course.solutions, check=args.check)
+    for problem in problems:
+        print(f"cannot read the docstring of {problem}")
+    path = course.solutions / CONTRACTS_FILE
+    if not in_sync:
+        print(f"{path} differs from the masters' docstrings. Run: python -m autograder contracts")
+        return 1
+    print(f"{path}: " + ("in sync with the masters' docstrings." if args.check else "written."))
+    return 1 if problems else 0
+
+
 def _cmd_record(args):
     from autograder.authoring.record import RecordingFailed, record_outputs
 
@@ -658,6 +673,12 @@ def build_parser():
     release.add_argument("--check", action="store_true", help="only check that course/ is up to date")
     release.set_defaults(run=_cmd_release)
 
+    contracts = commands.add_parser(
+        "contracts", help="write each exercise's contract (coursekit/exercise_contracts.json) from its docstring"
+    )
+    contracts.add_argument("--check", action="store_true", help="only check that the file matches the docstrings")
+    contracts.set_defaults(run=_cmd_contracts)
+
     record = commands.add_parser("record", help="re-record the masters' demonstration outputs")
     record.add_argument("--only", nargs="*", help="lesson prefixes such as 01 03")
     record.set_defaults(run=_cmd_record)
@@ -811,6 +832,7 @@ def build_parser():
     stats.set_defaults(run=_cmd_course_stats)
     for command in (
         release,
+        contracts,
         record,
         grade,
         similar,

@@ -6,16 +6,26 @@ code that would hand its result away. Here:
 
 - every exercise has a kind and minutes, and the thinking kinds have giveaways;
 - each giveaway is real: it appears in the reader's edition or the reference solution (the master);
-- none appears in what a student gets: the lesson's notebook in ``course/`` (markdown, code with the stubs'
-  docstrings, outputs) and the modules that ship beside it with hint strings (the lesson's public checks,
-  ``coursekit/hints.py``). Whitespace is ignored on both sides;
+- none appears in what a student gets, course-wide (a later lesson may not restate an earlier lesson's result,
+  it refers back to it or calls the student's function): every notebook in ``course/`` (markdown, code with the
+  stubs' docstrings, outputs), every public check module and ``coursekit/hints.py`` (their whole text: hints
+  ship with them), the prose of every other shipped ``coursekit`` module (docstrings, comments and string
+  literals; a function body's code may compute a result that a later lesson uses, as ``coursekit.lie.Exp``
+  computes lesson 03's, because a formula in code is not a derivation on the page) and the strings of the
+  hidden tests (their failure reasons and hints reach the student). Whitespace is ignored on both sides; the
+  few matches that are the same symbols meaning something else are listed, with the reason, in
+  :data:`UNRELATED`;
 - ``docs/EXERCISES.md`` is what ``python -m autograder course-stats --catalog`` prints, and the README's
   course table gives each lesson's exercises by kind;
 - the share of derive/design/diagnose points does not fall below a ratchet (:data:`RATCHET`), and the gap to
   the issue's targets is printed.
 """
 
+import ast
+import io
 import re
+import tokenize
+from functools import lru_cache
 
 import nbformat
 import pytest
@@ -38,6 +48,35 @@ CATALOG = THIS_COURSE.catalog
 THINKING = [e for e in CATALOG.exercises if e.kind in THINKING_KINDS]
 CHECKS = SOLUTIONS / "coursekit" / "checks"
 HINTS = SOLUTIONS / "coursekit" / "hints.py"
+HIDDEN = PROJECT_ROOT / "autograder" / "hidden"
+
+# (exercise, giveaway, where): a match that is the same symbols with another meaning, and why. Each entry must
+# still match (test_unrelated_matches_are_still_there), so a stale one is noticed.
+UNRELATED = {
+    ("quat_from_two_vectors", "a × b", "course/03_exp_and_log.ipynb"): (
+        "the bracket identity [a^, b^] = (a × b)^ of two rotation vectors, not the quaternion's axis"
+    ),
+    ("quat_from_two_vectors", "np.cross(a, b)", "course/03_exp_and_log.ipynb"): (
+        "the same bracket identity, checked in code"
+    ),
+    ("quat_from_two_vectors", "a × b", "course/06_perturbations_and_jacobians.ipynb"): (
+        "the second-order term ½ a×b of the BCH series, a and b two rotation vectors"
+    ),
+    ("quat_from_two_vectors", "a × b", "coursekit/checks/lesson07_adjoint.py"): (
+        "a hint on the sign of the coupling block: the cross product's antisymmetry, a × b = -b × a"
+    ),
+    ("quat_from_two_vectors", "a × b", "autograder/hidden/test_07_adjoint.py"): "the same hint, in the hidden suite",
+    ("quat_from_two_vectors", "a × b", "autograder/hidden/test_02_groups.py"): (
+        "lesson 02's group axioms for the cross product (not associative, anticommutative)"
+    ),
+    ("quat_from_two_vectors", "a × b", "autograder/hidden/test_03_exp_and_log.py"): (
+        "the bracket identity [a^, b^] = (a × b)^ in a test's description"
+    ),
+    ("exp_se3", "\\frac{1 - \\cos\\theta}{\\theta^2}\\,\\mathbf W", "course/03_exp_and_log.ipynb"): (
+        "Rodrigues' formula, whose W² term begins with the same symbols (lesson 03 prints it to transcribe); "
+        "exp_se3's V has the coefficient in front of W itself"
+    ),
+}
 
 # Derive/design/diagnose points per lesson, and exercises in all, that the course may not fall below. Raise a
 # figure when a lesson gains such an exercise; never lower one (issue 42's targets are printed by the test).
@@ -46,7 +85,9 @@ RATCHET_EXERCISES = 29
 
 
 def _squeezed(text: str) -> str:
-    return re.sub(r"\s+", "", text)
+    """The text without whitespace and without LaTeX's spacing commands (``\\,``, ``\\;``, ``\\!``, ``\\ ``), so
+    that ``-\\mathbf R\\,[\\mathbf p]_\\times`` is caught by the giveaway ``-\\mathbf R[\\mathbf p]_\\times``."""
+    return re.sub(r"\s+", "", re.sub(r"\\[,;! ]", "", text))
 
 
 def _notebook_text(nb: nbformat.NotebookNode) -> str:
@@ -64,6 +105,63 @@ def _notebook_text(nb: nbformat.NotebookNode) -> str:
 
 def _lesson_filename(exercise):
     return CATALOG.lesson(exercise.lesson).filename
+
+
+def _prose(source: str, *, shown_docstrings=None) -> str:
+    """The words of a Python module that a reader meets as text: its string literals (docstrings, messages,
+    hints) and comments, without the code. With ``shown_docstrings`` (a test of the hidden suite, whose
+    module, helpers and comments the student never sees), only the docstrings of the functions it accepts by
+    name are kept, their first line only (the feedback's description of the test), and no comments."""
+    parts = []
+    tree = ast.parse(source)
+    skip = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and node.body:
+            first = node.body[0]
+            shown = shown_docstrings is None or (not isinstance(node, ast.Module) and shown_docstrings(node.name))
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) and not shown:
+                skip.add(id(first.value))
+    first_lines = {}  # the feedback shows the first line of a test's docstring only
+    if shown_docstrings is not None:
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and ast.get_docstring(node):
+                first_lines[id(node.body[0].value)] = ast.get_docstring(node).strip().splitlines()[0]
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in skip:
+            parts.append(first_lines.get(id(node), node.value))
+    if shown_docstrings is None:
+        for token in tokenize.generate_tokens(io.StringIO(source).readline):
+            if token.type == tokenize.COMMENT:
+                parts.append(token.string)
+    return "\n".join(parts)
+
+
+@lru_cache(maxsize=1)
+def _course_texts() -> dict[str, str]:
+    """Everything a student of any lesson reads, squeezed, by where it is."""
+    texts = {
+        f"course/{path.name}": _notebook_text(read_master(path)) for path in sorted(COURSE.glob("[0-9][0-9]_*.ipynb"))
+    }
+    for path in sorted(CHECKS.glob("*.py")):
+        texts[f"coursekit/checks/{path.name}"] = path.read_text(encoding="utf-8")
+    texts["coursekit/hints.py"] = HINTS.read_text(encoding="utf-8")
+    for path in sorted((COURSE / "coursekit").glob("*.py")):
+        if path.name != "hints.py":
+            texts[f"coursekit/{path.name}"] = _prose(path.read_text(encoding="utf-8"))
+    for path in sorted(HIDDEN.glob("*.py")):
+        texts[f"autograder/hidden/{path.name}"] = _prose(
+            path.read_text(encoding="utf-8"), shown_docstrings=lambda name: name.startswith("test")
+        )
+    return {where: _squeezed(text) for where, text in texts.items()}
+
+
+def _leaks(exercise) -> list[tuple[str, str]]:
+    return [
+        (giveaway, where)
+        for where, text in _course_texts().items()
+        for giveaway in exercise.giveaways
+        if _squeezed(giveaway) in text
+    ]
 
 
 def _student_texts(exercise) -> dict[str, str]:
@@ -109,6 +207,28 @@ def test_the_answer_is_off_the_students_page(exercise):
         f"{exercise.name} ({exercise.kind}) gives its result away to students: {found}. Move it to a reader-only "
         "cell or after the check cell, or make the hint name the property that failed instead of the formula."
     )
+
+
+@pytest.mark.parametrize("exercise", THINKING, ids=lambda e: e.name)
+def test_the_answer_is_off_every_page_of_the_course(exercise):
+    """No lesson, shipped module or hint gives the result away: a later lesson refers back to it ("the Jacobian
+    you derived in lesson 06") or calls the student's function, and a hint names the property that failed."""
+    found = [
+        f"{giveaway!r} in {where}"
+        for giveaway, where in _leaks(exercise)
+        if (exercise.name, giveaway, where) not in UNRELATED
+    ]
+    assert not found, (
+        f"{exercise.name} (lesson {exercise.lesson}, {exercise.kind}) is given away elsewhere in the course: "
+        f"{found}. Refer back to the lesson (or call the student's function), move the statement into a "
+        "reader-only cell, or make the hint name what failed and where."
+    )
+
+
+def test_unrelated_matches_are_still_there():
+    by_name = {e.name: e for e in THINKING}
+    stale = [key for key in UNRELATED if key[0] not in by_name or (key[1], key[2]) not in _leaks(by_name[key[0]])]
+    assert not stale, f"UNRELATED lists matches that no longer occur; remove them: {stale}"
 
 
 def test_released_notebooks_carry_no_giveaways_in_metadata():

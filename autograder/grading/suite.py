@@ -131,7 +131,7 @@ class StudentProxy:
         if name.startswith("_"):
             raise AttributeError(name)
         lesson = self._catalog.exercise(name).lesson
-        forbid = _contracts().forbidden_for(name)
+        forbid = _contracts().guard_for(name, lesson)  # the exercise's allowance and its FORBIDDEN entries
 
         def call(*args, **kwargs):
             if lesson in self._unavailable:
@@ -191,9 +191,31 @@ class HiddenTest:
     exercise: str = ""
     weight: float = 1.0
     description: str = ""
+    share: float = 0.0  # > 0: counts only when failed, then costs this share of the exercise (see weigh_shares)
 
 
 FIXTURES = ("student", "ref")
+
+
+def weigh_shares(results: list[CheckResult], shares: dict[tuple[str, str], float]) -> list[CheckResult]:
+    """Checks marked ``share=s`` (``{(exercise, description): s}``) count only when they fail, and then cost the
+    share ``s`` of their exercise's points (as :func:`contract_results`); passed, they are left out."""
+    if not shares:
+        return results
+    kept = []
+    for result in results:
+        share = shares.get((result.exercise, result.description))
+        if share is None:
+            kept.append(result)
+        elif not result.passed:
+            others = sum(r.weight for r in results if r.exercise == result.exercise and r is not result)
+            result.weight = max(others, 1.0) * share / (1 - share)
+            kept.append(result)
+    return kept
+
+
+def _shares(tests) -> dict[tuple[str, str], float]:
+    return {(t.exercise, t.description): t.share for t in tests if t.share}
 
 
 class _Grabber:
@@ -298,6 +320,7 @@ def hidden_tests(course: Course) -> tuple[list[HiddenTest], list[str]]:
                 exercise=mark.kwargs["name"],
                 weight=mark.kwargs.get("weight", 1.0),
                 description=_describe(item),
+                share=mark.kwargs.get("share", 0.0),
             )
         )
     return tests, problems
@@ -485,7 +508,7 @@ def run_hidden_suite(
             )
     finally:
         proxy._replay = None
-    return results + contract_results(proxy, tests), list(problems)
+    return weigh_shares(results, _shares(tests)) + contract_results(proxy, tests), list(problems)
 
 
 def _short_repr(excinfo, style=None):
@@ -618,4 +641,4 @@ def run_hidden_suite_with_pytest(
             f"the hidden suite did not run (pytest exit status {int(code)}, {len(collector.results)} checks collected)"
         )
     tests = [t for t in hidden_tests(course)[0] if lessons is None or t.lesson in lessons]
-    return collector.results + contract_results(proxy, tests), collector.problems
+    return weigh_shares(collector.results, _shares(tests)) + contract_results(proxy, tests), collector.problems

@@ -47,7 +47,7 @@ def _hint(got, R, R_dot, omega_b):
 
 @exercise("body_angular_velocity", weight=3)
 def test_body_rate_every_angle_and_spin(student):
-    """returns ω_b for Ṙ = R [ω_b]×, R at every angle from 1e-12 to π, |ω_b| from 1e-12 to 1e3, to 1e-12 |ω_b|"""
+    """returns ω_b (ω_w = R ω_b) for R at every angle from 1e-12 to π, |ω_b| from 1e-12 to 1e3, to 1e-12 |ω_b|"""
     axes = np.random.default_rng(3100).normal(size=(len(ANGLES), 3))
     spins = np.random.default_rng(3101).normal(size=(len(SPINS), 3))
     for angle, axis, size, spin in zip(ANGLES, axes, SPINS, spins):

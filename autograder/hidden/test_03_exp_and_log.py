@@ -110,8 +110,8 @@ def _hat_hint(W, w):
     for order in ((2, 1, 0), (1, 0, 2), (0, 2, 1), (1, 2, 0), (2, 0, 1)):
         if explains(W, _skew(np.asarray(w, dtype=float)[list(order)]), truth):
             return (
-                "the components of w are permuted: W[2, 1] = w1, W[0, 2] = w2, W[1, 0] = w3 "
-                "(W = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]])"
+                "the components of w are permuted: check which component of w sits in each "
+                "off-diagonal entry of W, against the page"
             )
     if np.max(np.abs(W + W.T)) > 0.0:
         return "not skew-symmetric: [w]× has zeros on the diagonal and W[j, i] = -W[i, j]"
@@ -307,10 +307,10 @@ def _exp_hint(got, expected, w):
     if 0.0 < angle and np.array_equal(got, np.eye(3)):
         return (
             "returned exactly I for a tiny angle: R - I ≈ [w]× is the whole rotation; "
-            "use the Taylor coefficients sin θ/θ ≈ 1 - θ²/6, (1 - cos θ)/θ² ≈ 1/2 - θ²/24"
+            "below a small angle use the Taylor series of each coefficient (on the page), with its θ² term"
         )
     if explains(got, expected.T, expected):
-        return "looks like the inverse rotation: check the sign of the sin θ term (R = I + sin θ K + ...)"
+        return "looks like the inverse rotation: check the sign of the sin θ term against the page"
     if angle > 0.0:
         K = _skew(w / angle)
         W = _skew(w)
@@ -320,7 +320,7 @@ def _exp_hint(got, expected, w):
             return hints.RODRIGUES_FORMULA_NEEDS_UNIT_HINT
     problem = rotation_problem(got, 1e-9)
     if problem:
-        return f"the result is not a rotation ({problem}): R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]×"
+        return f"the result is not a rotation ({problem}): compare each term with Rodrigues' formula on the page"
     return hints.RODRIGUES_FORMULA_HINT
 
 

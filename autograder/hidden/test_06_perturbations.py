@@ -267,13 +267,13 @@ def _boxminus_hint(got, R_a, R_b):
         got,
         truth,
         [
-            (-truth, "got the step back: arguments swapped? boxminus(R_a, R_b) = Log(R_bᵀ R_a)"),
+            (-truth, "got the step back: arguments swapped? boxminus(R_a, R_b) is the step from R_b to R_a"),
             (_log(R_a) - _log(R_b), hints.LOGS_DO_NOT_SUBTRACT_HINT),
             (0.5 * np.array([D[2, 1] - D[1, 2], D[0, 2] - D[2, 0], D[1, 0] - D[0, 1]]), hints.AXIS_TIMES_SIN_VEE_HINT),
         ],
     )
     if not hint and np.all(np.isfinite(got)) and _is(_exp(got), R_a @ R_b.T, D):
-        hint = "that is the left difference Log(R_a R_bᵀ); the right one is Log(R_bᵀ R_a)"
+        hint = hints.LEFT_DIFFERENCE_STEP_RIGHT_HINT
     return hint
 
 
@@ -954,8 +954,8 @@ def test_right_jacobian_tiny_angles(student):
         [_jr_series(w) for w in ws],
         _jr_candidates,
         "right_jacobian_so3",
-        "Jr = I - a [w]× + b [w]×² with a → 1/2 and b → 1/6: below a small angle use the Taylor series of a and "
-        "b, each with its θ² term",
+        "Jr = I - a [w]× + b [w]×²: below a small angle use the Taylor series of a and b (from your series), each "
+        "with its θ² term",
         sign=-1.0,
     )
 
@@ -1017,8 +1017,8 @@ def _inverse_candidates(w):
         (
             np.eye(3) + 0.5 * W + W @ W / 12.0,
             f"that is the one-term series I + [w]×/2 + [w]×²/12 at "
-            f"θ = {np.linalg.norm(w):.2g}, off by about θ⁴/720 there: below your threshold keep the θ² term, "
-            "c = 1/12 + θ²/720",
+            f"θ = {np.linalg.norm(w):.2g}, off by about θ⁴/720 there: below your threshold keep the θ² term of "
+            "c's series (on the page)",
         ),
     ]
 
@@ -1063,7 +1063,7 @@ def test_right_jacobian_inv_tiny_angles(student):
     _expect_identity_at_zero(
         student.right_jacobian_inv_so3(np.zeros(3)),
         "right_jacobian_inv_so3(0)",
-        "the closed form is 0/0 at θ = 0: use the series 1/12 + θ²/720 of the [w]×² coefficient below a small angle",
+        "the closed form is 0/0 at θ = 0: use the series of the [w]×² coefficient (on the page) below a small angle",
     )
     ws = [angle * axis for angle, axis in zip([1e-12, 1e-9, 1e-7], _unit(674, 3))]
     results = [
@@ -1081,7 +1081,7 @@ def test_right_jacobian_inv_tiny_angles(student):
         expected,
         _inverse_candidates,
         "right_jacobian_inv_so3",
-        "Jr⁻¹ = I + [w]×/2 + c [w]×² with c → 1/12: below a small angle use the series c = 1/12 + θ²/720",
+        "Jr⁻¹ = I + [w]×/2 + c [w]×²: below a small angle use the series of c (on the page), with its θ² term",
         sign=1.0,
     )
 

@@ -180,7 +180,7 @@ def _gn_hint(got, P, Q, R0, iters, expected):
         (
             dict(jacobian="left"),
             "the left Jacobian -[R p_i]× with the right update R Exp(δ) mixes two conventions: "
-            "J_i = -R [p_i]× goes with R ← R Exp(δ) (-[R p_i]× would need Exp(δ) R)",
+            "R ← R Exp(δ) needs the Jacobian of the right perturbation (lesson 06); -[R p_i]× would need Exp(δ) R",
         ),
         (dict(sign=1.0), "steps uphill: δ solves H δ = -g (mind the minus sign)"),
         (dict(update="add"), hints.UPDATED_ADDING_R_R_HINT),
@@ -196,7 +196,7 @@ def _gn_hint(got, P, Q, R0, iters, expected):
         return f"that is one Gauss-Newton step, whatever iters says: repeat the update iters times (here {iters})"
     if rotation_problem(got, 1e-8):
         return "the result drifted off SO(3): update with R ← R Exp(δ), which stays a rotation"
-    return "J_i = -R [p_i]×, H = Σ J_iᵀ J_i, g = Σ J_iᵀ r_i, δ = solve(H, -g), R ← R Exp(δ)"
+    return "J_i of the right perturbation (lesson 06), H = Σ J_iᵀ J_i, g = Σ J_iᵀ r_i, δ = solve(H, -g), R ← R Exp(δ)"
 
 
 @exercise("align_gauss_newton", weight=1)

@@ -249,11 +249,13 @@ def _point_covariance_hint(got, R, Sigma, p):
             [
                 (
                     _skew(p) @ Sigma @ _skew(p).T,
-                    "[p]× Σ [p]×ᵀ is the covariance in the body frame: the world point is R p, so J = -R [p]×",
+                    "[p]× Σ [p]×ᵀ is the covariance in the body frame: the world point is R p, so R belongs in J "
+                    "(the Jacobian of R p that you derived in lesson 06)",
                 ),
                 (
                     _skew(R @ p) @ Sigma @ _skew(R @ p).T,
-                    "[R p]× Σ [R p]×ᵀ treats ε as a world-frame (left) perturbation; here R Exp(ε): J = -R [p]×",
+                    "[R p]× Σ [R p]×ᵀ treats ε as a world-frame (left) perturbation; here R Exp(ε): J is lesson 06's "
+                    "Jacobian of the right perturbation",
                 ),
                 (R @ Sigma @ R.T, "R Σ Rᵀ is the covariance of the turn, not of the point: use the point's Jacobian"),
                 (J @ Sigma, "a covariance takes the Jacobian on both sides: J Σ Jᵀ"),
@@ -261,13 +263,13 @@ def _point_covariance_hint(got, R, Sigma, p):
             ],
             truth,
         )
-        or "to first order y ≈ R p - R [p]× ε, so Σ_y = J Σ Jᵀ with J = -R [p]×"
+        or "to first order y ≈ R p + J ε, with J the Jacobian of R Exp(ε) p at ε = 0 (lesson 06), so Σ_y = J Σ Jᵀ"
     )
 
 
 @exercise("rotated_point_covariance", weight=3)
 def test_point_covariance_exact(student):
-    """equals J Σ Jᵀ with J = -R [p]× to 1e-12 |p|² |Σ| for 8 cases, |p| from 1e-6 to 1e3 m, |Σ| from 1e-10 to 1"""
+    """equals J Σ Jᵀ (J of R p, lesson 06) to 1e-12 |p|² |Σ| for 8 cases, |p| from 1e-6 to 1e3 m, |Σ| from 1e-10 to 1"""
     rng = np.random.default_rng(9600)
     for R, p_size, sigma_size in zip(
         random_rotations(8, 9601),
@@ -332,20 +334,24 @@ def _left_to_right_hint(got, R, Sigma):
         _first_explained(
             got,
             [
-                (R @ Sigma @ R.T, "that converts right to left: Exp(ε_L) R = R Exp(Rᵀ ε_L), so Σ_R = Rᵀ Σ_L R"),
+                (
+                    R @ Sigma @ R.T,
+                    "that converts right to left: the adjoint moved ε across R the wrong way; write Exp(ε_L) R "
+                    "as R Exp(A ε_L) and check A",
+                ),
                 (Sigma, "the covariance must change frame: world axes (left) are not body axes (right) unless R = I"),
                 (R.T @ Sigma, hints.COVARIANCE_TAKES_LINEAR_MAP_HINT),
                 (Sigma @ R, hints.COVARIANCE_TAKES_LINEAR_MAP_HINT),
             ],
             R.T @ Sigma @ R,
         )
-        or "Exp(ε_L) R = R Exp(Rᵀ ε_L): ε_R = Rᵀ ε_L, Σ_R = Rᵀ Σ_L R"
+        or hints.LEFT_TO_RIGHT_WITH_ADJOINT_HINT
     )
 
 
 @exercise("covariance_left_to_right", weight=3)
 def test_left_to_right_exact(student):
-    """equals Rᵀ Σ_L R to 1e-12 |Σ| for rotations at every angle from 1e-12 to π and |Σ| from 1e-10 to 10"""
+    """equals the body-frame covariance to 1e-12 |Σ| for rotations at every angle from 1e-12 to π and |Σ| from 1e-10 to 10"""
     rng = np.random.default_rng(9700)
     sizes = (1.0, 0.01, 1e-10, 1e-6, 1e-3, 1e-2, 0.1, 1.0, 10.0, 1e-4, 1e-2, 1.0, 0.3)
     for R, size in zip(list(random_rotations(2, 9702)) + _rotations_at_every_angle(9701), sizes):  # generic first
@@ -439,13 +445,13 @@ def _pose_gn_hint(got, P, Q, T0, iters, expected):
         (
             dict(update="left"),
             "the update Exp(xi) T goes with the left Jacobian [I, -[T p]×]; with "
-            "[R, -R [p]×] update on the right, T ← T Exp(xi)",
+            "lesson 07's jacobian_transform_point (a right Jacobian) update on the right, T ← T Exp(xi)",
         ),
         (dict(sign=1.0), "steps uphill: xi solves H xi = -g (mind the minus sign)"),
         (
             dict(update="separate"),
             "R ← R Exp(phi), t ← t + rho is another manifold: with the Jacobian "
-            "[R, -R [p]×] update the pose with T ← T ExpSE3(xi)",
+            "the right Jacobian of lesson 07 update the pose with T ← T ExpSE3(xi)",
         ),
     ]
     for options, hint in slips:
@@ -459,7 +465,7 @@ def _pose_gn_hint(got, P, Q, T0, iters, expected):
         return f"that is one Gauss-Newton step, whatever iters says: repeat the update iters times (here {iters})"
     if rotation_problem(got[:3, :3], 1e-8) or not np.allclose(got[3], [0.0, 0.0, 0.0, 1.0]):
         return "the result drifted off SE(3): update with T ← T ExpSE3(xi), which stays a pose"
-    return "J_i = [R, -R [p_i]×], H = Σ J_iᵀ J_i, g = Σ J_iᵀ r_i, xi = solve(H, -g), T ← T ExpSE3(xi)"
+    return "J_i from lesson 07's jacobian_transform_point, H = Σ J_iᵀ J_i, g = Σ J_iᵀ r_i, xi = solve(H, -g), T ← T ExpSE3(xi)"
 
 
 @exercise("align_pose_gauss_newton", weight=1)

@@ -87,6 +87,10 @@ def _update_hint(step, R, P, y, g_w, Rn, truth, tol):
                 kalman(R.T @ _skew(g_w)),
                 "that measurement Jacobian belongs to a left (world-frame) error; this one is on the right",
             ),
+            (
+                np.linalg.solve(_skew(g_b) @ P @ _skew(g_b).T + Rn, _skew(g_b) @ P).T @ y,
+                "the gain multiplies the innovation y - Rᵀ g_w, not the measurement y itself",
+            ),
         ],
         truth,
         tol,

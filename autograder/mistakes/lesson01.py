@@ -576,17 +576,28 @@ def is_rotation_matrix(M, tol=1e-9):
         hint="equal to tol must pass",
         public_hint="equal to tol must pass",
     ),
+    Mistake(
+        "compose_returns_list",
+        "compose",
+        "the right numbers as nested lists (.tolist()): R_ac @ p then fails in the caller",
+        """
+def compose(R_ab, R_bc):
+    return (np.asarray(R_ab, dtype=float) @ np.asarray(R_bc, dtype=float)).tolist()
+""",
+        hint="a list is not an array",
+        public_hint="a list is not an array",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "rot2d_complex",
         "rot2d",
-        "from the complex number e^{iθ}, returned as nested lists",
+        "from the complex number e^{iθ}",
         """
 def rot2d(theta):
     z = np.exp(1j * theta)
-    return [[z.real, -z.imag], [z.imag, z.real]]
+    return np.array([[z.real, -z.imag], [z.imag, z.real]])
 """,
     ),
     Alternative(
@@ -602,10 +613,10 @@ def rot_x(a):
     Alternative(
         "rot_y_lists",
         "rot_y",
-        "nested lists",
+        "written as nested lists, then made an array",
         """
 def rot_y(a):
-    return [[np.cos(a), 0.0, np.sin(a)], [0.0, 1.0, 0.0], [-np.sin(a), 0.0, np.cos(a)]]
+    return np.array([[np.cos(a), 0.0, np.sin(a)], [0.0, 1.0, 0.0], [-np.sin(a), 0.0, np.cos(a)]])
 """,
     ),
     Alternative(
@@ -645,10 +656,10 @@ def rotate_point(R_wb, p_b):
     Alternative(
         "compose_dot_lists",
         "compose",
-        "np.dot, returned as nested lists",
+        "np.dot, the first factor converted to float (the second may stay a list)",
         """
 def compose(R_ab, R_bc):
-    return np.dot(R_ab, R_bc).tolist()
+    return np.dot(np.array(R_ab, dtype=float), R_bc)
 """,
     ),
     Alternative(

@@ -192,7 +192,7 @@ def commutes(a, b, op, tol=1e-9):
     Mistake(
         "check_group_axioms_half_tol",
         "check_group_axioms",
-        "accepts only differences below tol / 2 (\"within tol either side\" read as a band of width tol)",
+        'accepts only differences below tol / 2 ("within tol either side" read as a band of width tol)',
         """
 def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
     def equal(x, y):

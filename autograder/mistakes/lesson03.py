@@ -555,6 +555,41 @@ def log_so3(R):
         hint="a fixed column of B",
         public_hint="a fixed column of B",
     ),
+    Mistake(
+        "axis_angle_list_methods",
+        "axis_angle",
+        "R.trace() and R[:, j] on the input as given: a nested list has neither",
+        """
+def axis_angle(R):
+    a = 0.5 * np.array([R[2][1] - R[1][2], R[0][2] - R[2][0], R[1][0] - R[0][1]])
+    s = np.sqrt(a @ a)
+    c = 0.5 * (R.trace() - 1.0)
+    theta = float(np.arctan2(s, c))
+    if c > 0.0:
+        if s == 0.0:
+            return np.array([1.0, 0.0, 0.0]), 0.0
+        return a / s, theta
+    B = 0.5 * (R + R.T) - c * np.eye(3)
+    j = int(np.argmax(np.diag(B)))
+    u = B[:, j] / np.sqrt(B[:, j] @ B[:, j])
+    if u @ a < 0.0:
+        u = -u
+    return u, theta
+""",
+        hint="the conventions admit nested lists",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "vee_list_indexing",
+        "vee",
+        "W[2, 1] on the input as given: a nested list takes one index at a time",
+        """
+def vee(W):
+    return 0.5 * np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]])
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [
@@ -570,20 +605,20 @@ def hat(w):
     Alternative(
         "vee_antisymmetric_part",
         "vee",
-        "from the antisymmetric part, as a list",
+        "from the antisymmetric part, read with list indexing",
         """
 def vee(W):
     A = 0.5 * (np.asarray(W, dtype=float) - np.asarray(W, dtype=float).T)
-    return [A[2][1], A[0][2], A[1][0]]
+    return np.array([A[2][1], A[0][2], A[1][0]], dtype=float)
 """,
     ),
     Alternative(
         "bracket_lists",
         "bracket",
-        "np.dot, returned as nested lists",
+        "np.dot (of lists too)",
         """
 def bracket(A, B):
-    return (np.dot(A, B) - np.dot(B, A)).tolist()
+    return np.asarray(np.dot(A, B) - np.dot(B, A), dtype=float)
 """,
     ),
     Alternative(
@@ -642,7 +677,7 @@ def log_so3(R):
     Alternative(
         "axis_angle_list",
         "axis_angle",
-        "returns [u, θ] as a list, axis from the symmetric part near π",
+        "axis from the symmetric part near π, built with list methods",
         """
 def axis_angle(R):
     R = np.asarray(R, dtype=float)
@@ -650,13 +685,13 @@ def axis_angle(R):
     c = 0.5 * (np.trace(R) - 1.0)
     theta = float(np.arctan2(np.linalg.norm(a), c))
     if theta == 0.0:
-        return [np.array([1.0, 0.0, 0.0]), theta]
+        return np.array([1.0, 0.0, 0.0]), theta
     if c > 0.0:
-        return [a / np.linalg.norm(a), theta]
+        return a / np.linalg.norm(a), theta
     B = 0.5 * (R + R.T) - c * np.eye(3)
     u = B[:, int(np.argmax(np.diag(B)))]
     u = u / np.linalg.norm(u)
-    return [-u if u @ a < 0 else u, theta]
+    return (-u if u @ a < 0 else u), theta
 """,
     ),
     Alternative(

@@ -55,6 +55,18 @@ def body_angular_velocity(R, R_dot):
         hint="turned into body axes twice",
         public_hint="turned into body axes twice",
     ),
+    Mistake(
+        "body_rate_lists_transposed",
+        "body_angular_velocity",
+        "R.T @ R_dot on the inputs as given: plain lists have no .T",
+        """
+def body_angular_velocity(R, R_dot):
+    W = R.T @ R_dot
+    return 0.5 * np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]])
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [

@@ -661,18 +661,54 @@ def quat_multiply(p, q):
         hint="divided by its norm",
         public_hint="divided by its norm",
     ),
+    Mistake(
+        "quat_right_one_sign",
+        "quat_right",
+        "one sign slipped in the second row (-z instead of z): not orthogonal any more",
+        """
+def quat_right(q):
+    w, x, y, z = np.asarray(q, dtype=float)
+    return np.array([[w, -x, -y, -z],
+                     [x, w, -z, -y],
+                     [y, -z, w, x],
+                     [z, y, -x, w]])
+""",
+        hint="the four columns must be orthonormal",
+        public_hint="one sign at a time",
+    ),
+    Mistake(
+        "quat_slerp_weights_swapped",
+        "quat_slerp",
+        "the weights sin((1 - t)Ω) and sin(tΩ) swapped: t = 0 gives q1",
+        """
+def quat_slerp(q0, q1, t):
+    q0 = np.asarray(q0, dtype=float)
+    q1 = np.asarray(q1, dtype=float)
+    d = q0 @ q1
+    if d < 0.0:
+        q1, d = -q1, -d
+    omega = np.arccos(min(d, 1.0))
+    if np.sin(omega) < 1e-12:
+        q = (1.0 - t) * q0 + t * q1
+    else:
+        q = (np.sin(t * omega) * q0 + np.sin((1.0 - t) * omega) * q1) / np.sin(omega)
+    return q / np.linalg.norm(q)
+""",
+        hint="the turn from q0 must grow as t × the whole angle",
+        public_hint="the turn from q0 must grow as t × the whole angle",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "quat_multiply_matrix_list",
         "quat_multiply",
-        "through the left-product matrix, returned as a list",
+        "through the left-product matrix",
         """
 def quat_multiply(p, q):
     w, x, y, z = np.asarray(p, dtype=float)
     L = np.array([[w, -x, -y, -z], [x, w, -z, y], [y, z, w, -x], [z, -y, x, w]])
-    return (L @ np.asarray(q, dtype=float)).tolist()
+    return L @ np.asarray(q, dtype=float)
 """,
     ),
     Alternative(
@@ -715,12 +751,12 @@ def quat_inverse(q):
     Alternative(
         "quat_from_axis_angle_list",
         "quat_from_axis_angle",
-        "a plain list",
+        "built from a plain list of four numbers",
         """
 def quat_from_axis_angle(u, theta):
     u = np.asarray(u, dtype=float) / np.linalg.norm(u)
     s = np.sin(theta / 2)
-    return [np.cos(theta / 2), s * u[0], s * u[1], s * u[2]]
+    return np.array([np.cos(theta / 2), s * u[0], s * u[1], s * u[2]])
 """,
     ),
     Alternative(

@@ -78,6 +78,21 @@ def quat_power(q, t):
         hint="guard the division",
         public_hint="guard the division",
     ),
+    Mistake(
+        "quat_power_lists_sliced",
+        "quat_power",
+        "q[1:] of the input as given: v @ v does not work on a list",
+        """
+def quat_power(q, t):
+    w, v = q[0], q[1:]
+    s = np.sqrt(v @ v)
+    alpha = np.arctan2(s, w)
+    axis = v / s if s > 0.0 else np.array([1.0, 0.0, 0.0])
+    return np.concatenate([[np.cos(t * alpha)], np.sin(t * alpha) * axis])
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="unsupported operand type(s) for @: 'list' and 'list'",
+    ),
 ]
 
 ALTERNATIVES = [

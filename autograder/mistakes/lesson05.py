@@ -338,29 +338,64 @@ def matrix_to_euler_zyx(R):
         hint="no separate gimbal-lock branch, or a lock test too strict",
         public_hint="no separate gimbal-lock branch, or a lock test too strict",
     ),
+    Mistake(
+        "euler_matrix_one_sign",
+        "euler_zyx_to_matrix",
+        "one sign slipped in the first row (+ sy cr instead of - sy cr): not a rotation",
+        """
+def euler_zyx_to_matrix(yaw, pitch, roll):
+    cy, sy = np.cos(yaw), np.sin(yaw)
+    cp, sp = np.cos(pitch), np.sin(pitch)
+    cr, sr = np.cos(roll), np.sin(roll)
+    return np.array([
+        [cy * cp, cy * sp * sr + sy * cr, cy * sp * cr + sy * sr],
+        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+        [-sp, cp * sr, cp * cr],
+    ])
+""",
+        hint="compare each elementary rotation with a quarter turn",
+        public_hint="columns are not orthonormal",
+    ),
+    Mistake(
+        "euler_angles_as_list",
+        "matrix_to_euler_zyx",
+        "returns [yaw, pitch, roll] as a list where the docstring promises a tuple of three floats",
+        """
+def matrix_to_euler_zyx(R):
+    R = np.asarray(R, dtype=float)
+    fold = lambda a: float(a + 2 * np.pi) if a <= -np.pi else float(a)
+    cos_pitch = np.hypot(R[0, 0], R[1, 0])
+    pitch = float(np.arctan2(-R[2, 0], cos_pitch))
+    if cos_pitch < 1e-12:
+        return [fold(np.arctan2(-R[0, 1], R[1, 1])), pitch, 0.0]
+    return [fold(np.arctan2(R[1, 0], R[0, 0])), pitch, fold(np.arctan2(R[2, 1], R[2, 2]))]
+""",
+        hint="a list is not an array",
+        public_hint="a list is not an array",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "matrix_to_euler_undo_yaw",
         "matrix_to_euler_zyx",
-        "pitch and roll from Rz(yaw)ᵀ R, returned as a list",
+        "pitch and roll from Rz(yaw)ᵀ R",
         """
 def matrix_to_euler_zyx(R):
     R = np.asarray(R, dtype=float)
     fold = lambda a: float(np.pi if a <= -np.pi else a)
     if np.hypot(R[0, 0], R[1, 0]) < 1e-12 and np.hypot(R[2, 1], R[2, 2]) < 1e-12:
-        return [fold(np.arctan2(-R[0, 1], R[1, 1])), float(np.arctan2(-R[2, 0], 0.0)), 0.0]
+        return fold(np.arctan2(-R[0, 1], R[1, 1])), float(np.arctan2(-R[2, 0], 0.0)), 0.0
     yaw = np.arctan2(R[1, 0], R[0, 0])
     c, s = np.cos(yaw), np.sin(yaw)
     A = np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]]) @ R          # Ry(pitch) Rx(roll)
-    return [fold(yaw), float(np.arctan2(-A[2, 0], A[0, 0])), fold(np.arctan2(-A[1, 2], A[1, 1]))]
+    return fold(yaw), float(np.arctan2(-A[2, 0], A[0, 0])), fold(np.arctan2(-A[1, 2], A[1, 1]))
 """,
     ),
     Alternative(
         "euler_matrix_product_list",
         "euler_zyx_to_matrix",
-        "Rz @ Ry @ Rx, returned as nested lists",
+        "Rz @ Ry @ Rx, each built by index",
         """
 def euler_zyx_to_matrix(yaw, pitch, roll):
     def rot(axis, a):
@@ -369,7 +404,7 @@ def euler_zyx_to_matrix(yaw, pitch, roll):
         M = np.eye(3)
         M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
         return M.T if axis == 1 else M
-    return (rot(2, yaw) @ rot(1, pitch) @ rot(0, roll)).tolist()
+    return rot(2, yaw) @ rot(1, pitch) @ rot(0, roll)
 """,
     ),
     Alternative(
@@ -389,7 +424,7 @@ def euler_zyx_to_quat(yaw, pitch, roll):
     Alternative(
         "quat_to_euler_via_matrix",
         "quat_to_euler_zyx",
-        "builds R from q, then atan2/hypot extraction with a lock branch and roll from Rz(yaw)ᵀ R; a list",
+        "builds R from q, then atan2/hypot extraction with a lock branch and roll from Rz(yaw)ᵀ R",
         """
 def quat_to_euler_zyx(q):
     w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
@@ -400,11 +435,11 @@ def quat_to_euler_zyx(q):
     cos_pitch = np.hypot(R[0, 0], R[1, 0])
     pitch = float(np.arctan2(-R[2, 0], cos_pitch))
     if cos_pitch < 1e-12 and np.hypot(R[2, 1], R[2, 2]) < 1e-12:
-        return [fold(np.arctan2(-R[0, 1], R[1, 1])), pitch, 0.0]
+        return fold(np.arctan2(-R[0, 1], R[1, 1])), pitch, 0.0
     yaw = np.arctan2(R[1, 0], R[0, 0])
     c, s = np.cos(yaw), np.sin(yaw)
     roll = np.arctan2(s * R[0, 2] - c * R[1, 2], c * R[1, 1] - s * R[0, 1])
-    return [fold(yaw), pitch, fold(roll)]
+    return fold(yaw), pitch, fold(roll)
 """,
     ),
     Alternative(

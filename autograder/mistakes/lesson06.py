@@ -534,6 +534,48 @@ def boxplus_left(R, d):
         hint="R Exp(R δ)",
         public_hint="Rᵀ, not R",
     ),
+    Mistake(
+        "boxminus_lists_transposed",
+        "boxminus",
+        "R_b.T @ R_a on the inputs as given: plain lists have no .T",
+        """
+def boxminus(R_a, R_b):
+    return Log(R_b.T @ R_a)
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "right_jacobian_first_coefficient_unguarded",
+        "right_jacobian_so3",
+        "the series guards only the second coefficient: the half-angle form of the first is 0/0 at θ = 0",
+        """
+def right_jacobian_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    a = 0.5 * (np.sin(0.5 * theta) / (0.5 * theta)) ** 2   # the stable form: no series needed, or so it seems
+    if theta < 1e-3:
+        t2 = theta * theta
+        b = 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0
+    else:
+        b = (theta - np.sin(theta)) / theta**3
+    return np.eye(3) - a * W + b * (W @ W)
+""",
+        hint="the closed form is 0/0 at θ = 0",
+        public_hint="the closed form is 0/0 at θ = 0",
+    ),
+    Mistake(
+        "boxminus_column",
+        "boxminus",
+        "returns the difference as a 3×1 column, as on paper",
+        """
+def boxminus(R_a, R_b):
+    return Log(np.asarray(R_b, dtype=float).T @ np.asarray(R_a, dtype=float)).reshape(3, 1)
+""",
+        hint="keep the shape the docstring promises",
+        public_hint="keep the shape the docstring promises",
+    ),
 ]
 
 ALTERNATIVES = [
@@ -554,22 +596,22 @@ def boxplus_left(R, d):
     Alternative(
         "quat_boxplus_sinc",
         "quat_boxplus",
-        "Exp_q(δ) with np.sinc, no branch; returned as a list",
+        "Exp_q(δ) with np.sinc, no branch",
         """
 def quat_boxplus(q, d):
     d = np.asarray(d, dtype=float)
     theta = np.linalg.norm(d)
     dq = np.concatenate([[np.cos(theta / 2)], 0.5 * np.sinc(theta / (2 * np.pi)) * d])
-    return list(quat_product(np.asarray(q, dtype=float), dq))
+    return np.array(list(quat_product(np.asarray(q, dtype=float), dq)))
 """,
     ),
     Alternative(
         "boxplus_right_quaternion",
         "boxplus_right",
-        "through quaternions, returned as a list",
+        "through quaternions",
         """
 def boxplus_right(R, d):
-    return (np.asarray(R, dtype=float) @ Exp(d)).tolist()
+    return np.asarray(R, dtype=float) @ Exp(d)
 """,
     ),
     Alternative(

@@ -128,22 +128,33 @@ def jacobian_of_inverse(R):
         hint="float32 rounding",
         public_hint="float32 rounding",
     ),
+    Mistake(
+        "compose_jacobians_lists_transposed",
+        "jacobians_of_compose",
+        "R2.T on the input as given: a list has no .T",
+        """
+def jacobians_of_compose(R1, R2):
+    return R2.T, np.eye(3)
+""",
+        hint="the conventions admit nested lists",
+        public_hint="convert the inputs with np.asarray(..., dtype=float)",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "compose_by_inverse",
         "jacobians_of_compose",
-        "J1 = inv(R2), returned as a list",
+        "J1 = inv(R2)",
         """
 def jacobians_of_compose(R1, R2):
-    return [np.linalg.inv(np.asarray(R2, dtype=float)), np.identity(3)]
+    return np.linalg.inv(np.asarray(R2, dtype=float)), np.identity(3)
 """,
     ),
     Alternative(
         "compose_by_conjugating_generators",
         "jacobians_of_compose",
-        "column j of J1 read off R2ᵀ [e_j]× R2, as a tuple of lists",
+        "column j of J1 read off R2ᵀ [e_j]× R2",
         """
 def jacobians_of_compose(R1, R2):
     R2 = np.asarray(R2, dtype=float)
@@ -151,7 +162,7 @@ def jacobians_of_compose(R1, R2):
     for e in np.eye(3):
         M = R2.T @ skew(e) @ R2                 # the generator e_j, conjugated across R2
         columns.append([M[2, 1], M[0, 2], M[1, 0]])
-    return np.column_stack(columns).tolist(), np.eye(3).tolist()
+    return np.column_stack(columns), np.eye(3)
 """,
     ),
     Alternative(

@@ -48,6 +48,17 @@ def jacobian_point_to_body(R, p_w):
         hint="is the Jacobian of R p (body to world)",
         public_hint="is the Jacobian of R p (body to world)",
     ),
+    Mistake(
+        "point_to_body_lists_transposed",
+        "jacobian_point_to_body",
+        "R.T @ p_w on the inputs as given: plain lists have no .T",
+        """
+def jacobian_point_to_body(R, p_w):
+    return skew(R.T @ p_w)
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [

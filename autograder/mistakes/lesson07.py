@@ -487,6 +487,26 @@ def log_se3(T):
         hint="only its value at θ = 0",
         public_hint="only its value at θ = 0",
     ),
+    Mistake(
+        "log_se3_unit_axis",
+        "log_se3",
+        "V⁻¹ written with the unit axis phi/θ: 0/0 at θ = 0 although c has its series",
+        """
+def log_se3(T):
+    T = np.asarray(T, dtype=float)
+    phi = Log(T[:3, :3])
+    theta = np.linalg.norm(phi)
+    U = skew(phi / theta)
+    if theta < 1e-2:
+        c = 1.0 / 12.0 + theta**2 / 720.0 + theta**4 / 30240.0
+    else:
+        c = (1.0 - (theta / 2.0) / np.tan(theta / 2.0)) / theta**2
+    V_inv = np.eye(3) - 0.5 * theta * U + c * theta**2 * (U @ U)
+    return np.concatenate([V_inv @ T[:3, 3], phi])
+""",
+        hint="use the series c = 1/12",
+        public_hint="use the series c = 1/12",
+    ),
 ]
 
 ALTERNATIVES = [
@@ -503,11 +523,11 @@ def to_homogeneous(P):
     Alternative(
         "from_homogeneous_list",
         "from_homogeneous",
-        "divides everything, then drops the 1; a list",
+        "divides everything, then drops the 1",
         """
 def from_homogeneous(P_h):
     P_h = np.asarray(P_h, dtype=float)
-    return (P_h / P_h[..., -1:])[..., :3].tolist()
+    return (P_h / P_h[..., -1:])[..., :3]
 """,
     ),
     Alternative(
@@ -526,12 +546,12 @@ def pose_compose(T_ab, T_bc):
     Alternative(
         "make_pose_block_list",
         "make_pose",
-        "np.block, returned as nested lists",
+        "np.block",
         """
 def make_pose(R, t):
     R = np.asarray(R, dtype=float)
     t = np.asarray(t, dtype=float).reshape(3, 1)
-    return np.block([[R, t], [np.zeros((1, 3)), np.ones((1, 1))]]).tolist()
+    return np.block([[R, t], [np.zeros((1, 3)), np.ones((1, 1))]])
 """,
     ),
     Alternative(

@@ -224,6 +224,54 @@ def right_jacobian_se3(xi):
         hint="the Jacobian of Log",
         public_hint="the Jacobian of Log",
     ),
+    Mistake(
+        "adjoint_lists_sliced",
+        "adjoint_se3",
+        "T[:3, :3] on the input as given: a nested list takes no 2-D slice",
+        """
+def adjoint_se3(T):
+    R, t = T[:3, :3], T[:3, 3]
+    Ad = np.zeros((6, 6))
+    Ad[:3, :3] = R
+    Ad[:3, 3:] = skew(t) @ R
+    Ad[3:, 3:] = R
+    return Ad
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "transform_point_jacobian_lists_sliced",
+        "jacobian_transform_point",
+        "T[:3, :3] on the input as given: a nested list takes no 2-D slice",
+        """
+def jacobian_transform_point(T, p):
+    R = T[:3, :3]
+    return np.hstack([R, -R @ skew(p)])
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "right_jacobian_se3_lists_reshaped",
+        "right_jacobian_se3",
+        "xi.reshape(6) on the input as given: a list has no reshape",
+        """
+def right_jacobian_se3(xi):
+    xi = xi.reshape(6)
+    ad = np.zeros((6, 6))
+    ad[:3, :3] = skew(xi[3:])
+    ad[3:, 3:] = skew(xi[3:])
+    ad[:3, 3:] = skew(xi[:3])
+    A = -ad
+    S = np.eye(6)
+    for k in range(30, 0, -1):
+        S = np.eye(6) + A @ S / (k + 1)
+    return S
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [

@@ -53,6 +53,21 @@ def relative_pose(T_wa, T_wb):
         hint="written in world axes",
         public_hint="written in world axes",
     ),
+    Mistake(
+        "relative_pose_list_slices",
+        "relative_pose",
+        "T[:3, :3] on the inputs as given: a nested list takes no 2-D slice",
+        """
+def relative_pose(T_wa, T_wb):
+    R_aw = T_wa[:3, :3].T
+    T_ab = np.eye(4)
+    T_ab[:3, :3] = R_aw @ T_wb[:3, :3]
+    T_ab[:3, 3] = R_aw @ (T_wb[:3, 3] - T_wa[:3, 3])
+    return T_ab
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [

@@ -55,6 +55,23 @@ def weighted_rotation_mean(Rs, weights):
         hint="the weights were squared",
         public_hint="the weights were squared",
     ),
+    Mistake(
+        "weighted_mean_lists",
+        "weighted_rotation_mean",
+        "M.T @ R on the rotations as given: an element of a list of lists has no .T",
+        """
+def weighted_rotation_mean(Rs, weights):
+    M = Rs[int(np.argmax(weights))]
+    for _ in range(100):
+        delta = sum(wi * Log(M.T @ R) for wi, R in zip(weights, Rs)) / np.sum(weights)
+        M = M @ Exp(delta)
+        if np.linalg.norm(delta) < 1e-13:
+            break
+    return M
+""",
+        hint="the conventions admit nested lists",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [

@@ -304,6 +304,41 @@ def align_pose_robust(P, Q, T0, k):
         hint="weights (k/r)² beyond k",
         public_hint="weights (k/r)² beyond k",
     ),
+    Mistake(
+        "point_covariance_lists_negated",
+        "rotated_point_covariance",
+        "-R @ skew(p) on the input as given: a list cannot be negated",
+        """
+def rotated_point_covariance(R, Sigma, p):
+    J = -R @ skew(p)
+    return J @ Sigma @ J.T
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "align_start_copied",
+        "align_pose_gauss_newton",
+        "T0.copy() keeps a list a list: T[:3, :3] then fails on a plain-list start",
+        """
+def align_pose_gauss_newton(P, Q, T0, iters=10):
+    P = np.asarray(P, dtype=float)
+    Q = np.asarray(Q, dtype=float)
+    T = T0.copy()
+    for _ in range(iters):
+        R, t = T[:3, :3], T[:3, 3]
+        H, g = np.zeros((6, 6)), np.zeros(6)
+        for p, q in zip(P, Q):
+            J = np.hstack([R, -R @ skew(p)])
+            r = R @ p + t - q
+            H += J.T @ J
+            g += J.T @ r
+        T = T @ ExpSE3(np.linalg.solve(H, -g))
+    return T
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [

@@ -87,7 +87,7 @@ ALTERNATIVES = [
     Alternative(
         "hand_eye_huber_irls",
         "hand_eye_rotation",
-        "best single-pair-pair proposal by median misfit, then Huber-weighted refits to convergence, list returned",
+        "best single-pair-pair proposal by median misfit, then Huber-weighted refits to convergence",
         """
 def hand_eye_rotation(As, Bs):
     a = [Log(A) for A in np.asarray(As, dtype=float)]
@@ -115,7 +115,7 @@ def hand_eye_rotation(As, Bs):
         w = np.where(r <= k, 1.0, k / np.maximum(r, 1e-300))
         w[r > 5 * k] = 0.0
         X = fit(w)
-    return X.tolist()
+    return X
 """,
     ),
 ]

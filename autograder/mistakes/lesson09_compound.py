@@ -67,20 +67,32 @@ MISTAKES = [
         hint="T2 T1 is the other chain",
         public_hint="T2 T1 is the other chain",
     ),
+    Mistake(
+        "compound_lists_matmul",
+        "compound_pose_covariance",
+        "T1 @ T2 on the inputs as given: @ does not work on two lists",
+        """
+def compound_pose_covariance(T1, S1, T2, S2):
+    A = AdSE3(np.linalg.inv(T2))
+    return T1 @ T2, A @ S1 @ A.T + S2
+""",
+        hint="the conventions admit nested lists",
+        public_hint="unsupported operand type(s) for @: 'list' and 'list'",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "compound_by_blocks",
         "compound_pose_covariance",
-        "the adjoint of T2⁻¹ written by blocks, lists returned",
+        "the adjoint of T2⁻¹ written by blocks",
         """
 def compound_pose_covariance(T1, S1, T2, S2):
     T1, T2 = np.asarray(T1, dtype=float), np.asarray(T2, dtype=float)
     R, t = T2[:3, :3].T, -T2[:3, :3].T @ T2[:3, 3]
     A = np.block([[R, skew(t) @ R], [np.zeros((3, 3)), R]])
     S = A @ np.asarray(S1, dtype=float) @ A.T + np.asarray(S2, dtype=float)
-    return (T1 @ T2).tolist(), S.tolist()
+    return T1 @ T2, S
 """,
     ),
 ]

@@ -131,13 +131,64 @@ MISTAKES = [
         hint="off-diagonal entries of P count too",
         public_hint="off-diagonal entries of P count too",
     ),
+    Mistake(
+        "nees_lists_transposed",
+        "attitude_nees",
+        "R_est.T @ R_true on the inputs as given: plain lists have no .T",
+        """
+def attitude_nees(R_true, R_est, P):
+    eps = Log(R_est.T @ R_true)
+    return float(eps @ np.linalg.solve(P, eps))
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "predict_lists_scaled",
+        "filter_predict",
+        "omega_meas * dt on the input as given: a list times a float is an error",
+        """
+def filter_predict(R, P, omega_meas, dt, Q):
+    phi = omega_meas * dt
+    step = Exp(phi)
+    theta = np.sqrt(phi @ phi)
+    W = skew(phi)
+    if theta < 1e-6:
+        Jr = np.eye(3) - W / 2 + W @ W / 6
+    else:
+        Jr = np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+    G = Jr * dt
+    return R @ step, step.T @ P @ step + G @ Q @ G.T
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "predict_returns_lists",
+        "filter_predict",
+        "the right R_new and P_new, returned as a list of nested lists",
+        """
+def filter_predict(R, P, omega_meas, dt, Q):
+    R, P, Q = (np.asarray(x, dtype=float) for x in (R, P, Q))
+    phi = np.asarray(omega_meas, dtype=float) * dt
+    theta, W = np.sqrt(phi @ phi), skew(phi)
+    if theta < 1e-6:
+        Jr = np.eye(3) - W / 2 + W @ W / 6
+    else:
+        Jr = np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+    step, G = Exp(phi), Jr * dt
+    return [(R @ step).tolist(), (step.T @ P @ step + G @ Q @ G.T).tolist()]
+""",
+        hint="a list is not an array",
+        public_hint="a list is not an array",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "predict_by_integral",
         "filter_predict",
-        "the Jacobian of Exp as the integral of Exp(-s φ) ds (Simpson's rule on a fine grid), lists returned",
+        "the Jacobian of Exp as the integral of Exp(-s φ) ds (Simpson's rule on a fine grid)",
         """
 def filter_predict(R, P, omega_meas, dt, Q):
     phi = np.asarray(omega_meas, dtype=float) * dt
@@ -149,7 +200,7 @@ def filter_predict(R, P, omega_meas, dt, Q):
     G = Jr * dt
     R_new = np.asarray(R, dtype=float) @ step
     P_new = step.T @ np.asarray(P, dtype=float) @ step + G @ np.asarray(Q, dtype=float) @ G.T
-    return [R_new.tolist(), P_new.tolist()]
+    return R_new, P_new
 """,
     ),
     Alternative(

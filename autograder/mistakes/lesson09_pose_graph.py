@@ -69,20 +69,40 @@ MISTAKES = [
         hint="the residual of the reversed edge",
         public_hint="the residual of the reversed edge",
     ),
+    Mistake(
+        "edge_lists_inverse_by_hand",
+        "pose_graph_edge",
+        "an inverse written by hand with T[:3, :3] on the inputs as given: lists take no 2-D slice",
+        """
+def pose_graph_edge(T_i, T_j, T_ij):
+    def inverse(T):
+        R, t = T[:3, :3], T[:3, 3]
+        out = np.eye(4)
+        out[:3, :3] = R.T
+        out[:3, 3] = -R.T @ t
+        return out
+    between = inverse(T_i) @ T_j
+    r = LogSE3(inverse(T_ij) @ between)
+    Jr_inv = np.linalg.inv(JrSE3(r))
+    return r, -Jr_inv @ AdSE3(inverse(between)), Jr_inv
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "edge_left_jacobian",
         "pose_graph_edge",
-        "J_i = -J_l(r)⁻¹ Ad(T_ij⁻¹) with J_l(r) = J_r(-r), inverses by solve, lists returned",
+        "J_i = -J_l(r)⁻¹ Ad(T_ij⁻¹) with J_l(r) = J_r(-r), inverses by solve",
         """
 def pose_graph_edge(T_i, T_j, T_ij):
     T_i, T_j, T_ij = (np.asarray(T, dtype=float) for T in (T_i, T_j, T_ij))
     r = LogSE3(np.linalg.inv(T_ij) @ np.linalg.inv(T_i) @ T_j)
     J_i = -np.linalg.solve(JrSE3(-r), AdSE3(np.linalg.inv(T_ij)))
     J_j = np.linalg.solve(JrSE3(r), np.eye(6))
-    return [r.tolist(), J_i.tolist(), J_j.tolist()]
+    return r, J_i, J_j
 """,
     ),
 ]

@@ -61,13 +61,46 @@ MISTAKES = [
         hint="a measurement adds information",
         public_hint="a measurement adds information",
     ),
+    Mistake(
+        "update_lists_transposed",
+        "filter_update",
+        "R.T @ g_w on the inputs as given: plain lists have no .T",
+        """
+def filter_update(R, P, y, g_w, Rn):
+    g_b = R.T @ g_w
+    H = skew(g_b)
+    S = H @ P @ H.T + Rn
+    K = np.linalg.solve(S, H @ P).T
+    delta = K @ (y - g_b)
+    return R @ Exp(delta), (np.eye(3) - K @ H) @ P
+""",
+        hint="lists have no .T and @ does not work on them",
+        public_hint="lists have no .T and @ does not work on them",
+    ),
+    Mistake(
+        "update_innovation_is_y",
+        "filter_update",
+        "the correction K y from the measurement itself, not from the innovation y - Rᵀ g_w",
+        """
+def filter_update(R, P, y, g_w, Rn):
+    R, P = np.asarray(R, dtype=float), np.asarray(P, dtype=float)
+    g_b = R.T @ np.asarray(g_w, dtype=float)
+    H = skew(g_b)
+    S = H @ P @ H.T + np.asarray(Rn, dtype=float)
+    K = np.linalg.solve(S, H @ P).T
+    delta = K @ np.asarray(y, dtype=float)
+    return R @ Exp(delta), (np.eye(3) - K @ H) @ P
+""",
+        hint="the gain multiplies the innovation y - Rᵀ g_w",
+        public_hint="no innovation, no correction",
+    ),
 ]
 
 ALTERNATIVES = [
     Alternative(
         "update_information_form",
         "filter_update",
-        "the information form (P⁻¹ + Hᵀ Rn⁻¹ H)⁻¹, H by the cross product of the predicted direction, lists returned",
+        "the information form (P⁻¹ + Hᵀ Rn⁻¹ H)⁻¹, H by the cross product of the predicted direction",
         """
 def filter_update(R, P, y, g_w, Rn):
     R = np.asarray(R, dtype=float)
@@ -76,7 +109,7 @@ def filter_update(R, P, y, g_w, Rn):
     information = np.linalg.inv(np.asarray(P, dtype=float)) + H.T @ np.linalg.solve(np.asarray(Rn, dtype=float), H)
     P_new = np.linalg.inv(information)
     delta = P_new @ H.T @ np.linalg.solve(np.asarray(Rn, dtype=float), np.asarray(y, dtype=float) - predicted)
-    return [(R @ Exp(delta)).tolist(), P_new.tolist()]
+    return R @ Exp(delta), P_new
 """,
     ),
     Alternative(

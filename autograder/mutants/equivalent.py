@@ -123,12 +123,6 @@ PRECONDITIONER = (
     "within the 500 steps (gradient below 1e-13 per point)"
 )
 
-IDENTITY_RETURNED_FLOAT32 = (
-    "J2 is the identity, returned as it is: 1 and 0 are exact in float32, so it holds the "
-    "same values as in float64 (the docstring promises an ndarray of shape (3, 3), which it "
-    "is), and any product with a float64 array is float64 again"
-)
-
 
 EQUIVALENT = {
     # ALL_PAIRS
@@ -251,7 +245,6 @@ EQUIVALENT = {
     "exp_so3.0b9d24e4": INTEGERS,  # np.asarray(w, dtype=float) → np.asarray(w) (line 19)
     "from_homogeneous.40fdcd56": INTEGERS,  # np.asarray(P_h, dtype=float) → np.asarray(P_h) (line 19)
     "hat.a27cc2d8": INTEGERS,  # np.asarray(w, dtype=float) → np.asarray(w) (line 20)
-    "invert_rotation.73c797fe": INTEGERS,  # np.asarray(R_ab, dtype=float) → np.asarray(R_ab) (line 21)
     "is_rotation_matrix.d9253760": INTEGERS,  # np.asarray(M, dtype=float) → np.asarray(M) (line 21)
     "jacobian_rotate_point.366a3f48": INTEGERS,  # np.asarray(R, dtype=float) → np.asarray(R) (line 23)
     "log_se3.0893951f": INTEGERS,  # np.asarray(T, dtype=float) → np.asarray(T) (line 20)
@@ -268,19 +261,15 @@ EQUIVALENT = {
     "pose_compose.dacc8f36": INTEGERS,  # np.asarray(T_ab, dtype=float) → np.asarray(T_ab) (line 20)
     "pose_inverse.283a316e": INTEGERS,  # np.asarray(T, dtype=float) → np.asarray(T) (line 22)
     "quat_boxplus.9dcafcbb": INTEGERS,  # np.asarray(d, dtype=float) → np.asarray(d) (line 21)
-    "quat_conjugate.2c1ea306": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 18)
     "quat_from_axis_angle.4b1b191f": INTEGERS,  # np.asarray(u, dtype=float) → np.asarray(u) (line 21)
     "quat_inverse.c3566a5c": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 19)
-    "quat_left.a321fe9f": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 18)
     "quat_multiply.692e808d": INTEGERS,  # np.asarray(p, dtype=float) → np.asarray(p) (line 19)
     "quat_multiply.6c4bd4f4": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 20)
-    "quat_right.a9619eb6": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 18)
     "quat_rotate.26f54d9a": INTEGERS,  # np.asarray(v, dtype=float) → np.asarray(v) (line 27)
     "quat_rotate.b4c2772e": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 26)
     "quat_slerp.2174a0f1": INTEGERS,  # np.asarray(q0, dtype=float) → np.asarray(q0) (line 22)
     "quat_slerp.c5e9d896": INTEGERS,  # np.asarray(q1, dtype=float) → np.asarray(q1) (line 23)
     "quat_to_euler_zyx.3bf19d28": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 22)
-    "quat_to_matrix.9202c375": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 22)
     "right_jacobian_inv_so3.f3fb3da8": INTEGERS,  # np.asarray(w, dtype=float) → np.asarray(w) (line 22)
     "right_jacobian_so3.a8721d38": INTEGERS,  # np.asarray(w, dtype=float) → np.asarray(w) (line 22)
     "rotate_point.2da6376e": INTEGERS,  # np.asarray(p_b, dtype=float) → np.asarray(p_b) (line 23)
@@ -290,8 +279,6 @@ EQUIVALENT = {
     "transform_points.1993187a": INTEGERS,  # np.asarray(P, dtype=float) → np.asarray(P) (line 24)
     "transform_points.d1f11995": INTEGERS,  # np.asarray(T, dtype=float) → np.asarray(T) (line 23)
     "vee.13b21f34": INTEGERS,  # np.asarray(W, dtype=float) → np.asarray(W) (line 19)
-    "wxyz_to_xyzw.aa503d21": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 17)
-    "xyzw_to_wxyz.019b3456": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 17)
     # LISTS
     "align_gauss_newton.670ec93c": LISTS,  # np.asarray(Q, dtype=float) → Q (line 30)
     "align_gauss_newton.8484f4fa": LISTS,  # np.asarray(P, dtype=float) → P (line 29)
@@ -310,11 +297,8 @@ EQUIVALENT = {
     "pose_compose.65eb86d9": LISTS,  # np.asarray(T_bc, dtype=float) → T_bc (line 20)
     "pose_compose.813d844b": LISTS,  # np.asarray(T_ab, dtype=float) → T_ab (line 20)
     "quat_from_axis_angle.f45473ee": LISTS,  # np.asarray(u, dtype=float) → u (line 21)
-    "quat_left.fd9bfe5e": LISTS,  # np.asarray(q, dtype=float) → q (line 18)
-    "quat_right.a9174020": LISTS,  # np.asarray(q, dtype=float) → q (line 18)
     "quat_rotate.dabaef96": LISTS,  # np.asarray(v, dtype=float) → v (line 27)
     "quat_to_euler_zyx.6786b20a": LISTS,  # np.asarray(q, dtype=float) → q (line 22)
-    "quat_to_matrix.89910014": LISTS,  # np.asarray(q, dtype=float) → q (line 22)
     "right_jacobian_inv_so3.f3c64936": LISTS,  # np.asarray(w, dtype=float) → w (line 22)
     "right_jacobian_so3.db355d9c": LISTS,  # np.asarray(w, dtype=float) → w (line 22)
     "rotate_point.a0cdf681": LISTS,  # np.asarray(p_b, dtype=float) → p_b (line 23)
@@ -487,11 +471,9 @@ EQUIVALENT = {
     "integrate_gyro.c5df4719": INTEGERS,  # np.array(R0, dtype=float) → np.array(R0) (line 24)
     "pose_graph_edge.c57a6fd9": INTEGERS,  # np.asarray(T, dtype=float) → np.asarray(T) (line 28)
     "integrate_gyro.eb1a3c22": INTEGERS,  # np.asarray(omegas_b, dtype=float) → np.asarray(omegas_b) (line 25)
-    "jacobian_of_inverse.6c2e3327": INTEGERS,  # np.asarray(R, dtype=float) → np.asarray(R) (line 19)
     "jacobian_point_to_body.08be5bef": INTEGERS,  # np.asarray(R, dtype=float) → np.asarray(R) (line 21)
     "jacobian_point_to_body.ac6d7ecf": INTEGERS,  # np.asarray(p_w, dtype=float) → np.asarray(p_w) (line 22)
     "jacobian_transform_point.842c9522": INTEGERS,  # np.asarray(T, dtype=float) → np.asarray(T) (line 21)
-    "jacobians_of_compose.687eb62b": INTEGERS,  # np.asarray(R2, dtype=float) → np.asarray(R2) (line 20)
     "quat_from_two_vectors.1e392d14": INTEGERS,  # np.asarray(b, dtype=float) → np.asarray(b) (line 29)
     "quat_from_two_vectors.7a177d9a": INTEGERS,  # np.asarray(a, dtype=float) → np.asarray(a) (line 28)
     "quat_power.451c9754": INTEGERS,  # np.asarray(q, dtype=float) → np.asarray(q) (line 24)
@@ -542,7 +524,6 @@ EQUIVALENT = {
     "quat_power.1116b7a2": VECTORS,  # v @ v → v @ v.T (line 26)
     "relative_pose.18eca3f5": VECTORS,  # R_aw @ (T_wb[:3, 3] - T_wa[:3, 3]) → R_aw @ (T_wb[:3, 3] - T_wa[:3, 3]).T (line 25)
     "jacobians_of_compose.0a884ae7": VIEW,  # R2.T.copy() → R2.T (line 21)
-    "jacobians_of_compose.efbc8b33": IDENTITY_RETURNED_FLOAT32,  # np.eye(3) → np.eye(3, dtype=np.float32) (line 21)
     "align_pose_robust.84283cba": IRLS_CONVERGED,  # range(500) → range(500 - 1) (line 27)
     "align_pose_robust.f58ecf92": IRLS_CONVERGED,  # range(500) → range(500 + 1) (line 27)
     "align_pose_robust.2fc74aa3": IRLS_CONVERGED,  # range(500) → range(1, 500) (line 27)
@@ -744,5 +725,20 @@ EQUIVALENT.update(
         "hand_eye_rotation.e005ec77": DESIGN_WITHIN_BOUND,  # 3.0 * 1.4826 * np.median(r) → np.median(r) (line 46)
         "hand_eye_rotation.8e406800": DESIGN_WITHIN_BOUND,  # 3.0 * 1.4826 → 3.0 (line 46)
         "hand_eye_rotation.6dbf401a": DESIGN_WITHIN_BOUND,  # 3.0 * 1.4826 → 1.4826 (line 46)
+    }
+)
+
+NUMPY_BOOL = (
+    "numpy.bool_ for bool: the contract accepts it where a docstring promises a bool (coursekit/exercise_contracts.py, "
+    "both suites), and the sandbox's wire returns it as a bool"
+)
+EQUIVALENT.update(
+    {
+        "is_rotation_matrix.fb2b11f0": NUMPY_BOOL,  # return bool(...) → return ... (line 29)
+        "commutes.0a7f2f9c": NUMPY_BOOL,  # return bool(...) → return ... (line 28)
+        "rotate_point.b5f80176": TUPLES_CONVERTED,  # np.asarray(p_b, dtype=float) only for a list (line 23)
+        "compose.6aba9786": TUPLES_CONVERTED,  # np.asarray(R_ab, dtype=float) only for a list (line 21)
+        "compose.9750aa72": TUPLES_CONVERTED,  # np.asarray(R_bc, dtype=float) only for a list (line 21)
+        "nearest_rotation.cb6bb7f6": TUPLES_CONVERTED,  # np.asarray(M, dtype=float) only for a list (line 21)
     }
 )

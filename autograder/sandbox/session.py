@@ -407,7 +407,8 @@ class StudentSandbox:
         if reply["ok"] and delegated:
             raise StudentError(
                 "delegated",
-                f"{name} calls {', '.join(delegated)}: this exercise asks for "
+                str(reply.get("refusal") or "")[:400]
+                or f"{name} calls {', '.join(delegated)}: this exercise asks for "
                 "your own implementation, so it earns no points",
                 stdout,
             )

@@ -22,7 +22,7 @@ above already say what is wrong.
 import functools
 import traceback
 
-from .contracts import CHANGED_HINT, DELEGATED_HINT, forbidden_for
+from .contracts import CHANGED_HINT, DELEGATED_HINT, guard_for, refusal
 from .watching import snapshot, watch_call
 
 __all__ = ["check", "public_check", "Mismatch", "CheckFailed", "NotWrittenYet", "registered_exercises",
@@ -119,10 +119,27 @@ def run_quietly(exercise, function):
             problem = problem or f"{description}: raised {type(error).__name__}"
         else:
             passed += 1
+    contract = _contract_line(exercise, function.function) if passed or problem else None
+    if contract is not None:
+        passed += contract[0]
+        problem = problem or ("" if contract[0] else contract[1].strip().removeprefix("✗ ").split("\n")[0])
     broken = function.broken_promises()
     if broken and not problem:
         problem = f"{broken[0][0]}: {_one_line(broken[0][1], 90)}"
-    return passed, len(checks) + len(broken), problem
+    return passed, len(checks) + (contract is not None) + len(broken), problem
+
+
+def _contract_line(exercise, function):
+    """``(passed, line)`` for the contract check of :mod:`coursekit.exercise_contracts`; None if not covered."""
+    from .exercise_contracts import DESCRIPTION, contract_problem, covered
+
+    if not covered(exercise):
+        return None
+    problem = contract_problem(exercise, function)
+    if problem is None:
+        return True, f"  ✓ {DESCRIPTION}"
+    reason, hint = problem
+    return False, f"  ✗ {DESCRIPTION}: {_one_line(reason)}\n      hint: {_one_line(hint)}"
 
 
 class _Watched:
@@ -132,7 +149,8 @@ class _Watched:
 
     def __init__(self, exercise, function):
         functools.update_wrapper(self, function)
-        self.exercise, self.function, self.forbidden = exercise, function, forbidden_for(exercise)
+        self.exercise, self.function = exercise, function
+        self.forbidden = guard_for(exercise, _LESSON_OF.get(exercise, ""))  # its allowance (coursekit.contracts)
         self.changed, self.used = [], []
 
     def __call__(self, *args, **kwargs):
@@ -148,8 +166,8 @@ class _Watched:
         """``(description, reason, hint)`` for each contract the calls so far broke (none: ``[]``)."""
         broken = []
         if self.used:
-            broken.append(("is your own implementation", f"{self.exercise} calls {', '.join(self.used)}",
-                           DELEGATED_HINT))
+            broken.append(("is your own implementation",
+                           refusal(self.exercise, self.used, _LESSON_OF.get(self.exercise, "")), DELEGATED_HINT))
         if self.changed:
             broken.append(("leaves its arguments unchanged",
                            f"{self.exercise} changes its argument{'s' if len(self.changed) > 1 else ''} "
@@ -234,6 +252,11 @@ def check(exercise, function):
         else:
             passed += 1
             lines.append(f"  ✓ {description}")
+    contract = _contract_line(exercise, function.function)  # one line: the docstring's contract (issue #43)
+    if contract is not None:
+        ok, line = contract
+        passed, failed = passed + ok, failed + (not ok)
+        lines.append(line)
     for description, reason, hint in function.broken_promises():
         failed += 1
         lines.append(f"  ✗ {description}: {reason}\n      hint: {_one_line(hint)}")

@@ -23,7 +23,9 @@ Examples
 ['q']
 """
 
+import builtins
 import copy
+import functools
 import inspect
 import sys
 import threading
@@ -70,14 +72,22 @@ def snapshot(values):
 def _same(before, after):
     """Bit for bit the same plain data (a NaN equals itself; -0.0 differs from 0.0)."""
     if isinstance(before, np.ndarray):
-        return (isinstance(after, np.ndarray) and before.shape == after.shape and before.dtype == after.dtype
-                and before.tobytes() == after.tobytes())
+        return (
+            isinstance(after, np.ndarray)
+            and before.shape == after.shape
+            and before.dtype == after.dtype
+            and before.tobytes() == after.tobytes()
+        )
     if isinstance(before, (list, tuple)):
-        return (type(after) is type(before) and len(after) == len(before)
-                and all(_same(b, a) for b, a in zip(before, after)))
+        return (
+            type(after) is type(before)
+            and len(after) == len(before)
+            and all(_same(b, a) for b, a in zip(before, after))
+        )
     if isinstance(before, dict):
-        return (isinstance(after, dict) and list(after) == list(before)
-                and all(_same(before[k], after[k]) for k in before))
+        return (
+            isinstance(after, dict) and list(after) == list(before) and all(_same(before[k], after[k]) for k in before)
+        )
     return True  # numbers, strings and other objects cannot be changed in place (or are not ours to judge)
 
 
@@ -113,25 +123,128 @@ def _qualname(code):
     return getattr(code, "co_qualname", code.co_name)
 
 
+_STDLIB = frozenset(getattr(sys, "stdlib_module_names", ()))
+# numpy's functions that call a function they are handed: a library function handed to them is a call
+# of the notebook's (``np.vectorize(expm)``); C ones (``np.frompyfunc``) cannot be seen this way
+_TAKES_CALLBACKS = frozenset({"vectorize.__init__", "apply_along_axis", "apply_over_axes", "piecewise", "fromfunction"})
+
+
 class _Tracer:
-    """A profile hook that notes calls into forbidden functions made directly from notebook code."""
+    """A profile hook that notes what notebook code calls while the watched call runs.
 
-    def __init__(self, forbidden):
+    Notebook code is the watched function's module (its globals; any ``__main__`` code when it has
+    none): the student's function, its helpers, lambdas and classes. A call counts when notebook code
+    makes it directly, or hands the callee to a built-in (``sorted(key=...)``, ``functools.reduce``) or
+    to one of numpy's functions that call back (``np.vectorize``, ``np.apply_along_axis``: the handed
+    function is judged when numpy is called); calls that a library makes inside itself are free, and so
+    are functions the caller handed in as arguments (a check's own function, a grader's probe). A call
+    is noted when its target is on the exercise's ``forbidden`` list, or when there is an
+    ``allowance`` and the target's module is outside it (a method counts as the module of its
+    object's type), or when it is one of the student's own functions that the allowance names as
+    doing the exercise's job. A callback is noted only when its module is outside the allowance *and*
+    outside the standard library; ``print`` and what it writes to are free. Threads started during
+    the call are watched too (``threading.setprofile``), though starting one already leaves the
+    allowance (``threading``). Not seen: a library function handed to a C function of numpy
+    (``np.frompyfunc``); the tracer switched off (``sys.setprofile``) is seen as ``tampered``.
+    """
+
+    def __init__(self, forbidden, allowance=None, callables=(), main=None):
         self.prefixes = tuple(forbidden)
+        # the notebook's namespace: the watched function's globals (in the sandbox the worker's own module
+        # is also named __main__, so the name alone cannot tell notebook code); None: any __main__
+        self.main = main
+        self.allowance = allowance
+        self.modules = tuple(allowance.modules) if allowance is not None else ()
+        self.own = frozenset(allowance.own) if allowance is not None else frozenset()
+        self.codes = set(callables)  # code of functions handed in as arguments: the caller's own
         self.used = []
+        self.verdicts = {"__main__": True}
+        self.in_c = []  # (frame, C function) of the C calls notebook code is inside of
 
-    def _note(self, caller, full_name):
-        if caller.f_globals.get("__name__") != "__main__":
-            return  # called by a library or a check, not by the notebook's own code
-        if (full_name + ".").startswith(self.prefixes) and full_name not in self.used and len(self.used) < 3:
+    def allowed(self, module):
+        verdict = self.verdicts.get(module)
+        if verdict is None:
+            verdict = (
+                self.allowance is None
+                or module.startswith("namedtuple_")  # the constructor of a named tuple (numpy's SVDResult)
+                or any(module == prefix or module.startswith(prefix + ".") for prefix in self.modules)
+            )
+            self.verdicts[module] = verdict
+        return verdict
+
+    def note(self, full_name):
+        if full_name not in self.used and len(self.used) < 3:
             self.used.append(full_name)
 
-    def __call__(self, frame, event, arg):
-        if event == "call" and frame.f_back is not None:
-            self._note(frame.f_back, f"{frame.f_globals.get('__name__', '')}.{_qualname(frame.f_code)}")
-        elif event == "c_call":
-            module = getattr(arg, "__module__", None) or ""
-            self._note(frame, f"{module}.{getattr(arg, '__qualname__', '')}")
+    def is_main(self, namespace):
+        return namespace is self.main if self.main is not None else namespace.get("__name__") == "__main__"
+
+    def _check(self, module, qualname, indirect=False):
+        if module == "__main__":
+            if qualname.rpartition(".")[2] in self.own:
+                self.note(f"your {qualname.rpartition('.')[2]}")
+            return
+        full_name = f"{module}.{qualname}"
+        if (full_name + ".").startswith(self.prefixes):
+            self.note(full_name)
+        elif not self.allowed(module) and not (indirect and module.partition(".")[0] in _STDLIB):
+            self.note(full_name)
+
+    def make_hook(self):
+        """The profile function: a closure, so that the events it ignores (most of them) cost little.
+        Each frame's globals are classified once: notebook code, numpy, or anything else."""
+        kinds = {}  # id(globals) -> 1 notebook code, 0 anything else
+        codes, in_c, check, main = self.codes, self.in_c, self._check, self.main
+
+        def kind_of(namespace):
+            name = namespace.get("__name__") or ""
+            if (namespace is main) if main is not None else name == "__main__":
+                kind = 1
+            else:
+                kind = 0
+            kinds[id(namespace)] = kind
+            return kind
+
+        def hook(frame, event, arg):
+            if event == "call":
+                caller = frame.f_back
+                if caller is None:
+                    return
+                namespace = caller.f_globals
+                kind = kinds.get(id(namespace))
+                if kind is None:
+                    kind = kind_of(namespace)
+                if kind == 0 or frame.f_code in codes:
+                    return
+                module = frame.f_globals.get("__name__") or ""
+                if in_c and in_c[-1][0] is caller:  # called back by a C function of notebook code
+                    if in_c[-1][1] is not print:
+                        check(module, _qualname(frame.f_code), True)
+                else:
+                    qualname = _qualname(frame.f_code)
+                    check(module, qualname)
+                    if qualname in _TAKES_CALLBACKS and module.startswith("numpy"):
+                        for value in frame.f_locals.values():  # the function numpy will call back
+                            if callable(value) and not isinstance(value, type):
+                                target = getattr(value, "__func__", value)
+                                check(
+                                    getattr(target, "__module__", None) or "", getattr(target, "__qualname__", ""), True
+                                )
+            elif event == "c_call":
+                namespace = frame.f_globals
+                kind = kinds.get(id(namespace))
+                if kind is None:
+                    kind = kind_of(namespace)
+                if kind == 1:
+                    in_c.append((frame, arg))
+                    module = getattr(arg, "__module__", None)
+                    if module is None:  # a method: it belongs to its object's type's module
+                        module = getattr(type(getattr(arg, "__self__", None)), "__module__", None) or ""
+                    check(module, getattr(arg, "__qualname__", ""))
+            elif in_c and (event == "c_return" or event == "c_exception") and in_c[-1][0] is frame:
+                in_c.pop()
+
+        return hook
 
 
 def _resolve(name):
@@ -155,6 +268,50 @@ def _resolve(name):
     return f"{getattr(target, '__module__', module_name)}.{getattr(target, '__qualname__', attribute)}."
 
 
+def _callable_codes(values, depth=0):
+    """The code objects of the functions among ``values`` (inside lists, tuples and dicts too)."""
+    codes = set()
+    for value in values:
+        if isinstance(value, (list, tuple)) and depth < 2:
+            codes |= _callable_codes(value, depth + 1)
+        elif isinstance(value, dict) and depth < 2:
+            codes |= _callable_codes(value.values(), depth + 1)
+        elif callable(value) and not isinstance(value, (type, np.ndarray)):
+            while isinstance(value, functools.partial):
+                value = value.func
+            for target in (value, getattr(type(value), "__call__", None)):
+                code = getattr(getattr(target, "__func__", target), "__code__", None)
+                if code is not None:
+                    codes.add(code)
+    return codes
+
+
+def _namespace_of(function):
+    """The globals of the notebook code ``function`` is (``None`` when it is not a Python function)."""
+    try:
+        function = inspect.unwrap(function)
+    except ValueError:
+        return None
+    namespace = getattr(getattr(function, "__func__", function), "__globals__", None)
+    return namespace if isinstance(namespace, dict) and namespace.get("__name__") == "__main__" else None
+
+
+class _ImportGuard:
+    """``builtins.__import__`` while a call runs: an import made from notebook code of a module
+    outside the allowance is noted (so the call's result is refused, with the line that names the
+    import, rather than ending in an error that says nothing about the rule); every import goes on."""
+
+    def __init__(self, tracer, original):
+        self.tracer, self.original = tracer, original
+
+    def __call__(self, name, globals=None, locals=None, fromlist=(), level=0):
+        if level == 0 and globals is not None and self.tracer.is_main(globals):
+            names = [f"{name}.{item}" for item in fromlist or () if item != "*"] or [name]
+            if name and not any(self.tracer.allowed(full) for full in [name] + names):
+                self.tracer.note(f"import {name}")  # the call's result is refused; the import goes on
+        return self.original(name, globals, locals, fromlist, level)
+
+
 def watch_call(function, args=(), kwargs=None, forbidden=()):
     """Call ``function(*args, **kwargs)``; return ``(value, Watched)``.
 
@@ -165,26 +322,55 @@ def watch_call(function, args=(), kwargs=None, forbidden=()):
     kwargs : dict, optional
     forbidden : sequence of str
         Modules (``"coursekit.lie"``) and functions (``"scipy.linalg.expm"``) that the exercise must
-        not hand its work to. Only calls made directly from notebook code (the ``__main__`` module)
-        count, so a library that uses them internally is fine.
+        not hand its work to, and ``"allowance:EXERCISE"`` (see :func:`coursekit.contracts.guard_for`):
+        then only what :func:`coursekit.contracts.allowance_for` allows may be called or imported.
+        Only calls made from notebook code (the ``__main__`` module) count, so a library that uses
+        anything internally is fine; functions handed in as arguments are the caller's own.
 
     Exceptions raised by ``function`` propagate unchanged.
     """
     kwargs = dict(kwargs or {})
     before = [snapshot(v) for v in list(args) + list(kwargs.values())]
     seen = Watched()
-    tracer = None
-    if forbidden:
-        tracer = _Tracer(sorted({_resolve(name) for name in forbidden}))
-        sys.setprofile(tracer)
-        threading.setprofile(tracer)
+    tracer = guard = None
+    try:
+        plain = inspect.unwrap(function)
+    except ValueError:  # a cycle of __wrapped__
+        plain = function
+    elsewhere = getattr(getattr(plain, "__func__", plain), "__globals__", {}).get("__name__", "__main__")
+    if forbidden and elsewhere == "__main__":  # a function that is not notebook code has nothing to watch
+        allowance = None
+        names = []
+        for name in forbidden:
+            if str(name).startswith("allowance:"):
+                from .contracts import allowance_for
+
+                allowance = allowance_for(*str(name).split(":")[1:])
+            else:
+                names.append(name)
+        tracer = _Tracer(
+            sorted({_resolve(name) for name in names}),
+            allowance,
+            _callable_codes(list(args) + list(kwargs.values())),
+            _namespace_of(function),
+        )
+        if allowance is not None:
+            guard = _ImportGuard(tracer, builtins.__import__)
+            tracer.codes.add(_ImportGuard.__call__.__code__)
+            builtins.__import__ = guard
+        hook = tracer.make_hook()
+        sys.setprofile(hook)
+        threading.setprofile(hook)
     try:
         value = function(*args, **kwargs)
     finally:
         if tracer is not None:
-            seen.tampered = sys.getprofile() is not tracer
+            seen.tampered = sys.getprofile() is not hook
             sys.setprofile(None)
             threading.setprofile(None)
+            if guard is not None:
+                seen.tampered = seen.tampered or builtins.__import__ is not guard
+                builtins.__import__ = guard.original
             seen.used = list(tracer.used)
         seen.changed = changed_arguments(function, args, kwargs, before)
     return value, seen

@@ -4,8 +4,13 @@
   overwrite ``p``: a later cell that reuses ``p`` would print wrong values.
 - **It is your own implementation.** Where an exercise asks you to write a map
   (``exp_so3``, ``quat_multiply``, ``matrix_to_euler_zyx``), calling the library
-  version of it answers a different question. :data:`FORBIDDEN` lists, per
-  exercise, the library functions that do its job; later lessons use them freely.
+  version of it answers a different question. The rule is an allow-list:
+  :func:`allowance_for` says what an answer may call or import (numpy, math, the
+  small standard helpers, the student's own functions, and the course tools its
+  lesson's text uses); anything else is refused, whatever library it comes from.
+  Within that, :data:`FORBIDDEN` lists the library functions that do the
+  exercise's own job (``coursekit.lie.ExpSE3`` for ``exp_se3`` in lesson 07) and
+  :data:`OWN_FORBIDDEN` the student's other exercises that do it.
 
 :func:`coursekit.watching.watch_call` sees both; the check cells and the
 grader's sandbox use it with this list and say what they saw in the same words
@@ -23,7 +28,16 @@ Examples
 ()
 """
 
-__all__ = ["FORBIDDEN", "forbidden_for", "CHANGED_HINT", "DELEGATED_HINT"]
+__all__ = [
+    "FORBIDDEN",
+    "forbidden_for",
+    "CHANGED_HINT",
+    "DELEGATED_HINT",
+    "Allowance",
+    "allowance_for",
+    "guard_for",
+    "refusal",
+]
 
 SCIPY_ROTATIONS = ("scipy.spatial.transform",)  # Rotation, Slerp, RotationSpline
 MATRIX_FUNCTIONS = ("scipy.linalg.expm", "scipy.linalg.logm", "scipy.linalg.expm_frechet")
@@ -67,12 +81,145 @@ FORBIDDEN = {
     "quat_power": SCIPY_ROTATIONS,
 }
 
-CHANGED_HINT = ("work on a copy, e.g. `p = np.array(p, dtype=float)`, and build the result in a new array; "
-                "`x /= n`, `x[0] = ...` and `x.sort()` change the caller's array")
-DELEGATED_HINT = ("write the exercise with numpy yourself; coursekit.lie and scipy's Rotation are for the "
-                  "later lessons")
+CHANGED_HINT = (
+    "work on a copy, e.g. `p = np.array(p, dtype=float)`, and build the result in a new array; "
+    "`x /= n`, `x[0] = ...` and `x.sort()` change the caller's array"
+)
+DELEGATED_HINT = (
+    "write the exercise with numpy yourself: an answer may call numpy, math, the small standard "
+    "helpers and your own functions, plus the course tools its lesson's text uses (the start "
+    "page says which)"
+)
 
 
 def forbidden_for(exercise):
     """The entries ``exercise`` must not call (a tuple, empty for most exercises)."""
     return FORBIDDEN.get(exercise, ())
+
+
+# What an answer may use: the allow-list. Every call made from notebook code while an exercise runs
+# (and every import it makes) must land in one of these modules, in the student's own notebook code,
+# or in a function the caller handed in as an argument; anything else is refused, whatever library
+# it comes from (scipy, transforms3d, a module of one's own, importlib). Libraries' own internal
+# calls are free. Found by running every reference answer and every correct alternative under a
+# recording tracer and by reading the masters' text: only lessons 06-09 use coursekit.lie in their
+# answers (their setup cells import it), only lesson 09's text uses scipy.
+PLAIN = (
+    "numpy",  # all of it, numpy.linalg and numpy.random included
+    "math",
+    "cmath",
+    "builtins",
+    # small standard helpers an answer may reasonably call; none of them does a rotation's work
+    "functools",
+    "itertools",
+    "operator",
+    "copy",
+    "numbers",
+    "warnings",
+    "collections",
+    "dataclasses",
+    "typing",
+    "abc",
+    "enum",
+    "contextlib",
+    "heapq",
+    "bisect",
+    "fractions",
+    "decimal",
+    "statistics",
+    "string",
+    "re",
+    "types",
+    # the C halves of the same helpers (their methods report these modules)
+    "_operator",
+    "_functools",
+    "_collections",
+    "_collections_abc",
+    "_heapq",
+    "_bisect",
+    "_decimal",
+    "_pydecimal",
+    "_warnings",
+    "_abc",
+    "copyreg",
+)
+LIE_FROM_LESSON = "06"  # lessons 06-09 build on coursekit.lie (FORBIDDEN still keeps each exercise's own job)
+LESSON_EXTRAS = {"09": ("scipy.spatial.transform", "scipy.linalg", "scipy.stats")}  # lesson 09's text uses them
+
+# The student's own functions of other exercises that do this exercise's job (a closed set; any
+# other function of the notebook is the student's own work and free to call).
+OWN_FORBIDDEN = {
+    "axis_from_eigen": ("log_so3", "axis_angle"),  # the axis must come from the eigenvector
+    "quat_power": ("quat_slerp",),  # slerp from 1 to q at t is q^t
+}
+
+
+class Allowance:
+    """What an answer to ``exercise`` (of ``lesson``) may call: ``modules`` (names, each with its
+    submodules), every function of the notebook except those in ``own``."""
+
+    def __init__(self, exercise, lesson, modules, own):
+        self.exercise, self.lesson, self.modules, self.own = exercise, lesson, tuple(modules), tuple(own)
+
+    def describe(self):
+        """The allowance in words, as the feedback line says it."""
+        extra = [name for name in self.modules if name.startswith(("coursekit", "scipy"))]
+        tools = ", ".join(["numpy", "math"] + extra)
+        return f"{tools} and your own functions"
+
+    def __repr__(self):
+        return (
+            f"Allowance({self.exercise!r}, {self.lesson!r}, +{list(self.modules[len(PLAIN) :])}, own-{list(self.own)})"
+        )
+
+
+def allowance_for(exercise, lesson=""):
+    """The :class:`Allowance` of ``exercise`` in ``lesson`` (``"03"``).
+
+    >>> allowance_for("exp_so3", "03").describe()
+    'numpy, math and your own functions'
+    >>> allowance_for("exp_se3", "07").describe()
+    'numpy, math, coursekit.lie and your own functions'
+    """
+    modules = PLAIN
+    if str(lesson) >= LIE_FROM_LESSON:
+        modules += ("coursekit.lie",)
+    modules += LESSON_EXTRAS.get(str(lesson), ())
+    return Allowance(exercise, str(lesson), modules, OWN_FORBIDDEN.get(exercise, ()))
+
+
+def guard_for(exercise, lesson):
+    """What the check cells and the grader hand :func:`coursekit.watching.watch_call` for
+    ``exercise``: its allowance and its :data:`FORBIDDEN` entries.
+
+    >>> guard_for("hat", "03")
+    ('allowance:hat:03', 'coursekit.lie.skew')
+    """
+    return (f"allowance:{exercise}:{lesson}",) + forbidden_for(exercise)
+
+
+def refusal(exercise, used, lesson=""):
+    """The one line a refused answer gets, in the check cell and in the grader's feedback.
+
+    >>> refusal("exp_so3", ["scipy.linalg._matfuncs.expm"], "03")
+    'exp_so3 called scipy.linalg.expm: an answer to exp_so3 may use numpy, math and your own functions (see the start page)'
+    """
+    used = [used] if isinstance(used, str) else list(used)
+    done = ", ".join(_shown(name) for name in used)
+    return (
+        f"{exercise} {done}: an answer to {exercise} may use "
+        f"{allowance_for(exercise, lesson).describe()} (see the start page)"
+    )
+
+
+def _shown(name):
+    """``"scipy.linalg._matfuncs.expm"`` → ``"called scipy.linalg.expm"`` (private modules left out);
+    ``"import scipy"`` → ``"imported scipy"``; ``"your log_so3"`` → ``"called your log_so3"``."""
+    if name.startswith("import "):
+        return "imported " + name[len("import ") :]
+    if name == "sys.setprofile":
+        return "switched the course's watching off (sys.setprofile)"
+    if not name.startswith("your "):
+        parts = name.split(".")
+        name = ".".join([part for part in parts[:-1] if not part.startswith("_")] + parts[-1:])
+    return "called " + name

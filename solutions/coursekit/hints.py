@@ -52,9 +52,12 @@ USE_EXACTLY_KEYS_CLOSURE_HINT = "use exactly the keys closure, identity, inverse
 # ---------------------------------------------------------------- checks/lesson03.py
 AB_BA_BRACKET_DIFFERENCE_HINT = "that is AB + BA: the bracket is the difference AB - BA"
 ANGLE_FORMULA_HINT = "θ must be the rotation angle in radians, in [0, π], accurate at tiny angles and near π alike"
-AXIS_AT_ZERO_ANGLE_HINT = "u = vee(R - Rᵀ)/(2 sin θ) is 0/0 at θ = 0: the axis is arbitrary there, return [1, 0, 0]"
-COEFFICIENTS_SWAPPED_R_I_HINT = "the coefficients are swapped: R = I + sin θ K + (1 - cos θ) K², sin θ goes with K"
-COMPARE_ENTRY_ENTRY_W3_HINT = "compare entry by entry with [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]]"
+AXIS_AT_ZERO_ANGLE_HINT = ("the axis read off R - Rᵀ divides by sin θ, 0/0 at θ = 0: the axis is arbitrary there, "
+                           "return [1, 0, 0]")
+COEFFICIENTS_SWAPPED_R_I_HINT = ("the coefficients are swapped: the K term and the K² term carry each other's "
+                                 "coefficient; compare them with Rodrigues' formula on the page, term by term")
+COMPARE_ENTRY_ENTRY_W3_HINT = ("compare entry by entry with the matrix [w]× on the page: check which component "
+                               "of w sits in each off-diagonal entry, and its sign")
 DEGREES_VALUE_RADIANS_COURSE_HINT = "θ is in degrees (57.3 × the value in radians): the course works in radians"
 ENTRYWISE_POWER_HINT = "W ** k is an entry-wise power: use the matrix product (term = term @ W / k)"
 FACTORIAL_MISSING_HINT = "the 1/k! is missing: the terms are W^k / k! (term = term @ W / k)"
@@ -64,8 +67,8 @@ LOG_FORMULA_HINT = ("w must satisfy exp(w) = R with |w| in [0, π]: check the ax
                     "and the sense of the turn")
 LOG_OFF_NEAR_TAKE_HINT = ("the log is off near π, where sin θ → 0 and R - Rᵀ no longer knows the axis: section 5 says "
                           "which part of R still holds it there, and the turn's sense must come out right too")
-MINUS_SIGNS_MISSING_SYMMETRIC_HINT = ("the minus signs are missing (a symmetric matrix): [w]× = [[0, -w3, w2], [w3, "
-                                      "0, -w1], [-w2, w1, 0]]")
+MINUS_SIGNS_MISSING_SYMMETRIC_HINT = ("the minus signs are missing (a symmetric matrix): [w]× is antisymmetric, "
+                                      "each entry above the diagonal is minus its mirror below it")
 NAN_AT_ZERO_ANGLE_HINT = ("NaN or inf at θ = 0: θ/sin θ is 0/0 there; tiny angles need a branch that divides by "
                           "nothing that vanishes, as exact as the closed form (relative error 1e-10)")
 NAN_NEAR_PI_HINT = ("NaN or inf near θ = π, where sin θ → 0: the log needs a branch there that does not divide by "
@@ -75,19 +78,22 @@ NP_LINALG_EIGH_ASSUMES_HINT = ("np.linalg.eigh assumes a symmetric matrix (it re
 ONE_TERM_TOO_FEW_HINT = "one term too few: n_terms terms means k = 0 … n_terms - 1"
 ONE_TERM_TOO_MANY_HINT = "one term too many: n_terms terms means k = 0 … n_terms - 1"
 ONLY_AB_BRACKET_SUBTRACTS_HINT = "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
-OPPOSITE_ROTATION_CHECK_SIGN_HINT = ("the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u "
-                                     "points along u)")
+OPPOSITE_ROTATION_CHECK_SIGN_HINT = ("the opposite rotation: check the sign of the axis (Exp of your answer turns "
+                                     "the other way than R; the order of R and Rᵀ in R - Rᵀ decides it)")
 RETURNED_ZERO_TINY_ROTATION_HINT = ("returned zero for a tiny rotation: arccos rounds tiny angles to 0, so the angle "
                                     "must come from numbers that keep it")
-RODRIGUES_FORMULA_HINT = "R = I + sin θ K + (1 - cos θ) K² with K = [w/θ]× and θ = |w|"
+RODRIGUES_FORMULA_HINT = ("not a turn by |w| about w/|w|: compare your matrix with Rodrigues' formula on the page, "
+                          "term by term, at a simple w such as [0, 0, π/2]")
 RODRIGUES_FORMULA_NEEDS_UNIT_HINT = ("Rodrigues' formula needs the unit axis: K = [w/θ]×, not [w]× (θ = |w| is in sin "
                                      "θ and cos θ)")
 ROW_EIGENVECTOR_MATRIX_EIGENVECTORS_HINT = ("that is a row of the eigenvector matrix: eigenvectors are its columns, "
                                             "vectors[:, k]")
 SUM_TERMS_W_K_HINT = "sum the terms W^k / k! for k = 0 … n_terms - 1, with matrix products"
 SVD_NULL_SPACE_R_HINT = "that is the SVD null space of R, but R is invertible: the axis spans the null space of R - I"
-TWICE_ROTATION_VECTOR_VEE_HINT = "twice the rotation vector: vee(R - Rᵀ) = 2 sin θ u, so the factor is θ/(2 sin θ)"
-U_POINTS_WRONG_WAY_HINT = "u points the wrong way: vee(R - Rᵀ)/2 = sin θ u points along +u"
+TWICE_ROTATION_VECTOR_VEE_HINT = ("twice the rotation vector: every component is doubled; check the factor that turns "
+                                  "vee(R - Rᵀ) into θ u on a quarter turn about z")
+U_POINTS_WRONG_WAY_HINT = ("u points the wrong way: R turns by +θ about your -u; the order of R and Rᵀ in R - Rᵀ "
+                           "decides the sign")
 W_SITS_DIAGONAL_W_HINT = "w sits on the diagonal: [w]× has zeros there and w in the off-diagonal entries"
 AXIS_AT_HALF_TURN_HINT = ("at θ = π, R - Rᵀ is zero up to rounding and carries no axis: section 5 says which part "
                           "of R still does")
@@ -174,33 +180,35 @@ YAW_ROLL_SWAPPED_YAW_HINT = "yaw and roll are swapped: yaw turns about z, roll a
 COLUMNS_GO_ORDER_RATES_HINT = "the columns go in the order of the rates: [yaw_rate, pitch_rate, roll_rate]"
 
 # ---------------------------------------------------------------- checks/lesson06.py
-AXIS_TIMES_SIN_VEE_HINT = ("that is the axis times sin θ (the vee of R_bᵀ R_a - I), right only to first order: take "
-                           "Log(R_bᵀ R_a), whose length is the angle θ itself")
+AXIS_TIMES_SIN_VEE_HINT = ("that is the axis times sin θ, right only to first order: the difference needs the "
+                           "Log of the relative rotation, whose length is the angle θ itself")
 CLOSED_FORM_LOSES_DIGITS_HINT = ("the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, "
-                                 "so (1 - cos θ)/θ² comes out 0 instead of 1/2): below a threshold use the Taylor "
-                                 "series of each coefficient, with its θ² term")
+                                 "so a coefficient with it comes out 0 instead of its limit): below a threshold use "
+                                 "the Taylor series of each coefficient, with its θ² term")
 CLOSED_FORM_USE_TAYLOR_HINT = "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle"
-COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT = ("the coefficients are swapped: the one in front of [w]× starts at 1/2 and the "
-                                            "one in front of [w]×² at 1/6, as the series Σ (-[w]×)^k/(k+1)! says")
+COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT = ("the coefficients are swapped: [w]× and [w]×² carry each other's; "
+                                            "compare their limits at θ → 0 with the first terms of your series")
 FACTORS_WRONG_ORDER_R_HINT = ("the factors are in the wrong order: in R Exp(δ) p the turn δ acts on the body point "
                               "first, and R then carries the result into the world")
-FIRST_ORDER_PART_ONLY_HINT = ("that is I + [w]×/2, only the first-order part: add the [w]×² term with the coefficient 1/θ² - "
-                       "(1 + cos θ)/(2θ sin θ)")
+FIRST_ORDER_PART_ONLY_HINT = ("that is I + [w]×/2, only the first-order part: the [w]×² term of the formula on the "
+                              "page is missing")
 JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT = "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
 ROTATED_POINT_SIGN_FLIPPED_HINT = "the sign is flipped: turning δ × p round to put δ on the right changes its sign"
 ROTATED_POINT_R_MISSING_HINT = "R is missing: the point turns in the body frame, and R carries the result into the world"
+LEFT_DIFFERENCE_STEP_RIGHT_HINT = "that is the left difference Log(R_a R_bᵀ); the step goes on the right, R_b Exp(δ) = R_a"
 LEFT_JACOBIAN_OF_ROTATED_POINT_HINT = ("that is -[R p]×, the Jacobian of the left perturbation Exp(δ) R p; here δ turns "
                                        "the body about its own axes, R Exp(δ) p")
 LEFT_QUAT_PERTURBATION_HINT = "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the right: q ⊗ Exp_q(δ)"
 LEFT_UPDATE_IS_A_ROTATION_HINT = "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"
-LOGS_DO_NOT_SUBTRACT_HINT = ("that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not commute); the "
-                    "difference is Log(R_bᵀ R_a)")
+LOGS_DO_NOT_SUBTRACT_HINT = ("that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not "
+                             "commute); take the Log of the relative rotation from R_b to R_a")
 Q_WITHOUT_NORMALISING_NORM_HINT = ("that is q ⊗ [1, δ/2] without normalising: its norm is √(1 + |δ|²/4), not 1; use "
-                                   "the exact Exp_q(δ) = [cos(|δ|/2), sin(|δ|/2) δ/|δ|]")
+                                   "the exact quaternion exponential of the page")
 RETURNED_SHAPE_F_R3_HINT = "returned shape 3×2 for f: R³ → R²: the Jacobian is transposed"
 RIGHT_JACOBIAN_FORMULA_HINT = ("Jr must satisfy Exp(w + dw) ≈ Exp(w) Exp(Jr dw): check your closed form against the "
-                               "series Σ (-[w]×)^k/(k+1)! and a numerical Jacobian of dw ↦ Log(Exp(w)ᵀ Exp(w + dw))")
-RIGHT_JACOBIAN_INVERSE_FORMULA_HINT = "Jr⁻¹ = I + [w]×/2 + (1/θ² - (1 + cos θ)/(2θ sin θ)) [w]×²"
+                               "first terms of your series and a numerical Jacobian of dw ↦ Log(Exp(w)ᵀ Exp(w + dw))")
+RIGHT_JACOBIAN_INVERSE_FORMULA_HINT = ("Jr(w) times your Jr⁻¹(w) is not I: compare each term with the formula on "
+                                       "the page")
 RIGHT_UPDATE_IS_A_ROTATION_HINT = "Exp(δ) is a rotation and so is R @ Exp(δ): build the result from it"
 ROW_I_OUTPUT_F_HINT = "row i is output f_i, column j is input x_j: shape (len(f(x)), n)"
 ROW_I_OUTPUT_F_I_HINT = "row i is output f_i, column j is the direction δ_j: that is the transpose of the Jacobian"
@@ -213,9 +221,10 @@ TURNED_TWICE_FAR_QUATERNION_HINT = "turned twice as far: a quaternion holds the 
 USE_BELOW_TINY_ANGLE_HINT = "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle"
 
 # ---------------------------------------------------------------- checks/lesson06_point_to_body.py
-LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("Rᵀ [p_w]× belongs to the left perturbation Exp(δ) R, a turn about the "
+LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("that Jacobian belongs to the left perturbation Exp(δ) R, a turn about the "
                                          "world's axes; here δ turns the body about its own axes, R Exp(δ)")
-POINT_SEEN_BODY_RT_HINT = "the point seen from the body is Rᵀ p_w, not p_w: R belongs in the answer"
+POINT_SEEN_BODY_RT_HINT = ("your J does not change with R, but the point seen from the body does: R belongs in the "
+                           "answer")
 POINT_TO_BODY_SIGN_HINT = ("the sign is flipped: J is the negative of the finite differences; a transpose "
                            "reverses a small turn, and moving δ to the other side of a cross product changes its sign")
 
@@ -246,16 +255,16 @@ KEPT_T_UNCHANGED_INVERSE_HINT = "kept t unchanged: the inverse must undo the shi
 MULTIPLIED_LAST_COORDINATE_DIVIDE_HINT = "multiplied by the last coordinate: divide by it, [x/w, y/w, z/w]"
 ROTATION_BLOCK_INVERSE_RT_HINT = ("the rotation block of the inverse is still R: T_ba T_ab must have the identity "
                                   "as its rotation block, so the inverse must undo the turn")
-SERIES_VALUE_AT_ZERO_ONLY_HINT = ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use c(θ) = (1 - (θ/2) "
-                           "cot(θ/2))/θ², below it the series 1/12 + θ²/720 + θ⁴/30240")
-SMALL_ANGLE_SERIES_HINT = ("below θ = 1e-2 use the series c = 1/12 + θ²/720 + θ⁴/30240: the closed form is 0/0 at θ = "
-                           "0 and cancels catastrophically just above it")
+SERIES_VALUE_AT_ZERO_ONLY_HINT = ("c(θ) = 1/12 is only its value at θ = 0: above θ = 1e-2 use the closed form of "
+                                  "c(θ), below it the series with its θ² and θ⁴ terms (both on the page)")
+SMALL_ANGLE_SERIES_HINT = ("below θ = 1e-2 use the series c = 1/12 + … of the page, with its θ² and θ⁴ terms: the "
+                           "closed form is 0/0 at θ = 0 and cancels catastrophically just above it")
 TRANSFORM_ROWS_FORMULA_HINT = "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t"
 TRANSPOSES_T_AB_T_HINT = "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"
 INVERSE_TRANSLATION_FRAME_HINT = ("the rotation block is right, but the translation -t is written in the wrong "
                                   "frame's axes: check T_ba (T_ab p) = p for a point p")
 V_SERIES_TINY_ANGLE_HINT = ("below θ = 1e-2 use the Taylor series of V's two coefficients, each with its θ² term: "
-                            "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not 1/2")
+                            "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not its limit")
 ADJOINT_COUPLING_WITHOUT_R_HINT = ("the coupling block does not depend on R: conjugating by T turns the spin phi as "
                                    "well as shifting it; compare that block with T ξ^ T⁻¹")
 
@@ -285,6 +294,7 @@ WEIGHT_RATIOS_HINT = "only the ratios of the weights matter: scaling every weigh
 # ---------------------------------------------------------------- checks/lesson09.py
 CONVERT_INPUTS_NP_ASARRAY_HINT = "convert the inputs with np.asarray(..., dtype=float)"
 COVARIANCE_TAKES_LINEAR_MAP_HINT = "a covariance takes the linear map on both sides: Cov(A ε) = A Σ Aᵀ"
+LEFT_TO_RIGHT_WITH_ADJOINT_HINT = "write Exp(ε_L) R as R Exp(A ε_L) with the adjoint, then Cov(A ε_L) = A Σ_L Aᵀ"
 MINIMISES_SQUARED_COST_LEAST_HINT = ("that minimises the squared cost (least squares): the Huber cost counts "
                                      "residuals above k linearly, so large residuals must pull less")
 QUAT_POWER_FORMULA_HINT = "q^t = Exp_q(t Log_q q): read α in [0, π] and the unit axis u off q, then apply the definition"

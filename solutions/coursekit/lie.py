@@ -128,8 +128,8 @@ def JrSE3(xi):
     """The right Jacobian of SE(3) at the twist ``xi = [rho, phi]``, shape (6, 6).
 
     Defined by Exp(ξ + dξ) ≈ Exp(ξ) Exp(J_r(ξ) dξ) for small dξ; it equals
-    ∫₀¹ Ad(Exp(-s ξ)) ds, the series Σ (-ad_ξ)^k / (k+1)!, read here off scipy's matrix
-    exponential of a 12×12 block matrix [[-ad_ξ, I], [0, 0]] (no closed form is written out).
+    ∫₀¹ Ad(Exp(-s ξ)) ds (lesson 07), computed here with scipy's matrix exponential
+    (no closed form is written out).
     Its inverse is the Jacobian of Log: Log(Exp(ξ) Exp(δ)) ≈ ξ + J_r(ξ)⁻¹ δ.
 
     Examples

@@ -248,6 +248,10 @@ class Worker:
             notes["changed"] = seen.changed
         if seen.used or seen.tampered:
             notes["delegated"] = seen.used + (["sys.setprofile"] if seen.tampered else [])
+            if any(str(name).startswith("allowance:") for name in forbidden):  # the one line (coursekit.contracts)
+                from coursekit.contracts import refusal
+
+                notes["refusal"] = refusal(call["name"], notes["delegated"], call["lesson"])
         return True, value, notes
 
     def do_call(self, request: dict) -> None:

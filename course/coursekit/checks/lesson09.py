@@ -138,9 +138,13 @@ COV_POINT_LEFT = np.array([[0.29, -0.07, 0.18], [-0.07, 0.17, -0.12], [0.18, -0.
 COV_POINT_TURNED_SIGMA = np.array([[0.01, 0.0, 0.02], [0.0, 0.04, 0.01], [0.02, 0.01, 0.09]])
 COV_POINT_ONE_SIDED = np.array([[0.07, -0.07, -0.02], [-0.01, -0.13, -0.04], [0.04, 0.03, 0.01]])
 COV_POINT_TRANSPOSED = np.array([[0.17, -0.12, -0.07], [-0.12, 0.15, 0.18], [-0.07, 0.18, 0.29]])
-COV_NO_R_HINT = "that is [p]× Σ [p]×ᵀ, the covariance in the body frame: the world point is R p, so J = -R [p]×"
+COV_NO_R_HINT = (
+    "that is [p]× Σ [p]×ᵀ, the covariance in the body frame: the world point is R p, so R belongs in J (the "
+    "Jacobian of R p that you derived in lesson 06)"
+)
 COV_LEFT_HINT = (
-    "[R p]× Σ [R p]×ᵀ treats ε as a world-frame (left) perturbation; here R Exp(ε): J = -R [p]×, Σ_y = J Σ Jᵀ"
+    "[R p]× Σ [R p]×ᵀ treats ε as a world-frame (left) perturbation; here R Exp(ε): J is lesson 06's Jacobian of "
+    "the right perturbation, Σ_y = J Σ Jᵀ"
 )
 COV_TURNED_HINT = "R Σ Rᵀ is the covariance of the turn R ε, not of the point: propagate with the point's Jacobian"
 COV_ONE_SIDED_HINT = "a covariance takes the Jacobian on both sides: Σ_y = J Σ Jᵀ (J Σ alone is not even symmetric)"
@@ -223,7 +227,7 @@ def _(covariance_left_to_right):
         raise Mismatch(
             f"got {fmt(got)}, expected {fmt(COV_RIGHT)} ({off_by(got, COV_RIGHT)})",
             first_match(got, COV_RIGHT_SLIPS, 1e-12)
-            or "write Exp(ε_L) R as R Exp(A ε_L) with the adjoint, then Cov(A ε_L) = A Σ_L Aᵀ",
+            or hints.LEFT_TO_RIGHT_WITH_ADJOINT_HINT,
         )
 
 
@@ -268,8 +272,8 @@ def _gn_pose_hint(align_pose_gauss_newton, got, T0, iters):
             and _pose_cost(from_identity, BOARD, BOARD_SEEN) < _pose_cost(np.eye(4), BOARD, BOARD_SEEN)
         ):
             return (
-                "a step from T0 = I lowers the cost but a step from a turned pose raises it: J_i = "
-                "[R, -R [p_i]×] goes with the update on the same side, T ← T Exp(xi)"
+                "a step from T0 = I lowers the cost but a step from a turned pose raises it: the right Jacobian of "
+                "lesson 07 (jacobian_transform_point) goes with the update on the same side, T ← T Exp(xi)"
             )
         return "steps uphill (the cost went up): xi solves H xi = -g (mind the minus sign)"
     if iters > 1:
@@ -279,7 +283,10 @@ def _gn_pose_hint(align_pose_gauss_newton, got, T0, iters):
             once = None
         if once is not None and once.shape == got.shape and np.max(np.abs(once - got)) <= 1e-12:
             return f"that is one Gauss-Newton step, whatever iters says: repeat the update iters times (here {iters})"
-    return "check that the Jacobian and the update are on the same side: J_i = [R, -R [p_i]×] goes with T ← T Exp(xi)"
+    return (
+        "check that the Jacobian and the update are on the same side: lesson 07's jacobian_transform_point goes "
+        "with T ← T Exp(xi)"
+    )
 
 
 @public_check("align_pose_gauss_newton", "recovers a quarter turn and a shift from exact pairs, starting at T0 = I")

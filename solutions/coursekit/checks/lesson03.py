@@ -307,7 +307,7 @@ def _exp_hint(got, w, slips):
     if angle > 0.0 and np.array_equal(got, np.eye(3)):
         return f"returned exactly I: the turn of {angle:.3g} rad was dropped; use the Taylor coefficients, never return I"
     if explains(got, expected.T, expected):
-        return "got the inverse rotation: check the sign of the sin θ term, R = I + sin θ K + ..."
+        return "got the inverse rotation: check the sign of the sin θ term against the page"
     if explains(got, slips["swapped"], expected):
         return hints.COEFFICIENTS_SWAPPED_R_I_HINT
     if explains(got, slips["unnormalised"], expected):
@@ -345,8 +345,8 @@ def _(exp_so3):
         error = float(np.max(np.abs(once @ once - twice)))
         if error > 1e-14:
             raise Mismatch(f"exp_so3(w) @ exp_so3(w) differs from exp_so3(2w) by {error:.2g} at θ = {0.97 * 10.0 ** -k:.2g}",
-                           "a series used up to a small angle must stay exact there: sin θ/θ ≈ 1 - θ²/6 and "
-                           "(1 - cos θ)/θ² ≈ 1/2 - θ²/24 below about 1e-4, the closed form above")
+                           "a series used up to a small angle must stay exact there: below about 1e-4 keep each "
+                           "coefficient's θ² term as well as its limit, the closed form above")
 
 
 @public_check("exp_so3", "w = 0 gives I, and a tiny turn (1e-8 rad) is not lost")
@@ -354,7 +354,7 @@ def _(exp_so3):
     got = require_shape(exp_so3([0.0, 0.0, 0.0]), (3, 3))
     if not close(got, np.eye(3), 1e-15):
         raise Mismatch(f"exp_so3(0) is not the identity ({off_by(got, np.eye(3))})",
-                       "at θ = 0 use the limits sin θ/θ → 1, (1 - cos θ)/θ² → 1/2")
+                       "at θ = 0 the coefficients are 0/0: use their limits (the page gives them)")
     w = [0.0, 0.0, 1e-8]
     got = require_shape(exp_so3(w), (3, 3))
     if not close(got, _rot_z(1e-8), 1e-15):

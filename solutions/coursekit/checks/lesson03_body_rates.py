@@ -61,7 +61,7 @@ def _(body_angular_velocity):
 # A generic attitude and body rate (every component non-zero and different), so that every entry of Ṙ counts.
 GENERIC_R = Exp([0.4, -1.1, 0.7])
 GENERIC_RATE = np.array([0.3, -0.5, 0.8])
-GENERIC_R_DOT = GENERIC_R @ np.array([[0.0, -0.8, -0.5], [0.8, 0.0, -0.3], [0.5, 0.3, 0.0]])   # R [ω_b]×
+GENERIC_R_DOT = GENERIC_R @ np.array([[0.0, -0.8, -0.5], [0.8, 0.0, -0.3], [0.5, 0.3, 0.0]])   # ω_b = (0.3, -0.5, 0.8)
 
 
 @public_check("body_angular_velocity", "recovers a generic body rate (0.3, -0.5, 0.8) rad/s at a generic attitude, "

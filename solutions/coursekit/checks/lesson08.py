@@ -120,8 +120,8 @@ def _gn_hint(align_gauss_newton, got, R0, iters):
         if once is not None and once.shape == got.shape and np.max(np.abs(once - got)) <= 1e-12:
             return (f"that is one Gauss-Newton step, whatever iters says: repeat the update iters times "
                     f"(here {iters})")
-    return ("check that the Jacobian and the update are on the same side: J_i = -R [p_i]× goes with "
-            "R ← R Exp(δ); the left Jacobian -[R p_i]× with that update mixes two conventions")
+    return ("check that the Jacobian and the update are on the same side: the left Jacobian -[R p_i]× with the "
+            "update R ← R Exp(δ) mixes two conventions; that update needs lesson 06's right-perturbation Jacobian")
 
 
 @public_check("align_gauss_newton", "finds a quarter turn about z from R0 = I with exact data")
