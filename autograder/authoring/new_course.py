@@ -50,7 +50,15 @@ TEMPLATE_SUFFIX = ".tmpl"  # stripped on copy: course_template/hidden/test_01_*.
 TEMPLATE_LAYOUT = "layout.toml"  # written as DIR/<LAYOUT_FILE>
 # The modules of coursekit that any course uses unchanged. They import nothing course-specific but
 # .contracts (every course writes its own) and each other.
-GENERIC_MODULES = ("checking.py", "watching.py", "handin.py", "display.py", "stubs.py", "checks/__init__.py")
+GENERIC_MODULES = (
+    "checking.py",
+    "watching.py",
+    "handin.py",
+    "display.py",
+    "stubs.py",
+    "exercise_contracts.py",  # without the course's exercise_contracts.json it checks nothing
+    "checks/__init__.py",
+)
 SETUP = "import numpy as np\nfrom coursekit import check, show"
 
 
