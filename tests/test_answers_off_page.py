@@ -11,7 +11,8 @@ code that would hand its result away. Here:
   stubs' docstrings, outputs), every public check module and ``coursekit/hints.py`` (their whole text: hints
   ship with them), the prose of every other shipped ``coursekit`` module (docstrings, comments and string
   literals; a function body's code may compute a result that a later lesson uses, as ``coursekit.lie.Exp``
-  computes lesson 03's, because a formula in code is not a derivation on the page) and the strings of the
+  computes lesson 03's with scipy, but never writes a thinking exercise's answer out: the large expressions of the
+  reference answers are looked for, whatever their variables are called) and the strings of the
   hidden tests (their failure reasons and hints reach the student). Whitespace is ignored on both sides; the
   few matches that are the same symbols meaning something else are listed, with the reason, in
   :data:`UNRELATED`;
@@ -222,6 +223,55 @@ def test_the_answer_is_off_every_page_of_the_course(exercise):
         f"{exercise.name} (lesson {exercise.lesson}, {exercise.kind}) is given away elsewhere in the course: "
         f"{found}. Refer back to the lesson (or call the student's function), move the statement into a "
         "reader-only cell, or make the hint name what failed and where."
+    )
+
+
+MIN_CODE_NODES = 25  # an expression this large is a formula, not a common idiom such as np.linalg.norm(a - b)
+
+
+class _AnonymousNames(ast.NodeTransformer):
+    def visit_Name(self, node):
+        return ast.Name(id="_", ctx=ast.Load())
+
+
+def _formulas(source: str) -> dict[str, str]:
+    """The large expressions of ``source`` with every variable renamed alike: ``{shape: code}``."""
+    import copy
+
+    found = {}
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.expr) and sum(not isinstance(n, ast.expr_context) for n in ast.walk(node)) >= (
+            MIN_CODE_NODES
+        ):
+            found.setdefault(ast.dump(_AnonymousNames().visit(copy.deepcopy(node))), ast.unparse(node))
+    return found
+
+
+def test_no_thinking_answer_is_written_out_in_shipped_code():
+    """The code of every shipped ``coursekit`` module (what a curious student opens) holds no large expression of
+    a derive, design or diagnose answer, whatever its variables are called: ``R(q)`` written out entry by entry
+    in a simulator is lesson 04's ``quat_to_matrix``. Expressions that a transcribe or assemble answer also has
+    are tools (``vee``'s three differences), not results."""
+    from autograder.lessons.reference import answer_sources
+
+    answers = answer_sources(SOLUTIONS)
+    tools = {}
+    for exercise in CATALOG.exercises:
+        if exercise.kind not in THINKING_KINDS:
+            tools.update(_formulas(answers[exercise.name]))
+    shipped = {
+        str(path.relative_to(COURSE)): _formulas(path.read_text(encoding="utf-8"))
+        for path in sorted((COURSE / "coursekit").rglob("*.py"))
+    }
+    found = [
+        f"{exercise.name}: {shipped[where][shape][:100]} in {where}"
+        for exercise in THINKING
+        for shape in _formulas(answers[exercise.name]).keys() - tools.keys()
+        for where in shipped
+        if shape in shipped[where]
+    ]
+    assert not found, "answers written out in shipped code (compute them another way, e.g. with scipy):\n" + (
+        "\n".join(found)
     )
 
 

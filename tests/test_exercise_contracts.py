@@ -106,6 +106,13 @@ WRONG = {
         "def rotate_point(R_wb, p_b):\n    return (R_wb @ p_b.T).T + 0.0\n",
         "with nested lists as input",
     ),
+    "writes into its argument": (  # harmless on the values (times 1), caught only because the wire keeps read-only
+        "def rotate_point(R_wb, p_b):\n"
+        "    p = np.asarray(p_b, dtype=float)\n"
+        "    p *= 1.0\n"
+        "    return p @ np.asarray(R_wb, dtype=float).T\n",
+        "writes into an argument",
+    ),
     "returns nested lists": (
         "def rotate_point(R_wb, p_b):\n"
         "    return (np.asarray(p_b, dtype=float) @ np.asarray(R_wb, dtype=float).T).tolist()\n",
@@ -220,3 +227,29 @@ def test_lists_for_arrays_is_one_switch(monkeypatch):
     assert "returned a list" in reason and "numpy array" in hint
     monkeypatch.setattr(exercise_contracts, "LISTS_FOR_ARRAYS", True)
     assert exercise_contracts.contract_problem("rotate_point", rotate_point) is None
+
+
+def test_a_branch_for_a_special_rotation_keeps_the_contract_too():
+    """The identity and half turns are sampled as well: a small-angle branch that returns a list is caught there,
+    and a correct answer with such branches keeps the contract."""
+    import numpy as np
+
+    from coursekit.exercise_contracts import contract_problem, sample_sets
+
+    regimes = [regime for regime, _ in sample_sets("log_so3")]
+    assert regimes[0] == "quarter turns" and {"the identity", "half turns", "a 53° turn"} <= set(regimes)
+
+    def log_so3(R, lists_at_zero=False):
+        R = np.array(R, dtype=float)
+        theta = np.arccos(np.clip((np.trace(R) - 1) / 2, -1.0, 1.0))
+        if theta < 1e-8:
+            return [0.0, 0.0, 0.0] if lists_at_zero else np.zeros(3)
+        if np.pi - theta < 1e-6:
+            B = (R + np.eye(3)) / 2
+            k = int(np.argmax(np.diag(B)))
+            return theta * B[:, k] / np.linalg.norm(B[:, k])
+        return theta / (2 * np.sin(theta)) * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+
+    assert contract_problem("log_so3", log_so3) is None
+    reason, hint = contract_problem("log_so3", lambda R: log_so3(R, lists_at_zero=True))
+    assert "at the identity" in reason and "returned a list" in reason, reason

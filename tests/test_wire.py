@@ -87,3 +87,21 @@ def test_decoded_arrays_are_independent_copies():
     a, b = loads(text), loads(text)
     a[0] = 5.0
     assert b[0] == 1.0 and a.flags.writeable
+
+
+def test_a_read_only_array_arrives_read_only_and_a_writeable_one_writeable():
+    """The hidden suite's read-only form reaches the student's function as it was sent: a write raises there."""
+    frozen = np.arange(3.0)
+    frozen.flags.writeable = False
+    received = loads(dumps({"frozen": frozen, "free": np.arange(3.0)}))
+    assert not received["frozen"].flags.writeable and received["free"].flags.writeable
+    assert np.array_equal(received["frozen"], frozen)
+    with pytest.raises(ValueError, match="read-only"):
+        received["frozen"][0] = 1.0
+
+
+def test_the_read_only_flag_is_strict():
+    data = encode(np.ones(2))
+    data["read_only"] = "yes"
+    with pytest.raises(WireError):
+        decode(data)

@@ -67,6 +67,15 @@ HINTS = {
 CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its arguments in place
 
 
+def _crash_hint(message):
+    """The graded course's hint for a known crash (:func:`coursekit.diagnose.crash_hint`), or ""."""
+    try:
+        from coursekit.diagnose import crash_hint
+    except ImportError:  # a course whose coursekit has no such helper
+        return ""
+    return crash_hint(message)
+
+
 def _contracts():
     """The graded course's ``coursekit.contracts`` (which library calls each exercise must not hand its
     work to, and the two contract hints); the course put its coursekit on ``sys.path``
@@ -170,6 +179,8 @@ def _explain(error):
         return _first_line(error.reason), _first_line(error.hint)
     if isinstance(error, StudentError):
         hint = _contracts().DELEGATED_HINT if error.kind == "delegated" else HINTS.get(error.kind, "")
+        if error.kind == "exception":
+            hint = _crash_hint(error.message) or hint
         return _first_line(error.message), hint
     if isinstance(error, AssertionError):
         return _first_line(str(error).splitlines()[0] if str(error) else "a check failed"), ""

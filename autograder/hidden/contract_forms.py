@@ -1,13 +1,13 @@
 """Hidden checks generated from each exercise's contract (``coursekit/exercise_contracts.json``, issue #43).
 
 For every exercise with array parameters (:func:`coursekit.exercise_contracts.covered`), one check calls the
-student's function with float arrays (the baseline), nested lists, tuples and integer arrays of small
-integer-valued samples; each result must equal the baseline's and have the exact type, dtype and shape the
-docstring promises. It counts only when it fails, and then costs :data:`SHARE` of the exercise
-(``suite.weigh_shares``): an answer that misses the exercise's point earns nothing more for keeping the contract.
-It is the public check's line, graded: :func:`coursekit.exercise_contracts.contract_problem` makes the same calls.
-Read-only arrays are not sent: the sandbox rebuilds every array it receives (writeable), and a write into an
-argument is already graded by the sandbox's watch (``leaves its arguments unchanged``).
+student's function with float arrays (the baseline), nested lists, tuples, integer arrays and read-only arrays of
+small integer-valued samples; each result must equal the baseline's and have the exact type, dtype and shape the
+docstring promises, and no argument may be written into (the wire keeps an array read-only, so a write raises in
+the sandbox as it would in the student's notebook). It counts only when it fails, and then costs :data:`SHARE` of
+the exercise (``suite.weigh_shares``): an answer that misses the exercise's point earns nothing more for keeping
+the contract. It is the public check's line, graded: :func:`coursekit.exercise_contracts.contract_problem` makes
+the same calls.
 
 Each ``test_NN_contracts.py`` holds lesson NN's checks: ``test_contract = contract_tests("NN")``.
 """
@@ -19,7 +19,6 @@ from coursekit.exercise_contracts import FORMS, contract_of, contract_problem, c
 from .helpers import Wrong
 
 SHARE = 0.2  # of the exercise's points, lost when the check fails; a passed check is left out of the grade
-HIDDEN_FORMS = tuple(form for form in FORMS if form != "read-only arrays")
 
 
 def exercises_of(lesson):
@@ -39,9 +38,9 @@ def contract_tests(lesson):
         "name", [pytest.param(n, marks=pytest.mark.exercise(name=n, weight=0.0, share=SHARE), id=n) for n in names]
     )
     def test_contract(student, name):
-        """keeps its docstring's contract with lists, tuples and integer arrays as input (type, dtype, shape)"""
+        """keeps its docstring's contract with lists, tuples, integer and read-only arrays as input (type, dtype, shape)"""
         assert contract_of(name) is not None
-        problem = contract_problem(name, getattr(student, name), forms=HIDDEN_FORMS, reraise=(StudentError,))
+        problem = contract_problem(name, getattr(student, name), forms=FORMS, reraise=(StudentError,))
         if problem is not None:
             raise Wrong(*problem)
 

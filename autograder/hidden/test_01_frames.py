@@ -20,7 +20,13 @@ from scipy.spatial.transform import Rotation
 
 from coursekit import hints
 from coursekit.checks import tolerance
-from coursekit.checks.lesson01 import NOT_A_MATRIX_HINT, SQUARE_BATCH_HINT
+from coursekit.checks.lesson01 import (
+    EXACT_ROTATION_HINT,
+    NOT_A_MATRIX_HINT,
+    QUARTER_TURN_X,
+    QUARTER_TURN_Z,
+    SQUARE_BATCH_HINT,
+)
 from coursekit.diagnose import FLOAT32_HINT, SERIES_HINT, close, float32_rounding
 
 from autograder.sandbox.session import StudentError
@@ -329,15 +335,14 @@ def _accepted_hint(M, tol=TOL):
 
 @exercise("is_rotation_matrix", weight=2)
 def test_is_rotation_matrix_accepts_rotations(student):
-    """accepts 20 random rotations, the identity and a 2D rotation"""
-    candidates = list(random_rotations(20, seed=121)) + [np.eye(3), _rot2d(0.4)]
+    """accepts the identity, exact quarter turns, 20 random rotations and a 2D rotation"""
+    exact = [np.eye(3), QUARTER_TURN_Z, QUARTER_TURN_X]  # first: rejecting these is not about rounding
+    candidates = exact + list(random_rotations(20, seed=121)) + [_rot2d(0.4)]
+    rounding = "compare with a tolerance: rounding makes RᵀR differ from I by ~1e-16"
     for index, R in enumerate(candidates):
         verdict = _is_rotation_verdict(student, R)
-        expect(
-            verdict,
-            f"rejected a valid rotation (#{index}): {fmt(R)}",
-            "compare with a tolerance: rounding makes RᵀR differ from I by ~1e-16",
-        )
+        exactly = np.array_equal(R.T @ R, np.eye(len(R)))
+        expect(verdict, f"rejected a valid rotation (#{index}): {fmt(R)}", EXACT_ROTATION_HINT if exactly else rounding)
 
 
 @exercise("is_rotation_matrix", weight=2)

@@ -26,7 +26,7 @@ from scipy.spatial.transform import Rotation
 from autograder.sandbox.child import probes
 
 from coursekit import hints
-from coursekit.checks.lesson06 import INTEGER_X_HINT, floor_hint
+from coursekit.checks.lesson06 import INTEGER_X_HINT, JACOBIAN_TYPE_HINT, floor_hint, jacobian_type_problem
 from coursekit.diagnose import JACOBIAN_STEP_HINT, jacobian_error_allowed
 
 from .properties import (
@@ -675,8 +675,8 @@ def test_numerical_jacobian_quaternion(student):
 
 @exercise("numerical_jacobian", weight=1)
 def test_numerical_jacobian_shapes(student):
-    """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation; x may be a list of
-    integers (the steps must not be rounded away)"""
+    """returns shape (len(f(x)), n): 5×5 for the identity on R⁵, 3×3 for a rotation; x may be a list, an
+    integer array or a tuple of integers (the steps must not be rounded away)"""
     x = np.array([3.0, -0.2, 0.0, 1e-3, 40.0])
     got = _array(
         student.numerical_jacobian(Probe("identity_function"), x),
@@ -698,15 +698,31 @@ def test_numerical_jacobian_shapes(student):
         f"returned shape {np.shape(value)} for f: SO(3) → R³, expected (3, 3)",
         _matrix_entries_hint(value),
     )
-    got = _array(
-        student.numerical_jacobian(Probe("identity_function"), [3, 0, -2]),
-        (3, 3),
-        "numerical_jacobian(identity, [3, 0, -2])",
-        floor_hint(np.array([3.0, 0.0, -2.0])),
-    )
-    expect_close(
-        got, np.eye(3), 1e-6, "numerical_jacobian of the identity at the integer list [3, 0, -2]", INTEGER_X_HINT
-    )
+
+
+@exercise("numerical_jacobian", weight=1)
+def test_numerical_jacobian_returns_float64_arrays(student):
+    """returns a float64 numpy array on both paths, with and without boxplus (the docstring's ndarray)"""
+    R = random_rotations(1, seed=650)[0]
+    for value, how in (
+        (student.numerical_jacobian(Probe("identity_function"), np.array([3.0, -0.2, 1.0])), "without boxplus"),
+        (
+            student.numerical_jacobian(Probe("rotate_point_by", [1.0, 2.0, 3.0]), R, Probe("so3_plus_right")),
+            "with boxplus",
+        ),
+    ):
+        problem = jacobian_type_problem(value)
+        expect(problem is None, f"numerical_jacobian {how}: {problem}", JACOBIAN_TYPE_HINT)
+    for x, form in (([3, 0, -2], "list"), (np.array([3, 0, -2]), "integer array"), ((3, 0, -2), "tuple")):
+        got = _array(
+            student.numerical_jacobian(Probe("identity_function"), x),
+            (3, 3),
+            f"numerical_jacobian(identity, [3, 0, -2] as an {form})",
+            floor_hint(np.array([3.0, 0.0, -2.0])),
+        )
+        expect_close(
+            got, np.eye(3), 1e-6, f"numerical_jacobian of the identity at [3, 0, -2] as an {form}", INTEGER_X_HINT
+        )
 
 
 # ---------------------------------------------------------------- jacobian_rotate_point

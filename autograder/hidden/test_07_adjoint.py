@@ -125,7 +125,7 @@ def _adjoint_hint(got, T):
                 ),
                 (
                     _adjoint(R, t, "R_first"),
-                    "R [t]× multiplies in the wrong order: conjugate the twist matrix block by block, T ξ^ T⁻¹, "
+                    "the coupling block multiplies in the wrong order: conjugate the twist matrix block by block, T ξ^ T⁻¹, "
                     "and follow which of R and t acts on phi first",
                 ),
                 (_adjoint(R.T, t), "used Rᵀ where R belongs: T ξ^ T⁻¹ turns the twist by R"),

@@ -283,6 +283,8 @@ def _geodesic_mean(Rs):
 def _mean_hint(M, Rs):
     """Name the slip behind a wrong rotation_mean(Rs) = ``M`` by computing what each slip returns."""
     Rs = np.asarray(Rs, dtype=float)
+    if np.all(Rs == Rs[0]):
+        return hints.COPIES_NOT_KEPT_HINT
     truth = _geodesic_mean(Rs)
     if _explains(M, _chordal(Rs), truth):
         return (

@@ -92,6 +92,23 @@ def is_rotation_matrix(M, tol=1e-9):
 """,
     ),
     Mistake(
+        "is_rotation_squares",
+        "is_rotation_matrix",
+        "tests M @ M against I instead of MᵀM: accepts only the identity and half turns",
+        hint="a quarter turn times itself",
+        public_hint="a quarter turn times itself",
+        source="""
+def is_rotation_matrix(M, tol=1e-9):
+    try:
+        M = np.asarray(M, dtype=float)
+    except (TypeError, ValueError):
+        return False
+    if M.ndim != 2 or M.shape[0] != M.shape[1]:
+        return False
+    return bool(np.max(np.abs(M @ M - np.eye(M.shape[0]))) <= tol and np.linalg.det(M) > 0)
+""",
+    ),
+    Mistake(
         "is_rotation_crashes_on_shape",
         "is_rotation_matrix",
         "no shape check: crashes on a 3×4 matrix",

@@ -121,6 +121,26 @@ def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
         classic=True,
     ),
     Mistake(
+        "group_scalar_equality",
+        "check_group_axioms",
+        "compares elements as if they were numbers, abs(x - y) <= tol: crashes on matrices",
+        """
+def check_group_axioms(samples, op, identity, inverse, is_member, tol=1e-9):
+    def equal(x, y):
+        return abs(x - y) <= tol
+    closure = all(is_member(op(a, b)) for a in samples for b in samples)
+    has_identity = bool(is_member(identity)) and all(
+        equal(op(identity, a), a) and equal(op(a, identity), a) for a in samples)
+    has_inverses = all(is_member(inverse(a)) and equal(op(a, inverse(a)), identity)
+                       and equal(op(inverse(a), a), identity) for a in samples)
+    associative = all(equal(op(op(a, b), c), op(a, op(b, c))) for a in samples for b in samples for c in samples)
+    return {"closure": bool(closure), "identity": bool(has_identity), "inverse": bool(has_inverses),
+            "associativity": bool(associative)}
+""",
+        hint="reduce it to one verdict first",
+        public_hint="reduce it to one verdict first",
+    ),
+    Mistake(
         "commutes_exact_equality",
         "commutes",
         "compares the two products with exact equality",

@@ -75,6 +75,18 @@ def quat_inverse(q):
         public_hint="returned the conjugate",
     ),
     Mistake(
+        "quat_inverse_floor_on_norm",
+        "quat_inverse",
+        "guards |q|² with a floor of 1e-12, so a short quaternion's inverse is far too small",
+        """
+def quat_inverse(q):
+    q = np.asarray(q, dtype=float)
+    return np.array([q[0], -q[1], -q[2], -q[3]]) / max(q @ q, 1e-12)
+""",
+        hint="needs a floor on |q|²",
+        public_hint="needs a floor on |q|²",
+    ),
+    Mistake(
         "quat_from_axis_angle_full_angle",
         "quat_from_axis_angle",
         "uses θ instead of θ/2",

@@ -88,6 +88,32 @@ def quat_boxplus(q, d):
         public_hint="half angle",
     ),
     Mistake(
+        "numerical_jacobian_list_with_boxplus",
+        "numerical_jacobian",
+        "the boxplus path returns its rows as nested lists",
+        """
+def numerical_jacobian(f, x, boxplus=None):
+    f0 = np.asarray(f(x), dtype=float)
+    if boxplus is None:
+        x = np.asarray(x, dtype=float)
+        J = np.zeros((f0.size, x.size))
+        for j in range(x.size):
+            step = max(abs(1e-4 * x[j]), 1e-6)
+            moved = x.copy()
+            moved[j] += step
+            J[:, j] = (np.asarray(f(moved), dtype=float) - f0) / step
+        return J
+    columns = []
+    for j in range(3):
+        d = np.zeros(3)
+        d[j] = 1e-6
+        columns.append((np.asarray(f(boxplus(x, d)), dtype=float) - f0) / 1e-6)
+    return np.column_stack(columns).tolist()
+""",
+        hint="on every path",
+        public_hint="on every path",
+    ),
+    Mistake(
         "numerical_jacobian_tiny_step",
         "numerical_jacobian",
         "a fixed step of 1e-12: rounding noise dominates",

@@ -126,6 +126,24 @@ def rotation_mean(Rs):
         public_hint="single step from Rs[0]",
     ),
     Mistake(
+        "rotation_mean_summed_steps",
+        "rotation_mean",
+        "starts at the identity and steps by the sum of the residuals, not their average",
+        """
+def rotation_mean(Rs):
+    Rs = np.asarray(Rs, dtype=float)
+    M = np.eye(3)
+    for _ in range(100):
+        delta = np.sum([Log(M.T @ R) for R in Rs], axis=0)
+        M = M @ Exp(delta)
+        if np.linalg.norm(delta) < 1e-13:
+            break
+    return M
+""",
+        hint="never overshoot",
+        public_hint="never overshoot",
+    ),
+    Mistake(
         "rotation_mean_log_average",
         "rotation_mean",
         "averages Log(R_i) about the identity",

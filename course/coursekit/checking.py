@@ -23,6 +23,7 @@ import functools
 import traceback
 
 from .contracts import CHANGED_HINT, DELEGATED_HINT, guard_for, refusal
+from .diagnose import crash_hint
 from .watching import snapshot, watch_call
 
 __all__ = ["check", "public_check", "Mismatch", "CheckFailed", "NotWrittenYet", "registered_exercises",
@@ -245,10 +246,10 @@ def check(exercise, function):
             lines.append(line)
         except Exception as error:  # the student's code crashed: report, do not explode
             failed += 1
-            lines.append(
-                f"  ✗ {description}: raised {type(error).__name__}: "
-                f"{_one_line(error, 120)}{_where_in_student_code(error)}"
-            )
+            line = f"  ✗ {description}: raised {type(error).__name__}: {_one_line(error, 120)}"
+            line += _where_in_student_code(error)
+            hint = crash_hint(error)
+            lines.append(line + (f"\n      hint: {_one_line(hint)}" if hint else ""))
         else:
             passed += 1
             lines.append(f"  ✓ {description}")

@@ -6,8 +6,9 @@ from the masters by ``python -m autograder contracts``.
 
 :func:`contract_problem` calls an answer with the forms of input the course's conventions admit
 (float arrays, nested lists, tuples, integer arrays, read-only arrays) on small integer-valued
-samples (a quarter turn, ``[1, 2, 3]``, a half-turn quaternion) and says what, if anything, breaks
-the contract: a list or a float32 array returned, an int64 array for integer input, an error on
+samples (a quarter turn, ``[1, 2, 3]``, a half-turn quaternion; where a rotation or a pose is a
+parameter, the identity and half turns as well, the special values most answers treat apart) and says
+what, if anything, breaks the contract: a list or a float32 array returned, an int64 array for integer input, an error on
 tuples, a write into an argument, a result that depends on the form of the input. The check cells
 show it as one line, and the hidden suite grades the same calls.
 
@@ -20,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["contract_of", "contract_problem", "covered", "sample_arguments", "FORMS"]
+__all__ = ["contract_of", "contract_problem", "covered", "sample_arguments", "sample_sets", "FORMS", "REGIMES"]
 
 DESCRIPTION = "keeps its docstring's contract (lists, tuples, integer and read-only input; return type, dtype, shape)"
 FORMS = ("float arrays", "nested lists", "tuples", "integer arrays", "read-only arrays")
@@ -30,14 +31,38 @@ _RZ = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]  # quarter turns about z, x and y: inte
 _RX = [[1, 0, 0], [0, 0, -1], [0, 1, 0]]
 _RY = [[0, 0, 1], [0, 1, 0], [-1, 0, 0]]
 _ROTATIONS = (_RZ, _RX, _RY)
+_IDENTITY = ([[1, 0, 0], [0, 1, 0], [0, 0, 1]],)
+_HALF_TURNS = ([[1, 0, 0], [0, -1, 0], [0, 0, -1]], [[-1, 0, 0], [0, 1, 0], [0, 0, -1]], [[-1, 0, 0], [0, -1, 0], [0, 0, 1]])
+# Turns whose cosine is 0.6 and sine 0.8 (about 53°), about z, x and y: no special value at all (not integer-valued,
+# so they are not sent as integer arrays).
+_TURNS_345 = (
+    [[0.6, -0.8, 0.0], [0.8, 0.6, 0.0], [0.0, 0.0, 1.0]],
+    [[1.0, 0.0, 0.0], [0.0, 0.6, -0.8], [0.0, 0.8, 0.6]],
+    [[0.6, 0.0, 0.8], [0.0, 1.0, 0.0], [-0.8, 0.0, 0.6]],
+)
 _QUATS = ([0, 0, 0, 1], [0, 1, 0, 0], [1, 0, 0, 0])  # w, x, y, z: half turns about z and x, the identity
+_HALF = float(np.sqrt(0.5))
+# The rotations (matrices and quaternions) each sample set draws from: quarter turns (the baseline), the special
+# values of the angle that most answers treat apart (0 and π), the quarter turns about y and back first (pitch = ±90°,
+# where z-y-x Euler angles lock) and a 53° turn with no special value (below 90°, where a branch on cos θ > 0 goes).
+REGIMES = {
+    "quarter turns": (_ROTATIONS, _QUATS),
+    "the identity": (_IDENTITY, ([1, 0, 0, 0],)),
+    "half turns": (_HALF_TURNS, ([0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1])),
+    "a quarter turn about y first": ((_RY, _RZ, _RX), ([_HALF, 0.0, _HALF, 0.0], [_HALF, 0.0, -_HALF, 0.0])),
+    "a quarter turn back about y first": (
+        (np.array(_RY).T.tolist(), _RX, _RZ),
+        ([_HALF, 0.0, -_HALF, 0.0], [_HALF, 0.0, _HALF, 0.0]),
+    ),
+    "a 53° turn": (_TURNS_345, ([float(np.sqrt(0.8)), 0.0, 0.0, float(np.sqrt(0.2))],)),
+}
 _VECTORS = ([1, 2, 3], [0, 1, 0], [1, 0, 0])
 _POINTS = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 2, 3]]
 _COVARIANCES = ("Sigma", "Sigma_left", "Rn", "S1", "S2")  # (n, n) names that are covariances, not rotations
 
 
 def _pose(R, t):
-    T = np.eye(4, dtype=int)
+    T = np.eye(4)
     T[:3, :3], T[:3, 3] = R, t
     return T
 
@@ -94,8 +119,10 @@ def contract_of(exercise):
     return _contracts().get(exercise)
 
 
-def _array_sample(name, shape, counters):
-    """An integer-valued valid sample for a parameter named ``name`` of ``shape`` (a list), or None."""
+def _array_sample(name, shape, counters, regime="quarter turns"):
+    """A valid sample for a parameter named ``name`` of ``shape`` (a list), or None; single rotations, poses
+    and quaternions are drawn from ``REGIMES[regime]`` (stacks always from the quarter turns)."""
+    rotations, quaternions = REGIMES[regime]
     dims = tuple(d if isinstance(d, int) else None for d in shape)
 
     def nth(kind, options):
@@ -108,13 +135,13 @@ def _array_sample(name, shape, counters):
             return np.diag([1, 2, 3]).tolist()
         if name in ("W", "A", "B"):
             return _hat(nth("vector", _VECTORS))
-        return nth("rotation", _ROTATIONS)
+        return nth("rotation", rotations)
     if dims == (4, 4):
-        return _pose(nth("rotation", _ROTATIONS), [1, 2, 3]).tolist()
+        return _pose(nth("rotation", rotations), [1, 2, 3]).tolist()
     if dims == (6, 6):
         return np.diag([1, 2, 3, 4, 5, 6]).tolist()
     if dims == (4,):
-        return [1, 2, 3, 1] if name == "P_h" else nth("quaternion", _QUATS)
+        return [1, 2, 3, 1] if name == "P_h" else nth("quaternion", quaternions)
     if dims == (3,):
         return nth("vector", _VECTORS)
     if dims == (6,):
@@ -130,8 +157,9 @@ def _array_sample(name, shape, counters):
     return None
 
 
-def sample_arguments(exercise):
-    """``(arguments, why_not)``: integer-valued sample arguments (lists) of ``exercise``, or None and the reason."""
+def sample_arguments(exercise, regime="quarter turns"):
+    """``(arguments, why_not)``: sample arguments (lists) of ``exercise``, its rotations drawn from
+    ``REGIMES[regime]`` (integer-valued but for the 53° turn), or None and the reason."""
     contract = contract_of(exercise)
     if contract is None:
         return None, "no contract"
@@ -145,7 +173,9 @@ def sample_arguments(exercise):
         if kind == "array_like":
             if not param["shapes"]:
                 return None, f"the docstring gives no shape for {name}"
-            value = OVERRIDES.get(exercise, {}).get(name) or _array_sample(name, param["shapes"][0], counters)
+            value = OVERRIDES.get(exercise, {}).get(name) or _array_sample(
+                name, param["shapes"][0], counters, regime
+            )
             if value is None:
                 return None, f"no sample for {name} of shape {param['shapes'][0]}"
             arguments.append(value)
@@ -158,6 +188,46 @@ def sample_arguments(exercise):
 
 def covered(exercise):
     return sample_arguments(exercise)[0] is not None
+
+
+# Per-exercise sample sets at the special values of a data parameter (not a rotation): {exercise: {regime: {name: value}}}
+SPECIAL_SETS = {
+    "quat_from_two_vectors": {
+        "parallel vectors": {"a": [1, 2, 3], "b": [2, 4, 6]},
+        "opposite vectors": {"a": [1, 2, 3], "b": [-1, -2, -3]},
+    },
+}
+
+
+def sample_sets(exercise):
+    """``[(regime, arguments), ...]``: the baseline's samples, then one set per other regime of :data:`REGIMES` that
+    changes them (an exercise with a single rotation or pose among its parameters and no per-exercise sample).
+
+    Examples
+    --------
+    >>> [regime for regime, _ in sample_sets("log_so3")][:3]
+    ['quarter turns', 'the identity', 'half turns']
+    >>> [regime for regime, _ in sample_sets("hat")]
+    ['quarter turns']
+    >>> [regime for regime, _ in sample_sets("quat_from_two_vectors")]
+    ['quarter turns', 'parallel vectors', 'opposite vectors']
+    """
+    baseline, _ = sample_arguments(exercise)
+    if baseline is None:
+        return []
+    sets = [("quarter turns", baseline)]
+    if exercise not in OVERRIDES:
+        for regime in list(REGIMES)[1:]:
+            arguments, _ = sample_arguments(exercise, regime)
+            if arguments != baseline:
+                sets.append((regime, arguments))
+    names = [p["name"] for p in contract_of(exercise)["params"]]
+    for regime, values in SPECIAL_SETS.get(exercise, {}).items():
+        arguments = list(baseline)
+        for name, value in values.items():
+            arguments[names.index(name)] = value
+        sets.append((regime, arguments))
+    return sets
 
 
 def _tuples(value):
@@ -293,42 +363,73 @@ HINTS = {
     "x = np.array(x, dtype=float), and compute on that",
     "read-only": "never write into an argument you were given: make your own array (np.array(x, dtype=float) copies) "
     "and change that",
+    "special": "the docstring admits this input (the identity, a half turn, a pitch of ±90°, parallel or opposite "
+    "vectors): follow what your answer does there, and keep it defined and of the promised type",
     "differs": "the result must not depend on the form of the input: convert each input once, "
     "x = np.array(x, dtype=float), and compute on that",
 }
+
+
+def _is_a_write(error):
+    """Did a call with read-only arrays fail because the function wrote into one? numpy says "assignment destination
+    is read-only" or "output array is read-only"; a library that merely refuses read-only buffers (scipy's Rotation:
+    "buffer source array is read-only") wrote nothing. Through the sandbox the error arrives as the grader's
+    StudentError, whose text names the student's exception ("... raised ValueError: ...")."""
+    text = f"{type(error).__name__}: {error}"
+    return "ValueError" in text and "is read-only" in text and "buffer" not in text
 
 
 def contract_problem(exercise, function, forms=FORMS, reraise=()):
     """``(reason, hint)`` for the first way ``function`` breaks ``exercise``'s contract, or None when it keeps it
     (or the exercise is not covered: see :func:`sample_arguments`).
 
-    ``function`` is called once per form of input in ``forms`` (the first is the baseline; the others must give
-    the same result, up to 1e-9). A ``NotImplementedError`` from it propagates, and so does an error of the
-    types in ``reraise`` raised by the baseline call (the hidden suite's "not written", "timeout", ...).
+    ``function`` is called on each set of :func:`sample_sets` (quarter turns, then the identity and half turns
+    where a rotation is a parameter), once per form of input in ``forms`` (the first is the baseline; the others
+    must give the same result, up to 1e-9). A ``NotImplementedError`` from it propagates, and so does an error of
+    the types in ``reraise`` raised by the first baseline call (the hidden suite's "not written", "timeout", ...).
     """
-    arguments, _ = sample_arguments(exercise)
-    if arguments is None:
+    sets = sample_sets(exercise)
+    if not sets:
         return None
+    for regime, arguments in sets:
+        problem = _problem_with(exercise, function, arguments, regime, forms, reraise)
+        if problem is not None:
+            return problem
+    return None
+
+
+def _problem_with(exercise, function, arguments, regime, forms, reraise):
     contract = contract_of(exercise)
     params, returns = contract["params"], contract["returns"]
     baseline = None
+    at = "" if regime == "quarter turns" else f" at {regime}"
+    integer_valued = all(np.array_equal(np.round(a), a) for a in arguments if isinstance(a, list))
     for form in forms:
+        if form == "integer arrays" and not integer_valued:
+            continue  # a 53° turn has no integer form
         args = [_form(a, form) for a in arguments]
-        where = f"with {form} as input, {exercise}" if form != "float arrays" else exercise
+        where = f"with {form} as input{at}, {exercise}" if form != "float arrays" else f"{exercise}{at}"
         try:
             value = function(*args)
         except NotImplementedError:
             raise
         except reraise as error:
-            if baseline is None:
+            if baseline is None and regime == "quarter turns":
                 raise
+            if baseline is None:
+                return f"{where} failed: {str(error)[:100]}", HINTS["special"]
+            if form == "read-only arrays":
+                if _is_a_write(error):
+                    return f"{exercise} writes into an argument (read-only input: {str(error)[:80]})", HINTS["read-only"]
+                continue
             return f"{where} failed: {str(error)[:100]}", HINTS["raised"]
         except Exception as error:
             if form == "read-only arrays":
-                if isinstance(error, ValueError) and "is read-only" in str(error) and "buffer" not in str(error):
+                if _is_a_write(error):
                     return f"{exercise} writes into an argument (read-only input raised: {error})", HINTS["read-only"]
-                continue  # another error: a library that refuses read-only buffers (scipy's Rotation), not a write
-            return f"{where} raised {type(error).__name__}: {str(error)[:80]}", HINTS["raised"]
+                continue
+            hint = HINTS["special"] if baseline is None and regime != "quarter turns" else HINTS["raised"]
+            return f"{where} raised {type(error).__name__}: {str(error)[:80]}", hint
         problem, what = _type_problem(value, returns, args, params, where)
         if problem:
             if what == "dtype" and ("float32" in problem or "float16" in problem):

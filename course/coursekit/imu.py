@@ -163,15 +163,9 @@ def _exp_many(phi):
 
 
 def _random_rotation(rng):
-    q = rng.standard_normal(4)
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-        ]
-    )
+    from scipy.spatial.transform import Rotation  # imported here: most users of this module never call it
+
+    return Rotation.from_quat(rng.standard_normal(4), scalar_first=True).as_matrix()  # a uniform random rotation
 
 
 def smooth_motion(duration_s, rate_hz=None, seed=0):

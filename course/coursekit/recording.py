@@ -35,6 +35,7 @@ from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 
 from .imu import GRAVITY
 
@@ -77,16 +78,7 @@ class Recording:
 
 def _matrices_bw(q):
     """Rotation matrices of unit quaternions (w, x, y, z) as rows, shape (M, 4) → (M, 3, 3)."""
-    q = q / np.linalg.norm(q, axis=1, keepdims=True)
-    w, x, y, z = q.T
-    return np.stack(
-        [
-            np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], axis=-1),
-            np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], axis=-1),
-            np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], axis=-1),
-        ],
-        axis=1,
-    )
+    return Rotation.from_quat(q, scalar_first=True).as_matrix()   # normalises each row
 
 
 @lru_cache(maxsize=1)

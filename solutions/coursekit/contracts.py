@@ -71,9 +71,12 @@ FORBIDDEN = {
     "matrix_to_euler_zyx": SCIPY_ROTATIONS,
     "euler_zyx_to_quat": SCIPY_ROTATIONS,
     "quat_to_euler_zyx": SCIPY_ROTATIONS,
+    # lesson 06: the right Jacobian is the job (JrSE3's rotation block is Jr, of the negated vector V)
+    "right_jacobian_so3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS,
+    "right_jacobian_inv_so3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS,
     # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)
-    "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
-    "log_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
+    "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS,
+    "log_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS,
     # lesson 07, section 10: the adjoint and the Jacobian of Exp are the job
     "adjoint_se3": ("coursekit.lie.AdSE3",),
     "right_jacobian_se3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS,

@@ -105,6 +105,8 @@ BODY_RATE_IS_WORLD_RATE_HINT = ("that is the world rate ω_w, the spin written i
                                 "ω_b is the same spin in the body's own axes (section 8)")
 
 # ---------------------------------------------------------------- checks/lesson04.py
+NO_GUARD_FOR_SHORT_Q_HINT = ("wrong only for a short q: every non-zero quaternion has an inverse, so nothing in it "
+                             "needs a floor on |q|² (float64 holds |q|² = 1e-24 with all its digits)")
 ARRAY_REVERSED_ONLY_SCALAR_HINT = "the array was reversed: only the scalar moves, x, y, z keep their order"
 CONJUGATE_MISSING_Q_V_HINT = "the conjugate is missing: q ⊗ [0, v] ⊗ q does not rotate v; use q ⊗ [0, v] ⊗ q*"
 CONSTANT_SPEED_NORMALISED_LINEAR_HINT = ("not at constant speed: a normalised linear blend (nlerp) runs fast in the "
@@ -237,7 +239,7 @@ COMPOSE_SWAPPED_HINT = "J1 and J2 are swapped: return (J1, J2), the first for a 
 COMPOSE_TRANSPOSE_HINT = ("J1 is the transpose of what is needed: the turn of R1 was carried across R2 the wrong "
                           "way; check on which side of R2 it starts and on which side it must end")
 COMPOSE_WRONG_FACTOR_HINT = "J1 depends on R2 (the factor the perturbation must cross), not on R1"
-INVERSE_LEFT_HINT = ("-Rᵀ is the Jacobian for perturbations on the left of R and of R⁻¹; here both turns sit on "
+INVERSE_LEFT_HINT = ("that is the Jacobian for perturbations on the left of R and of R⁻¹; here both turns sit on "
                      "the right, R Exp(d) and R⁻¹ Exp(J d)")
 INVERSE_NOT_MOVED_HINT = ("-I is right only at the identity: the inverted turn sits on the left of Rᵀ, but J is "
                           "defined by a turn on the right of R⁻¹")
@@ -278,6 +280,8 @@ RELATIVE_POSE_REVERSED_HINT = "that is T_ba, a seen from b: swap the roles of a 
 
 # ---------------------------------------------------------------- checks/lesson08.py
 ALIGNMENT_SVD_FORMULA_HINT = "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
+COPIES_NOT_KEPT_HINT = ("copies of one rotation average to it, yet your answer moved away: follow your steps on them; "
+                       "each step must shrink toward zero as the estimate arrives, never overshoot")
 AVERAGING_LOG_R_I_HINT = ("averaging Log(R_i) about the identity is not the mean: the balance Σ Log(Mᵀ R_i) = 0 is "
                           "seen from M, so each step must look at the samples from the current estimate")
 INVERSE_ROTATION_TRANSPOSE_USE_HINT = ("that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q "

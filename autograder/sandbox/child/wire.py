@@ -4,7 +4,7 @@ This file is copied into every sandbox, so it imports only the standard
 library and numpy. The grader decodes everything that comes out of a sandbox
 with :func:`decode`, which builds nothing but ``None``, ``bool``, ``int``,
 ``float``, ``complex``, ``str``, ``list``, ``tuple``, ``dict`` (string keys),
-plain ``numpy.ndarray`` of a numeric dtype, :class:`Probe` and :class:`Callback`. Whatever a
+plain ``numpy.ndarray`` of a numeric dtype (read-only when the sender's was), :class:`Probe` and :class:`Callback`. Whatever a
 student's object does in its ``__eq__`` or ``__array__`` stays in the sandbox.
 
 Examples
@@ -122,11 +122,14 @@ def encode(value: object, depth: int = 0, budget: list[int] | None = None) -> ob
         array = array.astype(array.dtype.newbyteorder("<"), copy=False)
         if array.size > MAX_ELEMENTS:
             raise WireError(f"an array of {array.size} elements (limit {MAX_ELEMENTS})")
-        return {
+        data = {
             "__ndarray__": base64.b64encode(array.tobytes()).decode("ascii"),
             "dtype": array.dtype.str,
             "shape": list(array.shape),
         }
+        if not value.flags.writeable:
+            data["read_only"] = True  # the other side sees it read-only too: a write fails there as it would here
+        return data
     if kind is list:
         return [encode(v, depth + 1, budget) for v in value]
     if kind is tuple:
@@ -185,6 +188,12 @@ def decode(data: object, depth: int = 0) -> object:
         return result
     if keys == {"__ndarray__", "dtype", "shape"}:
         return _decode_array(data)
+    if keys == {"__ndarray__", "dtype", "shape", "read_only"}:
+        if data["read_only"] is not True:
+            raise WireError("bad read_only flag")
+        array = _decode_array(data)
+        array.flags.writeable = False
+        return array
     if keys == {"__callback__"}:
         if type(data["__callback__"]) is not str:
             raise WireError("bad callback")

@@ -420,6 +420,29 @@ def _(numerical_jacobian):
                                   "(f(x + δ_j e_j) - f(x)) / δ_j, e.g. with δ_j = max(|1e-4 x_j|, 1e-6)"))
 
 
+JACOBIAN_TYPE_HINT = ("return a float64 numpy array, on every path (with and without boxplus): build J with np.zeros "
+                      "or np.column_stack, never as a list, and keep numpy's default float64")
+
+
+def jacobian_type_problem(value):
+    """What is wrong with ``value`` as numerical_jacobian's promised ``ndarray`` (float64), or None."""
+    if not isinstance(value, np.ndarray):
+        return f"returned a {type(value).__name__}, not a numpy array"
+    if value.dtype != np.float64:
+        return f"returned a {value.dtype} array, not float64"
+    return None
+
+
+@public_check("numerical_jacobian", "returns a float64 numpy array, with and without boxplus")
+def _(numerical_jacobian):
+    for value, how in ((numerical_jacobian(_polynomial, np.array([1.0, 2.0, 3.0])), "without boxplus"),
+                       (numerical_jacobian(lambda R: np.asarray(R) @ [1.0, 2.0, 3.0], np.eye(3),
+                                           lambda R, d: np.asarray(R) @ Exp(d)), "with boxplus")):
+        problem = jacobian_type_problem(value)
+        if problem:
+            raise Mismatch(f"{how}: {problem}", JACOBIAN_TYPE_HINT)
+
+
 def _wavy(x):
     return np.array([np.sin(x[0]) * x[1], np.exp(0.5 * x[2]) + x[0] * x[1]])
 

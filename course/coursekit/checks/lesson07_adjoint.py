@@ -49,7 +49,7 @@ NO_COUPLING_HINT = ("diag(R, R) is the adjoint of a pure rotation: with a transl
 COUPLING_WITHOUT_R_HINT = hints.ADJOINT_COUPLING_WITHOUT_R_HINT
 COUPLING_SIGN_HINT = ("the coupling block has the wrong sign: check the step that moves phi to the right of the cross "
                       "product, a × b = -b × a")
-COUPLING_ORDER_HINT = ("R [t]× has the factors in the wrong order: conjugate the twist matrix block by block, "
+COUPLING_ORDER_HINT = ("the coupling block has the factors in the wrong order: conjugate the twist matrix block by block, "
                        "T ξ^ T⁻¹, and follow which of R and t acts on phi first")
 ADJOINT_SLIPS = [(ADJ_ROTATION_FIRST, ROTATION_FIRST_HINT), (ADJ_NO_COUPLING, NO_COUPLING_HINT),
                  (ADJ_COUPLING_WITHOUT_R, COUPLING_WITHOUT_R_HINT), (ADJ_COUPLING_SIGN, COUPLING_SIGN_HINT),

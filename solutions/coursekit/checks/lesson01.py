@@ -166,6 +166,10 @@ _elementary_checks("rot_z", 2, 0, 1)
 
 
 # ---------------------------------------------------------------- is_rotation_matrix
+EXACT_ROTATION_HINT = ("an exact rotation (MᵀM is exactly I) was rejected: print the product your test compares "
+                       "with I (a quarter turn times itself is a half turn, not I)")
+
+
 @public_check("is_rotation_matrix", "accepts rotations (identity, a quarter turn)")
 def _(is_rotation_matrix):
     for M in (np.eye(3), QUARTER_TURN_Z):
@@ -173,7 +177,7 @@ def _(is_rotation_matrix):
         if not isinstance(verdict, (bool, np.bool_)):
             raise Mismatch(f"returned {verdict!r}; return a bool (True or False)", "wrap the test in bool(...)")
         if not verdict:
-            raise Mismatch(f"rejected the rotation\n{M}")
+            raise Mismatch(f"rejected the rotation\n{M}", EXACT_ROTATION_HINT)
 
 
 @public_check("is_rotation_matrix", "rejects a mirror (det = -1) and a scaled matrix")
@@ -194,6 +198,8 @@ def _(is_rotation_matrix):
                        "a shear has det 1 too: also check max |MᵀM - I| <= tol")
     ignores = "the verdict does not follow tol: compare with the tol argument, not a fixed number"
     if not is_rotation_matrix(QUARTER_TURN_Z + 1e-6, tol=1e-4):
+        if not is_rotation_matrix(QUARTER_TURN_Z):
+            raise Mismatch("rejected R + 1e-6 with tol=1e-4, and R itself", EXACT_ROTATION_HINT)
         raise Mismatch("rejected R + 1e-6 (max |MᵀM - I| ≈ 2e-6) with tol=1e-4",
                        ignores if not is_rotation_matrix(QUARTER_TURN_Z + 1e-6, tol=0.1) else None)
     if is_rotation_matrix(QUARTER_TURN_X + 1e-6):

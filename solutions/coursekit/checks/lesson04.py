@@ -213,6 +213,17 @@ def _(quat_inverse):
                        f"{off_by(got, _conjugate(GENERIC))}", _inverse_diagnosis(got, GENERIC))
 
 
+@public_check("quat_inverse", "works at every length: [1, 1, 1, 1] scaled by 1e-8 and by 1e8")
+def _(quat_inverse):
+    for scale in (1e-8, 1e8):
+        q = scale * np.ones(4)
+        expected = np.array([1.0, -1.0, -1.0, -1.0]) / (4.0 * scale)
+        got = require_shape(quat_inverse(q), (4,))
+        if not close(got, expected, 1e-12 / scale):
+            hint = hints.NO_GUARD_FOR_SHORT_Q_HINT if scale < 1 and close(quat_inverse(np.ones(4)), expected * scale, 1e-12) else None
+            raise Mismatch(f"got {fmt(got)} for q = {scale:g}·[1, 1, 1, 1], {off_by(got, expected)}", hint)
+
+
 @public_check("quat_inverse", "works for quaternions that are not unit: [1, 1, 1, 1]⁻¹ = [1, -1, -1, -1] / 4")
 def _(quat_inverse):
     q = np.array([1.0, 1.0, 1.0, 1.0])
