@@ -14,7 +14,7 @@ from scipy.spatial.transform import Rotation
 from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import as_float_array, close, rotation_problem, shape_problem
-from ..lie import unskew
+from ..lie import Log
 from .common import fmt, off_by, require_shape
 
 E = np.eye(3)
@@ -482,16 +482,15 @@ def _(euler_rates_matrix):
 @public_check("euler_rates_matrix", "E @ rates matches the body rates of a moving attitude (finite differences)")
 def _(euler_rates_matrix):
     angles, rates, h = np.array([0.4, 0.7, -1.1]), np.array([0.3, -0.8, 0.5]), 1e-6
-    R = _zyx(*angles)
-    dR = (_zyx(*(angles + h * rates)) - _zyx(*(angles - h * rates))) / (2 * h)
-    body = unskew(R.T @ dR)
+    ahead, behind = _zyx(*(angles + h * rates)), _zyx(*(angles - h * rates))
+    body = Log(behind.T @ ahead) / (2 * h)    # the turn about the body's own axes over 2h, per second
+    world = Log(ahead @ behind.T) / (2 * h)   # the same turn about the world's axes
     E_got = require_shape(euler_rates_matrix(angles[1], angles[2]), (3, 3))
     if close(E_got @ rates, body, 1e-7):
         return
-    world = unskew(dR @ R.T)
     if close(E_got @ rates, world, 1e-7):
         raise Mismatch("E @ rates gives the angular velocity in the world frame",
-                       "the course's E gives body rates: [ω_b]× = Rᵀ dR/dt")
+                       "the course's E gives body rates: the turn about the body's own axes, as in lesson 03")
     candidates = [
         (RATES_COLUMNS_REVERSED,
          hints.COLUMNS_ORDER_ROLL_PITCH_HINT),
