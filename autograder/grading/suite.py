@@ -70,7 +70,7 @@ CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its argum
 def _crash_hint(message):
     """The graded course's hint for a known crash (:func:`coursekit.diagnose.crash_hint`), or ""."""
     try:
-        from coursekit.diagnose import crash_hint
+        from coursekit.checking import crash_hint
     except ImportError:  # a course whose coursekit has no such helper
         return ""
     return crash_hint(message)

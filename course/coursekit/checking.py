@@ -23,8 +23,21 @@ import functools
 import traceback
 
 from .contracts import CHANGED_HINT, DELEGATED_HINT, guard_for, refusal
-from .diagnose import crash_hint
 from .watching import snapshot, watch_call
+
+# Crashes whose message says what went wrong in a way a student may not read at once: (words, hint).
+CRASH_HINTS = (
+    ("truth value of an array with more than one element is ambiguous",
+     "an if, and, or or met a whole array: a comparison of two arrays gives one True or False per entry; reduce "
+     "it to one verdict first (np.all, or compare the largest entry of the difference)"),
+)
+
+
+def crash_hint(message):
+    """The hint for a crash whose message (``"ValueError: The truth value ..."``) is a known one, else ""."""
+    return next((hint for words, hint in CRASH_HINTS if words in str(message)), "")
+
+
 
 __all__ = ["check", "public_check", "Mismatch", "CheckFailed", "NotWrittenYet", "registered_exercises",
            "checks_of_lesson"]

@@ -23,24 +23,10 @@ __all__ = [
     "LISTS_HINT",
     "jacobian_error_allowed",
     "JACOBIAN_STEP_HINT",
-    "crash_hint",
 ]
 
 # Said only when an answer differs between lists and arrays (the function compared with itself).
 LISTS_HINT = "convert the inputs with np.asarray(..., dtype=float) (lists have no .T and @ does not work on them)"
-
-# Crashes whose message says what went wrong in a way a student may not read at once: (words, hint).
-CRASH_HINTS = (
-    ("truth value of an array with more than one element is ambiguous",
-     "an if, and, or or met a whole array: a comparison of two arrays gives one True or False per entry; reduce "
-     "it to one verdict first (np.all, or compare the largest entry of the difference)"),
-)
-
-
-def crash_hint(message):
-    """The hint for a crash whose message (``"ValueError: The truth value ..."``) is a known one, else ""."""
-    return next((hint for words, hint in CRASH_HINTS if words in str(message)), "")
-
 
 # np.allclose(x, y, atol=tol) passes when |x - y| <= atol + rtol·|y| with rtol = 1e-5 by default.
 ALLCLOSE_HINT = ("np.allclose(x, y, atol=tol) keeps its default rtol=1e-5, which swamps tol: "
