@@ -68,7 +68,7 @@ CONTRACT_SHARE = 0.25  # of an exercise's points, lost when it changes its argum
 
 
 def _crash_hint(message):
-    """The graded course's hint for a known crash (:func:`coursekit.diagnose.crash_hint`), or ""."""
+    """The graded course's hint for a known crash (:func:`coursekit.checking.crash_hint`), or ""."""
     try:
         from coursekit.checking import crash_hint
     except ImportError:  # a course whose coursekit has no such helper
