@@ -51,10 +51,10 @@ def machine_cpu_seconds():
     return (sum(ticks) - ticks[3] - ticks[4]) / os.sysconf("SC_CLK_TCK")  # all but idle and iowait
 
 
-def timed(command, cwd, measure_memory=False):
+def timed(command, cwd, measure_memory=False, env=None):
     """(wall seconds, peak resident bytes of the process tree, machine CPU seconds) of ``command``."""
     started, cpu_started = time.monotonic(), machine_cpu_seconds()
-    process = subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    process = subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
     peak = 0
     if measure_memory:
         with PeakMemory(process.pid) as memory:
@@ -86,9 +86,14 @@ def run_nbgrader_baseline(students, course_dir, check=True):
     return time.monotonic() - started
 
 
-def run_ours(class_dir, out, extra=()):
+def run_ours(class_dir, out, extra=(), cold=False):
+    """``timed`` of our grader on ``class_dir``; ``cold``: with an empty cache folder of its own (beside ``out``)."""
     command = [sys.executable, "-m", "autograder", "grade", str(class_dir), "--out", str(out), "--force", *extra]
-    return timed(command, ROOT, measure_memory=True)
+    if not cold:
+        return timed(command, ROOT, measure_memory=True)
+    cache = Path(f"{out}-cache")
+    shutil.rmtree(cache, ignore_errors=True)
+    return timed(command, ROOT, measure_memory=True, env={**os.environ, "AUTOGRADER_CACHE": str(cache)})
 
 
 def warm_canary(work):
@@ -126,7 +131,8 @@ def main():
     parser.add_argument(
         "--cold",
         action="store_true",
-        help="do not warm the canary (nor anything cached on disk) before the timed runs",
+        help="grade as on a machine that never graded this course: each of our timed runs starts with an empty "
+        "cache folder (no passing canary, no recorded transcripts)",
     )
     args = parser.parse_args()
     work = Path(args.work)
@@ -141,9 +147,11 @@ def main():
     if not args.cold:
         warm_canary(work)
     print(f"stock nbgrader autograde:       {nbgrader_seconds:8.1f} s")
-    full_seconds, full_memory, full_cpu = run_ours(work / "class_small", work / "ours_full")
+    full_seconds, full_memory, full_cpu = run_ours(work / "class_small", work / "ours_full", cold=args.cold)
     print(f"ours, full (suite + nbval):     {full_seconds:8.1f} s   peak memory {full_memory / 2**20:6.0f} MiB")
-    fast_seconds, fast_memory, fast_cpu = run_ours(work / "class_small", work / "ours_fast", ["--no-nbval"])
+    fast_seconds, fast_memory, fast_cpu = run_ours(
+        work / "class_small", work / "ours_fast", ["--no-nbval"], cold=args.cold
+    )
     print(f"ours, --no-nbval:               {fast_seconds:8.1f} s   peak memory {fast_memory / 2**20:6.0f} MiB")
 
     if args.large:

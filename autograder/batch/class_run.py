@@ -49,7 +49,7 @@ from typing import Callable, NamedTuple, Protocol
 from autograder.batch.progress import Progress
 from autograder.grading import submissions
 from autograder.grading.budget import GRADESCOPE_BYTES, PAGE_BYTES, RESULT_BYTES, fit_result, read_capped
-from autograder.grading.canary import describe_canary, ensure_reference_passes
+from autograder.grading.canary import canary_cached, describe_canary, ensure_reference_passes
 from autograder.grading.fingerprint import fingerprint, fingerprint_parts, what_changed
 from autograder.grading.context import GradingContext
 from autograder.grading.pipeline import GradingOptions, grade_student
@@ -447,6 +447,10 @@ def grade_class(
     cleanup.sweep_stale()  # the temporary folders of a grader that was killed mid-batch
     parts = fingerprint_parts(options, course)
     summary = RunSummary(ignored=found.skipped, layout=found.layout)
+    if options.nbval and runner is None and not canary_cached(parts):
+        # the notebook transcripts first (their runs side by side), so that the canary's notebook stage replays
+        # them instead of running every kernel a third time; a lesson whose recording failed runs its kernel
+        record_notebook_calls(course, options, lessons=options.lessons)
     if announce:
         announce("canary: grading the reference solutions first (once per grader version)...")
     summary.canary = ensure_reference_passes(course, options, parts, submissions=path, output=out_dir)

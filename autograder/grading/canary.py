@@ -32,7 +32,7 @@ import shutil
 import subprocess
 import sys
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from autograder.grading.fingerprint import cache_dir, fingerprint, write_private
@@ -264,6 +264,11 @@ def _marker(parts):
     return cache_dir() / f"canary-{fingerprint(parts)}.json"
 
 
+def canary_cached(parts: dict[str, str]) -> bool:
+    """Has a canary of these fingerprint ``parts`` passed on this machine before (so it will not run now)?"""
+    return _marker(parts).exists()
+
+
 def shortfalls(result: StudentResult) -> list[str]:
     """One line per lesson stage where ``result`` is below full marks (empty when it has full marks)."""
     lines = []
@@ -303,6 +308,26 @@ def _grade_reference(course, options, folder, target, slot=None):
     Path(target).write_text(result.to_json(), encoding="utf-8")
 
 
+def _expected_cost(course, lesson):
+    """A lesson's canary grading, roughly: the calls its notebook transcript replays, if one is known (a lesson
+    whose kernel runs counts as many)."""
+    from autograder.grading import notebook_calls
+
+    learned = notebook_calls.memo(course)
+    if lesson not in learned:
+        return 0
+    transcript = learned[lesson]
+    return 10_000 if transcript is None else len(transcript.calls)
+
+
+def _joined(results: list[StudentResult]) -> StudentResult:
+    """The gradings of the reference's lessons, graded apart, as one result (lessons in order)."""
+    lessons = sorted((lesson for result in results for lesson in result.lessons), key=lambda lesson: lesson.number)
+    reasons = [result.reason for result in results if result.reason]
+    status = next((result.status for result in results if result.reason), results[0].status if results else "")
+    return replace(results[0], status=status, reason="; ".join(reasons), lessons=lessons) if results else None
+
+
 def ensure_reference_passes(
     course: Course,
     options: GradingOptions,
@@ -321,23 +346,31 @@ def ensure_reference_passes(
     from autograder.lessons.hand_ins import write_reference_submission
 
     started = time.monotonic()
+    lessons = list(options.lessons) or [lesson.number for lesson in course.catalog.graded_lessons]
+    lessons.sort(key=lambda number: -_expected_cost(course, number))  # the longest first: both CPUs end together
     with cleanup.private_folder_for("canary") as base:
         folder = write_reference_submission(course, Path(base) / "reference", lessons=options.lessons)
-        target = Path(base) / "result.json"
-        deaths = []
-        fork_each(
-            lambda _, slot: _grade_reference(course, options, folder, target, slot),
-            [None],
-            jobs=1,
-            on_done=lambda _, problem: deaths.append(problem),
+        deaths = {}
+        fork_each(  # one grading per lesson, side by side: the same pipeline, its lessons graded apart
+            lambda number, slot: _grade_reference(
+                course, replace(options, lessons=(number,)), folder, Path(base) / f"{number}.json", slot
+            ),
+            lessons,
+            jobs=max(1, min(len(lessons), len(os.sched_getaffinity(0)))),
+            on_done=deaths.__setitem__,
             deadline_seconds=timeout,
         )
-        if deaths[0] or not target.exists():
-            raise CanaryFailed(
-                f"grading the reference solutions failed: {deaths[0] or 'no result was written'}; "
-                "no student was graded (nothing was written or overwritten)"
-            )
-        result = StudentResult.from_json(target.read_text(encoding="utf-8"))
+        results = []
+        for number in lessons:
+            target = Path(base) / f"{number}.json"
+            if deaths.get(number) or not target.exists():
+                raise CanaryFailed(
+                    f"grading the reference solutions failed (lesson {number}): "
+                    f"{deaths.get(number) or 'no result was written'}; "
+                    "no student was graded (nothing was written or overwritten)"
+                )
+            results.append(StudentResult.from_json(target.read_text(encoding="utf-8")))
+        result = _joined(results)
     problems = shortfalls(result)
     if problems or result.max_score <= 0:
         raise CanaryFailed(

@@ -164,11 +164,14 @@ def record_notebook_calls(
     """Learn the notebook transcripts of ``course``'s lessons (all, or ``lessons``): run the masters with the
     reference's functions ``times`` times, noting every call (:mod:`autograder.grading.notebook_calls`).
 
-    Kept on the reference's memo and on disk; a lesson learned before (here or by an earlier run on this
-    machine) is not run again. Speed only: a failure leaves the lesson without a transcript (its kernel runs).
-    Returns the memo, ``{lesson: NotebookTranscript or None}``.
+    The runs are independent (two runs that differ mean the lesson is never replayed), so they run side by
+    side, each in a fork of its own with cold sandboxes (``slot`` is not used: a warm slot serves one process),
+    as many at once as this process may use CPUs. Kept on the reference's memo and on disk; a lesson learned
+    before (here or by an earlier run on this machine) is not run again. Speed only: a failure leaves the lesson
+    without a transcript (its kernel runs). Returns the memo, ``{lesson: NotebookTranscript or None}``.
     """
     from autograder.grading.suite import reference_programs
+    from autograder.sandbox.forking import fork_each
 
     learned = notebook_calls.memo(course)
     wanted = [lesson.number for lesson in course.catalog.graded_lessons if not lessons or lesson.number in lessons]
@@ -183,14 +186,32 @@ def record_notebook_calls(
     shells = [
         (LessonResult(number=number, title="", notebook="", status="graded"), programs[number]) for number in todo
     ]
+
+    def one_recording(index, _slot):  # in a fork: {lesson: the calls noted, or None} into the run's file
+        runs, records = _kernel_runs(shells, options, course, None, record=True)
+        noted = {}
+        for number in todo:
+            ok = runs.get(number) is not None and runs[number].status == "passed" and records is not None
+            noted[number] = [r for r in records if isinstance(r, dict) and r.get("lesson") == number] if ok else None
+        (Path(base) / f"{index}.json").write_text(json.dumps(noted), encoding="utf-8")
+
     recorded = {number: [] for number in todo}
     try:
-        for _ in range(times):
-            runs, records = _kernel_runs(shells, options, course, slot, record=True)
-            for number in todo:
-                ok = runs.get(number) is not None and runs[number].status == "passed" and records is not None
-                mine = [r for r in records if isinstance(r, dict) and r.get("lesson") == number] if ok else None
-                recorded[number].append(mine)
+        with cleanup.private_folder_for("recordings") as base:
+            fork_each(
+                one_recording,
+                list(range(times)),
+                jobs=max(1, min(times, len(os.sched_getaffinity(0)))),
+                on_done=lambda *_: None,
+                deadline_seconds=_stage_timeout(len(todo)) + 60,
+            )
+            for index in range(times):
+                try:
+                    noted = json.loads((Path(base) / f"{index}.json").read_text(encoding="utf-8"))
+                except (OSError, ValueError):
+                    noted = {}  # that run died: no lesson is replayed
+                for number in todo:
+                    recorded[number].append(noted.get(number))
     except Exception:  # speed only: these lessons simply run their kernels
         return learned
     for number in todo:

@@ -21,6 +21,7 @@ import time
 import traceback
 from typing import Callable, TypeVar
 
+from autograder.sandbox import cpus
 from autograder.sandbox.warm import SlotPool, WarmSlot
 
 T = TypeVar("T")  # one task: what fork_each hands to ``function`` and to ``on_done``
@@ -41,10 +42,11 @@ def describe_exit(status: int) -> str | None:
     return "the grading process ended abnormally"
 
 
-def _run_child(function, item, slots, slot):
+def _run_child(function, item, slots, slot, jobs):
     code = 0
     try:
         signal.signal(signal.SIGINT, signal.SIG_DFL)
+        cpus.pin(cpus.cpu_of_slot(slot, jobs))  # with its slot's zygote: one CPU per concurrent grader
         function(item, slots.enter(slot) if slots is not None else None)
     except BaseException:  # report on stderr, end with a non-zero status
         traceback.print_exc()
@@ -87,7 +89,7 @@ def fork_each(
                 item, slot = pending.pop(0), free.pop(0)
                 pid = os.fork()
                 if pid == 0:
-                    _run_child(function, item, slots, slot)
+                    _run_child(function, item, slots, slot, jobs)
                 running[pid] = (item, time.monotonic(), slot)
             pid, status = os.waitpid(-1, os.WNOHANG)
             if pid == 0:

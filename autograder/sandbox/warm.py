@@ -45,7 +45,7 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from autograder.sandbox import cleanup, launcher
+from autograder.sandbox import cleanup, cpus, launcher
 
 PID_LIMIT = 2**22  # the kernel's largest pid_max: slot uids never meet a cold sandbox's uid
 ZYGOTE_MEMORY = 512 * 1024**2  # room for the zygote's own pages in the slot's memory cap
@@ -113,8 +113,9 @@ class WarmWorker:
 class WarmSlot:
     """One long-lived sandbox with a zygote; started by the batch's parent, used by one grader at a time."""
 
-    def __init__(self, index, limits, support):
+    def __init__(self, index, limits, support, cpu=None):
         self.index, self.limits, self.support = index, limits, Path(support)
+        self.cpu = cpu  # the CPU its zygote, and so every worker it forks, keeps to (cpus.py), or None
         self.process = self.control = None
         self._base = None
         self.broken = False
@@ -144,15 +145,16 @@ class WarmSlot:
             cpu_seconds=ZYGOTE_CPU_SECONDS,
         )
         try:
-            self.process = launcher.spawn(
-                [sys.executable, "-I", "-B", "/sandbox/zygote.py"] + launcher.worker_flags(uid),
-                sandbox_dir,
-                scratch_dir,
-                slot_limits,
-                stdin=theirs.fileno(),
-                stdout=subprocess.DEVNULL,
-                zygote=True,
-            )
+            with cpus.pinned(self.cpu):
+                self.process = launcher.spawn(
+                    [sys.executable, "-I", "-B", "/sandbox/zygote.py"] + launcher.worker_flags(uid),
+                    sandbox_dir,
+                    scratch_dir,
+                    slot_limits,
+                    stdin=theirs.fileno(),
+                    stdout=subprocess.DEVNULL,
+                    zygote=True,
+                )
         finally:
             theirs.close()
         self.control = ours
@@ -257,7 +259,7 @@ class SlotPool:
     """The batch's slots: started by the parent before it forks graders, one per concurrent grader."""
 
     def __init__(self, count, limits, support):
-        self.slots = [WarmSlot(index, limits, support) for index in range(count)]
+        self.slots = [WarmSlot(index, limits, support, cpus.cpu_of_slot(index, count)) for index in range(count)]
 
     def __enter__(self):
         for slot in self.slots:
