@@ -23,6 +23,11 @@ def test_concurrent_slots_get_distinct_cpus_of_those_allowed():
 
 
 @needs_two
+def test_two_batches_start_counting_from_the_cpu_their_ids_pick():
+    assert cpus.cpu_of_slot(0, jobs=2, batch=0) != cpus.cpu_of_slot(0, jobs=2, batch=1)
+
+
+@needs_two
 def test_pinned_holds_within_the_block_and_restores_after():
     before = os.sched_getaffinity(0)
     with cpus.pinned(ALLOWED[1]):
@@ -38,6 +43,6 @@ def test_each_forked_grader_keeps_to_its_slots_cpu(tmp_path):
     outcomes = {}
     fork_each(note, ["a", "b"], jobs=2, on_done=outcomes.__setitem__)
     assert outcomes == {"a": None, "b": None}
-    seen = {(tmp_path / f"{item}.txt").read_text() for item in "ab"}
-    assert seen == {str(ALLOWED[0]), str(ALLOWED[1])}, seen
+    seen = [(tmp_path / f"{item}.txt").read_text() for item in "ab"]
+    assert seen == [str(cpus.cpu_of_slot(slot, jobs=2)) for slot in range(2)], seen
     assert os.sched_getaffinity(0) == set(ALLOWED), "the parent must stay free"

@@ -27,15 +27,20 @@ from contextlib import contextmanager
 from typing import Iterator
 
 
-def cpu_of_slot(slot: int, jobs: int) -> int | None:
-    """The CPU slot ``slot`` of ``jobs`` concurrent graders keeps to, or None (one grader, or one CPU)."""
+def cpu_of_slot(slot: int, jobs: int, batch: int | None = None) -> int | None:
+    """The CPU slot ``slot`` of ``jobs`` concurrent graders keeps to, or None (one grader, or one CPU).
+
+    ``batch``: the process id of the batch that owns the slots (default: this process). The slots of one batch
+    get distinct CPUs, counted from one that the batch's id picks, so that two batches running at once on one
+    machine do not both put their first slot on the first CPU.
+    """
     try:
         allowed = sorted(os.sched_getaffinity(0))
     except (AttributeError, OSError):
         return None
     if jobs < 2 or len(allowed) < 2:
         return None
-    return allowed[slot % len(allowed)]
+    return allowed[(slot + (os.getpid() if batch is None else batch)) % len(allowed)]
 
 
 def pin(cpu: int | None) -> None:

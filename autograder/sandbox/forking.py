@@ -46,7 +46,7 @@ def _run_child(function, item, slots, slot, jobs):
     code = 0
     try:
         signal.signal(signal.SIGINT, signal.SIG_DFL)
-        cpus.pin(cpus.cpu_of_slot(slot, jobs))  # with its slot's zygote: one CPU per concurrent grader
+        cpus.pin(cpus.cpu_of_slot(slot, jobs, batch=os.getppid()))  # with its slot's zygote: one CPU per grader
         function(item, slots.enter(slot) if slots is not None else None)
     except BaseException:  # report on stderr, end with a non-zero status
         traceback.print_exc()
