@@ -522,7 +522,7 @@ def grade_class(
                 course.reference, course, options.limits, slots.slots[0] if slots else None, lessons=options.lessons
             )
             if options.nbval:  # the notebook stage's transcripts: a kernel run skipped when the calls agree
-                record_notebook_calls(course, options, slots.slots[0] if slots else None, lessons=options.lessons)
+                record_notebook_calls(course, options, lessons=options.lessons)
             fork_each(grade_task, tasks, jobs, on_done, deadline_seconds=STUDENT_TIMEOUT + 120, slots=slots)
     if progress:
         progress.finish()

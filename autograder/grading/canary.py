@@ -321,11 +321,13 @@ def _expected_cost(course, lesson):
 
 
 def _joined(results: list[StudentResult]) -> StudentResult:
-    """The gradings of the reference's lessons, graded apart, as one result (lessons in order)."""
-    lessons = sorted((lesson for result in results for lesson in result.lessons), key=lambda lesson: lesson.number)
-    reasons = [result.reason for result in results if result.reason]
-    status = next((result.status for result in results if result.reason), results[0].status if results else "")
-    return replace(results[0], status=status, reason="; ".join(reasons), lessons=lessons) if results else None
+    """The gradings of the reference's lessons, graded apart, as one result (lessons in order, reasons joined)."""
+    first = next((result for result in results if result.reason), results[0])
+    return replace(
+        first,
+        reason="; ".join(result.reason for result in results if result.reason),
+        lessons=sorted((lesson for result in results for lesson in result.lessons), key=lambda lesson: lesson.number),
+    )
 
 
 def ensure_reference_passes(
@@ -348,6 +350,8 @@ def ensure_reference_passes(
     started = time.monotonic()
     lessons = list(options.lessons) or [lesson.number for lesson in course.catalog.graded_lessons]
     lessons.sort(key=lambda number: -_expected_cost(course, number))  # the longest first: both CPUs end together
+    if not lessons:
+        raise CanaryFailed("the course has no graded lesson: there is nothing to grade")
     with cleanup.private_folder_for("canary") as base:
         folder = write_reference_submission(course, Path(base) / "reference", lessons=options.lessons)
         deaths = {}

@@ -158,15 +158,13 @@ def _replays(lesson, program, transcript, options, course, slot):
         return False
 
 
-def record_notebook_calls(
-    course: Course, options: GradingOptions, slot: WarmSlot | None = None, lessons: tuple = (), times: int = 2
-) -> dict:
+def record_notebook_calls(course: Course, options: GradingOptions, lessons: tuple = (), times: int = 2) -> dict:
     """Learn the notebook transcripts of ``course``'s lessons (all, or ``lessons``): run the masters with the
     reference's functions ``times`` times, noting every call (:mod:`autograder.grading.notebook_calls`).
 
     The lessons are shared out between as many forks as this process may use CPUs (:func:`_shared_out`), and
-    each fork records its lessons ``times`` times in a row, with cold sandboxes (``slot`` is not used: a warm
-    slot serves one process): the CPUs work side by side, and no more lessons' sandboxes are alive at once than
+    each fork records its lessons ``times`` times in a row, with cold sandboxes (a warm slot serves one process
+    only): the CPUs work side by side, and no more lessons' sandboxes are alive at once than
     one recording of every lesson holds. Kept on the reference's memo and on disk; a lesson learned before (here
     or by an earlier run on this machine) is not run again. Speed only: a failure leaves the lesson without a
     transcript (its kernel runs). Returns the memo, ``{lesson: NotebookTranscript or None}``.
