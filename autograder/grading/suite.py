@@ -178,7 +178,7 @@ def _explain(error):
     if isinstance(error, Wrong):
         return _first_line(error.reason), _first_line(error.hint)
     if isinstance(error, StudentError):
-        hint = _contracts().DELEGATED_HINT if error.kind == "delegated" else HINTS.get(error.kind, "")
+        hint = _contracts().delegated_hint(error.message) if error.kind == "delegated" else HINTS.get(error.kind, "")
         if error.kind == "exception":
             hint = _crash_hint(error.message) or hint
         return _first_line(error.message), hint

@@ -116,8 +116,8 @@ def lock_matrices(seed):
 
 # ---------------------------------------------------------------- hints
 NAN_HINT = (
-    "np.arcsin of a value a hair beyond ±1 (rounding) is nan: get pitch from "
-    "atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), or clip the argument to [-1, 1]"
+    "np.arcsin of a value a hair beyond ±1 (rounding) is nan: the pitch must come out finite for every rotation "
+    "matrix, rounded entries included"
 )
 
 
@@ -217,8 +217,8 @@ def _extraction_hint(got, R, eps=None):
             "cos(pitch) is below about 1e-12"
         )
     return (
-        "at and next to the lock: pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), a lock branch when "
-        "cos(pitch) < 1e-12 (roll = 0), and a roll read from entries of R that stay large next to the lock"
+        "at and next to the lock the angles must rebuild R: check the pitch's digits there, a lock branch at the "
+        "docstring's threshold (roll = 0), and which entries of R the roll is read from"
     )
 
 

@@ -1,4 +1,4 @@
-"""Hidden checks for lesson 07, section 9: relative_pose (the bug in the colleague's function).
+"""Hidden checks for lesson 07, section 8: relative_pose (the bug in the colleague's function).
 
 Oracle: the defining property T_wa T_ab = T_wb, with T_ab computed here as inv(T_wa) @ T_wb (numpy's general
 inverse, independent of the course's formulas). Core idea (3 of 5 points): the relative pose is T_wa⁻¹ T_wb,

@@ -1,4 +1,4 @@
-"""Typical mistakes for lesson 07, section 9: the relative pose (the colleague's bug and its relatives)."""
+"""Typical mistakes for lesson 07, section 8: the relative pose (the colleague's bug and its relatives)."""
 
 from . import Alternative, Mistake
 

@@ -19,6 +19,24 @@ def _compound(adjoint="AdSE3(np.linalg.inv(T2))", pose="T1 @ T2", carried="A @ S
 
 MISTAKES = [
     Mistake(
+        "compound_finite_differences",
+        "compound_pose_covariance",
+        "ξ1's Jacobian by central differences of the definition instead of derived",
+        """
+def compound_pose_covariance(T1, S1, T2, S2):
+    T1, S1, T2, S2 = (np.asarray(a, dtype=float) for a in (T1, S1, T2, S2))
+    inverse = np.linalg.inv(T1 @ T2)
+    h = 1e-6
+    A = np.column_stack(
+        [(LogSE3(inverse @ T1 @ ExpSE3(h * e) @ T2) - LogSE3(inverse @ T1 @ ExpSE3(-h * e) @ T2)) / (2 * h)
+         for e in np.eye(6)]
+    )
+    return T1 @ T2, A @ S1 @ A.T + S2
+""",
+        hint="a linearisation by finite differences is not",
+        public_hint="a linearisation by finite differences is not",
+    ),
+    Mistake(
         "compound_no_transport",
         "compound_pose_covariance",
         "S1 + S2: the first twist not carried across T2",

@@ -14,14 +14,20 @@ def filter_predict(R, P, omega_meas, dt, Q):
     if theta < 1e-6:
         Jr = np.eye(3) - W / 2 + W @ W / 6
     else:
-        Jr = np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+        Jr = np.eye(3) - {first} * W + (theta - np.sin(theta)) / theta**3 * W @ W
     G = {noise_jacobian}
     return {R_new}, {carried} + {noise}
 """
 
 
-def _predict(noise_jacobian="Jr * dt", R_new="R @ step", carried="step.T @ P @ step", noise="G @ Q @ G.T"):
-    return _PREDICT.format(noise_jacobian=noise_jacobian, R_new=R_new, carried=carried, noise=noise)
+def _predict(
+    noise_jacobian="Jr * dt",
+    R_new="R @ step",
+    carried="step.T @ P @ step",
+    noise="G @ Q @ G.T",
+    first="2 * np.sin(theta / 2) ** 2 / theta**2",
+):
+    return _PREDICT.format(noise_jacobian=noise_jacobian, R_new=R_new, carried=carried, noise=noise, first=first)
 
 
 _NEES = """
@@ -39,6 +45,34 @@ def _nees(error="Log(R_est.T @ R_true)", value="float(eps @ np.linalg.solve(P, e
 
 
 MISTAKES = [
+    Mistake(
+        "predict_closed_form_cancels",
+        "filter_predict",
+        "J_r's first coefficient as (1 - cos θ)/θ² right above a small-step branch at 1e-6, where it loses its digits",
+        _predict(first="(1 - np.cos(theta)) / theta**2"),
+        hint="1 - cos θ loses its digits",
+        public_hint="1 - cos θ loses its digits",
+    ),
+    Mistake(
+        "predict_finite_differences",
+        "filter_predict",
+        "the two Jacobians by central differences of the definition instead of derived",
+        """
+def filter_predict(R, P, omega_meas, dt, Q):
+    R, P, omega, Q = (np.asarray(a, dtype=float) for a in (R, P, omega_meas, Q))
+    R_new = R @ Exp(omega * dt)
+    h = 1e-6
+
+    def error(x):
+        return Log(R_new.T @ R @ Exp(x[:3]) @ Exp((omega - x[3:]) * dt))
+
+    J = np.column_stack([(error(h * e) - error(-h * e)) / (2 * h) for e in np.eye(6)])
+    F, G = J[:, :3], J[:, 3:]
+    return R_new, F @ P @ F.T + G @ Q @ G.T
+""",
+        hint="a Jacobian taken by finite differences is not",
+        public_hint="a Jacobian taken by finite differences is not",
+    ),
     # ------------------------------------------------------------ filter_predict
     Mistake(
         "predict_no_transport",
@@ -156,7 +190,7 @@ def filter_predict(R, P, omega_meas, dt, Q):
     if theta < 1e-6:
         Jr = np.eye(3) - W / 2 + W @ W / 6
     else:
-        Jr = np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+        Jr = np.eye(3) - 2 * np.sin(theta / 2) ** 2 / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
     G = Jr * dt
     return R @ step, step.T @ P @ step + G @ Q @ G.T
 """,
@@ -175,7 +209,7 @@ def filter_predict(R, P, omega_meas, dt, Q):
     if theta < 1e-6:
         Jr = np.eye(3) - W / 2 + W @ W / 6
     else:
-        Jr = np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
+        Jr = np.eye(3) - 2 * np.sin(theta / 2) ** 2 / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
     step, G = Exp(phi), Jr * dt
     return [(R @ step).tolist(), (step.T @ P @ step + G @ Q @ G.T).tolist()]
 """,

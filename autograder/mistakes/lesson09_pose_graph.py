@@ -70,6 +70,29 @@ MISTAKES = [
         public_hint="the residual of the reversed edge",
     ),
     Mistake(
+        "edge_finite_difference_jacobians",
+        "pose_graph_edge",
+        "both Jacobians by central differences of the residual (the page's tool for checking them), not derived",
+        """
+def pose_graph_edge(T_i, T_j, T_ij):
+    T_i, T_j, T_ij = (np.asarray(T, dtype=float) for T in (T_i, T_j, T_ij))
+
+    def residual(A, B):
+        return LogSE3(np.linalg.inv(T_ij) @ np.linalg.inv(A) @ B)
+
+    h = 1e-6
+    J_i = np.column_stack(
+        [(residual(T_i @ ExpSE3(h * e), T_j) - residual(T_i @ ExpSE3(-h * e), T_j)) / (2 * h) for e in np.eye(6)]
+    )
+    J_j = np.column_stack(
+        [(residual(T_i, T_j @ ExpSE3(h * e)) - residual(T_i, T_j @ ExpSE3(-h * e))) / (2 * h) for e in np.eye(6)]
+    )
+    return residual(T_i, T_j), J_i, J_j
+""",
+        hint="agrees with finite differences but not to rounding",
+        public_hint="agrees with finite differences but not to rounding",
+    ),
+    Mistake(
         "edge_lists_inverse_by_hand",
         "pose_graph_edge",
         "an inverse written by hand with T[:3, :3] on the inputs as given: lists take no 2-D slice",

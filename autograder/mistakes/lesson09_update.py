@@ -21,6 +21,22 @@ def _update(H="skew(g_b)", R_new="R @ Exp(delta)", P_new="(np.eye(3) - K @ H) @ 
 
 MISTAKES = [
     Mistake(
+        "update_finite_difference_jacobian",
+        "filter_update",
+        "the measurement Jacobian by central differences of (R Exp(ε))ᵀ g_w, not derived",
+        """
+def filter_update(R, P, y, g_w, Rn):
+    R, P, y, g_w, Rn = (np.asarray(a, dtype=float) for a in (R, P, y, g_w, Rn))
+    h = 1e-6
+    H = np.column_stack([((R @ Exp(h * e)).T @ g_w - (R @ Exp(-h * e)).T @ g_w) / (2 * h) for e in np.eye(3)])
+    information = np.linalg.inv(P) + H.T @ np.linalg.solve(Rn, H)
+    step = np.linalg.solve(information, H.T @ np.linalg.solve(Rn, y - R.T @ g_w))
+    return R @ Exp(step), np.linalg.inv(information)
+""",
+        hint="a Jacobian taken by finite differences is not",
+        public_hint="a Jacobian taken by finite differences is not",
+    ),
+    Mistake(
         "update_left_jacobian",
         "filter_update",
         "H = Rᵀ [g_w]×: the measurement Jacobian of a left error",

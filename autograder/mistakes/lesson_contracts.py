@@ -67,6 +67,46 @@ def log_so3(R):
         public_hint="write the exercise with numpy yourself",
     ),
     Mistake(
+        "right_jacobian_inverts_the_printed_inverse",
+        "right_jacobian_so3",
+        "inverts the closed form of J_r⁻¹ that the lesson prints for Exercise 8 instead of deriving J_r",
+        """
+def right_jacobian_so3(w):
+    w = np.asarray(w, dtype=float)
+    theta = np.linalg.norm(w)
+    W = skew(w)
+    if theta < 1e-3:
+        c = 1.0 / 12.0 + theta**2 / 720.0
+    else:
+        c = 1.0 / theta**2 - (1.0 + np.cos(theta)) / (2.0 * theta * np.sin(theta))
+    return np.linalg.inv(np.eye(3) + W / 2.0 + c * (W @ W))
+""",
+        hint="inverting an inverse that the lesson prints",
+        public_hint="inverting an inverse that the lesson prints",
+    ),
+    Mistake(
+        "exp_se3_solves_with_the_printed_V_inverse",
+        "exp_se3",
+        "solves with the V⁻¹ that the lesson prints for the logarithm instead of deriving V",
+        """
+def exp_se3(xi):
+    xi = np.asarray(xi, dtype=float).reshape(6)
+    rho, phi = xi[:3], xi[3:]
+    theta = np.linalg.norm(phi)
+    W = skew(phi)
+    if theta < 1e-2:
+        c = 1.0 / 12.0 + theta**2 / 720.0
+    else:
+        c = (1.0 - theta / 2.0 / np.tan(theta / 2.0)) / theta**2
+    T = np.eye(4)
+    T[:3, :3] = Exp(phi)
+    T[:3, 3] = np.linalg.solve(np.eye(3) - W / 2.0 + c * (W @ W), rho)
+    return T
+""",
+        hint="inverting an inverse that the lesson prints",
+        public_hint="inverting an inverse that the lesson prints",
+    ),
+    Mistake(
         "axis_from_eigen_complex",
         "axis_from_eigen",
         "np.linalg.eig's complex eigenvector returned as it comes (dtype complex128, zero imaginary part)",

@@ -22,7 +22,7 @@ above already say what is wrong.
 import functools
 import traceback
 
-from .contracts import CHANGED_HINT, DELEGATED_HINT, guard_for, refusal
+from .contracts import CHANGED_HINT, delegated_hint, guard_for, refusal
 from .watching import snapshot, watch_call
 
 # Crashes whose message says what went wrong in a way a student may not read at once: (words, hint).
@@ -181,7 +181,8 @@ class _Watched:
         broken = []
         if self.used:
             broken.append(("is your own implementation",
-                           refusal(self.exercise, self.used, _LESSON_OF.get(self.exercise, "")), DELEGATED_HINT))
+                           refusal(self.exercise, self.used, _LESSON_OF.get(self.exercise, "")),
+                           delegated_hint(self.used)))
         if self.changed:
             broken.append(("leaves its arguments unchanged",
                            f"{self.exercise} changes its argument{'s' if len(self.changed) > 1 else ''} "

@@ -33,6 +33,8 @@ __all__ = [
     "forbidden_for",
     "CHANGED_HINT",
     "DELEGATED_HINT",
+    "INVERTED_HINT",
+    "delegated_hint",
     "Allowance",
     "allowance_for",
     "guard_for",
@@ -42,6 +44,11 @@ __all__ = [
 SCIPY_ROTATIONS = ("scipy.spatial.transform",)  # Rotation, Slerp, RotationSpline
 MATRIX_FUNCTIONS = ("scipy.linalg.expm", "scipy.linalg.logm", "scipy.linalg.expm_frechet")
 EXP_LOG = ("coursekit.lie.Exp", "coursekit.lie.Log")
+# numpy's inverses and solvers: where the page prints the inverse of an exercise's answer (J_r⁻¹ in
+# lesson 06, V⁻¹ in lesson 07), inverting it numerically would skip the derivation
+INVERSES = tuple(
+    f"numpy.linalg.{name}" for name in ("inv", "solve", "pinv", "lstsq", "tensorinv", "tensorsolve", "matrix_power")
+)
 
 # Only the functions that do the exercise's own job: exp_so3 may use a skew helper (writing
 # [w]× is the hat exercise's job), euler_zyx_to_matrix may build its elementary rotations with
@@ -72,10 +79,10 @@ FORBIDDEN = {
     "euler_zyx_to_quat": SCIPY_ROTATIONS,
     "quat_to_euler_zyx": SCIPY_ROTATIONS,
     # lesson 06: the right Jacobian is the job (JrSE3's rotation block is Jr, of the negated vector V)
-    "right_jacobian_so3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS,
+    "right_jacobian_so3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS + INVERSES,
     "right_jacobian_inv_so3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS,
     # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)
-    "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS,
+    "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS + INVERSES,
     "log_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS,
     # lesson 07, section 10: the adjoint and the Jacobian of Exp are the job
     "adjoint_se3": ("coursekit.lie.AdSE3",),
@@ -93,6 +100,24 @@ DELEGATED_HINT = (
     "helpers and your own functions, plus the course tools its lesson's text uses (the start "
     "page says which)"
 )
+
+
+INVERTED_HINT = (
+    "derive the answer itself, from your own closed form and numpy's arithmetic: inverting an inverse "
+    "that the lesson prints is not a derivation"
+)
+
+
+def delegated_hint(used):
+    """The hint for a refused answer, from what it called (names, or the refusal line itself).
+
+    >>> delegated_hint(["numpy.linalg._linalg.inv"]) == INVERTED_HINT
+    True
+    >>> delegated_hint("exp_so3 called scipy.linalg.expm: ...") == DELEGATED_HINT
+    True
+    """
+    text = used if isinstance(used, str) else " ".join(used)
+    return INVERTED_HINT if "numpy.linalg." in text else DELEGATED_HINT
 
 
 def forbidden_for(exercise):
@@ -154,6 +179,8 @@ LESSON_EXTRAS = {"09": ("scipy.spatial.transform", "scipy.linalg", "scipy.stats"
 OWN_FORBIDDEN = {
     "axis_from_eigen": ("log_so3", "axis_angle"),  # the axis must come from the eigenvector
     "quat_power": ("quat_slerp",),  # slerp from 1 to q at t is q^t
+    "right_jacobian_so3": ("right_jacobian_inv_so3",),  # the printed J_r⁻¹, inverted, is not a derivation
+    "exp_se3": ("log_se3",),
 }
 
 
@@ -167,7 +194,10 @@ class Allowance:
     def describe(self):
         """The allowance in words, as the feedback line says it."""
         extra = [name for name in self.modules if name.startswith(("coursekit", "scipy"))]
-        tools = ", ".join(["numpy", "math"] + extra)
+        numpy = "numpy"
+        if set(INVERSES) <= set(forbidden_for(self.exercise)):
+            numpy = "numpy (without np.linalg's inverses and solvers)"
+        tools = ", ".join([numpy, "math"] + extra)
         return f"{tools} and your own functions"
 
     def __repr__(self):
@@ -181,8 +211,10 @@ def allowance_for(exercise, lesson=""):
 
     >>> allowance_for("exp_so3", "03").describe()
     'numpy, math and your own functions'
-    >>> allowance_for("exp_se3", "07").describe()
+    >>> allowance_for("pose_compose", "07").describe()
     'numpy, math, coursekit.lie and your own functions'
+    >>> allowance_for("exp_se3", "07").describe()
+    "numpy (without np.linalg's inverses and solvers), math, coursekit.lie and your own functions"
     """
     modules = PLAIN
     if str(lesson) >= LIE_FROM_LESSON:

@@ -137,8 +137,8 @@ OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT = ("for opposite directions the answer is a
                                         "perpendicular to a")
 
 # ---------------------------------------------------------------- checks/lesson04_powers.py
-POWER_ARCCOS_HINT = ("arccos(w) rounds small half-angles to 0 (cos α is 1.0 below about 1e-8): read α off both w and "
-                     "|v|, as lesson 03's Log reads its angle")
+POWER_ARCCOS_HINT = ("arccos(w) rounds small half-angles to 0 (cos α is 1.0 below about 1e-8): the angle must keep "
+                     "its digits at every size, as your Log of lesson 03 had to")
 POWER_DEFINITION_HINT = "q^t = Exp_q(t Log_q q): write q as [cos α, sin α u] with α in [0, π], then apply the definition"
 POWER_HALF_ANGLE_HINT = ("q = [cos α, sin α u] already holds the half angle: Log_q doubles α and Exp_q halves it "
                          "again, so q¹ must come back as q")
@@ -148,14 +148,14 @@ POWER_SIGN_FLIP_HINT = ("q and -q are one rotation but not one quaternion: -q ha
 POWER_UNIT_AXIS_HINT = "the vector part is sin α u, not u: divide it by its length to get the unit axis"
 
 # ---------------------------------------------------------------- checks/lesson05.py
-ANGLES_MUST_SATISFY_R_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): yaw = atan2(R[1, 0], R[0, 0]), "
-                              "pitch = atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), roll = atan2(R[2, 1], R[2, 2])")
+ANGLES_MUST_SATISFY_R_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): rebuild R from your angles with "
+                              "your euler_zyx_to_matrix and compare entry by entry to see which angle is off")
 COLUMNS_ORDER_ROLL_PITCH_HINT = ("the columns are in the order [roll, pitch, yaw]: E multiplies [yaw_rate, "
                                  "pitch_rate, roll_rate]")
 LOCK_ONLY_YAW_ROLL_DEFINED_HINT = ("at the lock only yaw ∓ roll is defined and these angles do give the rotation: the "
                                    "course sets roll = 0 and gives the whole turn to yaw")
 LOCK_ONLY_YAW_ROLL_HINT = ("at the lock only yaw ∓ roll is defined and these angles do give R: the course sets roll = "
-                           "0 and yaw = atan2(-R[0, 1], R[1, 1])")
+                           "0 and gives the whole turn to yaw")
 MIXED_PRODUCTS_LOST_THEIR_HINT = ("the mixed products lost their minus signs: w = c c c + s s s, x = c c s - s s c, y "
                                   "= c s c + s c s, z = s c c - c s s (c, s of yaw/2, pitch/2, roll/2 in that order)")
 NON_UNIT_Q_STANDS_HINT = "a non-unit q stands for the same rotation: divide q by its norm first"
@@ -165,10 +165,10 @@ NO_GIMBAL_LOCK_BRANCH_HINT = ("no gimbal-lock branch, or a lock test too strict 
                               "the whole turn to yaw")
 NO_SEPARATE_GIMBAL_LOCK_HINT = ("no separate gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 "
                                 "the entries R[0, 0], R[1, 0], R[2, 1], R[2, 2] are rounding noise (about 1e-16, "
-                                "seldom exactly 0), so atan2 of them is arbitrary; call it locked when cos(pitch) < "
-                                "about 1e-12, and there set roll = 0 and yaw = atan2(-R[0, 1], R[1, 1])")
+                                "seldom exactly 0), so atan2 of them is arbitrary; at the docstring's lock threshold "
+                                "set roll = 0 and read the yaw from entries that stay large there")
 PITCH_ARCSIN_R_LOSES_HINT = ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by "
-                             "√(2ε)): get pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0]))")
+                             "√(2ε)): read the pitch from a pair of numbers that both keep their digits there")
 PITCH_TURNS_WRONG_WAY_HINT = ("the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], [-sin, 0, cos]] "
                               "(about y the minus sign sits bottom-left)")
 ROLL_SIGNS_FLIPPED_EXPRESS_HINT = ("the roll signs are flipped: every entry with sin(roll) has the wrong sign; the "
@@ -315,12 +315,23 @@ WEIGHTS_K_R_BEYOND_HINT = ("weights (k/r)² beyond k belong to another cost, who
                            "cost keeps a constant pull k on every pair beyond k")
 
 # ---------------------------------------------------------------- checks/lesson09_filter.py, _update.py
+# the derive exercises of lesson 09 promise exact results: finite differences and cancelling closed forms come close
+PREDICT_FINITE_DIFFERENCES_HINT = ("P_new is right to several digits but not to rounding: the first-order covariance is "
+                                   "exact, and a Jacobian taken by finite differences is not; derive F and G")
+PREDICT_CANCELS_HINT = ("P_new loses digits at this small step: a closed form of J_r used just above its small-step "
+                        "branch cancels (1 - cos θ loses its digits there); move the branch, or write the "
+                        "coefficient without the subtraction")
+UPDATE_FINITE_DIFFERENCES_HINT = ("right to several digits but not to rounding: the docstring's linearisation is exact, "
+                                  "and a Jacobian taken by finite differences is not; derive H")
 NEES_NOT_DIVIDED_HINT = "the NEES is the full quadratic form, not divided by the dimension"
 PREDICT_NO_TURN_R_HINT = "with ω = 0 the step turns nothing: R_new must be R itself, to the last bits"
 PREDICT_NO_TURN_P_HINT = "with ω = 0 the step turns nothing: P grows by the gyro noise's covariance over dt alone"
 UPDATE_WRONG_SIDE_HINT = "the correction is applied on the wrong side: the error state is R_true = R Exp(ε)"
 
 # ---------------------------------------------------------------- checks/lesson09_compound.py
+COMPOUND_FINITE_DIFFERENCES_HINT = ("right to several digits but not to rounding: the docstring's first-order covariance "
+                                    "is exact, and a linearisation by finite differences is not; derive how ξ1 "
+                                    "crosses T2")
 COMPOUND_PAIR_REASON = "compound_pose_covariance must return a pair (T, S)"
 COMPOUND_EXPAND_HINT = "expand T1 Exp(ξ1) T2 Exp(ξ2) to first order, gathering both twists on the right"
 COMPOUND_PRECISION_HINT = (
@@ -332,5 +343,8 @@ COMPOUND_PRECISION_HINT = (
 HAND_EYE_LISTS_REASON = "hand_eye_rotation answers differently for plain lists"
 
 # ---------------------------------------------------------------- checks/lesson09_pose_graph.py
+EDGE_FINITE_DIFFERENCES_HINT = ("your Jacobian agrees with finite differences but not to rounding: the docstring "
+                                "asks for the exact Jacobian; finite differences check a derivation, they do not "
+                                "replace it")
 EDGE_NOT_INVERTED_HINT = "Log's Jacobian at r is the inverse of Exp's right Jacobian there, not the Jacobian itself"
 EDGE_SIGN_HINT = "the sign: T_i appears inverted in the residual, (T_i Exp(δ_i))⁻¹ = Exp(-δ_i) T_i⁻¹"

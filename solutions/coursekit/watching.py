@@ -265,7 +265,11 @@ def _resolve(name):
     if inspect.ismodule(target):
         return target.__name__ + "."
     target = getattr(target, "__func__", target)
-    return f"{getattr(target, '__module__', module_name)}.{getattr(target, '__qualname__', attribute)}."
+    # numpy's public functions are C dispatchers (numpy >= 1.25): their frames are the implementation's,
+    # in the module the code lives in (numpy.linalg._linalg), whatever __module__ says
+    target = getattr(target, "_implementation", target)
+    module = getattr(target, "__globals__", {}).get("__name__") or getattr(target, "__module__", module_name)
+    return f"{module}.{getattr(target, '__qualname__', attribute)}."
 
 
 def _callable_codes(values, depth=0):

@@ -1,4 +1,4 @@
-"""Public checks for lesson 07, section 9: the relative pose of two frames known in the world.
+"""Public checks for lesson 07, section 8: the relative pose of two frames known in the world.
 
 The checks use poses written out by hand (quarter turns and shifts), the defining property T_wa T_ab = T_wb,
 and the values the usual slips return for them, stored as numbers

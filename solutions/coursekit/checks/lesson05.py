@@ -20,8 +20,8 @@ from .common import fmt, off_by, require_shape
 E = np.eye(3)
 HALF_PI = np.pi / 2
 REBUILD_TOL = 1e-11
-NAN_HINT = ("np.arcsin of a number a hair beyond ±1 (rounding) is nan: get pitch from "
-            "atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), or clip the argument to [-1, 1]")
+NAN_HINT = ("np.arcsin of a number a hair beyond ±1 (rounding) is nan: the pitch must come out finite for every "
+            "rotation matrix, rounded entries included")
 
 
 def _zyx(yaw, pitch, roll):
@@ -123,8 +123,8 @@ def _extraction_hint(angles, R, pitch, no_branch, asin=None, near=False):
                 "the roll read from them rebuilds the large entries of R badly; take it from entries that stay large")
     if near and angles[2] == 0.0:
         return "treated a matrix 1e-9 rad from the lock as locked: call it gimbal lock only when cos(pitch) < 1e-12"
-    return ("take pitch from atan2(-R[2, 0], hypot(R[0, 0], R[1, 0])), call it locked only when cos(pitch) < 1e-12, "
-            "and read the roll from entries of R that stay large next to the lock")
+    return ("at and next to the lock the angles must rebuild R to 1e-11: check the pitch's digits there, the lock "
+            "test against the docstring's threshold, and which entries of R the roll is read from")
 
 
 def _random_attitudes(seed, count=5):

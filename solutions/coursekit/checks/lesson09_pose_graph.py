@@ -1,10 +1,12 @@
 """Public checks for lesson 09, section 7: the residual of a pose-graph edge and its two Jacobians.
 
 r = Log(T_ij⁻¹ T_i⁻¹ T_j) (twists [ρ, φ]); the Jacobians are those of r with respect to right perturbations
-T_i Exp(δ_i) and T_j Exp(δ_j). The checks take central differences of that definition (coursekit.lie's ExpSE3 and
-LogSE3) at an edge whose residual is large (|φ| ≈ 1.7 rad, |ρ| ≈ 2.3 m), where a Jacobian that assumes a small
-residual is visibly wrong, and at a consistent edge (r = 0). The values the usual slips return at the check's edge
-are stored as numbers (``tests/test_public_check_constants_lesson09_pose_graph.py`` recomputes them).
+T_i Exp(δ_i) and T_j Exp(δ_j). The checks compare them with numbers stored here, the Jacobians at two fixed edges:
+one whose residual is large (|φ| ≈ 1.7 rad, |ρ| ≈ 2.3 m), where a Jacobian that assumes a small residual is
+visibly wrong, and a consistent one (r = 0). The values the usual slips return at the large edge are stored too
+(all recomputed by ``tests/test_public_check_constants_lesson09_pose_graph.py``, by central differences of the
+residual with coursekit.lie's ExpSE3 and LogSE3, and with its JrSE3 and AdSE3). Nothing here computes a Jacobian
+for other edges.
 """
 
 import numpy as np
@@ -12,7 +14,7 @@ import numpy as np
 from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
-from ..lie import ExpSE3, LogSE3
+from ..lie import ExpSE3
 from .common import off_by, require_same_with_lists, require_shape
 
 EDGE_T_I = ExpSE3([0.5, -1.0, 2.0, 0.3, -0.2, 0.9])
@@ -20,7 +22,53 @@ EDGE_T_IJ = ExpSE3([1.0, 0.5, -0.5, 0.2, 0.4, -0.3])
 EDGE_RESIDUAL = np.array([1.0, -2.0, 0.5, 1.2, -0.8, 0.9])
 EDGE_T_J = EDGE_T_I @ EDGE_T_IJ @ ExpSE3(EDGE_RESIDUAL)  # so that the edge's residual is EDGE_RESIDUAL
 
-# What the usual slips return at that edge.
+# The answer's J_i and J_j of pose_graph_edge(EDGE_T_I, EDGE_T_J, EDGE_T_IJ): the derivatives of r in δ_i and δ_j.
+EDGE_J_I = np.array(
+    [
+        [-1.0591783397591608, -0.004142993549259889, -0.13654172582268445,
+         -0.11926250050245622, 1.0474289518612723, -0.7441196528957421],
+        [0.019453306872388602, -0.7499133471732153, -0.8095054897146117,
+         -0.3522485400633821, 0.9873287367757575, -1.1684067734461785],
+        [0.19587874547349607, 0.7493530421520589, -0.7756767530569124,
+         1.3255038994784725, 0.9233525987040672, 0.8308380431514338],
+        [0.0, 0.0, 0.0, -1.059178339759161, -0.004142993549260034, -0.13654172582268428],
+        [0.0, 0.0, 0.0, 0.01945330687238867, -0.7499133471732152, -0.8095054897146119],
+        [0.0, 0.0, 0.0, 0.19587874547349626, 0.749353042152059, -0.7756767530569124],
+    ]
+)
+EDGE_J_J = np.array(
+    [
+        [0.8729148337233061, -0.5341391445693976, -0.3053434623594282,
+         -0.3744521485175597, -0.5404662771915515, -0.8572798169050632],
+        [0.3658608554306027, 0.8027988799154749, -0.6631043584270483,
+         -0.040466277191549896, -0.3126715796765836, -0.7003207194417062],
+        [0.4946565376405724, 0.5368956415729522, 0.817698520099639,
+         1.1427201830949385, 0.2996792805582957, -0.5124836775686414],
+        [0.0, 0.0, 0.0, 0.8729148337233061, -0.5341391445693976, -0.30534346235942816],
+        [0.0, 0.0, 0.0, 0.3658608554306027, 0.8027988799154749, -0.6631043584270483],
+        [0.0, 0.0, 0.0, 0.4946565376405724, 0.5368956415729522, 0.817698520099639],
+    ]
+)
+
+# A consistent edge, T_j = T_i T_ij (r = 0), and the answer's J_i of pose_graph_edge(CONSISTENT_T_I,
+# CONSISTENT_T_I @ CONSISTENT_T_IJ, CONSISTENT_T_IJ); its J_j is the identity.
+CONSISTENT_T_I = ExpSE3([2.0, 1.0, -1.0, -0.4, 1.1, 0.2])
+CONSISTENT_T_IJ = ExpSE3([0.3, -0.6, 0.2, 0.9, 0.1, -0.5])
+CONSISTENT_J_I = np.array(
+    [
+        [-0.8811860369779735, 0.37435609633214884, 0.2887363527060775,
+         -0.1484506882721521, 0.05118720292817765, -0.5194181950071699],
+        [-0.45661191688585956, -0.5156046122948148, -0.7250223728535102,
+         0.4164647339728493, 0.14632900740256577, -0.36634824188750037],
+        [0.12254275006247589, 0.7707200509389052, -0.6252790396997624,
+         0.4843214860059338, 0.07302997967986262, 0.18493464377754817],
+        [0.0, 0.0, 0.0, -0.8811860369779735, 0.3743560963321489, 0.2887363527060775],
+        [0.0, 0.0, 0.0, -0.45661191688585956, -0.5156046122948148, -0.7250223728535102],
+        [0.0, 0.0, 0.0, 0.12254275006247589, 0.7707200509389052, -0.6252790396997624],
+    ]
+)
+
+# What the usual slips return at the large edge.
 EDGE_I_NO_JR = np.array(
     [
         [
@@ -159,12 +207,12 @@ SIGN_HINT = hints.EDGE_SIGN_HINT
 REVERSED_HINT = "that is the residual of the reversed edge, -r: the residual is Log(T_ij⁻¹ T_i⁻¹ T_j)"
 
 
-def _central(f, n, h=1e-6):
-    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
+EXACT = 1e-11  # relative to 1 + the largest translation, as the hidden checks hold it: exact Jacobians, not differences
+FINITE_DIFFERENCES_HINT = hints.EDGE_FINITE_DIFFERENCES_HINT
 
 
-def _residual(T_i, T_j, T_ij):
-    return LogSE3(np.linalg.inv(T_ij) @ np.linalg.inv(T_i) @ T_j)
+def _tolerance(*poses):
+    return EXACT * (1.0 + max(np.linalg.norm(T[:3, 3]) for T in poses))
 
 
 def _edge(pose_graph_edge, T_i, T_j, T_ij):
@@ -189,44 +237,48 @@ def _(pose_graph_edge):
         raise Mismatch(f"the residual is off ({off_by(r, EDGE_RESIDUAL)})", hint)
 
 
-@public_check("pose_graph_edge", "J_j matches central differences at a large residual (|φ| ≈ 1.7 rad)")
+@public_check("pose_graph_edge", "J_j, the derivative of r in δ_j, at a large residual (|φ| ≈ 1.7 rad)")
 def _(pose_graph_edge):
     _, _, J_j = _edge(pose_graph_edge, EDGE_T_I, EDGE_T_J, EDGE_T_IJ)
-    numeric = _central(lambda d: _residual(EDGE_T_I, EDGE_T_J @ ExpSE3(d), EDGE_T_IJ), 6)
-    if not close(J_j, numeric, 1e-7):
+    expected = EDGE_J_J
+    if not close(J_j, expected, _tolerance(EDGE_T_I, EDGE_T_J, EDGE_T_IJ)):
         hint = None
         if close(J_j, np.eye(6), 1e-12):
             hint = NO_JR_HINT
         elif close(J_j, EDGE_J_NOT_INVERTED, 1e-9):
             hint = NOT_INVERTED_HINT
+        elif close(J_j, expected, 1e-7):
+            hint = FINITE_DIFFERENCES_HINT
         raise Mismatch(
-            f"J_j disagrees with finite differences ({off_by(J_j, numeric)})",
+            f"J_j disagrees with the derivative of the residual ({off_by(J_j, expected)})",
             hint or "perturb T_j on the right inside the residual and use Log's Jacobian at r",
         )
 
 
-@public_check("pose_graph_edge", "J_i matches central differences at a large residual (|φ| ≈ 1.7 rad)")
+@public_check("pose_graph_edge", "J_i, the derivative of r in δ_i, at a large residual (|φ| ≈ 1.7 rad)")
 def _(pose_graph_edge):
     _, J_i, _ = _edge(pose_graph_edge, EDGE_T_I, EDGE_T_J, EDGE_T_IJ)
-    numeric = _central(lambda d: _residual(EDGE_T_I @ ExpSE3(d), EDGE_T_J, EDGE_T_IJ), 6)
-    if not close(J_i, numeric, 1e-7):
+    expected = EDGE_J_I
+    if not close(J_i, expected, _tolerance(EDGE_T_I, EDGE_T_J, EDGE_T_IJ)):
         slips = [
             (EDGE_I_NO_JR, NO_JR_HINT),
             (EDGE_I_ADJOINT_INVERTED, ADJOINT_INVERTED_HINT),
             (EDGE_I_MEASUREMENT_ADJOINT, MEASUREMENT_ADJOINT_HINT),
-            (-numeric, SIGN_HINT),
+            (-expected, SIGN_HINT),
             (EDGE_J_NOT_INVERTED @ EDGE_I_NO_JR, NOT_INVERTED_HINT),
         ]
         hint = next((h for value, h in slips if close(J_i, value, 1e-7)), None)
+        if hint is None and close(J_i, expected, 1e-7):
+            hint = FINITE_DIFFERENCES_HINT
         raise Mismatch(
-            f"J_i disagrees with finite differences ({off_by(J_i, numeric)})",
+            f"J_i disagrees with the derivative of the residual ({off_by(J_i, expected)})",
             hint or "move δ_i out of the middle of the product with an adjoint, then use Log's Jacobian at r",
         )
 
 
-@public_check("pose_graph_edge", "a consistent edge: r = 0, and the Jacobians match central differences there")
+@public_check("pose_graph_edge", "a consistent edge: r = 0, and both Jacobians there")
 def _(pose_graph_edge):
-    T_i, T_ij = ExpSE3([2.0, 1.0, -1.0, -0.4, 1.1, 0.2]), ExpSE3([0.3, -0.6, 0.2, 0.9, 0.1, -0.5])
+    T_i, T_ij = CONSISTENT_T_I, CONSISTENT_T_IJ
     T_j = T_i @ T_ij
     r, J_i, J_j = _edge(pose_graph_edge, T_i, T_j, T_ij)
     if np.max(np.abs(r)) > 1e-12:
@@ -234,13 +286,16 @@ def _(pose_graph_edge):
             f"T_j = T_i T_ij gave a residual of size {np.max(np.abs(r)):.2g}",
             "a measurement that agrees with the poses leaves no residual",
         )
-    numeric_i = _central(lambda d: _residual(T_i @ ExpSE3(d), T_j, T_ij), 6)
-    numeric_j = _central(lambda d: _residual(T_i, T_j @ ExpSE3(d), T_ij), 6)
-    if not (close(J_i, numeric_i, 1e-7) and close(J_j, numeric_j, 1e-7)):
+    expected_i, expected_j = CONSISTENT_J_I, np.eye(6)
+    tolerance = _tolerance(T_i, T_j, T_ij)
+    if not (close(J_i, expected_i, tolerance) and close(J_j, expected_j, tolerance)):
+        off = off_by(np.hstack([J_i, J_j]), np.hstack([expected_i, expected_j]))
         raise Mismatch(
-            f"at r = 0 the Jacobians disagree with finite differences ({off_by(np.hstack([J_i, J_j]), np.hstack([numeric_i, numeric_j]))})",
+            f"at r = 0 the Jacobians disagree with the derivatives of the residual ({off})",
             SIGN_HINT
-            if close(J_i, -numeric_i, 1e-7)
+            if close(J_i, -expected_i, 1e-7)
+            else FINITE_DIFFERENCES_HINT
+            if close(J_i, expected_i, 1e-7) and close(J_j, expected_j, 1e-7)
             else "at r = 0, Log's Jacobian is I: what is left is how δ_i crosses T_i⁻¹ T_j",
         )
 

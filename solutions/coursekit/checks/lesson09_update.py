@@ -1,9 +1,10 @@
 """Public checks for lesson 09, section 6: the attitude filter's update with a measured direction.
 
-The error state is the right perturbation, R_true = R Exp(ε). The update is compared with the minimiser and the
-inverse Hessian of its linearised MAP cost, the measurement Jacobian taken here by central differences of
-(R Exp(ε))ᵀ g_w (scipy's Exp), never a closed form. The steps the usual slips take at the checks' fixed inputs are
-stored as numbers (``tests/test_public_check_constants_lesson09_update.py`` recomputes them).
+The error state is the right perturbation, R_true = R Exp(ε). The update is compared, at the checks' fixed inputs,
+with numbers stored here: the minimiser and the inverse Hessian of its linearised MAP cost there, and the steps the
+usual slips take there (all recomputed by ``tests/test_public_check_constants_lesson09_update.py``, from the
+definition by central differences of (R Exp(ε))ᵀ g_w and in closed form). Nothing here computes an update for
+other inputs; the remaining checks test properties (no innovation, no correction) and the accepted argument types.
 """
 
 import numpy as np
@@ -20,6 +21,30 @@ GRAVITY_W = np.array([0.0, 0.0, 9.80665])
 Y_ACCEL = np.array([0.5, 9.6, -0.8])
 R_NOISE = np.array([[4.0, 1.0, 0.0], [1.0, 2.0, 0.0], [0.0, 0.0, 1.0]]) * 1e-2
 
+# The answer of filter_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE): its step Log(Rᵀ R_new) and its P_new, the
+# minimiser and the inverse Hessian of the linearised MAP cost.
+UPDATE_STEP = np.array([0.07951038259168972, -0.006147640176339278, 0.05205047164852342])
+UPDATE_P_NEW = np.array(
+    [
+        [0.00010134753278603005, 2.5336883196507505e-05, 0.0],
+        [2.5336883196507512e-05, 0.0023333111753493334, -0.00015395390910041487],
+        [0.0, -0.0001539539091004149, 0.00030790781820082985],
+    ]
+)
+
+# A generic attitude, where every entry of R and of the measurement Jacobian carries rounding, and the answer there:
+# filter_update(Exp(UPDATE_GENERIC_ROTATION), P0, UPDATE_GENERIC_Y, GRAVITY_W, R_NOISE) turns by UPDATE_GENERIC_STEP.
+UPDATE_GENERIC_ROTATION = np.array([0.4, -1.1, 2.0])
+UPDATE_GENERIC_Y = np.array([1.2, -2.9, 9.1])
+UPDATE_GENERIC_STEP = np.array([0.3570486100400298, 0.3632161898041903, -0.008786095858571083])
+UPDATE_GENERIC_P_NEW = np.array(
+    [
+        [0.0011686654270208936, -0.000995710067617639, 0.0009428145712758859],
+        [-0.0009957100676176393, 0.0010643805823109568, -0.0008575440226116048],
+        [0.0009428145712758859, -0.0008575440226116048, 0.001170670911789379],
+    ]
+)
+
 # The step Log(Rᵀ R_new) that the usual slips take in filter_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE).
 UPDATE_SIGN_STEP = np.array([-0.07951038259168974, 0.006147640176339267, -0.0520504716485234])
 UPDATE_NO_R_STEP = np.array([-0.022168626738025207, -0.04519060476755945, 0.0144176174847466])
@@ -33,6 +58,7 @@ LEFT_JACOBIAN_HINT = (
 )
 LEFT_UPDATE_HINT = hints.UPDATE_WRONG_SIDE_HINT
 UPDATE_SLIPS = [(UPDATE_SIGN_STEP, SIGN_HINT), (UPDATE_NO_R_STEP, NO_R_HINT), (UPDATE_LEFT_STEP, LEFT_JACOBIAN_HINT)]
+EXACT = 1e-11  # relative, as the hidden checks hold it: the linearisation is exact, not by differences
 P_UNCHANGED_HINT = "a measurement adds information: the covariance must shrink along the directions it sees"
 
 
@@ -45,10 +71,6 @@ def _as_tuples(args):
     return [tuples(a) for a in args]
 
 
-def _central(f, n, h=1e-6):
-    return np.column_stack([(np.asarray(f(h * e)) - np.asarray(f(-h * e))) / (2.0 * h) for e in np.eye(n)])
-
-
 def _pair(value, what):
     if not isinstance(value, (tuple, list)) or len(value) != 2:
         raise Mismatch(
@@ -58,23 +80,17 @@ def _pair(value, what):
 
 
 # ---------------------------------------------------------------- filter_update
-def _map_update(R, P, y, g_w, Rn):
-    """Minimiser and inverse Hessian of |ε|²_P⁻¹ + |y - h(0) - H ε|²_Rn⁻¹, H by central differences."""
-    H = _central(lambda e: (R @ Exp(e)).T @ g_w, 3)
-    information = np.linalg.inv(P) + H.T @ np.linalg.solve(Rn, H)
-    step = np.linalg.solve(information, H.T @ np.linalg.solve(Rn, y - R.T @ g_w))
-    return step, np.linalg.inv(information)
-
-
 @public_check("filter_update", "the correction minimises the linearised MAP cost, applied on the right")
 def _(filter_update):
     R_new, _ = _pair(filter_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE), "filter_update")
-    step, _ = _map_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE)
+    step = UPDATE_STEP
     got = Log(QUARTER_X.T @ R_new)
-    if not close(got, step, 1e-10 * np.max(np.abs(step))):  # the oracle's differences are good to 1e-12
+    if not close(got, step, EXACT * np.max(np.abs(step))):  # relative: the stored digits are BLAS's, good to 1e-15
         hint = next((h for value, h in UPDATE_SLIPS if close(got, value, 1e-8)), None)
         if hint is None and close(Log(R_new @ QUARTER_X.T), step, 1e-8):
             hint = LEFT_UPDATE_HINT
+        if hint is None and close(got, step, 1e-7 * np.max(np.abs(step))):
+            hint = hints.UPDATE_FINITE_DIFFERENCES_HINT
         raise Mismatch(
             f"the correction Log(Rᵀ R_new) is not the minimiser of the MAP cost ({off_by(got, step)})",
             hint or "linearise the predicted measurement in ε, then minimise the two weighted squares",
@@ -84,14 +100,32 @@ def _(filter_update):
 @public_check("filter_update", "P_new is the inverse Hessian of the linearised MAP cost")
 def _(filter_update):
     _, P_new = _pair(filter_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE), "filter_update")
-    _, expected = _map_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE)
-    if not close(P_new, expected, 1e-10 * np.max(np.abs(expected))):
+    expected = UPDATE_P_NEW
+    if not close(P_new, expected, EXACT * np.max(np.abs(expected))):
         raise Mismatch(
             f"P_new disagrees with the inverse Hessian ({off_by(P_new, expected)})",
             P_UNCHANGED_HINT
             if close(P_new, P0, 1e-15)
+            else hints.UPDATE_FINITE_DIFFERENCES_HINT
+            if close(P_new, expected, 1e-7 * np.max(np.abs(expected)))
             else "P_new⁻¹ = P⁻¹ + (information the measurement adds); check H and the gain",
         )
+
+
+@public_check("filter_update", "exact to rounding at a generic attitude: the correction and P_new to 1e-11 relative")
+def _(filter_update):
+    R = Exp(UPDATE_GENERIC_ROTATION)
+    R_new, P_new = _pair(filter_update(R, P0, UPDATE_GENERIC_Y, GRAVITY_W, R_NOISE), "filter_update")
+    got = Log(R.T @ R_new)
+    for name, value, expected in (("the correction", got, UPDATE_GENERIC_STEP), ("P_new", P_new, UPDATE_GENERIC_P_NEW)):
+        scale = np.max(np.abs(expected))
+        if not close(value, expected, EXACT * scale):
+            raise Mismatch(
+                f"{name} at a generic attitude is off ({off_by(value, expected)})",
+                hints.UPDATE_FINITE_DIFFERENCES_HINT
+                if close(value, expected, 1e-7 * scale)
+                else "the checks at the quarter turn above say more",
+            )
 
 
 @public_check("filter_update", "a measurement equal to the prediction leaves R where it is")
