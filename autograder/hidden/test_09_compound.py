@@ -162,14 +162,19 @@ def _hint(S, T1, S1, T2, S2):
     return matching[0] if len(matching) == 1 else hints.COMPOUND_EXPAND_HINT
 
 
-@exercise("compound_pose_covariance", weight=3)
-def test_compound_every_angle(student):
-    """S equals the first-order covariance to 1e-11 (relative), for T2 turning 1e-12 to π rad and shifted up to 10 m"""
-    rng = np.random.default_rng(9800)
+def compound_cases(seed=9800):
+    """(angle, T1, S1, T2, S2) for T2 turning by each of ANGLES and shifted up to 10 m."""
+    rng = np.random.default_rng(seed)
     for angle in ANGLES:
         T1 = _pose(rng.uniform(0, 3), rng.normal(size=3), rng.normal(size=3))
         T2 = _pose(angle, rng.normal(size=3), rng.uniform(0.1, 10.0) * rng.normal(size=3) / np.sqrt(3))
-        S1, S2 = _covariance(rng, 1e-3), _covariance(rng, 1e-3)
+        yield angle, T1, _covariance(rng, 1e-3), T2, _covariance(rng, 1e-3)
+
+
+@exercise("compound_pose_covariance", weight=3)
+def test_compound_every_angle(student):
+    """S equals the first-order covariance to 1e-11 (relative), for T2 turning 1e-12 to π rad and shifted up to 10 m"""
+    for angle, T1, S1, T2, S2 in compound_cases():
         _, S = _pair(student.compound_pose_covariance(T1, S1, T2, S2))
         expected = exact_covariance(T1, S1, T2, S2)
         scale = np.max(np.abs(expected))
