@@ -134,12 +134,16 @@ def dask_cluster():
 
 def _kill_worker_grading(client, key=None, timeout=240):
     """SIGKILL the worker process that is grading a student (the task ``key``, or any) while its grading
-    fork runs; return the task's key."""
+    fork runs; return the task's key.
+
+    Only a worker that holds that one task is killed. A dead worker's task is re-run wherever the scheduler
+    sends it, which can be a worker already grading another student; killing that worker would count a death
+    against both students, and the fault tests count the deaths of one."""
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
-        for address, keys in client.processing().items():
-            keys = [k for k in keys if str(k).startswith("autograder-grade-") and key in (None, k)]
-            if not keys:
+        for address, held in client.processing().items():
+            keys = [k for k in held if str(k).startswith("autograder-grade-") and key in (None, k)]
+            if not keys or len(held) != 1:
                 continue
             try:
                 pid = client.run(os.getpid, workers=[address])[address]
