@@ -12,8 +12,8 @@ MISTAKES = [
 def jacobians_of_compose(R1, R2):
     return np.asarray(R2, dtype=float), np.eye(3)
 """,
-        hint="transpose of what is needed",
-        public_hint="transpose of what is needed",
+        hint="in the wrong direction",
+        public_hint="in the wrong direction",
         classic=True,
     ),
     Mistake(
@@ -103,8 +103,8 @@ def jacobian_of_inverse(R):
 def jacobian_of_inverse(R):
     return np.asarray(R, dtype=float).copy()
 """,
-        hint="the inverse of a small turn Exp(d) is Exp(-d)",
-        public_hint="the inverse of a small turn Exp(d) is Exp(-d)",
+        hint="must undo that small turn",
+        public_hint="must undo that small turn",
     ),
     Mistake(
         "inverse_transpose",

@@ -236,15 +236,17 @@ COMPOSE_IGNORES_R2_HINT = ("a turn of R1 reaches the end of the product only aft
 COMPOSE_LEFT_HINT = ("those are the left Jacobians (the turn on the left of R1 and of R2); here both the input and "
                      "the output are perturbed on the right")
 COMPOSE_SWAPPED_HINT = "J1 and J2 are swapped: return (J1, J2), the first for a turn of R1, the second for a turn of R2"
-COMPOSE_TRANSPOSE_HINT = ("J1 is the transpose of what is needed: the turn of R1 was carried across R2 the wrong "
-                          "way; check on which side of R2 it starts and on which side it must end")
+COMPOSE_TRANSPOSE_HINT = ("J1 carries the turn of R1 across R2 in the wrong direction: R1 Exp(d) R2 must equal "
+                          "R1 R2 Exp(J1 d); try R1 = I, R2 a quarter turn and d along one axis, and see which axis "
+                          "the turn ends on")
 COMPOSE_WRONG_FACTOR_HINT = "J1 depends on R2 (the factor the perturbation must cross), not on R1"
 INVERSE_LEFT_HINT = ("that is the Jacobian for perturbations on the left of R and of R⁻¹; here both turns sit on "
                      "the right, R Exp(d) and R⁻¹ Exp(J d)")
 INVERSE_NOT_MOVED_HINT = ("-I is right only at the identity: the inverted turn sits on the left of Rᵀ, but J is "
                           "defined by a turn on the right of R⁻¹")
 INVERSE_AT_IDENTITY_HINT = "at the identity, inverting a small turn simply reverses it: the Jacobian there is -I"
-INVERSE_SIGN_HINT = "the sign: the inverse of a small turn Exp(d) is Exp(-d)"
+INVERSE_SIGN_HINT = ("your J turns R⁻¹ in the same sense as d, but inverting R Exp(d) must undo that small turn; "
+                     "check (R Exp(d))⁻¹ = R⁻¹ Exp(J d) at R = I first")
 INVERSE_TRANSPOSE_HINT = ("Rᵀ is neither the sign nor the side: inverting reverses the small turn, and J must act "
                           "on a turn to the right of R⁻¹; at the identity J is -I, check your answer there")
 
@@ -298,7 +300,8 @@ WEIGHT_RATIOS_HINT = "only the ratios of the weights matter: scaling every weigh
 # ---------------------------------------------------------------- checks/lesson09.py
 CONVERT_INPUTS_NP_ASARRAY_HINT = "convert the inputs with np.asarray(..., dtype=float)"
 COVARIANCE_TAKES_LINEAR_MAP_HINT = "a covariance takes the linear map on both sides: Cov(A ε) = A Σ Aᵀ"
-LEFT_TO_RIGHT_WITH_ADJOINT_HINT = "write Exp(ε_L) R as R Exp(A ε_L) with the adjoint, then Cov(A ε_L) = A Σ_L Aᵀ"
+LEFT_TO_RIGHT_WITH_ADJOINT_HINT = ("Σ_R is the covariance of ε_R, defined by Exp(ε_L) R = R Exp(ε_R): find the linear "
+                                   "map that takes ε_L to ε_R, then how a covariance changes under a linear map")
 MINIMISES_SQUARED_COST_LEAST_HINT = ("that minimises the squared cost (least squares): the Huber cost counts "
                                      "residuals above k linearly, so large residuals must pull less")
 QUAT_POWER_FORMULA_HINT = "q^t = Exp_q(t Log_q q): read α in [0, π] and the unit axis u off q, then apply the definition"
@@ -306,7 +309,6 @@ RETURNED_R0_UNCHANGED_APPLY_HINT = "returned R0 unchanged: apply one update per 
 RETURNED_T0_UNCHANGED_DO_HINT = "returned T0 unchanged: do iters updates T ← T Exp(xi)"
 RETURNED_T0_UNCHANGED_ITERATE_HINT = ("returned T0 unchanged: iterate from T0 until the gradient of the Huber cost "
                                       "vanishes")
-SIGN_INVERTING_SMALL_TURN_HINT = "the sign: inverting a small turn reverses it, Exp(d)⁻¹ = Exp(-d)"
 SIGN_ROTATION_BLOCK_PHI_HINT = "the sign of the rotation block: [phi]× p = -[p]× phi"
 TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rates are body rates, so each update goes "
                              "on the right, R ← R Exp(ω_b dt)")
