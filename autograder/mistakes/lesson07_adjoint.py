@@ -206,12 +206,10 @@ def right_jacobian_se3(xi):
         "forward differences of the definition with h = 1e-6",
         """
 def right_jacobian_se3(xi):
-    from coursekit.lie import ExpSE3, LogSE3
-
     xi = np.asarray(xi, dtype=float).reshape(6)
-    base_inverse = np.linalg.inv(ExpSE3(xi))
+    base_inverse = np.linalg.inv(exp_se3(xi))
     h = 1e-6
-    return np.column_stack([LogSE3(base_inverse @ ExpSE3(xi + h * e)) / h for e in np.eye(6)])
+    return np.column_stack([log_se3(base_inverse @ exp_se3(xi + h * e)) / h for e in np.eye(6)])
 """,
         hint="finite differences",
         public_hint="finite differences",

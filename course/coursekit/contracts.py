@@ -84,9 +84,11 @@ FORBIDDEN = {
     # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)
     "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS + INVERSES,
     "log_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS,
-    # lesson 07, section 10: the adjoint and the Jacobian of Exp are the job
-    "adjoint_se3": ("coursekit.lie.AdSE3",),
-    "right_jacobian_se3": ("coursekit.lie.JrSE3",) + MATRIX_FUNCTIONS,
+    # lesson 07, section 10: the adjoint and the Jacobian of Exp are the job (Ad_Exp(ξ) = Jr(-ξ) Jr(ξ)⁻¹, and
+    # Jr(ξ) is the integral of Ad_Exp(-sξ) over s in [0, 1], so the library's SE(3) maps compute either one)
+    "adjoint_se3": ("coursekit.lie.AdSE3", "coursekit.lie.JrSE3", "coursekit.lie.LogSE3"),
+    "right_jacobian_se3": ("coursekit.lie.JrSE3", "coursekit.lie.AdSE3", "coursekit.lie.ExpSE3", "coursekit.lie.LogSE3")
+    + MATRIX_FUNCTIONS,
     # lesson 04, section 14: q^t is the job (scipy's Slerp and Rotation powers do it)
     "quat_power": SCIPY_ROTATIONS,
 }
