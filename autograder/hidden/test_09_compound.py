@@ -5,7 +5,9 @@ across T2 by conjugation (column j of its matrix is the twist of T2⁻¹ e_j^ T2
 tests/test_hidden_oracles_lesson09.py holds against central differences of the definition; the Jacobians by
 central differences (scipy's expm and logm-free Log via scipy's Rotation) to name slips; and a Monte-Carlo
 propagation of the definition with a tolerance from the sample size. S to 1e-11 relative: the docstring's
-first-order covariance is exact, and one linearised by finite differences (good to about 1e-10) does not pass.
+first-order covariance is exact, and one linearised by the lesson's central differences (good to about 1e-10)
+does not pass (a high-order stencil with a tuned step can pass: values alone cannot tell an accurate numerical
+Jacobian from an exact one).
 Core idea (3 of 6 points): carrying the first twist across T2, for rotations of T2 at every decade from 1e-12 to
 π and translations up to 10 m.
 Every test calls compound_pose_covariance only.

@@ -8,8 +8,10 @@ The error state is the right perturbation, R_true = R Exp(ε). Oracles: the defi
   The oracle is exact: the old error crosses the step as Exp(-ω Δt), the noise enters through ∫₀¹ Exp(-s ω Δt) ds Δt,
   that integral read off scipy's matrix exponential of a 6 × 6 block matrix (no closed form);
   tests/test_hidden_oracles_lesson09.py holds it against central differences of the definition. First-order
-  Jacobians taken by finite differences (they miss it at the larger steps) do not pass, nor does a closed form of J_r that loses
-  its digits just above its small-step branch; the central differences still name the usual slips.
+  Jacobians taken by the lesson's central differences (they miss it at the larger steps) do not pass (a high-order
+  stencil with a tuned step can pass: values alone cannot tell an accurate numerical Jacobian from an exact one),
+  nor does a closed form of J_r that loses its digits just above its small-step branch; the central differences
+  still name the usual slips.
   Core idea (3 of 6 points): the old error crosses the step's turn and the noise enters through the step. Lists
   and nested tuples are accepted.
 - attitude_nees: εᵀ P⁻¹ ε with ε = Log(R_estᵀ R_true), to 1e-9 relative, for errors at every decade from 1e-12 to

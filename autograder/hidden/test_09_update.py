@@ -3,13 +3,14 @@
 The error state is the right perturbation, R_true = R Exp(ε); the measurement is y = R_trueᵀ g_w + v, v ~ N(0, Rn).
 Oracles: the definitions, with scipy's Exp and Log. Log(Rᵀ R_new) must be the minimiser of the linearised MAP cost
 |ε|²_{P⁻¹} + |y - Rᵀ g_w - H ε|²_{Rn⁻¹} and P_new its inverse Hessian, both to 1e-11 relative, with H the exact
-derivative of (R Exp(ε))ᵀ g_w at ε = 0 (tests/test_hidden_oracles_lesson09.py holds it against central
-differences): the docstring's linearisation is exact, and a Jacobian taken by finite differences (good to about
-3e-10) does not pass, nor does float32 storage anywhere. Attitudes at every angle from 1e-12 to π, with gravity
-(9.80665 m/s²) or a unit star direction; lists and nested tuples are accepted. Core idea (3 of 6 points): the measurement
-Jacobian of the right error. A filter run on a seeded trajectory (the reference's prediction, the student's update)
-must be consistent: over 40 independent runs its average NEES at the end lies in the two-sided 99 % χ²
-band. Every test calls filter_update only.
+derivative of (R Exp(ε))ᵀ g_w at ε = 0 (tests/test_hidden_oracles_lesson09.py holds it against central differences):
+the docstring's linearisation is exact, and a Jacobian taken by the lesson's central differences (good to about
+3e-10) does not pass (values alone cannot tell an accurate numerical Jacobian from an exact one: a high-order
+stencil with a tuned step (8th order, h = 0.02) reaches about 1e-13 and passes), nor does float32 storage anywhere.
+Attitudes at every angle from 1e-12 to π, with gravity (9.80665 m/s²) or a unit star direction; lists and nested
+tuples are accepted. Core idea (3 of 6 points): the measurement Jacobian of the right error. A filter run on a
+seeded trajectory (the reference's prediction, the student's update) must be consistent: over 40 independent runs
+its average NEES at the end lies in the two-sided 99 % χ² band. Every test calls filter_update only.
 """
 
 import numpy as np
