@@ -230,7 +230,7 @@ def rotation_vector_hint(got, expected):
     Examples
     --------
     >>> rotation_vector_hint([0.0, 0.0, -1.0], [0.0, 0.0, 1.0])
-    'the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)'
+    'the opposite rotation: check the sign of the axis against a small positive turn about z'
     """
     got = as_float_array(got)
     expected = as_float_array(expected)
@@ -252,10 +252,10 @@ def rotation_vector_hint(got, expected):
                     "take the axis from the symmetric part (R + Rᵀ)/2 there")
         if np.arccos(np.clip(np.cos(angle), -1.0, 1.0)) == 0.0:  # cos θ rounds to 1: arccos really gives 0 here
             return ("returned (almost) zero for a small rotation: arccos rounds tiny angles to 0; "
-                    "use atan2(sin θ, cos θ)")
+                    "find the angle from numbers that keep it at that size")
         return "returned (almost) zero for a rotation that is not zero: check how the angle and the axis are found"
     if np.linalg.norm(got + expected) <= 1e-3 * angle:
-        return "the opposite rotation: check the sign of the axis (vee(R - Rᵀ)/2 = sin θ · u points along u)"
+        return "the opposite rotation: check the sign of the axis against a small positive turn about z"
     if np.linalg.norm(got - np.rad2deg(expected)) <= 1e-3 * np.rad2deg(angle):
         return "looks like the angle is in degrees: the course works in radians"
     return None

@@ -104,8 +104,8 @@ EXP_SLIPS = {
              "unnormalised": np.array([[1.0, -1.0000000000000001e-16, 0.0], [1.0000000000000001e-16, 1.0, 0.0],
                                        [0.0, 0.0, 1.0]])},
 }
-# log_so3 slips at the checks' rotations: the angle from arccos of the clipped trace; vee(R - Rᵀ)/2 (= sin θ u)
-# for the tiny turns; θ/(2 sin θ)·vee(R - Rᵀ) with θ from atan2 and from arccos near π (no branch there)
+# log_so3 slips at the checks' rotations: the values that the usual wrong answers return there (each one is
+# recomputed from its wrong answer by tests/test_public_check_constants_lesson03.py)
 LOG_SLIPS = {
     "quarter": {"arccos_angle": 1.5707963267948966},
     "tiny_1e-08": {"arccos_angle": 0.0,
@@ -500,7 +500,7 @@ def _pair(value, R):
         raise Mismatch(f"returned {type(value).__name__}, expected a pair (u, theta)", "return u, theta")
     theta = require_shape(value[1], (), "θ", lambda _: (
         "(tr R - 1)/2 is just above 1 by rounding, so arccos gives NaN: clip (tr R - 1)/2 to [-1, 1] before "
-        "arccos (or use atan2)" if _trace_outside(R) else "θ must be a number"))
+        "arccos" if _trace_outside(R) else "θ must be a number"))
     u = require_shape(value[0], (3,), "u", lambda _: (
         hints.AXIS_AT_ZERO_ANGLE_HINT
         if theta == 0.0 else "look for a division by a vanishing sin θ or norm"))

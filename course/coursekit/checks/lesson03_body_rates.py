@@ -42,7 +42,8 @@ def _(body_angular_velocity):
     got = require_shape(body_angular_velocity(ROLLED, ROLLED_DOT), (3,), "body_angular_velocity(R, Ṙ)")
     if not close(got, BODY_RATE, 1e-12):
         raise Mismatch(f"got {fmt(got)} rad/s, expected {fmt(BODY_RATE)} ({off_by(got, BODY_RATE)})",
-                       _slip_hint(got) or "combine Ṙ = [ω_w]× R with ω_w = R ω_b and solve for ω_b")
+                       _slip_hint(got) or "the body spins about the world's vertical, which is its own y axis after the "
+                       "roll: ω_b must be written in the body's axes")
 
 
 @public_check("body_angular_velocity", "keeps a tiny spin (1e-12 rad/s) to 1e-9 of its size, and doubles with Ṙ")
@@ -61,7 +62,10 @@ def _(body_angular_velocity):
 # A generic attitude and body rate (every component non-zero and different), so that every entry of Ṙ counts.
 GENERIC_R = Exp([0.4, -1.1, 0.7])
 GENERIC_RATE = np.array([0.3, -0.5, 0.8])
-GENERIC_R_DOT = GENERIC_R @ np.array([[0.0, -0.8, -0.5], [0.8, 0.0, -0.3], [0.5, 0.3, 0.0]])   # ω_b = (0.3, -0.5, 0.8)
+# the derivative of the attitude of a body at GENERIC_R spinning at GENERIC_RATE about its own axes, written out
+GENERIC_R_DOT = np.array([[-0.887075614259814, -0.42000061099320174, 0.07015297347667915],
+                          [0.2699133299080473, -0.436273271174007, -0.37388829319927214],
+                          [0.17390701228968208, -0.6027147912773244, -0.44191187415695854]])
 
 
 @public_check("body_angular_velocity", "recovers a generic body rate (0.3, -0.5, 0.8) rad/s at a generic attitude, "
