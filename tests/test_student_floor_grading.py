@@ -27,6 +27,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 import student_floor  # noqa: E402
 from support import THIS_COURSE
 
+ROOT = Path(__file__).resolve().parents[1]
+
 # Two of the lessons whose public checks ran into Python 3.10's missing co_qualname (issue 35).
 LESSONS = ("03", "05")
 WAIT_SECONDS = 20 * 60
@@ -46,6 +48,21 @@ def floor_run(tmp_path_factory):
     out = tmp_path_factory.mktemp("floor")
     student_floor.main(["--out", str(out), "--lessons", *LESSONS])
     return out
+
+
+def test_the_recorded_floor_run_is_of_the_current_masters_and_coursekit():
+    """A master's code or coursekit changed without a new record makes every ``.ci/run`` run every lesson at
+    the floors beside the suite, CPU time taken from the suite, until someone records again."""
+    record = student_floor.read_record(ROOT / "tests" / "student_floor.lock.json")
+    assert record is not None and record["ok"], record
+    module = student_floor.student_install()
+    recorded_python = tuple(int(part) for part in record["python"].split("."))
+    assert record["key"] == student_floor.run_key(module, recorded_python), (
+        "a master's code, coursekit, a floor or tests/student_floor.py changed since the recorded floor run: run "
+        "python3 tests/student_floor.py --out /tmp/floor --record tests/student_floor.lock.json "
+        "and commit tests/student_floor.lock.json"
+    )
+    assert set(record["lessons"]) == {path.name for path in student_floor.masters()}
 
 
 def test_every_lesson_of_the_floor_run_ran_clean(floor_run):
