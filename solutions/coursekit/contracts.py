@@ -46,9 +46,11 @@ MATRIX_FUNCTIONS = ("scipy.linalg.expm", "scipy.linalg.logm", "scipy.linalg.expm
 EXP_LOG = ("coursekit.lie.Exp", "coursekit.lie.Log")
 # numpy's inverses and solvers: where the page prints the inverse of an exercise's answer (J_r⁻¹ in
 # lesson 06, V⁻¹ in lesson 07), inverting it numerically would skip the derivation
+# (and their kernels, numpy.linalg._umath_linalg's gufuncs, which no profile event shows being called:
+# coursekit.watching judges them where the code names them)
 INVERSES = tuple(
     f"numpy.linalg.{name}" for name in ("inv", "solve", "pinv", "lstsq", "tensorinv", "tensorsolve", "matrix_power")
-)
+) + ("numpy.linalg._umath_linalg",)
 
 # Only the functions that do the exercise's own job: exp_so3 may use a skew helper (writing
 # [w]× is the hat exercise's job), euler_zyx_to_matrix may build its elementary rotations with

@@ -25,10 +25,12 @@ Examples
 
 import builtins
 import copy
+import dis
 import functools
 import inspect
 import sys
 import threading
+import types
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -125,7 +127,7 @@ def _qualname(code):
 
 _STDLIB = frozenset(getattr(sys, "stdlib_module_names", ()))
 # numpy's functions that call a function they are handed: a library function handed to them is a call
-# of the notebook's (``np.vectorize(expm)``); C ones (``np.frompyfunc``) cannot be seen this way
+# of the notebook's (``np.vectorize(expm)``); np.frompyfunc is C: what it is handed is judged by name
 _TAKES_CALLBACKS = frozenset({"vectorize.__init__", "apply_along_axis", "apply_over_axes", "piecewise", "fromfunction"})
 
 
@@ -144,8 +146,9 @@ class _Tracer:
     doing the exercise's job. A callback is noted only when its module is outside the allowance *and*
     outside the standard library; ``print`` and what it writes to are free. Threads started during
     the call are watched too (``threading.setprofile``), though starting one already leaves the
-    allowance (``threading``). Not seen: a library function handed to a C function of numpy
-    (``np.frompyfunc``); the tracer switched off (``sys.setprofile``) is seen as ``tampered``.
+    allowance (``threading``). A ufunc or an f2py routine makes no profile event when called; those are
+    judged where notebook code names them (:func:`_check_unreported`). The tracer switched off
+    (``sys.setprofile``) is seen as ``tampered``.
     """
 
     def __init__(self, forbidden, allowance=None, callables=(), main=None):
@@ -247,6 +250,141 @@ class _Tracer:
         return hook
 
 
+# Callables whose calls sys.setprofile reports: Python code ("call") and C functions and method descriptors
+# ("c_call"). Anything else is called without an event: a ufunc (numpy.linalg._umath_linalg.inv, a
+# scipy.special function, one that np.frompyfunc made), an f2py routine (scipy.linalg.lapack.dgesv).
+_REPORTED_KINDS = (
+    type,
+    types.FunctionType,
+    types.MethodType,
+    types.BuiltinFunctionType,
+    types.MethodDescriptorType,
+    types.ClassMethodDescriptorType,
+    types.WrapperDescriptorType,
+    types.MethodWrapperType,
+    functools.partial,
+)
+_MISSING = object()
+
+
+def _unreported(value):
+    """True for a callable that ``sys.setprofile`` cannot see called (a ufunc, an f2py routine).
+
+    >>> _unreported(np.sqrt), _unreported(np.linalg.norm), _unreported(len)
+    (True, False, False)
+    """
+    if not callable(value) or isinstance(value, _REPORTED_KINDS):
+        return False
+    if getattr(value, "_implementation", None) is not None:  # numpy's dispatchers run Python code
+        return False
+    return not isinstance(getattr(type(value), "__call__", None), types.FunctionType)  # np.vectorize: Python
+
+
+_CHAINS = {}  # code object -> the names it loads: (global, attribute, attribute, ...) tuples, and its nested code
+
+
+def _chains(code):
+    """The global names ``code`` loads, each with the attributes read from it straight after
+    (``np.linalg._umath_linalg.inv`` → ``("np", "linalg", "_umath_linalg", "inv")``), and its nested code."""
+    cached = _CHAINS.get(code)
+    if cached is None:
+        chains, chain = [], None
+        for instruction in dis.get_instructions(code):
+            if instruction.opname in ("LOAD_GLOBAL", "LOAD_NAME"):
+                chain = [instruction.argval]
+                chains.append(chain)
+            elif instruction.opname in ("LOAD_ATTR", "LOAD_METHOD") and chain is not None:
+                chain.append(instruction.argval)
+            else:
+                chain = None
+        nested = tuple(const for const in code.co_consts if isinstance(const, types.CodeType))
+        cached = _CHAINS[code] = (tuple(map(tuple, chains)), nested)
+    return cached
+
+
+_HOMES = {}  # id(callable) -> (callable, the modules that hold it under its name)
+
+
+def _homes(value):
+    """The names of the loaded modules that hold ``value`` under its own name."""
+    cached = _HOMES.get(id(value))
+    if cached is None or cached[0] is not value:
+        name = getattr(value, "__name__", None)
+        found = []
+        if isinstance(name, str):
+            for module_name, module in list(sys.modules.items()):
+                if getattr(module, "__dict__", {}).get(name) is value:
+                    found.append(module_name)
+        cached = _HOMES[id(value)] = (value, tuple(found))
+    return cached[1]
+
+
+def _check_unreported(function, tracer, limit=64):
+    """Note the callables outside the allowance that ``sys.setprofile`` would not see called, wherever the
+    notebook code that ``function`` can reach names them.
+
+    The profile hook sees every Python function and C function that notebook code calls, but no event
+    marks the call of a ufunc or an f2py routine (``numpy.linalg._umath_linalg.inv``, the kernel under
+    ``np.linalg.inv``). So these are judged where the code names them: a global or a closure's value, a
+    default, or an attribute chain read from a module (``np.linalg._umath_linalg.inv``, resolved from the
+    modules' own dictionaries, so no code runs). Reachable code is ``function``'s, its nested functions',
+    and that of the notebook functions and classes it names, transitively (at most ``limit`` code
+    objects). A name in a branch that never runs counts too: the answer names a tool it may not use.
+    """
+    namespace = tracer.main if tracer.main is not None else getattr(function, "__globals__", None)
+    if not isinstance(namespace, dict):
+        return
+    start = getattr(inspect.unwrap(function), "__func__", function)
+    queue, done = [start], set()
+
+    def consider(value, module=None, attribute=None):
+        if isinstance(value, types.FunctionType) and value.__globals__ is namespace:
+            queue.append(value)
+        elif isinstance(value, type) and getattr(value, "__module__", None) == namespace.get("__name__"):
+            queue.extend(v for v in vars(value).values() if isinstance(v, types.FunctionType))
+        elif _unreported(value):
+            if module is not None:
+                tracer._check(module, attribute)
+                return
+            homes = _homes(value)
+            cleared = [home for home in homes if tracer.allowed(home) and not (home + ".").startswith(tracer.prefixes)]
+            if homes and not cleared:
+                tracer._check(homes[0], value.__name__)
+
+    while queue and len(done) < limit:
+        function = queue.pop()
+        code = getattr(function, "__code__", None)
+        if code is None or code in done:
+            continue
+        for cell in function.__closure__ or ():
+            try:
+                consider(cell.cell_contents)
+            except ValueError:  # an empty cell
+                pass
+        for value in list(function.__defaults__ or ()) + list((function.__kwdefaults__ or {}).values()):
+            consider(value)
+        codes = [code]
+        while codes:
+            code = codes.pop()
+            if code in done:
+                continue
+            done.add(code)
+            chains, nested = _chains(code)
+            codes.extend(nested)
+            for chain in chains:
+                value = namespace.get(chain[0], _MISSING)
+                if value is _MISSING:
+                    continue  # a builtin: reported when called
+                consider(value)
+                for attribute in chain[1:]:
+                    if not isinstance(value, types.ModuleType):
+                        break
+                    module, value = value.__name__, vars(value).get(attribute, _MISSING)
+                    if value is _MISSING:
+                        break
+                    consider(value, module, attribute)
+
+
 def _resolve(name):
     """``"scipy.linalg.expm"`` → the prefix that its frames carry (``"scipy.linalg._matfuncs.expm."``);
     a module or package name is its own prefix (``"coursekit.lie."``)."""
@@ -311,7 +449,10 @@ class _ImportGuard:
     def __call__(self, name, globals=None, locals=None, fromlist=(), level=0):
         if level == 0 and globals is not None and self.tracer.is_main(globals):
             names = [f"{name}.{item}" for item in fromlist or () if item != "*"] or [name]
-            if name and not any(self.tracer.allowed(full) for full in [name] + names):
+            if name and (
+                not any(self.tracer.allowed(full) for full in [name] + names)
+                or any((full + ".").startswith(self.tracer.prefixes) for full in [name] + names)
+            ):
                 self.tracer.note(f"import {name}")  # the call's result is refused; the import goes on
         return self.original(name, globals, locals, fromlist, level)
 
@@ -362,6 +503,7 @@ def watch_call(function, args=(), kwargs=None, forbidden=()):
             guard = _ImportGuard(tracer, builtins.__import__)
             tracer.codes.add(_ImportGuard.__call__.__code__)
             builtins.__import__ = guard
+        _check_unreported(function, tracer)
         hook = tracer.make_hook()
         sys.setprofile(hook)
         threading.setprofile(hook)
