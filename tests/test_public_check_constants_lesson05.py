@@ -138,14 +138,16 @@ def test_all_plus_quaternions_at_the_checks_angles():
         assert_same(stored, all_plus_quat(*angles))
 
 
-def test_rates_matrix_mistakes_at_the_finite_difference_attitude():
+def test_rates_matrix_mistakes_each_get_their_hint_at_the_finite_difference_attitude():
+    """Each slip, written out here by its formula, is told apart by what the finite differences give instead."""
     pitch, roll = 0.7, -1.1
     E = rates_matrix(pitch, roll)
-    assert_same(checks.RATES_COLUMNS_REVERSED, E[:, ::-1])
-    assert_same(checks.RATES_TRANSPOSED, E.T)
+    assert np.allclose(checks._body_rates_by_differences(pitch, roll), E, atol=1e-9)
     Rx, Ry = Exp([roll, 0.0, 0.0]), Exp([0.0, pitch, 0.0])  # Rx(roll) where Rx(roll)ᵀ belongs
     flipped = np.column_stack([Rx @ Ry.T @ [0.0, 0.0, 1.0], Rx @ [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])
-    assert_same(checks.RATES_RX_NOT_TRANSPOSED, flipped)
+    found = [checks._rates_slip_hint(slip, pitch, roll) for slip in (E[:, ::-1], flipped, E.T, np.eye(3))]
+    assert None not in found and len(set(found)) == 4, found
+    assert checks._rates_slip_hint(E, pitch, roll) is None
 
 
 def test_the_oracle_is_rz_ry_rx():

@@ -30,10 +30,17 @@ def test_the_answer_matches_finite_differences():
     )
 
 
-def test_the_slips():
+def test_each_slip_gets_its_hint():
+    """Each slip, written out here by its formula, is told apart by what the finite differences give instead."""
     ex, ey, ez = np.eye(3)
     y, p = checks.YAW, checks.PITCH
-    assert np.allclose(checks.TRANSPOSED_TURNS, np.column_stack([ez, rz(y).T @ ey, ry(p).T @ rz(y).T @ ex]), atol=1e-15)
-    assert np.allclose(checks.ROLL_UNPITCHED, np.column_stack([ez, rz(y) @ ey, rz(y) @ ex]), atol=1e-15)
-    assert np.allclose(checks.IGNORES_YAW, world_rates(0.0, p), atol=1e-15)
-    assert np.allclose(checks.REVERSED, world_rates(y, p)[:, ::-1], atol=1e-15)
+    slips = {
+        checks.TRANSPOSED_HINT: np.column_stack([ez, rz(y).T @ ey, ry(p).T @ rz(y).T @ ex]),
+        checks.ROLL_UNPITCHED_HINT: np.column_stack([ez, rz(y) @ ey, rz(y) @ ex]),
+        checks.IGNORES_YAW_HINT: world_rates(0.0, p),
+        checks.REVERSED_HINT: world_rates(y, p)[:, ::-1],
+    }
+    for roll in (0.0, 1.2):
+        for hint, slip in slips.items():
+            assert checks._slip_hint(slip, roll) == hint
+        assert checks._slip_hint(world_rates(y, p), roll) is None

@@ -40,9 +40,6 @@ def jr_closed_form(w):
         ("EXP_MINUS_D_R_AT_SAMPLE", lambda: Exp(-D) @ R),
         ("RT_EXP_D_AT_SAMPLE", lambda: R.T @ Exp(D)),
         ("EXP_D_RT_AT_SAMPLE", lambda: Exp(D) @ R.T),
-        ("JRP_SIGN_FLIPPED", lambda: R @ skew(P)),
-        ("JRP_TRANSPOSED", lambda: (-R @ skew(P)).T),
-        ("JRP_FACTORS_SWAPPED", lambda: -skew(P) @ R),
         ("JRP_AT_GENERIC", lambda: -R @ skew(checks.P_GENERIC)),
         ("JR_AT_W", lambda: jr_closed_form(W_INV)),
         ("JR_INV_FIRST_ORDER_AT_W", lambda: np.eye(3) + 0.5 * skew(W_INV)),
@@ -145,21 +142,21 @@ def jr_series(w, terms=40):
     return total
 
 
-@pytest.mark.parametrize("theta", sorted(checks.JR_DECADES))
-def test_every_decade_coefficients_rebuild_jr_and_its_inverse(theta):
-    """(a, b, c) at θ give Jr and Jr⁻¹ of the branch-free series to 1e-15, and a, b, c are the closed forms'
-    values where those keep their digits (θ ≥ 0.01)."""
-    a, b, c = checks.JR_DECADES[theta]
+@pytest.mark.parametrize("theta", checks.DECADE_ANGLES)
+def test_jr_and_its_inverse_at_every_decade(theta):
+    """Jr and Jr⁻¹ at θ u are the branch-free series' to 1e-15, and, where the closed forms keep their digits
+    (θ ≥ 0.01), I - a [w]× + b [w]×² and I + [w]×/2 + c [w]×² with the closed-form coefficients."""
     w = theta * checks.DECADE_AXIS
     W = skew(w)
     exact = jr_series(w)
-    assert np.max(np.abs(np.eye(3) - a * W + b * W @ W - exact)) <= 1e-15
-    assert np.max(np.abs(np.eye(3) + 0.5 * W + c * W @ W - np.linalg.inv(exact))) <= 1e-15
+    assert np.max(np.abs(checks.JR_AT_DECADES[theta] - exact)) <= 1e-15
+    assert np.max(np.abs(checks.JR_INV_AT_DECADES[theta] - np.linalg.inv(exact))) <= 1e-15
     if theta >= 0.01:
-        same(a, (1 - np.cos(theta)) / theta**2, rel=1e-10)
-        same(b, (theta - np.sin(theta)) / theta**3, rel=1e-9)
-        same(c, (1 - 0.5 * theta / np.tan(0.5 * theta)) / theta**2, rel=1e-9)
-    assert checks.DECADE_ANGLES == tuple(sorted(checks.JR_DECADES, reverse=True))
+        a, b = (1 - np.cos(theta)) / theta**2, (theta - np.sin(theta)) / theta**3
+        c = (1 - 0.5 * theta / np.tan(0.5 * theta)) / theta**2
+        same(checks.JR_AT_DECADES[theta], np.eye(3) - a * W + b * W @ W, rel=1e-10)
+        same(checks.JR_INV_AT_DECADES[theta], np.eye(3) + 0.5 * W + c * W @ W, rel=1e-9)
+    assert set(checks.JR_AT_DECADES) == set(checks.JR_INV_AT_DECADES) == set(checks.DECADE_ANGLES)
 
 
 def test_lecture_error_at_zero_is_the_floor_steps_error():

@@ -1,7 +1,7 @@
 """The hand-written quarter turns of lesson 06's public checks of jacobians_of_compose and jacobian_of_inverse.
 
-The checks recognise the usual slips by their values at these fixed rotations (products and transposes of them),
-so the rotations themselves are recomputed here from scipy.
+The rotations themselves are recomputed here from scipy; and each usual slip, written out here by its formula,
+gets its own hint from the checks, which recognise it by what would pass instead (never by the formula).
 """
 
 import numpy as np
@@ -22,11 +22,19 @@ def test_hand_written_rotations():
     assert np.max(np.abs(checks.PERMUTATION - third)) < 1e-15
 
 
-def test_slips_differ_from_the_answer_at_the_checks_inputs():
-    """Each stored slip is a different pair from the true Jacobians at (QUARTER_Z, QUARTER_X), so it fails."""
-    truth = np.stack([checks.QUARTER_X.T, np.eye(3)])
-    for pair, _ in checks.COMPOSE_SLIPS:
-        assert np.max(np.abs(np.stack(pair) - truth)) > 0.5
+def test_each_slip_gets_its_own_hint_at_the_checks_inputs():
+    R1, R2 = checks.QUARTER_Z, checks.QUARTER_X
+    assert np.allclose(checks._compose_numeric(R1, R2), [R2.T, np.eye(3)], atol=1e-9)  # the answer (R2ᵀ, I)
+    slips = {
+        "transpose": (R2, np.eye(3)),
+        "ignores R2": (np.eye(3), np.eye(3)),
+        "left": (np.eye(3), R1),
+        "swapped": (np.eye(3), R2.T),
+        "wrong factor": (R1.T, np.eye(3)),
+    }
+    compose_hints = {name: checks._compose_hint(*pair, R1, R2) for name, pair in slips.items()}
+    assert None not in compose_hints.values() and len(set(compose_hints.values())) == len(slips), compose_hints
     R = checks.PERMUTATION
-    for slip in (-R.T, -np.eye(3), R, R.T):
-        assert np.max(np.abs(slip + R)) > 0.5
+    assert np.allclose(checks._inverse_numeric(R), -R, atol=1e-9)  # the answer -R
+    inverse_hints = [checks._inverse_hint(slip, R) for slip in (-R.T, -np.eye(3), R, R.T)]
+    assert None not in inverse_hints and len(set(inverse_hints)) == 4, inverse_hints

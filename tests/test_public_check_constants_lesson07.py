@@ -75,6 +75,16 @@ def test_exp_of_the_tiny_twists_and_their_mirrors(angle):
     same(checks.EXP_TINY_MIRRORED[angle], expm(twist_matrix(mirrored(xi))))
 
 
+@pytest.mark.parametrize("theta", checks.DECADE_ANGLES)
+def test_the_translations_at_every_decade(theta):
+    """exp_se3's translation at [RHO_DECADES, θ u]: V's series (θ < 1e-2) or closed form, and expm of the twist."""
+    phi = theta * checks.DECADE_AXIS
+    xi = np.concatenate([checks.RHO_DECADES, phi])
+    same(checks.TRANSLATION_AT_DECADES[theta], V(phi) @ checks.RHO_DECADES, 1e-14)
+    same(checks.TRANSLATION_AT_DECADES[theta], expm(twist_matrix(xi))[:3, 3], 1e-13)
+    assert set(checks.TRANSLATION_AT_DECADES) == set(checks.DECADE_ANGLES)
+
+
 @pytest.mark.parametrize("name", ["T_QUARTER", "T_QUARTER_X"])
 def test_logs_of_the_hand_written_poses(name):
     T = getattr(checks, name)

@@ -900,7 +900,7 @@ def _jacobian_side_hint(got, w, dw):
     """Name the left Jacobian when J works as Exp(J dw) Exp(w) instead of Exp(w) Exp(J dw)."""
     left = np.linalg.norm(_log((_exp(got @ dw) @ _exp(w)).T @ _exp(w + dw)))
     if left <= 2.0 * np.dot(dw, dw) + 1e-13:
-        return "this J works on the left, Exp(J dw) Exp(w): it is the left Jacobian Jl = Jr(-w); flip the sign of the [w]× term"
+        return hints.LEFT_JACOBIAN_WORKS_ON_LEFT_HINT
     return ""
 
 

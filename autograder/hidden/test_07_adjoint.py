@@ -125,8 +125,7 @@ def _adjoint_hint(got, T):
                 ),
                 (
                     _adjoint(R, t, "R_first"),
-                    "the coupling block multiplies in the wrong order: conjugate the twist matrix block by block, T ξ^ T⁻¹, "
-                    "and follow which of R and t acts on phi first",
+                    hints.ADJOINT_COUPLING_IDENTITY_HINT,
                 ),
                 (_adjoint(R.T, t), "used Rᵀ where R belongs: T ξ^ T⁻¹ turns the twist by R"),
             ],
@@ -230,7 +229,7 @@ def _point_hint(J, T, p):
                 (_point_jacobian(T, p, "rotation_first"), "xi = [rho, phi]: the first three columns are for rho"),
                 (
                     _point_jacobian(T, p, "translation_I"),
-                    "the rho block is I, as for a left perturbation: here rho is a shift in the body frame",
+                    "the rho block is off: for a small shift, T Exp([rho, 0]) p - T p must equal J [rho, 0] to first order",
                 ),
                 (_point_jacobian(T, p, "left"), "[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T"),
                 (_point_jacobian(T, p, "sign"), hints.SIGN_ROTATION_BLOCK_PHI_HINT),

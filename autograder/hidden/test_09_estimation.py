@@ -607,7 +607,7 @@ def _robust_hint(got, P, Q, T0, k):
         return hints.WEIGHTS_K_R_BEYOND_HINT
     if _huber_cost(got, P, Q, k) < _huber_cost(np.asarray(T0, dtype=float), P, Q, k):
         return "the cost went down but the gradient is not zero yet: iterate until your steps are tiny"
-    return "weigh each residual by ρ_k'(r)/r = min(1, k/r) and solve the weighted normal equations, repeatedly"
+    return hints.ROBUST_WEIGHT_QUESTION_HINT
 
 
 @exercise("align_pose_robust", weight=3)

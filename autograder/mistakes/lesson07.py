@@ -63,8 +63,8 @@ def pose_inverse(T):
     T_inv[:3, 3] = -T[:3, 3]
     return T_inv
 """,
-        hint="written in the wrong frame's axes",
-        public_hint="written in the wrong frame's axes",
+        hint="try p = 0, b's origin",
+        public_hint="try p = 0, b's origin",
     ),
     Mistake(
         "pose_compose_reversed",

@@ -91,8 +91,8 @@ MISTAKES = [
         "adjoint_se3",
         "coupling block R [t]×: the factors swapped",
         _adjoint("R @ skew(t)"),
-        hint="multiplies in the wrong order",
-        public_hint="the factors in the wrong order",
+        hint="try a pure spin",
+        public_hint="try a pure spin",
     ),
     # ------------------------------------------------------------ jacobian_transform_point
     Mistake(
@@ -129,8 +129,8 @@ def jacobian_transform_point(T, p):
     R = np.asarray(T, dtype=float)[:3, :3]
     return np.hstack([np.eye(3), -R @ skew(p)])
 """,
-        hint="the rho block is I, as for a left perturbation",
-        public_hint="the rho block is I, as for a left perturbation",
+        hint="the rho block is off",
+        public_hint="the rho block is off",
     ),
     Mistake(
         "point_sign",

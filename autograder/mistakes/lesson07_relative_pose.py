@@ -50,8 +50,8 @@ def relative_pose(T_wa, T_wb):
     T_ab[:3, 3] = T_wb[:3, 3] - T_wa[:3, 3]
     return T_ab
 """,
-        hint="written in world axes",
-        public_hint="written in world axes",
+        hint="compare the translation columns with T_wa turned",
+        public_hint="compare the translation columns with T_wa turned",
     ),
     Mistake(
         "relative_pose_list_slices",

@@ -198,8 +198,8 @@ JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT = "that is Jr(w)ᵀ: Jr is not orthogonal, i
 ROTATED_POINT_SIGN_FLIPPED_HINT = "the sign is flipped: turning δ × p round to put δ on the right changes its sign"
 ROTATED_POINT_R_MISSING_HINT = "R is missing: the point turns in the body frame, and R carries the result into the world"
 LEFT_DIFFERENCE_STEP_RIGHT_HINT = "that is the left difference Log(R_a R_bᵀ); the step goes on the right, R_b Exp(δ) = R_a"
-LEFT_JACOBIAN_OF_ROTATED_POINT_HINT = ("that is -[R p]×, the Jacobian of the left perturbation Exp(δ) R p; here δ turns "
-                                       "the body about its own axes, R Exp(δ) p")
+LEFT_JACOBIAN_OF_ROTATED_POINT_HINT = ("that is the Jacobian of the left perturbation, Exp(δ) R p; here δ turns the "
+                                       "body about its own axes, R Exp(δ) p")
 LEFT_QUAT_PERTURBATION_HINT = "that is Exp_q(δ) ⊗ q, the left perturbation; multiply on the right: q ⊗ Exp_q(δ)"
 LEFT_UPDATE_IS_A_ROTATION_HINT = "Exp(δ) is a rotation and so is Exp(δ) @ R: build the result from it"
 LOGS_DO_NOT_SUBTRACT_HINT = ("that is Log(R_a) - Log(R_b): rotation vectors do not subtract (rotations do not "
@@ -221,6 +221,9 @@ TURNED_CHECK_SIGN_EXP_HINT = "turned by -δ: check the sign (Exp(δ) @ R, not Ex
 TURNED_CHECK_SIGN_R_HINT = "turned by -δ: check the sign (R @ Exp(δ), not R @ Exp(δ)ᵀ)"
 TURNED_TWICE_FAR_QUATERNION_HINT = "turned twice as far: a quaternion holds the half angle, cos(|δ|/2) and sin(|δ|/2)"
 USE_BELOW_TINY_ANGLE_HINT = "δ/|δ| is 0/0 at δ = 0: use [1, δ/2] below a tiny angle"
+
+LEFT_JACOBIAN_WORKS_ON_LEFT_HINT = ("this J works on the left, Exp(J dw) Exp(w) ≈ Exp(w + dw): that is the left "
+                                    "Jacobian; the right one puts the small turn after Exp(w)")
 
 # ---------------------------------------------------------------- checks/lesson06_point_to_body.py
 LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("that Jacobian belongs to the left perturbation Exp(δ) R, a turn about the "
@@ -265,18 +268,21 @@ SMALL_ANGLE_SERIES_HINT = ("below θ = 1e-2 use the series c = 1/12 + … of the
                            "closed form is 0/0 at θ = 0 and cancels catastrophically just above it")
 TRANSFORM_ROWS_FORMULA_HINT = "p_a = R p_b + t: for rows P of shape (N, 3), P @ R.T + t"
 TRANSPOSES_T_AB_T_HINT = "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"
-INVERSE_TRANSLATION_FRAME_HINT = ("the rotation block is right, but the translation -t is written in the wrong "
-                                  "frame's axes: check T_ba (T_ab p) = p for a point p")
+INVERSE_TRANSLATION_FRAME_HINT = ("the rotation block is right, but the translation is not: T_ba (T_ab p) must give "
+                                  "p back; try p = 0, b's origin, and see where it lands")
 V_SERIES_TINY_ANGLE_HINT = ("below θ = 1e-2 use the Taylor series of V's two coefficients, each with its θ² term: "
                             "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not its limit")
 ADJOINT_COUPLING_WITHOUT_R_HINT = ("the coupling block does not depend on R: conjugating by T turns the spin phi as "
                                    "well as shifting it; compare that block with T ξ^ T⁻¹")
 
+ADJOINT_COUPLING_IDENTITY_HINT = ("the coupling block fails the defining identity (T ξ^ T⁻¹)∨ = Ad ξ: try a pure spin, "
+                                  "ξ = [0, phi], at a pose that both turns and shifts, and compare the translation rows")
+
 # ---------------------------------------------------------------- checks/lesson07_relative_pose.py
 INVERSE_POSE_TRANSPOSE_T1_HINT = ("the inverse of a pose is not its transpose: Tᵀ puts t in the bottom row and "
                                   "never undoes the shift")
-SHIFT_IN_WORLD_AXES_HINT = ("the rotation block is right, but the shift t_wb - t_wa is written in world axes; "
-                            "T_ab's translation is b's origin as seen in a's axes")
+SHIFT_IN_WORLD_AXES_HINT = ("the rotation block is right, but the translation is not b's origin as a sees it: "
+                            "T_wa T_ab must equal T_wb; compare the translation columns with T_wa turned")
 RELATIVE_POSE_CHAIN_HINT = "T_wa T_ab must equal T_wb: poses compose only where the inner letters match"
 RELATIVE_POSE_REVERSED_HINT = "that is T_ba, a seen from b: swap the roles of a and b"
 
@@ -316,6 +322,9 @@ UNIT_AXIS_FROM_VECTOR_PART_HINT = "v = sin α u: divide the vector part by its l
 WEIGHTS_K_R_BEYOND_HINT = ("weights (k/r)² beyond k belong to another cost, whose pull fades with distance: the Huber "
                            "cost keeps a constant pull k on every pair beyond k")
 
+ROBUST_WEIGHT_QUESTION_HINT = ("compare the gradient of ρ_k(|r|) with respect to r with that of ½|r|²: what does each "
+                               "residual weigh?")
+
 # ---------------------------------------------------------------- checks/lesson09_filter.py, _update.py
 # the derive exercises of lesson 09 promise exact results: finite differences and cancelling closed forms come close
 PREDICT_FINITE_DIFFERENCES_HINT = ("P_new is right to several digits but not to rounding: the first-order covariance is "
@@ -350,3 +359,4 @@ EDGE_FINITE_DIFFERENCES_HINT = ("your Jacobian agrees with finite differences bu
                                 "replace it")
 EDGE_NOT_INVERTED_HINT = "Log's Jacobian at r is the inverse of Exp's right Jacobian there, not the Jacobian itself"
 EDGE_SIGN_HINT = "the sign: T_i appears inverted in the residual, (T_i Exp(δ_i))⁻¹ = Exp(-δ_i) T_i⁻¹"
+

@@ -20,7 +20,6 @@ from ..diagnose import (
     same_rotation_quat,
     shape_problem,
 )
-from ..lie import Exp
 from .common import fmt, off_by, require_same_with_lists, require_shape
 
 ONE = np.array([1.0, 0.0, 0.0, 0.0])
@@ -398,48 +397,50 @@ def _(matrix_to_quat):
                        quaternion_hint(got, -expected))
 
 
-@public_check("matrix_to_quat", "the canonical sign holds in every branch (a turn by 3 rad about (-0.8, 0.6, 0))")
+@public_check("matrix_to_quat", "the canonical sign holds for a turn by 3 rad about (-0.8, 0.6, 0)")
 def _(matrix_to_quat):
     u = np.array([-0.8, 0.6, 0.0])
     K = np.array([[0.0, -u[2], u[1]], [u[2], 0.0, -u[0]], [-u[1], u[0], 0.0]])
-    R = np.eye(3) + np.sin(3.0) * K + (1 - np.cos(3.0)) * K @ K      # x is the largest component here
+    R = np.eye(3) + np.sin(3.0) * K + (1 - np.cos(3.0)) * K @ K
     got = require_shape(matrix_to_quat(R), (4,))
     expected = np.concatenate([[np.cos(1.5)], np.sin(1.5) * u])      # w = cos 1.5 > 0
     if close(got, -expected, 1e-9):
-        raise Mismatch(f"got w = {got[0]:.4f} < 0 from the x branch",
-                       "negate the whole quaternion when w < 0 (canonical sign), in every branch")
+        raise Mismatch(f"got w = {got[0]:.4f} < 0",
+                       "negate the whole quaternion when w < 0 (canonical sign), whichever way your code computed it")
     if not close(got, expected, 1e-9):
         raise Mismatch(f"got {fmt(got)}, {off_by(got, expected)}", quaternion_hint(got, expected))
 
 
 def _rotation_of(q):
-    """The rotation matrix of the unit quaternion q = [cos(θ/2), sin(θ/2) u], built as Exp(θ u)."""
-    half = np.arctan2(np.linalg.norm(q[1:]), q[0])
-    return Exp(2.0 * half * q[1:] / np.linalg.norm(q[1:]))
+    """The rotation matrix of the unit quaternion q = [w, x, y, z] (scipy's, which stores [x, y, z, w])."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_quat(np.roll(q, -1)).as_matrix()
 
 
-# Generic unit quaternions (w >= 0): each of w, x, y, z the largest in turn, then each one vanishing, so that a
-# method is tried wherever one of its divisions could be small (w is 1e-6, not 0, so that the canonical sign
-# w >= 0 names one of ±q).
-SHEPPERD_CASES = [q / np.linalg.norm(q) for q in np.array([
+# Eight unit quaternions (w >= 0) spread over the sphere, four of them with a component 0 or nearly (w is 1e-6,
+# not 0, so that the canonical sign w >= 0 names one of ±q).
+SPREAD_QUATERNIONS = [q / np.linalg.norm(q) for q in np.array([
     [0.9, 0.3, -0.4, 0.2], [0.3, -0.9, 0.4, 0.2], [0.2, 0.4, 0.9, -0.3], [0.4, -0.2, 0.3, 0.9],
     [1e-6, 0.6, -0.5, 0.7], [0.5, 0.0, 0.6, -0.7], [0.6, -0.5, 0.0, 0.7], [0.5, 0.7, -0.6, 0.0]])]
 
 
-@public_check("matrix_to_quat", "exact to 1e-12 for eight rotations: w, x, y or z the largest, and one of them 0")
+@public_check("matrix_to_quat", "exact to 1e-12 for eight rotations spread over the sphere, four with a zero component")
 def _(matrix_to_quat):
-    for q in SHEPPERD_CASES:
+    for q in SPREAD_QUATERNIONS:
         R = _rotation_of(q)
         got = require_shape(matrix_to_quat(R.copy()), (4,), f"matrix_to_quat of the rotation of q = {fmt(q)}")
         if not close(got, q, 1e-12):
             hint = quaternion_hint(got, q)
             if hint is None and same_rotation_quat(got, q, 1e-12):
-                hint = "negate the whole quaternion when w < 0 (canonical sign), in every branch"
+                hint = "negate the whole quaternion when w < 0 (canonical sign), whichever way your code computed it"
             if hint is None and float32_rounding(got, q):
                 hint = FLOAT32_HINT
             raise Mismatch(f"the rotation of q = {fmt(q)} gave {fmt(got)} ({off_by(got, q)})",
-                           hint or "one of the components is wrong although no angle is near π: check each of "
-                                   "the ten combinations you use, and divide only by a component that cannot be small")
+                           hint or (f"this rotation turns by nearly π (w = {q[0]:.0e}): a component you divide by was "
+                                    "small here; divide only by a component that cannot be small" if q[0] < 1e-3 else
+                                    "one of the components is wrong although the angle is far from π: compare the "
+                                    "rotation of your quaternion with the input, entry by entry"))
 
 
 # ---------------------------------------------------------------- wxyz_to_xyzw, xyzw_to_wxyz

@@ -16,7 +16,7 @@ from .common import fmt, off_by, require_same_with_lists, require_shape
 HALF = np.sqrt(0.5)
 X_ONTO_Y = np.array([HALF, 0.0, 0.0, HALF])                    # a quarter turn about z
 X_ONTO_Y_FULL_ANGLE = np.array([0.0, 0.0, 0.0, 1.0])           # [cos θ, sin θ u]: a half turn
-X_ONTO_Y_REVERSED = np.array([HALF, 0.0, 0.0, -HALF])          # about y × x
+X_ONTO_Y_REVERSED = np.array([HALF, 0.0, 0.0, -HALF])
 EIGHTH = np.array([0.9238795325112867, 0.0, 0.0, 0.3826834323650898])       # 45° about z
 EIGHTH_UNNORMALISED = np.array([0.7592566023652966, 0.0, 0.0, 0.6507913734559685])   # a and b used unnormalised
 # the answer for the pair 1e-6 rad apart of the scaling check, to the last digit

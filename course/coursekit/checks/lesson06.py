@@ -527,7 +527,7 @@ def _(numerical_jacobian):
         return (Rotation.from_matrix(np.asarray(R, dtype=float)) * Rotation.from_rotvec(d)).as_matrix()
 
     got = require_shape(numerical_jacobian(rotate, R_SAMPLE, plus), (3, 3))
-    exact = -R_SAMPLE @ skew(P_GENERIC)                  # the analytic Jacobian (jacobian_rotate_point)
+    exact = JRP_AT_GENERIC                                # the exact Jacobian of R ↦ R p here, stored below
     allowed = 5e-6 * (1.0 + np.linalg.norm(P_GENERIC))
     if np.max(np.abs(got - exact)) <= allowed:
         return
@@ -554,41 +554,51 @@ def _(jacobian_rotate_point):
                        if close(got, -expected, 1e-12) else None)
 
 
-# The slips of the right-perturbation Jacobian of R p at R_SAMPLE, p = (0.5, -1, 2), and the Jacobian itself at
-# R_SAMPLE, P_GENERIC, stored as numbers (recomputed by the constants test).
-JRP_SIGN_FLIPPED = np.array([[-2.1322562953451767, -0.7048768454571468, 0.18062565110772072],
-                             [0.21367394182495136, -1.6474546040256322, -0.8771457874690539],
-                             [0.6386129794686697, -1.0193340769409853, -0.6693202833376601]])   # sign flipped
-JRP_TRANSPOSED = -JRP_SIGN_FLIPPED.T                                                          # transposed
-JRP_FACTORS_SWAPPED = np.array([[2.029740617511133, 0.7877424815292698, -0.5095240999399673],
-                                [-0.20256687321586808, 1.7969566342002792, 0.9899058120241296],
-                                [-0.6087185909857173, 0.7015426967178221, 0.6223339309970566]])  # factors swapped
+# The exact Jacobian of R ↦ R p at R_SAMPLE, P_GENERIC, stored as numbers (recomputed by the constants test).
 JRP_AT_GENERIC = np.array([[2.4083548374554673, 0.8225192144346913, -0.28026063975169463],
                            [-0.11185358876016993, 1.9045908748636529, 1.1610298406613035],
-                           [-0.8469449519220964, 1.0129144787551643, 0.868022858512355]])     # the Jacobian itself
+                           [-0.8469449519220964, 1.0129144787551643, 0.868022858512355]])
+_TEST_DIRECTIONS = np.array([[2.0, -1.0, 2.0], [0.6, 0.8, 0.0], [-0.48, 0.36, 0.8]]) / np.array([[3.0], [1.0], [1.0]])
+
+
+def _first_order(J, R, p, left=False, directions=_TEST_DIRECTIONS[:1]):
+    """The largest remainder of the turned point against J δ, relative to 2 |p| |δ|², for |δ| = 1e-3 and 1e-4 along
+    each direction: at most 1 when J is the Jacobian of R Exp(δ) p (of Exp(δ) R p with ``left``)."""
+    worst = 0.0
+    for direction in directions:
+        for size in (1e-3, 1e-4):
+            d = size * direction
+            turned = Exp(d) @ R @ p if left else R @ Exp(d) @ p
+            worst = max(worst, np.linalg.norm(turned - R @ p - J @ d) / (2.0 * np.linalg.norm(p) * size**2))
+    return worst
+
+
+def _rotate_point_hint(J, R, p):
+    """Name the slip by what fixes it: J works for the left perturbation, or -J, Jᵀ, R J or R J Rᵀ would pass."""
+    def passes(candidate, left=False):
+        return _first_order(candidate, R, p, left, _TEST_DIRECTIONS) <= 1.0
+
+    for candidate, left, hint in [(J, True, hints.LEFT_JACOBIAN_OF_ROTATED_POINT_HINT),
+                                  (-J, False, hints.ROTATED_POINT_SIGN_FLIPPED_HINT),
+                                  (J.T, False, hints.TRANSPOSE_R_P_ROW_HINT),
+                                  (R @ J, False, hints.ROTATED_POINT_R_MISSING_HINT),
+                                  (R @ J @ R.T, False, hints.FACTORS_WRONG_ORDER_R_HINT)]:
+        if passes(candidate, left):
+            return hint
+    return "column j of J is how R Exp(δ) p moves per radian of δ_j, at δ = 0"
 
 
 @public_check("jacobian_rotate_point", "first order: R Exp(δ) p - R p - J δ shrinks like |δ|²")
 def _(jacobian_rotate_point):
     p = np.array([0.5, -1.0, 2.0])
     J = require_shape(jacobian_rotate_point(R_SAMPLE, p), (3, 3))
-    direction = np.array([2.0, -1.0, 2.0]) / 3.0
+    direction = _TEST_DIRECTIONS[0]
     for size in (1e-3, 1e-4):
         d = size * direction
         remainder = np.linalg.norm(R_SAMPLE @ Exp(d) @ p - R_SAMPLE @ p - J @ d)
         if remainder > 2.0 * np.linalg.norm(p) * size**2:
-            hint = "column j of J is how R Exp(δ) p moves per radian of δ_j, at δ = 0"
-            if close(J, -skew(R_SAMPLE @ p), 1e-9):
-                hint = hints.LEFT_JACOBIAN_OF_ROTATED_POINT_HINT
-            elif close(J, JRP_SIGN_FLIPPED, 1e-9):
-                hint = hints.ROTATED_POINT_SIGN_FLIPPED_HINT
-            elif close(J, JRP_TRANSPOSED, 1e-9):
-                hint = hints.TRANSPOSE_R_P_ROW_HINT
-            elif close(J, -skew(p), 1e-9):
-                hint = hints.ROTATED_POINT_R_MISSING_HINT
-            elif close(J, JRP_FACTORS_SWAPPED, 1e-9):
-                hint = hints.FACTORS_WRONG_ORDER_R_HINT
-            raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²", hint)
+            raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²",
+                           _rotate_point_hint(J, R_SAMPLE, p))
 
 
 @public_check("jacobian_rotate_point", "exact (to 1e-12) at a generic attitude and point, and accepts plain lists")
@@ -621,9 +631,8 @@ def _wx_coefficient(J, w):
     return float(np.dot([anti[2, 1], anti[0, 2], anti[1, 0]], w) / np.dot(w, w))
 
 
-# At w = θ (0.6, 0, 0.8), θ = 1e-9 and 1e-6: the series I - [w]×/2 + [w]×²/6 (the value to full precision) and
-# the [w]× coefficient -(1 - cos θ)/θ² of the closed form evaluated there (the slip with no small-angle branch),
-# stored as numbers (recomputed by the constants test).
+# At w = θ (0.6, 0, 0.8), θ = 1e-9 and 1e-6: Jr to full precision, and the [w]× coefficient that a closed form
+# without a small-angle branch gives there (the slip), stored as numbers (recomputed by the constants test).
 JR_TINY = {1e-9: (np.array([[1.0, 4.0000000000000007e-10, 8.000000000000001e-20],
                             [-4.0000000000000007e-10, 1.0, 3e-10],
                             [8.000000000000001e-20, -3e-10, 1.0]]), -0.0),
@@ -668,38 +677,84 @@ def _(right_jacobian_so3):
     if leftover > 1e-8:
         hint = hints.RIGHT_JACOBIAN_FORMULA_HINT
         if np.linalg.norm(Log((Exp(J @ dw) @ Exp(w)).T @ Exp(w + dw))) < 1e-8:
-            hint = "this J works on the left, Exp(J dw) Exp(w): it is the left Jacobian; flip the sign of the [w]× term"
+            hint = hints.LEFT_JACOBIAN_WORKS_ON_LEFT_HINT
         raise Mismatch(f"for |dw| = 1e-4 the leftover angle is {leftover:.1e} rad, expected below 1e-8", hint)
 
 
-# Jr = I - a [w]× + b [w]×² and Jr⁻¹ = I + [w]×/2 + c [w]×² at θ = 0.97 · 10⁻ᵏ: (a, b, c) to full precision,
-# summed from their series (recomputed by tests/test_public_check_constants_lesson06.py).
-JR_DECADES = {
-    0.97: (0.46200496209974035, 0.15899921073763543, 0.0846701198402391),
-    0.097: (0.49960808127001116, 0.1665882758963716, 0.08334640431713328),
-    0.0097: (0.49999607959562903, 0.16666588258508985, 0.08333346401418164),
-    0.00097: (0.4999999607958346, 0.1666666588258335, 0.08333333464013891),
-    9.7e-05: (0.4999999996079583, 0.16666666658825832, 0.08333333334640139),
-    9.7e-06: (0.4999999999960796, 0.16666666666588256, 0.08333333333346402),
-    9.7e-07: (0.4999999999999608, 0.16666666666665883, 0.08333333333333463),
-    9.7e-08: (0.4999999999999996, 0.16666666666666657, 0.08333333333333334),
-    9.7e-09: (0.5, 0.16666666666666666, 0.08333333333333333),
+# Jr and Jr⁻¹ at w = θ u for θ = 0.97 · 10⁻ᵏ, to full precision, summed from their series (recomputed by
+# tests/test_public_check_constants_lesson06.py); stored as numbers so that no formula sits on the page.
+JR_AT_DECADES = {
+    0.97: np.array([[0.9168875792316438, 0.2655182405171563, 0.21587154102693434],
+                    [-0.3320081771318412, 0.8670201267706301, 0.2655182405171563],
+                    [-0.08289166779756442, -0.3320081771318412, 0.9168875792316438]]),
+    0.097: np.array([[0.9991292060622728, 0.03195967168036984, 0.01685062977791212],
+                     [-0.032656306830551596, 0.9986067296996365, 0.03195967168036984],
+                     [-0.015457359477548598, -0.032656306830551596, 0.9991292060622728]]),
+    0.0097: np.array([[0.9999912880039487, 0.0032298231829645274, 0.0016236235875336145],
+                      [-0.003236792779805608, 0.9999860608063178, 0.0032298231829645274],
+                      [-0.0016096843938514533, -0.003236792779805608, 0.9999912880039487]]),
+    0.00097: np.array([[0.9999999128796337, 0.0003232984598347977, 0.00016173635028367064],
+                       [-0.0003233681561278151, 0.999999860607414, 0.0003232984598347977],
+                       [-0.00016159695769763576, -0.0003233681561278151, 0.9999999128796337]]),
+    9.7e-05: np.array([[0.9999999991287963, 3.233298482649999e-05, 1.6167363616953285e-05],
+                       [-3.233368178946262e-05, 0.999999998606074, 3.233298482649999e-05],
+                       [-1.6165969691028017e-05, -3.233368178946262e-05, 0.9999999991287963]]),
+    9.7e-06: np.array([[0.999999999991288, 3.2333298484931666e-06, 1.6166736362836203e-06],
+                       [-3.233336818122796e-06, 0.9999999999860607, 3.2333298484931666e-06],
+                       [-1.616659697024361e-06, -3.233336818122796e-06, 0.999999999991288]]),
+    9.7e-07: np.array([[0.9999999999999128, 3.2333329848515985e-07, 1.616667363629503e-07],
+                       [-3.233333681814561e-07, 0.9999999999998606, 3.2333329848515985e-07],
+                       [-1.616665969703577e-07, -3.233333681814561e-07, 0.9999999999999128]]),
+    9.7e-08: np.array([[0.9999999999999991, 3.233333298485182e-08, 1.6166667363629615e-08],
+                       [-3.233333368181479e-08, 0.9999999999999986, 3.233333298485182e-08],
+                       [-1.616666596970369e-08, -3.233333368181479e-08, 0.9999999999999991]]),
+    9.7e-09: np.array([[1.0, 3.233333329848518e-09, 1.6166666736362961e-09],
+                       [-3.2333333368181476e-09, 1.0, 3.233333329848518e-09],
+                       [-1.6166666596970368e-09, -3.2333333368181476e-09, 1.0]]),
+}
+JR_INV_AT_DECADES = {
+    0.97: np.array([[0.9557410468012884, -0.341036914612818, -0.12625950410769735],
+                    [0.3056297520538486, 0.9291856748820614, -0.341036914612818],
+                    [0.19707382922563596, 0.3056297520538486, 0.9557410468012884]]),
+    0.097: np.array([[0.9995643298232112, -0.03250760140404887, -0.015818130525235598],
+                     [0.032159065262617796, 0.9993029277171379, -0.03250760140404887],
+                     [0.016515202808097734, 0.032159065262617796, 0.9995643298232112]]),
+    0.0097: np.array([[0.9999956439746505, -0.003235075743473132, -0.0016131818463870691],
+                      [0.0032315909231935345, 0.9999930303594408, -0.003235075743473132],
+                      [0.0016201514869462641, 0.0032315909231935345, 0.9999956439746505]]),
+    0.00097: np.array([[0.9999999564398141, -0.00032335075740768065, -0.00016163181851797204],
+                       [0.00032331590925898605, 0.9999999303037026, -0.00032335075740768065],
+                       [0.0001617015148153613, 0.00032331590925898605, 0.9999999564398141]]),
+    9.7e-05: np.array([[0.9999999995643981, -3.23335075740741e-05, -1.616631818518513e-05],
+                       [3.2333159092592565e-05, 0.9999999993030371, -3.23335075740741e-05],
+                       [1.61670151481482e-05, 3.2333159092592565e-05, 0.9999999995643981]]),
+    9.7e-06: np.array([[0.9999999999956439, -3.233335075740741e-06, -1.6166631818518518e-06],
+                       [3.233331590925926e-06, 0.9999999999930304, -3.233335075740741e-06],
+                       [1.6166701514814816e-06, 3.233331590925926e-06, 0.9999999999956439]]),
+    9.7e-07: np.array([[0.9999999999999565, -3.2333335075740744e-07, -1.6166663181851854e-07],
+                       [3.2333331590925925e-07, 0.9999999999999303, -3.2333335075740744e-07],
+                       [1.616667015148148e-07, 3.2333331590925925e-07, 0.9999999999999565]]),
+    9.7e-08: np.array([[0.9999999999999996, -3.233333350757407e-08, -1.6166666318185185e-08],
+                       [3.233333315909259e-08, 0.9999999999999993, -3.233333350757407e-08],
+                       [1.6166667015148147e-08, 3.233333315909259e-08, 0.9999999999999996]]),
+    9.7e-09: np.array([[1.0, -3.2333333350757405e-09, -1.6166666631818517e-09],
+                       [3.2333333315909254e-09, 1.0, -3.2333333350757405e-09],
+                       [1.6166666701514812e-09, 3.2333333315909254e-09, 1.0]]),
 }
 
 
-def _every_decade(function, name, expected_of, formula, closed_form, series, first_order):
-    """Compare ``function(θ u)`` with ``expected_of(W, a, b, c)`` to 1e-13 at every angle of JR_DECADES.
+def _every_decade(function, name, expected_at, formula, closed_form, series, first_order):
+    """Compare ``function(θ u)`` with ``expected[θ]`` to 1e-13 at every angle of DECADE_ANGLES.
 
     The first miss is reported. Below θ = 0.97 the errors at all the angles name the cause: a series too short
     for its threshold is off by more at larger angles, a closed form that cancels by more at smaller ones.
     """
     errors, identity = {}, {}
-    for theta, (a, b, c) in JR_DECADES.items():
+    for theta in DECADE_ANGLES:
         w = theta * DECADE_AXIS
-        W = skew(w)
         given = w.tolist() if theta == 0.097 else w                 # one of them as a plain list
         got = require_shape(function(given), (3, 3), f"{name} at θ = {theta:.2g}")
-        expected = expected_of(W, a, b, c)
+        expected = expected_at[theta]
         errors[theta] = np.max(np.abs(got - expected))
         identity[theta] = close(got, E, 1e-300)
         if theta == DECADE_ANGLES[0] and errors[theta] > 1e-13:
@@ -723,7 +778,7 @@ def _every_decade(function, name, expected_of, formula, closed_form, series, fir
 
 @public_check("right_jacobian_so3", "exact to 1e-13 just below each power of ten, θ = 0.97 … 9.7e-9 (one as a list)")
 def _(right_jacobian_so3):
-    _every_decade(right_jacobian_so3, "right_jacobian_so3", lambda W, a, b, c: E - a * W + b * W @ W,
+    _every_decade(right_jacobian_so3, "right_jacobian_so3", JR_AT_DECADES,
                   "keep the θ² term of each coefficient's series (a one-term series is off by about θ³/24)",
                   hints.RIGHT_JACOBIAN_FORMULA_HINT,
                   "the Taylor series of a and b, each with its θ² term", "-[w]×/2")
@@ -789,6 +844,6 @@ def _(right_jacobian_inv_so3):
 @public_check("right_jacobian_inv_so3", "exact to 1e-13 just below each power of ten, θ = 0.97 … 9.7e-9 "
               "(one as a list)")
 def _(right_jacobian_inv_so3):
-    _every_decade(right_jacobian_inv_so3, "right_jacobian_inv_so3", lambda W, a, b, c: E + 0.5 * W + c * W @ W,
+    _every_decade(right_jacobian_inv_so3, "right_jacobian_inv_so3", JR_INV_AT_DECADES,
                   "keep the θ² term of c's series (the one-term c = 1/12 is off by about θ⁴/720)",
                   hints.RIGHT_JACOBIAN_INVERSE_FORMULA_HINT, "the series of c on the page, with its θ² term", "+[w]×/2")

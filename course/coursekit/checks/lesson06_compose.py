@@ -2,9 +2,9 @@
 
 The checks use quarter turns written out by hand, finite differences of each Jacobian's definition (central
 differences, computed here with the library's Exp and Log), the identity, and the fact that both Jacobians keep
-the size of a small turn. The usual slips are recognised by their values at the checks' fixed inputs, which are
-products of the hand-written quarter turns (``tests/test_public_check_constants_lesson06_compose.py`` checks
-those turns against scipy).
+the size of a small turn. The usual slips are recognised by what would pass instead (the transpose, the left
+version, the definition at other inputs), never by their formulas (``tests/test_public_check_constants_lesson06_compose.py``
+checks the hand-written turns against scipy).
 """
 
 import numpy as np
@@ -13,7 +13,7 @@ from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, single_precision_error
 from ..lie import Exp, Log
-from .common import central_differences, first_match, fmt, off_by, require_same_with_lists, require_shape, require_unchanged_inputs
+from .common import central_differences, fmt, off_by, require_same_with_lists, require_shape, require_unchanged_inputs
 
 # Quarter turns, written out: about z (x goes to y), about x (y goes to z), and their product (a third of
 # a turn about (1, 1, 1), which permutes the axes x → y → z → x).
@@ -31,12 +31,36 @@ def _require_turn_preserving(J, what, why):
 
 
 # ---------------------------------------------------------------- jacobians_of_compose
-# The usual slips at (R1, R2) = (QUARTER_Z, QUARTER_X), as (J1, J2).
-COMPOSE_SLIPS = [((QUARTER_X, np.eye(3)), hints.COMPOSE_TRANSPOSE_HINT),
-                 ((np.eye(3), np.eye(3)), hints.COMPOSE_IGNORES_R2_HINT),
-                 ((np.eye(3), QUARTER_Z), hints.COMPOSE_LEFT_HINT),
-                 ((np.eye(3), QUARTER_X.T), hints.COMPOSE_SWAPPED_HINT),
-                 ((QUARTER_Z.T, np.eye(3)), hints.COMPOSE_WRONG_FACTOR_HINT)]
+def _compose_numeric(R1, R2, left=False):
+    """(J1, J2) by central differences of their definitions: R1 Exp(d) R2 = R1 R2 Exp(J1 d) and
+    R1 R2 Exp(d) = R1 R2 Exp(J2 d); with ``left``, of the left versions Exp(J1 d) R1 R2 = Exp(d) R1 R2 and
+    Exp(J2 d) R1 R2 = R1 Exp(d) R2."""
+    R = R1 @ R2
+    if left:
+        return (central_differences(lambda d: Log(Exp(d) @ R @ R.T), 3),
+                central_differences(lambda d: Log(R1 @ Exp(d) @ R2 @ R.T), 3))
+    return (central_differences(lambda d: Log(R.T @ R1 @ Exp(d) @ R2), 3),
+            central_differences(lambda d: Log(R.T @ R @ Exp(d)), 3))
+
+
+def _compose_hint(J1, J2, R1, R2):
+    """Name the slip by what would pass: Jᵀ for J, the two swapped, the left versions, J1 of R2 R1, or a J1 that
+    ignores R2 (right only when R2 = I)."""
+    def same(pair, other):
+        return close(pair[0], other[0], 1e-6) and close(pair[1], other[1], 1e-6)
+
+    truth = _compose_numeric(R1, R2)
+    if same((J1.T, J2), truth):
+        return hints.COMPOSE_TRANSPOSE_HINT
+    if close(J1, _compose_numeric(R1, np.eye(3))[0], 1e-6) and close(J2, truth[1], 1e-6):
+        return hints.COMPOSE_IGNORES_R2_HINT
+    if same((J1, J2), _compose_numeric(R1, R2, left=True)):
+        return hints.COMPOSE_LEFT_HINT
+    if same((J2, J1), truth):
+        return hints.COMPOSE_SWAPPED_HINT
+    if close(J1, _compose_numeric(R2, R1)[0], 1e-6):
+        return hints.COMPOSE_WRONG_FACTOR_HINT
+    return None
 
 
 def _pair(value, what):
@@ -55,7 +79,7 @@ def _(jacobians_of_compose):
     numeric2 = central_differences(lambda d: Log((R1 @ R2).T @ R1 @ R2 @ Exp(d)), 3)
     if close(J1, numeric1, 1e-6) and close(J2, numeric2, 1e-6):
         return
-    hint = first_match(np.stack([J1, J2]), [(np.stack(pair), h) for pair, h in COMPOSE_SLIPS])
+    hint = _compose_hint(J1, J2, R1, R2)
     which = "J1" if not close(J1, numeric1, 1e-6) else "J2"
     error = off_by(J1, numeric1) if which == "J1" else off_by(J2, numeric2)
     raise Mismatch(f"{which} disagrees with finite differences ({error})",
@@ -87,6 +111,24 @@ def _(jacobians_of_compose):
 
 
 # ---------------------------------------------------------------- jacobian_of_inverse
+def _inverse_numeric(R, left=False):
+    """J by central differences of (R Exp(d))⁻¹ = R⁻¹ Exp(J d); with ``left``, of (Exp(d) R)⁻¹ = Exp(J d) R⁻¹."""
+    if left:
+        return central_differences(lambda d: Log((Exp(d) @ R).T @ R), 3)
+    return central_differences(lambda d: Log(R @ (R @ Exp(d)).T), 3)
+
+
+def _inverse_hint(J, R):
+    """Name the slip by what would pass: the left version, J at the identity, -J, or -Jᵀ."""
+    for candidate, expected, hint in [(J, _inverse_numeric(R, left=True), hints.INVERSE_LEFT_HINT),
+                                      (J, _inverse_numeric(np.eye(3)), hints.INVERSE_NOT_MOVED_HINT),
+                                      (-J, _inverse_numeric(R), hints.INVERSE_SIGN_HINT),
+                                      (-J.T, _inverse_numeric(R), hints.INVERSE_TRANSPOSE_HINT)]:
+        if close(candidate, expected, 1e-6):
+            return hint
+    return None
+
+
 @public_check("jacobian_of_inverse", "matches finite differences of Log(R (R Exp(d))⁻¹), for a third of a turn "
                                      "about (1, 1, 1)")
 def _(jacobian_of_inverse):
@@ -94,8 +136,7 @@ def _(jacobian_of_inverse):
     J = require_shape(jacobian_of_inverse(R), (3, 3), "jacobian_of_inverse(R)")
     numeric = central_differences(lambda d: Log(R @ (R @ Exp(d)).T), 3)
     if not close(J, numeric, 1e-6):
-        hint = first_match(J, [(-R.T, hints.INVERSE_LEFT_HINT), (-np.eye(3), hints.INVERSE_NOT_MOVED_HINT),
-                                (R, hints.INVERSE_SIGN_HINT), (R.T, hints.INVERSE_TRANSPOSE_HINT)])
+        hint = _inverse_hint(J, R)
         raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
                        hint or "write (R Exp(d))⁻¹ as R⁻¹ Exp(J d) and read off J")
 

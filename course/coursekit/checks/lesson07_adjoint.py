@@ -49,8 +49,7 @@ NO_COUPLING_HINT = ("diag(R, R) is the adjoint of a pure rotation: with a transl
 COUPLING_WITHOUT_R_HINT = hints.ADJOINT_COUPLING_WITHOUT_R_HINT
 COUPLING_SIGN_HINT = ("the coupling block has the wrong sign: check the step that moves phi to the right of the cross "
                       "product, a × b = -b × a")
-COUPLING_ORDER_HINT = ("the coupling block has the factors in the wrong order: conjugate the twist matrix block by block, "
-                       "T ξ^ T⁻¹, and follow which of R and t acts on phi first")
+COUPLING_ORDER_HINT = hints.ADJOINT_COUPLING_IDENTITY_HINT
 ADJOINT_SLIPS = [(ADJ_ROTATION_FIRST, ROTATION_FIRST_HINT), (ADJ_NO_COUPLING, NO_COUPLING_HINT),
                  (ADJ_COUPLING_WITHOUT_R, COUPLING_WITHOUT_R_HINT), (ADJ_COUPLING_SIGN, COUPLING_SIGN_HINT),
                  (ADJ_COUPLING_R_FIRST, COUPLING_ORDER_HINT)]
@@ -109,8 +108,8 @@ JTP_SIGN = np.array([[0.0, -1.0, 0.0, -0.5, 0.0, 1.0], [1.0, 0.0, 0.0, 0.0, -0.5
 JTP_WORLD_ROTATION = np.array([[0.0, -1.0, 0.0, 0.0, 0.5, -1.0], [1.0, 0.0, 0.0, -0.5, 0.0, 2.0],
                                [0.0, 0.0, 1.0, 1.0, -2.0, 0.0]])
 POINT_ROTATION_FIRST_HINT = "xi = [rho, phi]: the first three columns are for the translation rho, the last three for phi"
-POINT_TRANSLATION_HINT = ("the rho block is I, as for a left perturbation: here rho is a shift in the body frame, "
-                          "and T carries it into the world")
+POINT_TRANSLATION_HINT = ("the rho block is off: for a small shift, T Exp([rho, 0]) p - T p must equal J [rho, 0] "
+                          "to first order; try rho along one axis at a pose that turns")
 POINT_LEFT_HINT = ("[I, -[T p]×] is the Jacobian of the left perturbation Exp(xi) T; here xi perturbs T on the "
                    "right, in the body frame")
 POINT_SIGN_HINT = hints.SIGN_ROTATION_BLOCK_PHI_HINT

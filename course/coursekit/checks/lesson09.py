@@ -382,7 +382,7 @@ def _robust_hint(got, P, Q, T0, k):
             "the cost went down but the gradient is not zero yet: iterate until your steps are tiny "
             "(|xi| below about 1e-12)"
         )
-    return "compare the gradient of ρ_k(|r|) with respect to r with that of ½|r|²: what does each residual weigh?"
+    return hints.ROBUST_WEIGHT_QUESTION_HINT
 
 
 @public_check("align_pose_robust", "returns a pose where the Huber cost's gradient vanishes (3 of 12 pairs 1 m off)")
@@ -391,9 +391,10 @@ def _(align_pose_robust):
     got = require_shape(align_pose_robust(P, Q, T0, HUBER_K), (4, 4), "align_pose_robust(P, Q, T0, k)")
     require_pose(got, "align_pose_robust(P, Q, T0, k)")
     gradient = _numeric_gradient(lambda T: _huber_cost(T, P, Q, HUBER_K), got)
-    if np.max(np.abs(gradient)) > 1e-6:
+    # the hidden checks' bar, 1e-10 per pair; these central differences are good to about 1e-11 here
+    if np.max(np.abs(gradient)) > 1e-10 * len(P):
         raise Mismatch(
-            f"the gradient of the Huber cost is {fmt(gradient, 4)} there, not zero",
+            f"the gradient of the Huber cost is {fmt(gradient, 4)} there, not zero (allowed {1e-10 * len(P):.1e})",
             _robust_hint(got, P, Q, T0, HUBER_K),
         )
 

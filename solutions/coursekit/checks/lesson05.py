@@ -455,17 +455,25 @@ def _(quat_to_euler_zyx):
 
 
 # ---------------------------------------------------------------- euler_rates_matrix
-# mistakes at pitch = 0.7, roll = -1.1 (the finite-difference check's attitude): columns in the order
-# [roll, pitch, yaw]; the axes expressed with Rx(roll) instead of Rx(roll)ᵀ; Eᵀ
-RATES_COLUMNS_REVERSED = np.array([[1.0, 0.0, -0.644217687237691],
-                                   [0.0, 0.4535961214255773, -0.681632986593423],
-                                   [0.0, 0.8912073600614354, 0.34692944965489897]])
-RATES_RX_NOT_TRANSPOSED = np.array([[-0.644217687237691, 0.0, 1.0],
-                                    [0.681632986593423, 0.4535961214255773, 0.0],
-                                    [0.34692944965489897, -0.8912073600614354, 0.0]])
-RATES_TRANSPOSED = np.array([[-0.644217687237691, -0.681632986593423, 0.34692944965489897],
-                             [0.0, 0.4535961214255773, 0.8912073600614354],
-                             [1.0, 0.0, 0.0]])
+def _body_rates_by_differences(pitch, roll, yaw=0.4, h=1e-6):
+    """The 3×3 matrix of ω_b per unit yaw, pitch and roll rate, by central differences of the z-y-x rotation."""
+    angles = np.array([yaw, pitch, roll])
+    return np.column_stack([Log(_zyx(*(angles - h * e)).T @ _zyx(*(angles + h * e))) / (2 * h) for e in np.eye(3)])
+
+
+def _rates_slip_hint(E_got, pitch, roll):
+    """Name the slip by what the finite differences say instead: the columns in reverse order, the matrix of
+    the opposite roll (each roll sign flipped), or the transpose."""
+    numeric = _body_rates_by_differences(pitch, roll)
+    for candidate, expected, hint in [(E_got[:, ::-1], numeric, hints.COLUMNS_ORDER_ROLL_PITCH_HINT),
+                                      (E_got, _body_rates_by_differences(pitch, -roll), hints.ROLL_SIGNS_FLIPPED_EXPRESS_HINT),
+                                      (E_got.T, numeric, "looks like the transpose of E"),
+                                      (E_got, np.eye(3), "E = I treats the Euler-angle rates as body rates; they are "
+                                       "not: each rate spins about its own axis, seen in the body frame")]:
+        if close(candidate, expected, 1e-7):
+            return hint
+    return None
+
 
 @public_check("euler_rates_matrix", "at zero angles the three rates spin about z, y and x")
 def _(euler_rates_matrix):
@@ -491,19 +499,10 @@ def _(euler_rates_matrix):
     if close(E_got @ rates, world, 1e-7):
         raise Mismatch("E @ rates gives the angular velocity in the world frame",
                        "the course's E gives body rates: the turn about the body's own axes, as in lesson 03")
-    candidates = [
-        (RATES_COLUMNS_REVERSED,
-         hints.COLUMNS_ORDER_ROLL_PITCH_HINT),
-        (RATES_RX_NOT_TRANSPOSED,
-         hints.ROLL_SIGNS_FLIPPED_EXPRESS_HINT),
-        (RATES_TRANSPOSED, "looks like the transpose of E"),
-        (np.eye(3), "E = I treats the Euler-angle rates as body rates; they are not: each rate spins about "
-                    "its own axis, seen in the body frame"),
-    ]
     seen = f"E @ rates = {fmt(E_got @ rates)}, but the body rates are {fmt(body)} ({off_by(E_got @ rates, body)})"
-    for candidate, hint in candidates:
-        if close(E_got, candidate, 1e-9):
-            raise Mismatch(seen, hint)
+    hint = _rates_slip_hint(E_got, angles[1], angles[2])
+    if hint:
+        raise Mismatch(seen, hint)
     raise Mismatch(seen, "each rate alone spins the body about one axis: try one rate at a time (each gives one "
                          "column of E) and compare it with the finite difference of a pure yaw, pitch or roll")
 

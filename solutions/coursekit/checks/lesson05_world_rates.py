@@ -1,8 +1,9 @@
 """Public checks for lesson 05, section 9: Euler-angle rates in world axes.
 
 The angular velocity in world axes is computed here by central differences of scipy's z-y-x Euler angles
-(ω_w from Ṙ Rᵀ), one rate at a time; the values the usual slips return at yaw π/3, pitch π/6 are stored as
-numbers (``tests/test_public_check_constants_lesson05_world_rates.py`` recomputes them).
+(ω_w from Ṙ Rᵀ), one rate at a time. The usual slips are recognised by what the finite differences give
+instead (at yaw 0, at pitch 0, at -yaw, or in reverse order), never by their formulas
+(``tests/test_public_check_constants_lesson05_world_rates.py`` gives each slip to them).
 """
 
 import numpy as np
@@ -13,24 +14,27 @@ from ..diagnose import close
 from .common import fmt, off_by, require_shape
 
 YAW, PITCH = np.pi / 3, np.pi / 6
-TRANSPOSED_TURNS = np.array([[0.0, 0.8660254037844386, 0.4330127018922194],
-                             [0.0, 0.5000000000000001, -0.8660254037844386],
-                             [1.0, 0.0, 0.25]])
-ROLL_UNPITCHED = np.array([[0.0, -0.8660254037844386, 0.5000000000000001],
-                           [0.0, 0.5000000000000001, 0.8660254037844386],
-                           [1.0, 0.0, 0.0]])
-IGNORES_YAW = np.array([[0.0, 0.0, 0.8660254037844387], [0.0, 1.0, 0.0], [1.0, 0.0, -0.4999999999999999]])
-REVERSED = np.array([[0.4330127018922194, -0.8660254037844386, 0.0],
-                     [0.75, 0.5000000000000001, 0.0],
-                     [-0.4999999999999999, 0.0, 1.0]])
 TRANSPOSED_HINT = ("the axes were turned by transposes, as in the body-rate matrix: a pure pitch rate at yaw π/3 "
                    "spins about a horizontal axis that has turned with the yaw, not against it")
 ROLL_UNPITCHED_HINT = ("the roll axis is the body x axis after the yaw and the pitch: at pitch π/6 it must tilt "
                        "out of the horizontal plane")
 IGNORES_YAW_HINT = "the yaw turns the pitch and roll axes about the vertical: the answer depends on the yaw"
 REVERSED_HINT = hints.COLUMNS_GO_ORDER_RATES_HINT
-SLIPS = [(TRANSPOSED_TURNS, TRANSPOSED_HINT), (ROLL_UNPITCHED, ROLL_UNPITCHED_HINT), (IGNORES_YAW, IGNORES_YAW_HINT),
-         (REVERSED, REVERSED_HINT)]
+
+
+def _slip_hint(got, roll):
+    """Name the slip by what the finite differences say instead: the columns in reverse order, the matrix at
+    yaw 0, a horizontal roll axis (the one of pitch 0), or a pitch axis turned by -yaw."""
+    numeric = _world_rates_by_differences(YAW, PITCH, roll)
+    if close(got[:, ::-1], numeric, 1e-8):
+        return REVERSED_HINT
+    if close(got, _world_rates_by_differences(0.0, PITCH, roll), 1e-8):
+        return IGNORES_YAW_HINT
+    if close(got[:, :2], numeric[:, :2], 1e-8) and close(got[:, 2], _world_rates_by_differences(YAW, 0.0, roll)[:, 2], 1e-8):
+        return ROLL_UNPITCHED_HINT
+    if close(got[:, 1], _world_rates_by_differences(-YAW, PITCH, roll)[:, 1], 1e-8):
+        return TRANSPOSED_HINT
+    return None
 
 
 def _world_rates_by_differences(yaw, pitch, roll, h=1e-6):
@@ -56,7 +60,7 @@ def _(euler_rates_matrix_world):
     for roll in (0.0, 1.2):
         numeric = _world_rates_by_differences(YAW, PITCH, roll)
         if not close(got, numeric, 1e-8):
-            hint = next((h for value, h in SLIPS if close(got, value, 1e-9)), None)
+            hint = _slip_hint(got, roll)
             raise Mismatch(f"E_w @ rates misses the world angular velocity at roll {roll:g} "
                            f"({off_by(got, numeric)})", hint or "ω_w is defined by Ṙ Rᵀ = [ω_w]×: differentiate "
                            "Rz Ry Rx and multiply by Rᵀ on the right")

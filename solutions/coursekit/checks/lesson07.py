@@ -12,10 +12,10 @@ import numpy as np
 from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import FLOAT32_HINT, close, single_precision_error
-from ..lie import Exp, skew
+from ..lie import Exp
 from .common import fmt, off_by, require_pose, require_same_with_lists, require_shape
 from .lesson01 import SQUARE_BATCH_HINT
-from .lesson06 import DECADE_ANGLES, DECADE_AXIS, JR_DECADES
+from .lesson06 import DECADE_ANGLES, DECADE_AXIS
 
 # A quarter turn about z (x goes to y) followed by a shift of (1, 2, 3) m, written out.
 QUARTER_TURN_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -312,8 +312,8 @@ def _(pose_inverse):
                    hints.INVERSE_R_T_RT_HINT)
 
 
-# The slips of the inverse of T_QUARTER and of T_QUARTER_X, written out as [[R', t']] (the constants test
-# recomputes them): [[Rᵀ, -t]], [[Rᵀ, t]], [[R, -R t]].
+# Three slips' inverses of T_QUARTER and of T_QUARTER_X, written out as numbers (the constants test recomputes
+# them): the translation negated but not turned, the translation kept, the rotation kept.
 INVERSE_SLIPS_QUARTER = (
     np.array([[0.0, 1.0, 0.0, -1.0], [-1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, -3.0], [0.0, 0.0, 0.0, 1.0]]),
     np.array([[0.0, 1.0, 0.0, 1.0], [-1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]]),
@@ -459,17 +459,27 @@ def _(exp_se3):
 
 
 RHO_DECADES = np.array([30.0, -20.0, 35.0])             # |rho| = 50.2
+# The translation of exp_se3([RHO_DECADES, θ u]) at each angle of DECADE_ANGLES, to full precision (recomputed by
+# tests/test_public_check_constants_lesson07.py from the series of lesson 06's coefficients).
+TRANSLATION_AT_DECADES = {
+    0.97: np.array([31.245582546671383, -20.995141519512355, 33.256846693572435]),
+    0.097: np.array([30.085994736765016, -20.156315182650943, 34.83584767190952]),
+    0.0097: np.array([30.008135541929768, -20.016114267930618, 34.98380732410492]),
+    0.00097: np.array([30.00080885599215, -20.00161614381771, 34.998383072098996]),
+    9.7e-05: np.array([30.000080838560493, -20.000161661439314, 34.999838330719854]),
+    9.7e-06: np.array([30.000008083385605, -20.000016166614394, 34.9999838333072]),
+    9.7e-07: np.array([30.000000808333855, -20.000001616666143, 34.99999838333307]),
+    9.7e-08: np.array([30.00000008083334, -20.000000161666662, 34.99999983833333]),
+    9.7e-09: np.array([30.000000008083337, -20.000000016166666, 34.999999983833334]),
+}
 
 
 def _decade_pose(theta):
-    """The twist [rho, θ u] at an angle of JR_DECADES and its pose, built from the stored V coefficients:
-    V = I + a [phi]× + b [phi]×² (V is the left Jacobian, Jr(-phi))."""
-    a, b, _ = JR_DECADES[theta]
+    """The twist [rho, θ u] at an angle of DECADE_ANGLES and its pose, from the stored translations."""
     phi = theta * DECADE_AXIS
-    W = skew(phi)
     T = np.eye(4)
     T[:3, :3] = Exp(phi)
-    T[:3, 3] = (np.eye(3) + a * W + b * W @ W) @ RHO_DECADES
+    T[:3, 3] = TRANSLATION_AT_DECADES[theta]
     return np.concatenate([RHO_DECADES, phi]), T
 
 
