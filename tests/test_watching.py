@@ -64,6 +64,46 @@ def test_a_single_function_is_resolved_to_where_it_lives():
     assert len(seen.used) == 1 and seen.used[0].endswith(".expm")
 
 
+def test_what_the_interpreter_runs_on_its_own_is_not_the_answers_call(monkeypatch):
+    """A garbage-collector callback (hypothesis, loaded by the hidden suite, registers one) and a library
+    object's finaliser run inside whatever notebook frame a collection interrupts: neither is the answer's call.
+    Run with collections after every few allocations, inside C calls of the answer and in its own frames."""
+    import gc
+    import types
+
+    library = types.ModuleType("a_library_outside_the_allowance")
+    exec(
+        "import weakref\ncalls = []\ndef on_collection(phase, info):\n    calls.append(phase)\n"
+        "class Handle:\n    def __del__(self):\n        calls.append('__del__')\n"
+        "class Owner:\n    def __init__(self):\n        self.me = self\n        self.handle = Handle()\n"
+        "        weakref.finalize(self, calls.append, 'finalize')\n",
+        library.__dict__,
+    )
+    monkeypatch.setitem(sys.modules, library.__name__, library)
+    answer = _main(
+        "def exp_so3(w):\n    rows = [[i, [i]] for i in range(3000)]\n"
+        "    return np.eye(3) + np.asarray(w, dtype=float).sum() * np.zeros((3, 3))"
+    )["exp_so3"]
+    threshold = gc.get_threshold()
+    gc.callbacks.append(library.on_collection)  # the interpreter's own list: a new list would not be called
+    try:
+        for _ in range(3):
+            library.Owner()  # garbage in a cycle, with a finaliser and a __del__, for the next collection
+        gc.set_threshold(50, 1, 1)
+        _, seen = watch_call(answer, ([0.1, 0.2, 0.3],), forbidden=("allowance:exp_so3:03",))
+    finally:
+        gc.set_threshold(*threshold)
+        gc.callbacks.remove(library.on_collection)
+    assert {"__del__", "finalize", "start"} <= set(library.calls), library.calls  # they did run during the call
+    assert seen.used == [], seen.used
+    direct = _main(
+        "def exp_so3(w):\n    import a_library_outside_the_allowance as lib\n    lib.on_collection('x', {})\n"
+        "    return np.eye(3)"
+    )["exp_so3"]
+    _, seen = watch_call(direct, ([0.0, 0.0, 0.0],), forbidden=("allowance:exp_so3:03",))
+    assert any("on_collection" in name for name in seen.used), seen.used  # called by the answer: refused
+
+
 def test_switching_the_watching_off_is_seen():
     f = _main("import sys\nfrom coursekit.lie import skew\ndef hat(w):\n    sys.setprofile(None)\n    return skew(w)")[
         "hat"

@@ -27,10 +27,12 @@ import builtins
 import copy
 import dis
 import functools
+import gc
 import inspect
 import sys
 import threading
 import types
+import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -131,6 +133,18 @@ _STDLIB = frozenset(getattr(sys, "stdlib_module_names", ()))
 _TAKES_CALLBACKS = frozenset({"vectorize.__init__", "apply_along_axis", "apply_over_axes", "piecewise", "fromfunction"})
 
 
+def _spontaneous(code):
+    """True for code the interpreter runs on its own while notebook code runs, which the notebook never called:
+    a finaliser (``__del__``, ``weakref.finalize``) or a garbage-collector callback (``gc.callbacks``; hypothesis
+    registers one). Its frame's caller is whatever notebook frame the collection happened to interrupt."""
+    if code.co_name == "__del__" or code is _FINALIZE_CODE:
+        return True
+    return any(getattr(getattr(callback, "__func__", callback), "__code__", None) is code for callback in gc.callbacks)
+
+
+_FINALIZE_CODE = weakref.finalize.__call__.__code__
+
+
 class _Tracer:
     """A profile hook that notes what notebook code calls while the watched call runs.
 
@@ -182,16 +196,17 @@ class _Tracer:
     def is_main(self, namespace):
         return namespace is self.main if self.main is not None else namespace.get("__name__") == "__main__"
 
-    def _check(self, module, qualname, indirect=False):
+    def _check(self, module, qualname, indirect=False, code=None):
         if module == "__main__":
             if qualname.rpartition(".")[2] in self.own:
                 self.note(f"your {qualname.rpartition('.')[2]}")
             return
         full_name = f"{module}.{qualname}"
-        if (full_name + ".").startswith(self.prefixes):
-            self.note(full_name)
-        elif not self.allowed(module) and not (indirect and module.partition(".")[0] in _STDLIB):
-            self.note(full_name)
+        if (full_name + ".").startswith(self.prefixes) or (
+            not self.allowed(module) and not (indirect and module.partition(".")[0] in _STDLIB)
+        ):
+            if code is None or not _spontaneous(code):
+                self.note(full_name)
 
     def make_hook(self):
         """The profile function: a closure, so that the events it ignores (most of them) cost little.
@@ -222,10 +237,10 @@ class _Tracer:
                 module = frame.f_globals.get("__name__") or ""
                 if in_c and in_c[-1][0] is caller:  # called back by a C function of notebook code
                     if in_c[-1][1] is not print:
-                        check(module, _qualname(frame.f_code), True)
+                        check(module, _qualname(frame.f_code), True, frame.f_code)
                 else:
                     qualname = _qualname(frame.f_code)
-                    check(module, qualname)
+                    check(module, qualname, False, frame.f_code)
                     if qualname in _TAKES_CALLBACKS and module.startswith("numpy"):
                         for value in frame.f_locals.values():  # the function numpy will call back
                             if callable(value) and not isinstance(value, type):
