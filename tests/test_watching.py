@@ -104,6 +104,19 @@ def test_what_the_interpreter_runs_on_its_own_is_not_the_answers_call(monkeypatc
     assert any("on_collection" in name for name in seen.used), seen.used  # called by the answer: refused
 
 
+def test_looking_for_unseen_calls_runs_none_of_the_notebooks_code():
+    """The names an answer reaches are judged by static lookups: a notebook object's __getattr__ never runs."""
+    namespace = _main(
+        "looked_up = []\n"
+        "class Scaler:\n    def __call__(self, x):\n        return 2.0 * x\n"
+        "    def __getattr__(self, name):\n        looked_up.append(name)\n        raise AttributeError(name)\n"
+        "scale = Scaler()\n"
+        "def exp_so3(w):\n    return scale(np.eye(3))\n"
+    )
+    _, seen = watch_call(namespace["exp_so3"], ([0.1, 0.2, 0.3],), forbidden=("allowance:exp_so3:03",))
+    assert seen.used == [] and namespace["looked_up"] == [], (seen.used, namespace["looked_up"])
+
+
 def test_switching_the_watching_off_is_seen():
     f = _main("import sys\nfrom coursekit.lie import skew\ndef hat(w):\n    sys.setprofile(None)\n    return skew(w)")[
         "hat"

@@ -290,9 +290,10 @@ def _unreported(value):
     """
     if not callable(value) or isinstance(value, _REPORTED_KINDS):
         return False
-    if getattr(value, "_implementation", None) is not None:  # numpy's dispatchers run Python code
+    # looked up statically: no __getattr__ of the notebook's own objects runs while the watch is not yet on
+    if inspect.getattr_static(value, "_implementation", None) is not None:  # numpy's dispatchers run Python code
         return False
-    return not isinstance(getattr(type(value), "__call__", None), types.FunctionType)  # np.vectorize: Python
+    return not isinstance(inspect.getattr_static(type(value), "__call__", None), types.FunctionType)  # np.vectorize
 
 
 _CHAINS = {}  # code object -> the names it loads: (global, attribute, attribute, ...) tuples, and its nested code
@@ -318,13 +319,15 @@ def _chains(code):
 
 
 _HOMES = {}  # id(callable) -> (callable, the modules that hold it under its name)
+_HEAP_TYPE = 1 << 9  # Py_TPFLAGS_HEAPTYPE: the type was made by a class statement, not written in C
 
 
 def _homes(value):
     """The names of the loaded modules that hold ``value`` under its own name."""
     cached = _HOMES.get(id(value))
     if cached is None or cached[0] is not value:
-        name = getattr(value, "__name__", None)
+        # a class written in Python (the notebook's own, say) could run code to answer __name__: not looked at
+        name = None if type(value).__flags__ & _HEAP_TYPE else getattr(value, "__name__", None)
         found = []
         if isinstance(name, str):
             for module_name, module in list(sys.modules.items()):

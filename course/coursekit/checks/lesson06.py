@@ -561,7 +561,7 @@ JRP_AT_GENERIC = np.array([[2.4083548374554673, 0.8225192144346913, -0.280260639
 _TEST_DIRECTIONS = np.array([[2.0, -1.0, 2.0], [0.6, 0.8, 0.0], [-0.48, 0.36, 0.8]]) / np.array([[3.0], [1.0], [1.0]])
 
 
-def _first_order(J, R, p, left=False, directions=_TEST_DIRECTIONS[:1]):
+def _first_order(J, R, p, left, directions):
     """The largest remainder of the turned point against J δ, relative to 2 |p| |δ|², for |δ| = 1e-3 and 1e-4 along
     each direction: at most 1 when J is the Jacobian of R Exp(δ) p (of Exp(δ) R p with ``left``)."""
     worst = 0.0
