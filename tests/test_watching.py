@@ -65,36 +65,46 @@ def test_a_single_function_is_resolved_to_where_it_lives():
 
 
 def test_what_the_interpreter_runs_on_its_own_is_not_the_answers_call(monkeypatch):
-    """A garbage-collector callback (hypothesis, loaded by the hidden suite, registers one) and a library
-    object's finaliser run inside whatever notebook frame a collection interrupts: neither is the answer's call.
+    """A garbage-collector callback (hypothesis, loaded by the hidden suite, registers one), a library object's
+    finaliser, a weak reference's callback and the closing of a library's suspended generator (a hypothesis
+    generator left over from an earlier test failed CI) run inside whatever notebook frame a collection
+    interrupts: none of them is the answer's call.
     Run with collections after every few allocations, inside C calls of the answer and in its own frames."""
     import gc
     import types
 
     library = types.ModuleType("a_library_outside_the_allowance")
     exec(
-        "import weakref\ncalls = []\ndef on_collection(phase, info):\n    calls.append(phase)\n"
-        "class Handle:\n    def __del__(self):\n        calls.append('__del__')\n"
+        "import sys, weakref\ncalls = []\n"
+        "def note(what):\n    calls.append((what, sys.getprofile() is not None))\n"
+        "def on_collection(phase, info):\n    note(phase)\n"
+        "class Handle:\n    def __del__(self):\n        note('__del__')\n"
+        "def walk():\n    try:\n        yield 1\n    finally:\n        note('closed')\n"
+        "refs = []\n"
         "class Owner:\n    def __init__(self):\n        self.me = self\n        self.handle = Handle()\n"
-        "        weakref.finalize(self, calls.append, 'finalize')\n",
+        "        weakref.finalize(self, note, 'finalize')\n"
+        "        refs.append(weakref.ref(self, lambda ref: note('weakref')))\n"
+        "        self.walk = walk()\n        next(self.walk)\n",
         library.__dict__,
     )
     monkeypatch.setitem(sys.modules, library.__name__, library)
     answer = _main(
-        "def exp_so3(w):\n    rows = [[i, [i]] for i in range(3000)]\n"
+        "def exp_so3(w):\n    rows = [[i, [i]] for i in range(40000)]\n"
         "    return np.eye(3) + np.asarray(w, dtype=float).sum() * np.zeros((3, 3))"
     )["exp_so3"]
     threshold = gc.get_threshold()
+    gc.collect()
+    gc.set_threshold(20000, 1, 1)  # no collection before the watch starts; several inside the answer's loop
     gc.callbacks.append(library.on_collection)  # the interpreter's own list: a new list would not be called
     try:
         for _ in range(3):
             library.Owner()  # garbage in a cycle, with a finaliser and a __del__, for the next collection
-        gc.set_threshold(50, 1, 1)
         _, seen = watch_call(answer, ([0.1, 0.2, 0.3],), forbidden=("allowance:exp_so3:03",))
     finally:
         gc.set_threshold(*threshold)
         gc.callbacks.remove(library.on_collection)
-    assert {"__del__", "finalize", "start"} <= set(library.calls), library.calls  # they did run during the call
+    during = {what for what, watched in library.calls if watched}
+    assert {"__del__", "finalize", "weakref", "closed", "start", "stop"} <= during, library.calls
     assert seen.used == [], seen.used
     direct = _main(
         "def exp_so3(w):\n    import a_library_outside_the_allowance as lib\n    lib.on_collection('x', {})\n"
@@ -102,6 +112,43 @@ def test_what_the_interpreter_runs_on_its_own_is_not_the_answers_call(monkeypatc
     )["exp_so3"]
     _, seen = watch_call(direct, ([0.0, 0.0, 0.0],), forbidden=("allowance:exp_so3:03",))
     assert any("on_collection" in name for name in seen.used), seen.used  # called by the answer: refused
+    own_finaliser = _main(
+        "import a_library_outside_the_allowance as lib\n"
+        "class Keeper:\n    def __init__(self):\n        self.me = self\n"
+        "    def __del__(self):\n        lib.note('the notebook finaliser')\n"
+        "def exp_so3(w):\n    for _ in range(3):\n        Keeper()\n"
+        "    rows = [[i, [i]] for i in range(40000)]\n    return np.eye(3)"
+    )["exp_so3"]
+    gc.set_threshold(20000, 1, 1)
+    try:
+        _, seen = watch_call(own_finaliser, ([0.0, 0.0, 0.0],), forbidden=("allowance:exp_so3:03",))
+    finally:
+        gc.set_threshold(*threshold)
+    assert ("the notebook finaliser", True) in library.calls, library.calls  # run by a collection in the watch
+    assert any(name.endswith(".note") for name in seen.used), seen.used  # the notebook's own code: refused
+
+
+def test_a_signal_handler_is_not_the_answers_call(monkeypatch):
+    """A signal handler (the grader's alarm, a library's) runs inside whatever frame the signal interrupts."""
+    import signal
+    import types
+
+    library = types.ModuleType("a_library_with_a_handler")
+    exec("calls = []\ndef on_alarm(number, frame):\n    calls.append(number)\n", library.__dict__)
+    monkeypatch.setitem(sys.modules, library.__name__, library)
+    answer = _main(
+        "def exp_so3(w):\n    total = 0.0\n    for i in range(300000):\n        total += i * 1e-9\n"
+        "    return np.eye(3) + 0.0 * total"
+    )["exp_so3"]
+    previous = signal.signal(signal.SIGALRM, library.on_alarm)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.002, 0.002)
+        _, seen = watch_call(answer, ([0.0, 0.0, 0.0],), forbidden=("allowance:exp_so3:03",))
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert len(library.calls) >= 3, library.calls  # the handler did run during the call
+    assert seen.used == [], seen.used
 
 
 def test_looking_for_unseen_calls_runs_none_of_the_notebooks_code():

@@ -29,6 +29,7 @@ import dis
 import functools
 import gc
 import inspect
+import signal
 import sys
 import threading
 import types
@@ -135,11 +136,15 @@ _TAKES_CALLBACKS = frozenset({"vectorize.__init__", "apply_along_axis", "apply_o
 
 def _spontaneous(code):
     """True for code the interpreter runs on its own while notebook code runs, which the notebook never called:
-    a finaliser (``__del__``, ``weakref.finalize``) or a garbage-collector callback (``gc.callbacks``; hypothesis
-    registers one). Its frame's caller is whatever notebook frame the collection happened to interrupt."""
+    a finaliser (``__del__``, ``weakref.finalize``), a garbage-collector callback (``gc.callbacks``; hypothesis
+    registers one) or a signal handler (the grader's alarm). Its frame's caller is whatever notebook frame the
+    collection or the signal happened to interrupt. Asked only of a call about to be noted, so it may be slow."""
     if code.co_name == "__del__" or code is _FINALIZE_CODE:
         return True
-    return any(getattr(getattr(callback, "__func__", callback), "__code__", None) is code for callback in gc.callbacks)
+    handlers = list(gc.callbacks)
+    if threading.current_thread() is threading.main_thread():  # handlers run in the main thread only
+        handlers += [signal.getsignal(number) for number in signal.valid_signals()]
+    return any(getattr(getattr(handler, "__func__", handler), "__code__", None) is code for handler in handlers)
 
 
 _FINALIZE_CODE = weakref.finalize.__call__.__code__
@@ -177,6 +182,8 @@ class _Tracer:
         self.used = []
         self.verdicts = {"__main__": True}
         self.in_c = []  # (frame, C function) of the C calls notebook code is inside of
+        # while the garbage collector runs: the frame it interrupted, [] otherwise (see collection_callbacks)
+        self.interrupted = []
 
     def allowed(self, module):
         verdict = self.verdicts.get(module)
@@ -208,11 +215,28 @@ class _Tracer:
             if code is None or not _spontaneous(code):
                 self.note(full_name)
 
+    def collection_callbacks(self):
+        """Two ``gc.callbacks`` entries, one to go first and one last, that mark the collector's work: what it
+        calls from the frame it interrupted (a finaliser, a weak reference's callback, the closing of a
+        suspended generator, another ``gc.callbacks`` entry) is the interpreter's call, not the answer's;
+        what a notebook finaliser calls in turn has a notebook caller and is judged as usual."""
+        interrupted = self.interrupted
+
+        def opening(phase, info):
+            if phase == "start":
+                interrupted[:] = [sys._getframe(1)]
+
+        def closing(phase, info):
+            if phase == "stop":
+                interrupted.clear()
+
+        return opening, closing
+
     def make_hook(self):
         """The profile function: a closure, so that the events it ignores (most of them) cost little.
         Each frame's globals are classified once: notebook code, numpy, or anything else."""
         kinds = {}  # id(globals) -> 1 notebook code, 0 anything else
-        codes, in_c, check, main = self.codes, self.in_c, self._check, self.main
+        codes, in_c, check, main, interrupted = self.codes, self.in_c, self._check, self.main, self.interrupted
 
         def kind_of(namespace):
             name = namespace.get("__name__") or ""
@@ -234,6 +258,8 @@ class _Tracer:
                     kind = kind_of(namespace)
                 if kind == 0 or frame.f_code in codes:
                     return
+                if interrupted and interrupted[0] is caller:
+                    return  # run by the garbage collector; what a notebook finaliser calls is still judged
                 module = frame.f_globals.get("__name__") or ""
                 if in_c and in_c[-1][0] is caller:  # called back by a C function of notebook code
                     if in_c[-1][1] is not print:
@@ -523,6 +549,9 @@ def watch_call(function, args=(), kwargs=None, forbidden=()):
             builtins.__import__ = guard
         _check_unreported(function, tracer)
         hook = tracer.make_hook()
+        opening, closing = tracer.collection_callbacks()
+        gc.callbacks.insert(0, opening)
+        gc.callbacks.append(closing)
         sys.setprofile(hook)
         threading.setprofile(hook)
     try:
@@ -532,6 +561,9 @@ def watch_call(function, args=(), kwargs=None, forbidden=()):
             seen.tampered = sys.getprofile() is not hook
             sys.setprofile(None)
             threading.setprofile(None)
+            for callback in (opening, closing):
+                if callback in gc.callbacks:
+                    gc.callbacks.remove(callback)
             if guard is not None:
                 seen.tampered = seen.tampered or builtins.__import__ is not guard
                 builtins.__import__ = guard.original
