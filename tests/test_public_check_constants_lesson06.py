@@ -92,11 +92,38 @@ def test_jr_at_w_is_the_jacobian_measured_by_central_differences():
 
 
 @pytest.mark.parametrize("theta", [1e-9, 1e-6])
-def test_tiny_angle_series_and_naive_coefficient(theta):
+def test_tiny_angle_series(theta):
     w = theta * np.array([0.6, 0.0, 0.8])
-    series, naive = checks.JR_TINY[theta]
-    same(series, np.eye(3) - 0.5 * skew(w) + skew(w) @ skew(w) / 6.0)
-    assert naive == -(1.0 - np.cos(theta)) / theta**2  # exactly what the closed form computes in floats
+    same(checks.JR_TINY[theta], np.eye(3) - 0.5 * skew(w) + skew(w) @ skew(w) / 6.0)
+
+
+def _jr(a, b):
+    """Jr = I - a(θ) [w]× + b(θ) [w]×² with the coefficients given as functions of θ (0 at w = 0)."""
+
+    def right_jacobian_so3(w):
+        w = np.asarray(w, dtype=float)
+        theta = np.linalg.norm(w)
+        W = skew(w)
+        return np.eye(3) - a(theta) * W + b(theta) * W @ W
+
+    return right_jacobian_so3
+
+
+def test_a_closed_form_that_cancels_is_told_by_its_lost_digits():
+    """The slip's value is stored nowhere: the check sees the [w]× coefficient miss its limit by more as θ shrinks.
+    The naive closed form is named; the series, the reference's half-angle form, and slips with other causes (the
+    identity, the left Jacobian, the swapped coefficients) are not."""
+    u = np.array([0.6, 0.0, 0.8])
+    naive = _jr(lambda t: (1.0 - np.cos(t)) / t**2, lambda t: (t - np.sin(t)) / t**3)
+    assert checks._loses_digits(naive, u)
+    quiet = [
+        _jr(lambda t: 0.5 - t**2 / 24 + t**4 / 720, lambda t: 1 / 6 - t**2 / 120),
+        _jr(lambda t: 0.5 * (np.sin(t / 2) / (t / 2)) ** 2, lambda t: 1 / 6),
+        _jr(lambda t: 0.0, lambda t: 0.0),
+        _jr(lambda t: -0.5, lambda t: 1 / 6),
+        _jr(lambda t: 1 / 6, lambda t: 0.5),
+    ]
+    assert not any(checks._loses_digits(f, u) for f in quiet)
 
 
 def test_the_boxplus_fixture_of_numerical_jacobian_is_the_right_perturbation():

@@ -60,14 +60,15 @@ def _hint(got, yaw, pitch):
     slips = [
         (
             np.column_stack([ez, _rz(yaw).T @ ey, _ry(pitch).T @ _rz(yaw).T @ ex]),
-            "the axes were turned by transposes, as in the body-rate matrix: a pure pitch rate spins about a "
-            "horizontal axis that turns with the yaw, not against it",
+            "the pitch column disagrees with a finite difference of a pitch rate alone: it is what that difference "
+            "gives at the opposite yaw",
         ),
         (
             np.column_stack([ez, _rz(yaw) @ ey, _rz(yaw) @ ex]),
-            "the roll axis is the body x axis after the yaw and the pitch: it tilts out of the horizontal plane",
+            "the roll column disagrees with a finite difference of a roll rate alone: it is what that difference "
+            "gives at pitch 0",
         ),
-        (_world_rates(0.0, pitch), "the yaw turns the pitch and roll axes about the vertical"),
+        (_world_rates(0.0, pitch), "your E_w is what the finite differences give at yaw 0, whatever the yaw"),
         (truth[:, ::-1], hints.COLUMNS_GO_ORDER_RATES_HINT),
     ]
     for candidate, hint in slips:

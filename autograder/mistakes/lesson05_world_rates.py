@@ -15,8 +15,8 @@ def euler_rates_matrix_world(yaw, pitch):
     Ry_T = np.array([[cp, 0.0, -sp], [0.0, 1.0, 0.0], [sp, 0.0, cp]])
     return np.column_stack([[0.0, 0.0, 1.0], Rz_T @ [0.0, 1.0, 0.0], Ry_T @ Rz_T @ [1.0, 0.0, 0.0]])
 """,
-        hint="turned by transposes",
-        public_hint="turned by transposes",
+        hint="gives at the opposite yaw",
+        public_hint="gives at the opposite yaw",
         classic=True,
     ),
     Mistake(
@@ -28,8 +28,8 @@ def euler_rates_matrix_world(yaw, pitch):
     cy, sy = np.cos(yaw), np.sin(yaw)
     return np.array([[0.0, -sy, cy], [0.0, cy, sy], [1.0, 0.0, 0.0]])
 """,
-        hint="the roll axis is the body x axis after the yaw and the pitch",
-        public_hint="the roll axis is the body x axis after the yaw and the pitch",
+        hint="gives at pitch 0",
+        public_hint="gives at pitch 0",
     ),
     Mistake(
         "world_rates_ignores_yaw",
@@ -40,8 +40,8 @@ def euler_rates_matrix_world(yaw, pitch):
     cp, sp = np.cos(pitch), np.sin(pitch)
     return np.array([[0.0, 0.0, cp], [0.0, 1.0, 0.0], [1.0, 0.0, -sp]])
 """,
-        hint="the yaw turns the pitch and roll axes",
-        public_hint="the yaw turns the pitch and roll axes",
+        hint="give at yaw 0",
+        public_hint="give at yaw 0",
     ),
     Mistake(
         "world_rates_reversed_columns",

@@ -435,8 +435,8 @@ def jacobian_rotate_point(R, p):
 def jacobian_rotate_point(R, p):
     return -skew(p)
 """,
-        hint="R is missing",
-        public_hint="R is missing",
+        hint="right at R = I, wrong at a generic R",
+        public_hint="right at R = I, wrong at a generic R",
     ),
     Mistake(
         "right_jacobian_guard_only_at_zero_series",

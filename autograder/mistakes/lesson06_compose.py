@@ -57,8 +57,8 @@ def jacobians_of_compose(R1, R2):
 def jacobians_of_compose(R1, R2):
     return np.asarray(R1, dtype=float).T, np.eye(3)
 """,
-        hint="not on R1",
-        public_hint="not on R1",
+        hint="fits the product taken the other way round",
+        public_hint="fits the product taken the other way round",
     ),
     Mistake(
         "compose_jacobian_float32",
@@ -114,8 +114,8 @@ def jacobian_of_inverse(R):
 def jacobian_of_inverse(R):
     return np.asarray(R, dtype=float).T.copy()
 """,
-        hint="neither the sign nor the side",
-        public_hint="neither the sign nor the side",
+        hint="wrong in two ways at once",
+        public_hint="wrong in two ways at once",
     ),
     Mistake(
         "inverse_jacobian_float32",

@@ -34,8 +34,8 @@ def jacobian_point_to_body(R, p_w):
 def jacobian_point_to_body(R, p_w):
     return skew(p_w)
 """,
-        hint="R belongs in the answer",
-        public_hint="R belongs in the answer",
+        hint="fits the finite differences only at the identity attitude",
+        public_hint="fits the finite differences only at the identity attitude",
     ),
     Mistake(
         "point_to_body_forward",

@@ -50,8 +50,8 @@ MISTAKES = [
         "filter_predict",
         "J_r's first coefficient as (1 - cos θ)/θ² right above a small-step branch at 1e-6, where it loses its digits",
         _predict(first="(1 - np.cos(theta)) / theta**2"),
-        hint="1 - cos θ loses its digits",
-        public_hint="1 - cos θ loses its digits",
+        hint="subtracts nearly equal numbers there",
+        public_hint="subtracts nearly equal numbers there",
     ),
     Mistake(
         "predict_finite_differences",

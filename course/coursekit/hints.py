@@ -184,19 +184,23 @@ COLUMNS_GO_ORDER_RATES_HINT = "the columns go in the order of the rates: [yaw_ra
 # ---------------------------------------------------------------- checks/lesson06.py
 AXIS_TIMES_SIN_VEE_HINT = ("that is the axis times sin θ, right only to first order: the difference needs the "
                            "Log of the relative rotation, whose length is the angle θ itself")
-CLOSED_FORM_LOSES_DIGITS_HINT = ("the closed form loses its digits at tiny θ (1 - cos θ rounds to 0 below θ ≈ 1e-8, "
-                                 "so a coefficient with it comes out 0 instead of its limit): below a threshold use "
-                                 "the Taylor series of each coefficient, with its θ² term")
+CLOSED_FORM_LOSES_DIGITS_HINT = ("the closed form loses its digits at tiny θ: a coefficient that subtracts nearly "
+                                 "equal numbers keeps fewer digits as θ shrinks, and comes out 0 instead of its limit "
+                                 "once the two round to the same number; below a threshold use the Taylor series of "
+                                 "each coefficient, with its θ² term")
 CLOSED_FORM_USE_TAYLOR_HINT = "the closed form is 0/0 at θ = 0: use the Taylor series below a small angle"
 COEFFICIENTS_SWAPPED_COS_MULTIPLIES_HINT = ("the coefficients are swapped: [w]× and [w]×² carry each other's; "
                                             "compare their limits at θ → 0 with the first terms of your series")
-FACTORS_WRONG_ORDER_R_HINT = ("the factors are in the wrong order: in R Exp(δ) p the turn δ acts on the body point "
-                              "first, and R then carries the result into the world")
+FACTORS_WRONG_ORDER_R_HINT = ("the frames are mixed: a turn moves the world point R p at right angles to itself, so "
+                              "every column of J must be perpendicular to R p; yours are perpendicular to the "
+                              "body coordinates p instead")
 FIRST_ORDER_PART_ONLY_HINT = ("that is I + [w]×/2, only the first-order part: the [w]×² term of the formula on the "
                               "page is missing")
 JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT = "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
 ROTATED_POINT_SIGN_FLIPPED_HINT = "the sign is flipped: turning δ × p round to put δ on the right changes its sign"
-ROTATED_POINT_R_MISSING_HINT = "R is missing: the point turns in the body frame, and R carries the result into the world"
+ROTATED_POINT_R_MISSING_HINT = ("right at R = I, wrong at a generic R: your J stays the same whatever the attitude, "
+                                "but how the world point R Exp(δ) p moves changes with R; compare with finite "
+                                "differences at a generic R")
 LEFT_DIFFERENCE_STEP_RIGHT_HINT = "that is the left difference Log(R_a R_bᵀ); the step goes on the right, R_b Exp(δ) = R_a"
 LEFT_JACOBIAN_OF_ROTATED_POINT_HINT = ("that is the Jacobian of the left perturbation, Exp(δ) R p; here δ turns the "
                                        "body about its own axes, R Exp(δ) p")
@@ -228,8 +232,8 @@ LEFT_JACOBIAN_WORKS_ON_LEFT_HINT = ("this J works on the left, Exp(J dw) Exp(w) 
 # ---------------------------------------------------------------- checks/lesson06_point_to_body.py
 LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("that Jacobian belongs to the left perturbation Exp(δ) R, a turn about the "
                                          "world's axes; here δ turns the body about its own axes, R Exp(δ)")
-POINT_SEEN_BODY_RT_HINT = ("your J does not change with R, but the point seen from the body does: R belongs in the "
-                           "answer")
+POINT_SEEN_BODY_RT_HINT = ("your J fits the finite differences only at the identity attitude: it stays the same "
+                           "for every R, yet the body-frame point (R Exp(δ))ᵀ p_w, and how it moves, change with R")
 POINT_TO_BODY_SIGN_HINT = ("the sign is flipped: J is the negative of the finite differences; a transpose "
                            "reverses a small turn, and moving δ to the other side of a cross product changes its sign")
 
@@ -242,7 +246,9 @@ COMPOSE_SWAPPED_HINT = "J1 and J2 are swapped: return (J1, J2), the first for a 
 COMPOSE_TRANSPOSE_HINT = ("J1 carries the turn of R1 across R2 in the wrong direction: R1 Exp(d) R2 must equal "
                           "R1 R2 Exp(J1 d); try R1 = I, R2 a quarter turn and d along one axis, and see which axis "
                           "the turn ends on")
-COMPOSE_WRONG_FACTOR_HINT = "J1 depends on R2 (the factor the perturbation must cross), not on R1"
+COMPOSE_WRONG_FACTOR_HINT = ("your J1 fits the product taken the other way round, R2 R1: try R2 = I, where the "
+                             "turn of R1 already stands at the end of the product, and compare with finite "
+                             "differences")
 INVERSE_LEFT_HINT = ("that is the Jacobian for perturbations on the left of R and of R⁻¹; here both turns sit on "
                      "the right, R Exp(d) and R⁻¹ Exp(J d)")
 INVERSE_NOT_MOVED_HINT = ("-I is right only at the identity: the inverted turn sits on the left of Rᵀ, but J is "
@@ -250,8 +256,9 @@ INVERSE_NOT_MOVED_HINT = ("-I is right only at the identity: the inverted turn s
 INVERSE_AT_IDENTITY_HINT = "at the identity, inverting a small turn simply reverses it: the Jacobian there is -I"
 INVERSE_SIGN_HINT = ("your J turns R⁻¹ in the same sense as d, but inverting R Exp(d) must undo that small turn; "
                      "check (R Exp(d))⁻¹ = R⁻¹ Exp(J d) at R = I first")
-INVERSE_TRANSPOSE_HINT = ("Rᵀ is neither the sign nor the side: inverting reverses the small turn, and J must act "
-                          "on a turn to the right of R⁻¹; at the identity J is -I, check your answer there")
+INVERSE_TRANSPOSE_HINT = ("wrong in two ways at once: at R = I your J is not -I, yet inverting a small turn "
+                          "reverses it; and at this R, flipping the sign alone still leaves the turn on the wrong "
+                          "axis")
 
 # ---------------------------------------------------------------- checks/lesson07.py
 DIVIDED_FIRST_COORDINATE_X_HINT = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
@@ -330,8 +337,8 @@ ROBUST_WEIGHT_QUESTION_HINT = ("compare the gradient of ρ_k(|r|) with respect t
 PREDICT_FINITE_DIFFERENCES_HINT = ("P_new is right to several digits but not to rounding: the first-order covariance is "
                                    "exact, and a Jacobian taken by finite differences is not; derive F and G")
 PREDICT_CANCELS_HINT = ("P_new loses digits at this small step: a closed form of J_r used just above its small-step "
-                        "branch cancels (1 - cos θ loses its digits there); move the branch, or write the "
-                        "coefficient without the subtraction")
+                        "branch has a coefficient that subtracts nearly equal numbers there; move the branch, or "
+                        "write the coefficient so that it subtracts nothing")
 UPDATE_FINITE_DIFFERENCES_HINT = ("right to several digits but not to rounding: the docstring's linearisation is exact, "
                                   "and a Jacobian taken by finite differences is not; derive H")
 NEES_NOT_DIVIDED_HINT = "the NEES is the full quadratic form, not divided by the dimension"

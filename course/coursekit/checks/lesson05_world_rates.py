@@ -14,11 +14,12 @@ from ..diagnose import close
 from .common import fmt, off_by, require_shape
 
 YAW, PITCH = np.pi / 3, np.pi / 6
-TRANSPOSED_HINT = ("the axes were turned by transposes, as in the body-rate matrix: a pure pitch rate at yaw π/3 "
-                   "spins about a horizontal axis that has turned with the yaw, not against it")
-ROLL_UNPITCHED_HINT = ("the roll axis is the body x axis after the yaw and the pitch: at pitch π/6 it must tilt "
-                       "out of the horizontal plane")
-IGNORES_YAW_HINT = "the yaw turns the pitch and roll axes about the vertical: the answer depends on the yaw"
+TRANSPOSED_HINT = ("the pitch column disagrees with a finite difference of a pitch rate alone at yaw π/3: it is "
+                   "what that difference gives at the opposite yaw, -π/3")
+ROLL_UNPITCHED_HINT = ("the yaw and pitch columns agree with finite differences, the roll column does not: it is what "
+                       "a finite difference of a roll rate alone gives at pitch 0, not at pitch π/6")
+IGNORES_YAW_HINT = ("your E_w is what the finite differences give at yaw 0, whatever the yaw: at yaw π/3 they give "
+                    "another matrix")
 REVERSED_HINT = hints.COLUMNS_GO_ORDER_RATES_HINT
 
 

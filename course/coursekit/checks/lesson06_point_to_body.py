@@ -1,8 +1,9 @@
 """Public checks for lesson 06, section 9: a world point seen from the body.
 
-The Jacobian is compared with central differences of (R Exp(δ))ᵀ p_w taken here (scipy's Exp); the values
-the usual slips return at a quarter turn about z and p_w = (1, 2, -0.5) are stored as numbers
-(``tests/test_public_check_constants_lesson06_point_to_body.py`` recomputes them).
+The Jacobian is compared with central differences of (R Exp(δ))ᵀ p_w taken here (scipy's Exp), at a quarter turn
+about z and p_w = (1, 2, -0.5). The usual slips are recognised by what the finite differences of another map give
+instead (the left perturbation, the body-to-world map, the same map at R = I, or the negative), never by stored
+values (``tests/test_public_check_constants_lesson06_point_to_body.py`` gives each slip to them).
 """
 
 import numpy as np
@@ -15,20 +16,28 @@ from .common import off_by, require_same_with_lists, require_shape
 
 QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 P_WORLD = np.array([1.0, 2.0, -0.5])
-LEFT = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [-2.0, 1.0, 0.0]])
-SIGN = np.array([[0.0, -0.5, 1.0], [0.5, 0.0, 2.0], [-1.0, -2.0, 0.0]])
-NO_R = np.array([[0.0, 0.5, 2.0], [-0.5, 0.0, -1.0], [-2.0, 1.0, 0.0]])
-FORWARD = np.array([[-0.5, 0.0, -1.0], [0.0, -0.5, -2.0], [2.0, -1.0, 0.0]])
-LEFT_HINT = (hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT)
+LEFT_HINT = hints.LEFT_PERTURBATION_POINT_JACOBIAN_HINT
 SIGN_HINT = hints.POINT_TO_BODY_SIGN_HINT
 NO_R_HINT = hints.POINT_SEEN_BODY_RT_HINT
 FORWARD_HINT = ("that is Exercise 5's answer, which is the Jacobian of R p (body to world); here the map is Rᵀ p_w "
                 "(world to body), and the perturbation sits inside a transpose")
-SLIPS = [(LEFT, LEFT_HINT), (SIGN, SIGN_HINT), (NO_R, NO_R_HINT), (FORWARD, FORWARD_HINT)]
 
 
 def _central(f, h=1e-6):
     return np.column_stack([(f(h * e) - f(-h * e)) / (2 * h) for e in np.eye(3)])
+
+
+def _slip_hint(J, R, p_w):
+    """Name the slip by what would pass instead: the finite differences of the left perturbation (Exp(δ) R)ᵀ p_w,
+    of the body-to-world map R Exp(δ) p_w, of the right map at R = I, or minus those of the right map here."""
+    numeric = _central(lambda d: (R @ Exp(d)).T @ p_w)
+    for candidate, expected, hint in [(J, _central(lambda d: (Exp(d) @ R).T @ p_w), LEFT_HINT),
+                                      (J, _central(lambda d: R @ Exp(d) @ p_w), FORWARD_HINT),
+                                      (J, _central(lambda d: Exp(d).T @ p_w), NO_R_HINT),
+                                      (-J, numeric, SIGN_HINT)]:
+        if close(candidate, expected, 1e-8):
+            return hint
+    return None
 
 
 @public_check("jacobian_point_to_body", "matches finite differences of (R Exp(δ))ᵀ p_w (quarter turn about z)")
@@ -37,7 +46,7 @@ def _(jacobian_point_to_body):
     numeric = _central(lambda d: (QUARTER_Z @ Exp(d)).T @ P_WORLD)
     if not close(J, numeric, 1e-8):
         raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
-                       next((hint for value, hint in SLIPS if close(J, value, 1e-12)), None) or
+                       _slip_hint(J, QUARTER_Z, P_WORLD) or
                        "J must match the finite differences column by column: column j is how the body-frame point "
                        "moves per radian of turn about the body's axis j")
 
