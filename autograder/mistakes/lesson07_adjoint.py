@@ -105,7 +105,7 @@ def jacobian_transform_point(T, p):
     return np.hstack([np.eye(3), -skew(T[:3, :3] @ np.asarray(p, dtype=float) + T[:3, 3])])
 """,
         hint="left perturbation Exp(xi) T",
-        public_hint="left perturbation Exp(xi) T",
+        public_hint="a left (world-frame) perturbation",
         classic=True,
     ),
     Mistake(
@@ -154,7 +154,7 @@ def jacobian_transform_point(T, p):
     return np.hstack([R, -skew(R @ np.asarray(p, dtype=float))])
 """,
         hint="-[R p]× is the rotation block of a left perturbation",
-        public_hint="-[R p]× is the rotation block of a left perturbation",
+        public_hint="turns the point about the world's axes",
     ),
     # ------------------------------------------------------------ right_jacobian_se3
     Mistake(

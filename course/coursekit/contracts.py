@@ -80,7 +80,7 @@ FORBIDDEN = {
     "matrix_to_euler_zyx": SCIPY_ROTATIONS,
     "euler_zyx_to_quat": SCIPY_ROTATIONS,
     "quat_to_euler_zyx": SCIPY_ROTATIONS,
-    # lesson 06: the right Jacobian is the job (JrSE3's rotation block is Jr; ExpSE3's translation is V(-w) rho = Jr(w) rho)
+    # lesson 06: the right Jacobian is the job (the library's SE(3) maps carry the SO(3) Jacobian inside them)
     "right_jacobian_so3": ("coursekit.lie.JrSE3", "coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS + INVERSES,
     "right_jacobian_inv_so3": ("coursekit.lie.JrSE3", "coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
     # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)

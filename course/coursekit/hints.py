@@ -297,8 +297,8 @@ RELATIVE_POSE_REVERSED_HINT = "that is T_ba, a seen from b: swap the roles of a 
 ALIGNMENT_SVD_FORMULA_HINT = "R = U diag(1, 1, d) Vᵀ from the SVD of M = Qᵀ P = Σ q_i p_iᵀ, with d = det(U Vᵀ)"
 COPIES_NOT_KEPT_HINT = ("copies of one rotation average to it, yet your answer moved away: follow your steps on them; "
                        "each step must shrink toward zero as the estimate arrives, never overshoot")
-AVERAGING_LOG_R_I_HINT = ("averaging Log(R_i) about the identity is not the mean: the balance Σ Log(Mᵀ R_i) = 0 is "
-                          "seen from M, so each step must look at the samples from the current estimate")
+AVERAGING_LOG_R_I_HINT = ("averaging Log(R_i) about the identity is not bi-invariant: the mean of the turned samples "
+                          "A R_i B must be A M B, and at the mean the residuals balance, Σ Log(Mᵀ R_i) = 0")
 INVERSE_ROTATION_TRANSPOSE_USE_HINT = ("that is the inverse rotation (the transpose): use M = Qᵀ P = Σ q_i p_iᵀ (Pᵀ Q "
                                        "gives Rᵀ)")
 RETURNED_FIRST_ROTATION_RS_HINT = "returned the first rotation Rs[0]: the mean must weigh all of them"

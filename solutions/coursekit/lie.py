@@ -81,8 +81,8 @@ def ExpSE3(xi):
 def LogSE3(T):
     """The twist ``[rho, phi]`` of a pose ``T`` (shape (4, 4)), with the angle of ``phi`` in [0, π].
 
-    ``phi = Log(R)``; ``rho`` solves V(phi) rho = t, where V = Σ [φ]×^k / (k+1)! is read off the
-    matrix exponential of the 6×6 block matrix [[[φ]×, I], [0, 0]].
+    ``phi = Log(R)``; ``rho`` is the translation part whose ``ExpSE3([rho, phi])`` lands on ``t``
+    (that translation is linear in ``rho``: its matrix is read off ``ExpSE3`` of the three unit shifts).
 
     Examples
     --------
@@ -90,15 +90,10 @@ def LogSE3(T):
     >>> np.round(LogSE3(T), 6)
     array([ 0.5, -1. ,  2. ,  0.3, -0.2,  0.9])
     """
-    from scipy.linalg import expm
-
     pose = np.asarray(T, dtype=float)
     rotation_vector = Log(pose[:3, :3])
-    block = np.zeros((6, 6))
-    block[:3, :3] = skew(rotation_vector)
-    block[:3, 3:] = np.eye(3)
-    V = expm(block)[:3, 3:]                     # Σ [φ]×^k / (k+1)!, read off a larger exponential
-    return np.concatenate([np.linalg.solve(V, pose[:3, 3]), rotation_vector])
+    shifts = np.column_stack([ExpSE3(np.concatenate([e, rotation_vector]))[:3, 3] for e in np.eye(3)])
+    return np.concatenate([np.linalg.solve(shifts, pose[:3, 3]), rotation_vector])
 
 
 def _vee_twist(M):
@@ -109,8 +104,7 @@ def _vee_twist(M):
 def AdSE3(T):
     """The adjoint of a pose ``T`` (shape (4, 4)): the 6×6 matrix with T Exp(ξ) T⁻¹ = Exp(Ad_T ξ).
 
-    Built from its definition, one column per basis twist e_j: column j is the twist of the
-    matrix T e_j^ T⁻¹ (conjugation by T is linear in the twist). Twists are ``[rho, phi]``.
+    Twists are written ``[rho, phi]``, translation part first.
 
     Examples
     --------
@@ -127,9 +121,9 @@ def AdSE3(T):
 def JrSE3(xi):
     """The right Jacobian of SE(3) at the twist ``xi = [rho, phi]``, shape (6, 6).
 
-    Defined by Exp(ξ + dξ) ≈ Exp(ξ) Exp(J_r(ξ) dξ) for small dξ; it equals
-    ∫₀¹ Ad(Exp(-s ξ)) ds (lesson 07), computed here with scipy's matrix exponential
-    (no closed form is written out).
+    Defined by Exp(ξ + dξ) ≈ Exp(ξ) Exp(J_r(ξ) dξ) for small dξ, and computed from that definition:
+    column j is the twist of Exp(ξ)⁻¹ times the derivative of Exp along e_j, which scipy's
+    ``expm_frechet`` gives exactly (no formula for J_r is written out).
     Its inverse is the Jacobian of Log: Log(Exp(ξ) Exp(δ)) ≈ ξ + J_r(ξ)⁻¹ δ.
 
     Examples
@@ -139,16 +133,23 @@ def JrSE3(xi):
     >>> bool(np.allclose(step, JrSE3(xi) @ d, atol=1e-11))
     True
     """
-    from scipy.linalg import expm
+    from scipy.linalg import expm_frechet
 
     twist = np.asarray(xi, dtype=float).reshape(6)
-    ad = np.zeros((6, 6))                          # ad_ξ: the adjoint's derivative, [[φ×, ρ×], [0, φ×]]
-    ad[:3, :3] = ad[3:, 3:] = skew(twist[3:])
-    ad[:3, 3:] = skew(twist[:3])
-    block = np.zeros((12, 12))
-    block[:6, :6] = -ad
-    block[:6, 6:] = np.eye(6)
-    return expm(block)[:6, 6:]
+    # A long rho is scaled to length 1 first, for accuracy: the pose map diag(c, c, c, 1) scales the translation
+    # part of every twist by c and leaves phi alone, so it scales the columns and rows of J_r that mix the two.
+    size = max(1.0, float(np.linalg.norm(twist[:3])))
+    base = _twist_matrix(np.concatenate([twist[:3] / size, twist[3:]]))
+    columns = []
+    for e in np.eye(6):
+        pose, derivative = expm_frechet(base, _twist_matrix(e))
+        rotation, translation = pose[:3, :3], pose[:3, 3]
+        inverse = np.eye(4)
+        inverse[:3, :3], inverse[:3, 3] = rotation.T, -rotation.T @ translation
+        columns.append(_vee_twist(inverse @ derivative))
+    J = np.column_stack(columns)
+    J[:3, 3:] *= size
+    return J
 
 
 def quat_product(p, q):

@@ -313,7 +313,7 @@ def _(pose_inverse):
 
 
 # Three slips' inverses of T_QUARTER and of T_QUARTER_X, written out as numbers (the constants test recomputes
-# them): the translation negated but not turned, the translation kept, the rotation kept.
+# them): one that undoes only a pure shift, one that keeps the translation, one that keeps the rotation.
 INVERSE_SLIPS_QUARTER = (
     np.array([[0.0, 1.0, 0.0, -1.0], [-1.0, 0.0, 0.0, -2.0], [0.0, 0.0, 1.0, -3.0], [0.0, 0.0, 0.0, 1.0]]),
     np.array([[0.0, 1.0, 0.0, 1.0], [-1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]]),
@@ -460,7 +460,7 @@ def _(exp_se3):
 
 RHO_DECADES = np.array([30.0, -20.0, 35.0])             # |rho| = 50.2
 # The translation of exp_se3([RHO_DECADES, θ u]) at each angle of DECADE_ANGLES, to full precision (recomputed by
-# tests/test_public_check_constants_lesson07.py from the series of lesson 06's coefficients).
+# tests/test_public_check_constants_lesson07.py independently of this module).
 TRANSLATION_AT_DECADES = {
     0.97: np.array([31.245582546671383, -20.995141519512355, 33.256846693572435]),
     0.097: np.array([30.085994736765016, -20.156315182650943, 34.83584767190952]),
