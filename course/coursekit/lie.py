@@ -122,8 +122,9 @@ def JrSE3(xi):
     """The right Jacobian of SE(3) at the twist ``xi = [rho, phi]``, shape (6, 6).
 
     Defined by Exp(ξ + dξ) ≈ Exp(ξ) Exp(J_r(ξ) dξ) for small dξ, and computed from that definition:
-    column j is the twist of Exp(ξ)⁻¹ times the derivative of Exp along e_j, which scipy's
-    ``expm_frechet`` gives exactly (no formula for J_r is written out).
+    column j is the twist of Exp(ξ)⁻¹ times the derivative of Exp along e_j, read exactly from the
+    exponential of the block matrix [[ξ^, e_j^], [0, ξ^]] (Van Loan's way to differentiate expm; no
+    formula for J_r is written out). All six exponentials are taken in one batched call.
     Its inverse is the Jacobian of Log: Log(Exp(ξ) Exp(δ)) ≈ ξ + J_r(ξ)⁻¹ δ.
 
     Examples
@@ -133,21 +134,22 @@ def JrSE3(xi):
     >>> bool(np.allclose(step, JrSE3(xi) @ d, atol=1e-11))
     True
     """
-    from scipy.linalg import expm_frechet
+    from scipy.linalg import expm
 
     twist = np.asarray(xi, dtype=float).reshape(6)
     # A long rho is scaled to length 1 first, for accuracy: the pose map diag(c, c, c, 1) scales the translation
     # part of every twist by c and leaves phi alone, so it scales the columns and rows of J_r that mix the two.
     size = max(1.0, float(np.linalg.norm(twist[:3])))
     base = _twist_matrix(np.concatenate([twist[:3] / size, twist[3:]]))
-    columns = []
-    for e in np.eye(6):
-        pose, derivative = expm_frechet(base, _twist_matrix(e))
-        rotation, translation = pose[:3, :3], pose[:3, 3]
-        inverse = np.eye(4)
-        inverse[:3, :3], inverse[:3, 3] = rotation.T, -rotation.T @ translation
-        columns.append(_vee_twist(inverse @ derivative))
-    J = np.column_stack(columns)
+    blocks = np.zeros((6, 8, 8))
+    blocks[:, :4, :4] = blocks[:, 4:, 4:] = base
+    for j, direction in enumerate(np.eye(6)):
+        blocks[j, :4, 4:] = _twist_matrix(direction)
+    exponentials = expm(blocks)
+    pose, derivatives = exponentials[0, :4, :4], exponentials[:, :4, 4:]
+    inverse = np.eye(4)
+    inverse[:3, :3], inverse[:3, 3] = pose[:3, :3].T, -pose[:3, :3].T @ pose[:3, 3]
+    J = np.column_stack([_vee_twist(inverse @ derivative) for derivative in derivatives])
     J[:3, 3:] *= size
     return J
 
