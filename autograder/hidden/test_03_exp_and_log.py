@@ -25,7 +25,7 @@ from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
 
 from coursekit import hints
-from coursekit.checks.lesson03 import COLUMN_HINT, REAL_AXIS_HINT, column_logs, vee_hint, weak_column
+from coursekit.checks.lesson03 import COLUMN_HINT, REAL_AXIS_HINT, vee_hint
 from coursekit.diagnose import explains
 
 from .properties import angle_text, decade_vectors, expect_within, for_all, given_forms, rotation_vectors
@@ -400,6 +400,32 @@ def _log_parts(R):
     return a, c, float(np.arctan2(np.linalg.norm(a), c)), float(np.arccos(np.clip(c, -1.0, 1.0)))
 
 
+def _symmetric_part(R):
+    """B = (R + Rᵀ)/2 - cos θ I = (1 - cos θ) u uᵀ."""
+    R = np.asarray(R, dtype=float)
+    return 0.5 * (R + R.T) - 0.5 * (np.trace(R) - 1.0) * np.eye(3)
+
+
+def _weak_column(R):
+    """Some column of B is (nearly) zero: a branch that always takes it divides by ~0 there."""
+    diagonal = np.diag(_symmetric_part(R))
+    return float(np.min(diagonal)) <= 1e-8 * float(np.max(diagonal))
+
+
+def _column_logs(R, theta, a):
+    """θ u with u read from each non-zero column of B, signed by a: what a near-π branch that always reads one
+    fixed column returns (``explains`` never matches the columns that give the right answer). The public checks
+    store these values at their own rotations (``LOG_SLIPS``), recomputed by the course's tests."""
+    B = _symmetric_part(R)
+    logs = []
+    for j in range(3):
+        norm = np.sqrt(B[:, j] @ B[:, j])
+        if norm > 0.0:
+            u = B[:, j] / norm
+            logs.append(theta * u * (1.0 if u @ a >= 0.0 else -1.0))
+    return logs
+
+
 def _log_hint(got, R, expected):
     """Name the slip behind a wrong log_so3(R) = ``got`` (``expected`` the right vector), or say what to look at.
 
@@ -417,7 +443,7 @@ def _log_hint(got, R, expected):
             )
         if angle < 1e-3:
             return hints.NAN_AT_ZERO_ANGLE_HINT
-        if angle > 3.0 and weak_column(R):
+        if angle > 3.0 and _weak_column(R):
             return COLUMN_HINT
         if angle > 3.0:
             return hints.NAN_NEAR_PI_HINT
@@ -432,7 +458,7 @@ def _log_hint(got, R, expected):
     if angle < 0.5 and explains(got, a, expected):
         return (
             f"returned vee(R - Rᵀ)/2 = sin θ u, off by about {angle**3 / 6:.1e} at θ = {angle:.3g}: below your "
-            "threshold the factor θ/sin θ was cut to its first term; keep its θ² term too"
+            "small-angle threshold the log has lost its relative accuracy (the check asks for 1e-10 of θ)"
         )
     if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
@@ -450,7 +476,7 @@ def _log_hint(got, R, expected):
             "needs its own branch near π that does not divide by sin θ (section 5: which part of R still holds "
             "the axis there?)"
         )
-    if angle > 3.0 and any(explains(got, candidate, expected) for candidate in column_logs(R, theta, a)):
+    if angle > 3.0 and any(explains(got, candidate, expected) for candidate in _column_logs(R, theta, a)):
         return COLUMN_HINT
     if angle > 3.0:
         return hints.LOG_OFF_NEAR_TAKE_HINT

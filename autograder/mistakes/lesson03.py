@@ -486,8 +486,8 @@ def log_so3(R):
     u = B[:, j] / np.linalg.norm(B[:, j])
     return theta * (u if u @ a >= 0.0 else -u)
 """,
-        hint="keep its θ² term too",
-        public_hint="keep its θ² term too",
+        hint="lost its relative accuracy",
+        public_hint="lost its relative accuracy",
     ),
     Mistake(
         "axis_angle_no_pi_branch",
@@ -552,8 +552,8 @@ def log_so3(R):
         u = -u
     return theta * u
 """,
-        hint="a fixed column of B",
-        public_hint="a fixed column of B",
+        hint="one fixed column fails near π",
+        public_hint="one fixed column fails near π",
     ),
     Mistake(
         "axis_angle_list_methods",

@@ -61,8 +61,8 @@ def quat_power(q, t):
     alpha = np.arctan2(np.linalg.norm(q[1:]), q[0])
     return np.concatenate([[np.cos(t * alpha)], np.sin(t * alpha) * q[1:]])
 """,
-        hint="divide it by its length",
-        public_hint="divide it by its length",
+        hint="is not a unit vector",
+        public_hint="is not a unit vector",
     ),
     Mistake(
         "power_identity_nan",

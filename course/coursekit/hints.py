@@ -145,7 +145,8 @@ POWER_HALF_ANGLE_HINT = ("q = [cos α, sin α u] already holds the half angle: L
 POWER_IDENTITY_HINT = "at the identity |v| = 0: guard the division (any axis will do there)"
 POWER_SIGN_FLIP_HINT = ("q and -q are one rotation but not one quaternion: -q has half-angle π - α about -u, so its "
                         "powers turn the other way; do not flip the sign of q")
-POWER_UNIT_AXIS_HINT = "the vector part is sin α u, not u: divide it by its length to get the unit axis"
+POWER_UNIT_AXIS_HINT = ("the axis of the power is not a unit vector: the vector part of q has length sin α, "
+                        "not 1")
 
 # ---------------------------------------------------------------- checks/lesson05.py
 ANGLES_MUST_SATISFY_R_HINT = ("the angles must satisfy R = Rz(yaw) Ry(pitch) Rx(roll): rebuild R from your angles with "

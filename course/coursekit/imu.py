@@ -1,6 +1,6 @@
 """A real MEMS IMU, simulated: the sensor behind the EuRoC MAV dataset, the Analog Devices ADIS16448.
 
-The lessons that use realistic data (08, 09, and a demonstration in 03) draw their gyroscope and
+The lessons that use realistic data (08 and 09) draw their gyroscope and
 accelerometer readings from :data:`IMU`, a model of one named sensor with published numbers. The
 sensor is the **Analog Devices ADIS16448** ("iSensor ADIS16448, Compact, Precision Ten Degrees of
 Freedom Inertial Sensor", data sheet, Analog Devices; Table 1, Specifications), the IMU of the
@@ -173,8 +173,7 @@ def smooth_motion(duration_s, rate_hz=None, seed=0):
 
     The body rate on each axis is a sum of three sinusoids (0.05 to 0.5 Hz, amplitudes up to
     about 1 rad/s in total), the start attitude is a seeded random rotation, and the attitude
-    is propagated exactly: ``R_wb[k + 1] = R_wb[k] @ Exp(omega_b[k] * dt)``, the rate being held
-    over each sampling interval ``dt = 1 / rate_hz``.
+    is propagated exactly, with the body rate held over each sampling interval ``dt = 1 / rate_hz``.
 
     Parameters
     ----------

@@ -23,7 +23,8 @@ TURNED_TWICE = np.array([0.0, 0.0, -1.0])         # Rᵀ applied to the body rat
 WORLD_HINT = hints.BODY_RATE_IS_WORLD_RATE_HINT
 SIGN_HINT = ("the opposite spin: ω_b came out negated; at R = I a body spinning positively about z has "
              "Ṙ = [e_z]× and must give +e_z")
-IGNORES_R_HINT = "Ṙ alone is not skew-symmetric: it still holds the attitude R; remove it first"
+IGNORES_R_HINT = ("Ṙ alone is not skew-symmetric: it still holds the attitude R, so what was read off it is not "
+                  "a rate in the body's axes")
 TWICE_HINT = hints.RATE_TURNED_INTO_BODY_HINT
 SLIPS = [(WORLD_RATE, WORLD_HINT), (-BODY_RATE, SIGN_HINT), (VEE_OF_R_DOT, IGNORES_R_HINT),
          (TURNED_TWICE, TWICE_HINT), (-WORLD_RATE, WORLD_HINT)]
@@ -76,8 +77,9 @@ def _(body_angular_velocity):
     if not close(got, GENERIC_RATE, 1e-12):
         raise Mismatch(f"got {fmt(got, 6)} rad/s, expected {fmt(GENERIC_RATE)} ({off_by(got, GENERIC_RATE)})",
                        FLOAT32_HINT if float32_rounding(got, GENERIC_RATE) else
-                       "ω_b is wrong at a generic attitude: R(t) = R0 Exp(t ω_b) spins at ω_b in body axes, so "
-                       "its derivative at t = 0 is a test whose answer you know; compare each component")
+                       "ω_b is wrong at a generic attitude: R(t) = Exp(t R0 ω_b) R0 spins at ω_b in body axes "
+                       "(at R0 ω_b in world axes), so its derivative at t = 0 is a test whose answer you know; "
+                       "compare each component")
 
 
 @public_check("body_angular_velocity", "accepts plain lists")

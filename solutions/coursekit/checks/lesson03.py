@@ -105,18 +105,35 @@ EXP_SLIPS = {
                                        [0.0, 0.0, 1.0]])},
 }
 # log_so3 slips at the checks' rotations: the values that the usual wrong answers return there (each one is
-# recomputed from its wrong answer by tests/test_public_check_constants_lesson03.py)
+# recomputed from its wrong answer by tests/test_public_check_constants_lesson03.py). Near π, "column_logs" holds
+# what a log returns that always reads its axis from one fixed column (either sign), and "weak_column" whether
+# one of those columns is (nearly) zero at that rotation, so that such a log divides by about zero.
 LOG_SLIPS = {
     "quarter": {"arccos_angle": 1.5707963267948966},
     "tiny_1e-08": {"arccos_angle": 0.0,
                    "sin_angle_axis": np.array([6.666666666666667e-09, -3.3333333333333334e-09, 6.666666666666667e-09])},
     "tiny_0.001": {"arccos_angle": 0.0009999999997701238,
                    "sin_angle_axis": np.array([0.0006666665555555612, -0.0003333332777777806, 0.0006666665555555612])},
-    "half_z": {"arccos_angle": 3.141592653589793, "no_branch": [np.zeros(3), np.zeros(3)]},
-    "half_diagonal": {"arccos_angle": 3.1415926325163688, "no_branch": [np.zeros(3), np.zeros(3)]},
+    "half_z": {"arccos_angle": 3.141592653589793, "no_branch": [np.zeros(3), np.zeros(3)],
+               "weak_column": True,
+               "column_logs": [np.array([0.0, 0.0, 3.141592653589793]), np.array([-0.0, -0.0, -3.141592653589793])]},
+    "half_diagonal": {"arccos_angle": 3.1415926325163688, "no_branch": [np.zeros(3), np.zeros(3)],
+                      "weak_column": False,
+                      "column_logs": [np.array([-1.8137993642342176, -1.8137993642342183, -1.8137993642342183]),
+                                      np.array([-1.8137993642342183, -1.8137993642342176, -1.8137993642342183]),
+                                      np.array([-1.8137993642342183, -1.8137993642342183, -1.8137993642342176]),
+                                      np.array([1.8137993642342176, 1.8137993642342183, 1.8137993642342183]),
+                                      np.array([1.8137993642342183, 1.8137993642342176, 1.8137993642342183]),
+                                      np.array([1.8137993642342183, 1.8137993642342183, 1.8137993642342176])]},
     "below_pi": {"arccos_angle": 3.141591653545344,
                  "no_branch": [np.array([0.0, -1.884954992153876, -2.5132733228718345]),
-                               np.array([0.0, -1.8848712116959343, -2.513161615594579])]},
+                               np.array([0.0, -1.8848712116959343, -2.513161615594579])],
+                 "weak_column": True,
+                 "column_logs": [np.array([-3.141591653589793, 0.0, 0.0]),
+                                 np.array([-0.0, -1.8849549921538757, -2.5132733228718345]),
+                                 np.array([-0.0, -1.884954992153876, -2.5132733228718345]),
+                                 np.array([0.0, 1.8849549921538757, 2.5132733228718345]),
+                                 np.array([0.0, 1.884954992153876, 2.5132733228718345])]},
 }
 # axis_from_eigen slips that miss the axis: a row of eig's vector matrix, the SVD null space of R itself,
 # eigh's vector (R_TWO_RAD); the first eigenvector and its eigenvalue (HALF_TURN_Z). Each slip is a line (the sign
@@ -363,34 +380,9 @@ def _(exp_so3):
 
 
 # ---------------------------------------------------------------- log_so3
-COLUMN_HINT = ("a fixed column of B = (R + Rᵀ)/2 - cos θ I is not a safe source of the axis near π: B = "
-               "(1 - cos θ) u uᵀ, and its column j is nearly zero when u_j is (here u is nearly perpendicular to that "
-               "column's axis)")
-
-
-def _symmetric_part(R):
-    """B = (R + Rᵀ)/2 - cos θ I = (1 - cos θ) u uᵀ."""
-    R = np.asarray(R, dtype=float)
-    return 0.5 * (R + R.T) - 0.5 * (np.trace(R) - 1.0) * np.eye(3)
-
-
-def weak_column(R):
-    """Some column of B is (nearly) zero: a branch that always takes it divides by ~0 there."""
-    diagonal = np.diag(_symmetric_part(R))
-    return float(np.min(diagonal)) <= 1e-8 * float(np.max(diagonal))
-
-
-def column_logs(R, theta, a):
-    """θ u with u read from each non-zero column of B, signed by a: what a near-π branch that always reads one
-    fixed column returns (``explains`` never matches the columns that give the right answer)."""
-    B = _symmetric_part(R)
-    logs = []
-    for j in range(3):
-        norm = np.sqrt(B[:, j] @ B[:, j])
-        if norm > 0.0:
-            u = B[:, j] / norm
-            logs.append(theta * u * (1.0 if u @ a >= 0.0 else -1.0))
-    return logs
+COLUMN_HINT = ("an axis read from one fixed column fails near π when the axis is nearly perpendicular to that "
+               "column's direction, and here it is: that column is (nearly) zero, so the direction read from it is "
+               "rounding noise")
 
 
 def _log_hint(got, R, expected, slips):
@@ -402,7 +394,7 @@ def _log_hint(got, R, expected, slips):
             return "NaN: (tr R - 1)/2 is just outside [-1, 1] by rounding, and arccos of it is NaN: clip it first"
         if angle < 1e-3:
             return hints.NAN_AT_ZERO_ANGLE_HINT
-        if angle > 3.0 and weak_column(R):
+        if angle > 3.0 and slips.get("weak_column"):
             return COLUMN_HINT
         return hints.NAN_NEAR_PI_HINT
     if angle == 0.0:
@@ -414,7 +406,7 @@ def _log_hint(got, R, expected, slips):
         return hints.TWICE_ROTATION_VECTOR_VEE_HINT
     if angle < 0.5 and explains(got, slips["sin_angle_axis"], expected):
         return (f"returned vee(R - Rᵀ)/2 = sin θ u, off by about {angle ** 3 / 6:.1e} at θ = {angle:.3g}: below your "
-                "threshold the factor θ/sin θ was cut to its first term; keep its θ² term too")
+                "small-angle threshold the log has lost its relative accuracy (the check asks for 1e-10 of θ)")
     theta_acos = slips["arccos_angle"]
     if explains(got, theta_acos * unit, expected):
         if theta_acos == 0.0:
@@ -426,8 +418,7 @@ def _log_hint(got, R, expected, slips):
         return (f"θ/(2 sin θ)·vee(R - Rᵀ) divides two tiny numbers near π (here sin θ = {abs(np.sin(angle)):.1e}): the log "
                 "needs its own branch near π that does not divide by sin θ (section 5: which part of R still holds "
                 "the axis there?)")
-    if angle > 3.0 and any(explains(got, candidate, expected)
-                           for candidate in column_logs(R, angle, expected * np.sin(angle) / angle)):
+    if angle > 3.0 and any(explains(got, candidate, expected) for candidate in slips.get("column_logs", ())):
         return COLUMN_HINT
     if angle > 3.0:
         return hints.LOG_OFF_NEAR_TAKE_HINT
