@@ -75,9 +75,13 @@ def _judge(student, seed, pairs, sigma, outliers, cone=None, plane=False):
         transposed = float(np.linalg.norm(_log(X @ X_true)))
         if transposed < 0.05:
             hint = "that is Xᵀ: in A X = X B, X carries B's frame into A's"
-        else:  # the same student on the good pairs alone tells outliers apart from imprecision
+        else:  # the same student on the pairs in reverse order, then on the good pairs alone, tells what went wrong
             hint = "with noise, every good pair adds precision: use all the good ones"
-            if outliers:
+            X_reversed = np.asarray(student.with_timeout(SLOW).hand_eye_rotation(As[::-1], Bs[::-1]), dtype=float)
+            order_matters = (
+                X_reversed.shape != (3, 3) or float(np.linalg.norm(_log(_nearest(X_reversed).T @ X))) > bound
+            )
+            if outliers and not order_matters:  # the answer follows every pair, whatever their order
                 X_good = np.asarray(student.with_timeout(SLOW).hand_eye_rotation(As[good], Bs[good]), dtype=float)
                 if X_good.shape == (3, 3) and float(np.linalg.norm(_log(_nearest(X_good).T @ X_true))) <= bound:
                     hint = "the wrong pairs pulled X away: some pairs fit no single X, and your answer follows them"
