@@ -4,8 +4,10 @@ Judged by the result only, never by the method: on datasets the grader draws her
 pairs, noise σ = 0.01 to 0.05 rad per axis on A_i, up to 40 % outliers drawn uniformly on SO(3), turns of B_i
 between 0.3 and 2.5 rad, near-degenerate sets whose axes lie within about 0.1 to 0.15 rad of one direction, and
 exact sets whose axes all lie in one plane),
-the angle of X from the truth must stay below 5 σ_X, where σ_X = σ √trace(H⁻¹), H = Σ [b_i]×ᵀ [b_i]× over the
-good pairs, is the first-order spread of the best estimate (1e-9 rad for exact data). Core idea (3 of 6 points):
+the angle of X from the truth must stay below 5 σ_X, where σ_X = σ √trace(H⁻¹), H = Σ (2 I - B_i - B_iᵀ) over the
+good pairs, is the first-order spread of the best estimate (1e-9 rad for exact data): the noise is A_i = X B_i Xᵀ
+Exp(n_i), and with X = X̂ Exp(δ) a pair's residual moves by X̂ (B_iᵀ - I) δ, whose information is (B_i - I)(B_i - I)ᵀ
+= 2 I - B_i - B_iᵀ per σ². Core idea (3 of 6 points):
 surviving outliers at the noise's accuracy. Every test calls hand_eye_rotation only.
 """
 
@@ -27,10 +29,6 @@ def _log(R):
     return Rotation.from_matrix(R).as_rotvec()
 
 
-def _skew(v):
-    return np.column_stack([np.cross(np.asarray(v, dtype=float), e) for e in np.eye(3)])
-
-
 def _dataset(seed, pairs, sigma, outliers, cone=None, plane=False):
     rng = np.random.default_rng(seed)
     X = Rotation.random(random_state=rng).as_matrix()
@@ -48,7 +46,7 @@ def _dataset(seed, pairs, sigma, outliers, cone=None, plane=False):
     for i in wrong:
         As[i] = Rotation.random(random_state=rng).as_matrix()
     good = sorted(set(range(pairs)) - set(wrong))
-    H = sum(_skew(_log(Bs[i])).T @ _skew(_log(Bs[i])) for i in good)
+    H = sum(2 * np.eye(3) - Bs[i] - Bs[i].T for i in good)
     bound = 5.0 * sigma * np.sqrt(np.trace(np.linalg.inv(H))) if sigma > 0 else 1e-9
     return np.array(As), np.array(Bs), X, bound, good
 
@@ -77,12 +75,16 @@ def _judge(student, seed, pairs, sigma, outliers, cone=None, plane=False):
         transposed = float(np.linalg.norm(_log(X @ X_true)))
         if transposed < 0.05:
             hint = "that is Xᵀ: in A X = X B, X carries B's frame into A's"
-        else:  # the same student on the good pairs alone tells outliers apart from imprecision
+        else:  # the same student on the pairs in reverse order, then on the good pairs alone, tells what went wrong
             hint = "with noise, every good pair adds precision: use all the good ones"
-            if outliers:
+            X_reversed = np.asarray(student.with_timeout(SLOW).hand_eye_rotation(As[::-1], Bs[::-1]), dtype=float)
+            order_matters = (
+                X_reversed.shape != (3, 3) or float(np.linalg.norm(_log(_nearest(X_reversed).T @ X))) > bound
+            )
+            if outliers and not order_matters:  # the answer follows every pair, whatever their order
                 X_good = np.asarray(student.with_timeout(SLOW).hand_eye_rotation(As[good], Bs[good]), dtype=float)
                 if X_good.shape == (3, 3) and float(np.linalg.norm(_log(_nearest(X_good).T @ X_true))) <= bound:
-                    hint = "the wrong pairs pulled X away: find out which pairs disagree with most of the others"
+                    hint = "the wrong pairs pulled X away: some pairs fit no single X, and your answer follows them"
         raise Wrong(f"X is {error:.3g} rad from the truth ({what}); the bound is {bound:.3g} rad", hint)
 
 

@@ -257,7 +257,7 @@ def _point_covariance_hint(got, R, Sigma, p):
                     "[R p]× Σ [R p]×ᵀ treats ε as a world-frame (left) perturbation; here R Exp(ε): J is lesson 06's "
                     "Jacobian of the right perturbation",
                 ),
-                (R @ Sigma @ R.T, "R Σ Rᵀ is the covariance of the turn, not of the point: use the point's Jacobian"),
+                (R @ Sigma @ R.T, "that is the covariance of the turn, not of the point: use the point's Jacobian"),
                 (J @ Sigma, "a covariance takes the Jacobian on both sides: J Σ Jᵀ"),
                 (J.T @ Sigma @ J, "Jᵀ Σ J has the Jacobian on the wrong sides: J Σ Jᵀ"),
             ],
@@ -336,8 +336,8 @@ def _left_to_right_hint(got, R, Sigma):
             [
                 (
                     R @ Sigma @ R.T,
-                    "that converts right to left: the adjoint moved ε across R the wrong way; write Exp(ε_L) R "
-                    "as R Exp(A ε_L) and check A",
+                    "that converts right to left: on a body turned a third of a turn about (1, 1, 1), a heading "
+                    "uncertainty about the world's vertical must end up on the body's y axis",
                 ),
                 (Sigma, "the covariance must change frame: world axes (left) are not body axes (right) unless R = I"),
                 (R.T @ Sigma, hints.COVARIANCE_TAKES_LINEAR_MAP_HINT),

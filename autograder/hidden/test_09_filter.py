@@ -93,7 +93,7 @@ def _predict_hint(P_new, R, P, omega, dt, Q, truth, tol):
             ),
             (
                 F @ P @ F.T + G @ Q @ G.T / dt,
-                "Q is in (rad/s)² and the noise turns the body by n Δt: it scales with dt²",
+                "Q is in (rad/s)² and P in rad²: check the units of the noise's part",
             ),
             (F @ P @ F.T, "the gyro noise must add to P"),
             (F @ P @ F.T + G.T @ Q @ G, "the noise's Jacobian, to first order in ε and n, is the right one of Exp"),

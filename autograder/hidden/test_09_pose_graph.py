@@ -122,7 +122,10 @@ def test_edge_jacobian_i(student):
         candidates = [
             (-AdSE3(np.linalg.inv(between)), NO_JR),
             (-Jr_inv @ AdSE3(between), "the adjoint is of the wrong pose, or inverted"),
-            (-Jr_inv @ AdSE3(np.linalg.inv(T_ij)), "δ_i must cross the whole of T_i⁻¹ T_j, not T_ij alone"),
+            (
+                -Jr_inv @ AdSE3(np.linalg.inv(T_ij)),
+                "J_i is right at r = 0 but not at this residual, while J_j is right at both",
+            ),
             (-truth, hints.EDGE_SIGN_HINT),
             (-Jr @ AdSE3(np.linalg.inv(between)), NOT_INVERTED),
         ]

@@ -42,8 +42,8 @@ def hand_eye_rotation(As, Bs):
     U, _, Vt = np.linalg.svd(a.T @ b)
     return U @ np.diag([1.0, 1.0, np.linalg.det(U @ Vt)]) @ Vt
 """,
-        hint="find out which pairs disagree",
-        public_hint="the wrong ones pulled the answer away",
+        hint="the wrong pairs pulled X away",
+        public_hint="the wrong pairs pulled the answer away",
         classic=True,
     ),
     Mistake(

@@ -96,8 +96,8 @@ def filter_predict(R, P, omega_meas, dt, Q):
         "filter_predict",
         "noise covariance scaled by dt instead of dt²",
         _predict(noise="G @ Q @ G.T / dt"),
-        hint="scales with dt²",
-        public_hint="scales with dt², not dt",
+        hint="check the units of the noise's part",
+        public_hint="Q is in (rad/s)² and P_new in rad²",
     ),
     Mistake(
         "predict_no_jr",
@@ -105,7 +105,7 @@ def filter_predict(R, P, omega_meas, dt, Q):
         "noise term dt² Q: the Jacobian of Exp taken as I",
         _predict(noise_jacobian="np.eye(3) * dt"),
         hint="which is not I",
-        public_hint="which is not I",
+        public_hint="whose Jacobian at a long step is not I",
     ),
     Mistake(
         "predict_no_noise",

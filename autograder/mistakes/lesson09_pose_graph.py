@@ -42,8 +42,8 @@ MISTAKES = [
         "pose_graph_edge",
         "J_i = -J_r(r)⁻¹ Ad(T_ij⁻¹): δ_i moved across the measurement only",
         _edge(J_i="-Jr_inv @ AdSE3(np.linalg.inv(T_ij))"),
-        hint="must cross the whole of T_i⁻¹ T_j",
-        public_hint="must cross the whole of T_i⁻¹ T_j",
+        hint="right at r = 0 but not at this residual",
+        public_hint="right at r = 0 but not at this residual",
     ),
     Mistake(
         "edge_jr_not_inverted",

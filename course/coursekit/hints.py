@@ -327,8 +327,8 @@ SIGN_ROTATION_BLOCK_PHI_HINT = "the sign of the rotation block: [phi]× p = -[p]
 TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rates are body rates, so each update goes "
                              "on the right, R ← R Exp(ω_b dt)")
 UNIT_AXIS_FROM_VECTOR_PART_HINT = "v = sin α u: divide the vector part by its length to get the unit axis u"
-WEIGHTS_K_R_BEYOND_HINT = ("weights (k/r)² beyond k belong to another cost, whose pull fades with distance: the Huber "
-                           "cost keeps a constant pull k on every pair beyond k")
+WEIGHTS_K_R_BEYOND_HINT = ("your pose is a stationary point of another cost, whose pull on a pair beyond k fades with "
+                           "the pair's distance: the Huber cost's pull beyond k does not fade")
 
 ROBUST_WEIGHT_QUESTION_HINT = ("compare the gradient of ρ_k(|r|) with respect to r with that of ½|r|²: what does each "
                                "residual weigh?")
@@ -366,5 +366,6 @@ EDGE_FINITE_DIFFERENCES_HINT = ("your Jacobian agrees with finite differences bu
                                 "asks for the exact Jacobian; finite differences check a derivation, they do not "
                                 "replace it")
 EDGE_NOT_INVERTED_HINT = "Log's Jacobian at r is the inverse of Exp's right Jacobian there, not the Jacobian itself"
-EDGE_SIGN_HINT = "the sign: T_i appears inverted in the residual, (T_i Exp(δ_i))⁻¹ = Exp(-δ_i) T_i⁻¹"
+EDGE_SIGN_HINT = ("the sign: J_i is the negative of a central difference of the residual in δ_i (T_i appears inverted "
+                  "in the residual)")
 

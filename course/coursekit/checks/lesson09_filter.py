@@ -78,24 +78,32 @@ PREDICT_LEFT_JACOBIAN = np.array(
 PREDICT_SLIPS = [
     (
         PREDICT_NOT_CARRIED,
-        "P was not carried through the step: the old error ε sits before the step's Exp, and "
-        "reaches the new attitude only after crossing that turn",
+        "P was not carried through the step: P_new is right when the step does not turn, and wrong when it does",
     ),
-    (PREDICT_WRONG_WAY, "the error crosses the step's turn the wrong way round: check which of Exp(±ω Δt) it meets"),
+    (
+        PREDICT_WRONG_WAY,
+        "the old error's part of P_new is turned the wrong way round: right when the step does not turn, and turned "
+        "by the step's opposite when it does",
+    ),
     (
         PREDICT_NO_JR,
-        "the noise enters inside the step's Exp: splitting it off to first order needs the Jacobian of "
-        "Exp at the step, which is not I for a long step",
+        "the noise's part of P_new is right for a short step and wrong for a long one: the noise sits inside "
+        "the step's Exp, whose Jacobian at a long step is not I",
     ),
     (
         PREDICT_NOISE_DT,
-        "Q is in (rad/s)², and the noise turns the body by n Δt: its covariance scales with dt², not dt",
+        "the noise's part of P_new has the wrong size: Q is in (rad/s)² and P_new in rad², so check the units "
+        "of what you add",
     ),
     (
         PREDICT_NO_NOISE,
         "the gyro's noise makes the truth drift from the estimate: P must grow by the covariance it adds",
     ),
-    (PREDICT_LEFT_JACOBIAN, "that is the left Jacobian of Exp: the noise is split off on the right of the step"),
+    (
+        PREDICT_LEFT_JACOBIAN,
+        "that is the left Jacobian of Exp, which belongs to an error written on the left: ε_new is a right "
+        "perturbation of R_new",
+    ),
 ]
 
 # attitude_nees: P = L Lᵀ and ε = L u, so that εᵀ P⁻¹ ε = |u|² = 1.69.

@@ -197,10 +197,13 @@ NO_JR_HINT = (
     "that Jacobian holds only for a small residual: at a large one, Log's own Jacobian at r sits "
     "between the perturbation and the residual"
 )
-ADJOINT_INVERTED_HINT = "the adjoint is of the wrong pose, or inverted: move δ_i across T_i⁻¹ T_j the other way"
+ADJOINT_INVERTED_HINT = (
+    "the adjoint is of the wrong pose, or inverted: J_i disagrees with a central difference of the residual in δ_i "
+    "even for a consistent edge (r = 0), while J_j agrees"
+)
 MEASUREMENT_ADJOINT_HINT = (
-    "the adjoint of T_ij⁻¹ alone moves δ_i across the measurement, but δ_i must cross the "
-    "whole of T_i⁻¹ T_j (which is T_ij Exp(r))"
+    "J_i is right at r = 0 but not at this residual, while J_j is right at both: compare J_i with a central "
+    "difference of the residual in δ_i as the residual grows"
 )
 NOT_INVERTED_HINT = hints.EDGE_NOT_INVERTED_HINT
 SIGN_HINT = hints.EDGE_SIGN_HINT
@@ -272,7 +275,7 @@ def _(pose_graph_edge):
             hint = FINITE_DIFFERENCES_HINT
         raise Mismatch(
             f"J_i disagrees with the derivative of the residual ({off_by(J_i, expected)})",
-            hint or "move δ_i out of the middle of the product with an adjoint, then use Log's Jacobian at r",
+            hint or "compare J_i column by column with a central difference of the residual in δ_i, here and at r = 0",
         )
 
 
@@ -296,7 +299,7 @@ def _(pose_graph_edge):
             if close(J_i, -expected_i, 1e-7)
             else FINITE_DIFFERENCES_HINT
             if close(J_i, expected_i, 1e-7) and close(J_j, expected_j, 1e-7)
-            else "at r = 0, Log's Jacobian is I: what is left is how δ_i crosses T_i⁻¹ T_j",
+            else "at r = 0, J_j is I and J_i must agree with a central difference of the residual in δ_i",
         )
 
 

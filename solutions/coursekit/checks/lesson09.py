@@ -146,7 +146,10 @@ COV_LEFT_HINT = (
     "[R p]× Σ [R p]×ᵀ treats ε as a world-frame (left) perturbation; here R Exp(ε): J is lesson 06's Jacobian of "
     "the right perturbation, Σ_y = J Σ Jᵀ"
 )
-COV_TURNED_HINT = "R Σ Rᵀ is the covariance of the turn R ε, not of the point: propagate with the point's Jacobian"
+COV_TURNED_HINT = (
+    "that is the covariance of the turn, not of the point: a small turn moves the point sideways only, so its "
+    "covariance has no spread along R p; propagate with the point's Jacobian"
+)
 COV_ONE_SIDED_HINT = "a covariance takes the Jacobian on both sides: Σ_y = J Σ Jᵀ (J Σ alone is not even symmetric)"
 COV_TRANSPOSED_HINT = "Jᵀ Σ J has the Jacobian on the wrong sides: Σ_y = J Σ Jᵀ for y ≈ y0 + J ε"
 COV_POINT_SLIPS = [
@@ -204,8 +207,8 @@ COV_RIGHT_WRONG_WAY = np.array([[0.01, -0.01, 0.005], [-0.01, 0.09, 0.02], [0.00
 COV_RIGHT_ONE_SIDED = np.array([[0.02, 0.04, 0.005], [-0.01, 0.005, 0.01], [0.09, 0.02, -0.01]])
 COV_RIGHT_OTHER_SIDE = np.array([[0.02, -0.01, 0.09], [0.04, 0.005, 0.02], [0.005, 0.01, -0.01]])
 WRONG_WAY_HINT = (
-    "that converts right to left: write Exp(ε_L) R as R Exp(A ε_L) with the adjoint, and check which "
-    "rotation A is on the body lying on its side"
+    "that converts right to left: test it on a body turned a third of a turn about (1, 1, 1), x to y, y to z and "
+    "z to x; a heading uncertainty about the world's vertical must end up on the body's y axis, the one that points up"
 )
 UNCHANGED_HINT = (
     "the covariance must change frame: a world-axis uncertainty (left) is a different body-axis "
@@ -240,7 +243,7 @@ def _(covariance_left_to_right):
     if not close(np.linalg.eigvalsh(got), np.linalg.eigvalsh(SIGMA_LEFT), 1e-12):
         raise Mismatch(
             "the eigenvalues changed: the size of the uncertainty is not the same",
-            "only the axes change: the result is Σ_L turned by a rotation on both sides",
+            "the same uncertainty seen in other axes keeps its size: nothing may stretch or shrink Σ_L",
         )
     require_same_with_lists(covariance_left_to_right, (R, SIGMA_LEFT), (3, 3), "covariance_left_to_right(R, Σ)")
     require_unchanged_inputs(covariance_left_to_right, (R, SIGMA_LEFT), "covariance_left_to_right")
@@ -348,7 +351,7 @@ def _huber_cost(T, P, Q, k):
 
 
 def _log_tail_cost(T, P, Q, k):
-    """The cost whose reweighting uses (k/r)² beyond k: ½ r² up to k, then ½ k² + k² log(r / k)."""
+    """A cost whose pull fades beyond k (not Huber's): ½ r² up to k, then ½ k² + k² log(r / k)."""
     r = np.linalg.norm(P @ T[:3, :3].T + T[:3, 3] - Q, axis=1)
     return float(np.sum(np.where(r <= k, 0.5 * r**2, 0.5 * k * k + k * k * np.log(np.maximum(r, k) / k))))
 

@@ -215,10 +215,13 @@ T_SWAPPED = np.array(
     ]
 )
 NO_TRANSPORT_HINT = (
-    "S1 was not carried across T2: ξ1 is a twist in T1's body frame, and the chain's end is "
-    "another frame; move Exp(ξ1) to the right of T2 (lesson 07's adjoint) before adding S2"
+    "S1 was not carried across T2: ξ1 is a twist in T1's body frame and ξ one in the chain end's, so S is right "
+    "when T2 = I and wrong otherwise"
 )
-WRONG_WAY_HINT = "the adjoint goes the other way: write Exp(ξ1) T2 as T2 Exp(?) and solve for the twist"
+WRONG_WAY_HINT = (
+    "the adjoint goes the other way: S is right when T2 = I and wrong for a turned or shifted T2; compare it "
+    "with the spread of simulated chains"
+)
 OTHER_POSE_HINT = "ξ1 crosses T2, not T1: the adjoint that moves it belongs to the factor it passes"
 ROTATION_ONLY_HINT = (
     "turning both halves of the twist by R2ᵀ forgets that a spin about T1's origin also shifts "
