@@ -4,10 +4,13 @@ Judged by the result only, never by the method: on datasets the grader draws her
 pairs, noise σ = 0.01 to 0.05 rad per axis on A_i, up to 40 % outliers drawn uniformly on SO(3), turns of B_i
 between 0.3 and 2.5 rad, near-degenerate sets whose axes lie within about 0.1 to 0.15 rad of one direction, and
 exact sets whose axes all lie in one plane),
-the angle of X from the truth must stay below 5 σ_X, where σ_X = σ √trace(H⁻¹), H = Σ (2 I - B_i - B_iᵀ) over the
+the angle of X from the truth must stay below 4 σ_X, where σ_X = σ √trace(H⁻¹), H = Σ (2 I - B_i - B_iᵀ) over the
 good pairs, is the first-order spread of the best estimate (1e-9 rad for exact data): the noise is A_i = X B_i Xᵀ
 Exp(n_i), and with X = X̂ Exp(δ) a pair's residual moves by X̂ (B_iᵀ - I) δ, whose information is (B_i - I)(B_i - I)ᵀ
-= 2 I - B_i - B_iᵀ per σ². Core idea (3 of 6 points):
+= 2 I - B_i - B_iᵀ per σ². Why 4 σ_X: the first-order error of the best estimate is Gaussian with total spread σ_X, so
+it leaves 4 σ_X with a probability below 1e-4 per dataset even when all of it lies along one axis (the reference
+stays within 1 σ_X on these sets), while an X fitted to the two pairs that most others agree with does not stay
+within it (4.6 and 4.9 σ_X on two sets; a bar of 5 σ_X let it pass). Core idea (3 of 6 points):
 surviving outliers at the noise's accuracy. Every test calls hand_eye_rotation only.
 """
 
@@ -47,7 +50,7 @@ def _dataset(seed, pairs, sigma, outliers, cone=None, plane=False):
         As[i] = Rotation.random(random_state=rng).as_matrix()
     good = sorted(set(range(pairs)) - set(wrong))
     H = sum(2 * np.eye(3) - Bs[i] - Bs[i].T for i in good)
-    bound = 5.0 * sigma * np.sqrt(np.trace(np.linalg.inv(H))) if sigma > 0 else 1e-9
+    bound = 4.0 * sigma * np.sqrt(np.trace(np.linalg.inv(H))) if sigma > 0 else 1e-9
     return np.array(As), np.array(Bs), X, bound, good
 
 
@@ -90,7 +93,7 @@ def _judge(student, seed, pairs, sigma, outliers, cone=None, plane=False):
 
 @exercise("hand_eye_rotation", weight=3)
 def test_hand_eye_with_outliers(student):
-    """within 5 σ_X of the truth on 6 grader-drawn datasets: 12 to 40 pairs, σ = 0.01 to 0.05 rad, 20 to 40 % outliers"""
+    """within 4 σ_X of the truth on 6 grader-drawn datasets: 12 to 40 pairs, σ = 0.01 to 0.05 rad, 20 to 40 % outliers"""
     for seed, pairs, sigma, outliers in [
         (9700, 20, 0.01, 4),
         (9701, 40, 0.02, 16),
@@ -104,7 +107,7 @@ def test_hand_eye_with_outliers(student):
 
 @exercise("hand_eye_rotation", weight=1)
 def test_hand_eye_without_outliers(student):
-    """exact to 1e-9 rad on 6 exact pairs and on exact pairs whose axes share one plane, and within 5 σ_X on 8
+    """exact to 1e-9 rad on 6 exact pairs and on exact pairs whose axes share one plane, and within 4 σ_X on 8
     noisy pairs without outliers"""
     _judge(student, 9710, 6, 0.0, 0)
     for seed in PLANE_SEEDS:
@@ -114,14 +117,14 @@ def test_hand_eye_without_outliers(student):
 
 @exercise("hand_eye_rotation", weight=1)
 def test_hand_eye_near_degenerate(student):
-    """within 5 σ_X when every turn's axis lies within about 0.1 to 0.15 rad of one direction (with outliers)"""
+    """within 4 σ_X when every turn's axis lies within about 0.1 to 0.15 rad of one direction (with outliers)"""
     for seed, pairs, cone, outliers in [(9720, 20, 0.15, 4), (9721, 14, 0.1, 3)]:
         _judge(student, seed, pairs, 0.01, outliers, cone)
 
 
 @exercise("hand_eye_rotation", weight=1)
 def test_hand_eye_lists_and_inputs(student):
-    """accepts plain lists, leaves its inputs unchanged, and answers within 5 σ_X (16 pairs, 4 outliers)"""
+    """accepts plain lists, leaves its inputs unchanged, and answers within 4 σ_X (16 pairs, 4 outliers)"""
     As, Bs, X_true, bound, _ = _dataset(9730, 16, 0.01, 4)
     copies = [As.copy(), Bs.copy()]
     X = expect_array(student.with_timeout(SLOW).hand_eye_rotation(*copies), (3, 3), "hand_eye_rotation")
@@ -135,7 +138,7 @@ def test_hand_eye_lists_and_inputs(student):
     )
     expect(
         float(np.linalg.norm(_log(X.T @ X_true))) <= bound,
-        "X is beyond 5 σ_X of the truth",
+        "X is beyond 4 σ_X of the truth",
         "the accuracy checks of this exercise say more",
     )
     expect(

@@ -590,7 +590,7 @@ MORE_PROPOSALS = (
     "deviations settles on the same set, so X is as accurate (the answer is judged by its angle only)"
 )
 DESIGN_WITHIN_BOUND = (
-    "another estimator for an open design exercise, graded by its result alone (the angle of X within 5 σ_X of the "
+    "another estimator for an open design exercise, graded by its result alone (the angle of X within 4 σ_X of the "
     "truth on every grader-drawn dataset): proposing from fewer pairs, a tighter consensus, fewer refits or a "
     "tighter refit threshold keeps fewer good pairs or iterates less, and still meets the bound on every dataset "
     "both suites draw; the docstring promises that bound, not a method"

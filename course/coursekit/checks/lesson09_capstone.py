@@ -1,7 +1,7 @@
 """Public checks for lesson 09, section 7: the capstone, hand_eye_rotation.
 
 Judged by the result only: the angle of the returned X from the truth, on datasets drawn here with fixed seeds
-(the hidden checks draw their own), against 5 σ_X, the first-order spread of the best estimate from
+(the hidden checks draw their own), against 4 σ_X, the first-order spread of the best estimate from
 the noise and the good pairs (or 1e-9 rad for exact data).
 """
 
@@ -102,13 +102,13 @@ def _hint(X, X_true, figures=None):
 
 
 def _require_within_bound(hand_eye_rotation, seed, pairs, sigma, outliers):
-    """The answer on the dataset drawn with these figures must be within 5 σ_X of the truth."""
+    """The answer on the dataset drawn with these figures must be within 4 σ_X of the truth."""
     As, Bs, X_true, figures = _dataset(seed, pairs, sigma, outliers)
     X = _answer(hand_eye_rotation, As, Bs)
     spread = figures["spread"]
-    if _angle(X, X_true) > 5 * spread:
+    if _angle(X, X_true) > 4 * spread:
         raise Mismatch(
-            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
+            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 4 σ_X = {4 * spread:.3g} rad",
             _hint(X, X_true, figures),
         )
 
@@ -135,22 +135,22 @@ def _(hand_eye_rotation):
             )
 
 
-@public_check("hand_eye_rotation", "within 5 σ_X of the truth: 20 pairs, σ = 0.01 rad, 4 outliers")
+@public_check("hand_eye_rotation", "within 4 σ_X of the truth: 20 pairs, σ = 0.01 rad, 4 outliers")
 def _(hand_eye_rotation):
     _require_within_bound(hand_eye_rotation, 91, 20, 0.01, 4)
 
 
-@public_check("hand_eye_rotation", "within 5 σ_X of the truth: 24 pairs, σ = 0.01 rad, 6 outliers (a tight bound)")
+@public_check("hand_eye_rotation", "within 4 σ_X of the truth: 24 pairs, σ = 0.01 rad, 6 outliers (a tight bound)")
 def _(hand_eye_rotation):
     _require_within_bound(hand_eye_rotation, 93, 24, 0.01, 6)
 
 
-@public_check("hand_eye_rotation", "within 5 σ_X of the truth: only 12 pairs, σ = 0.02 rad, 4 of them outliers")
+@public_check("hand_eye_rotation", "within 4 σ_X of the truth: only 12 pairs, σ = 0.02 rad, 4 of them outliers")
 def _(hand_eye_rotation):
     _require_within_bound(hand_eye_rotation, 98, 12, 0.02, 4)
 
 
-@public_check("hand_eye_rotation", "within 5 σ_X: 30 pairs, σ = 0.03 rad, 12 outliers; accepts lists, keeps inputs")
+@public_check("hand_eye_rotation", "within 4 σ_X: 30 pairs, σ = 0.03 rad, 12 outliers; accepts lists, keeps inputs")
 def _(hand_eye_rotation):
     As, Bs, X_true, figures = _dataset(92, 30, 0.03, 12)
     spread = figures["spread"]
@@ -158,9 +158,9 @@ def _(hand_eye_rotation):
     X = _answer(hand_eye_rotation, *copies)
     if not (np.array_equal(copies[0], As) and np.array_equal(copies[1], Bs)):
         raise Mismatch("hand_eye_rotation changed its input arrays", "work on copies (np.array(x, dtype=float))")
-    if _angle(X, X_true) > 5 * spread:
+    if _angle(X, X_true) > 4 * spread:
         raise Mismatch(
-            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 5 σ_X = {5 * spread:.3g} rad",
+            f"X is {_angle(X, X_true):.3g} rad from the truth, more than 4 σ_X = {4 * spread:.3g} rad",
             _hint(X, X_true, figures),
         )
     from_lists = _answer(hand_eye_rotation, As.tolist(), Bs.tolist())
