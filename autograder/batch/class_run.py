@@ -55,6 +55,7 @@ from autograder.grading.context import GradingContext
 from autograder.grading.pipeline import GradingOptions, grade_student
 from autograder.grading.results import COULD_NOT_GRADE, MISSING, StudentResult
 from autograder.grading.nbval_stage import record_notebook_calls
+from autograder.grading.recording_lock import recording_turn
 from autograder.grading.suite import learn_reference_in_sandbox, preload_hidden_suite
 from autograder.lessons.course import Course
 from autograder.lessons.untrusted_text import one_line, safe_name
@@ -443,17 +444,20 @@ def grade_class(
     unknown = sorted(set(only) - {student_id for student_id, _ in students})
     if unknown:
         raise UnknownStudents(f"no submission folder under {path} for: {', '.join(unknown)}")
-    prewarm(course)
     cleanup.sweep_stale()  # the temporary folders of a grader that was killed mid-batch
     parts = fingerprint_parts(options, course)
     summary = RunSummary(ignored=found.skipped, layout=found.layout)
-    if options.nbval and runner is None and not canary_cached(parts):
-        # the notebook transcripts first (their runs side by side), so that the canary's notebook stage replays
-        # them instead of running every kernel a third time; a lesson whose recording failed runs its kernel
-        record_notebook_calls(course, options, lessons=options.lessons)
-    if announce:
-        announce("canary: grading the reference solutions first (once per grader version)...")
-    summary.canary = ensure_reference_passes(course, options, parts, submissions=path, output=out_dir)
+    # a cold start records the reference; another grader doing so on this machine is waited for, not repeated
+    with recording_turn(course, announce) if not canary_cached(parts) else nullcontext():
+        prewarm(course)
+        if options.nbval and runner is None and not canary_cached(parts):
+            # the notebook transcripts first (their runs side by side), so that the canary's notebook stage
+            # replays them instead of running every kernel a third time; a lesson whose recording failed runs
+            # its kernel
+            record_notebook_calls(course, options, lessons=options.lessons)
+        if announce:
+            announce("canary: grading the reference solutions first (once per grader version)...")
+        summary.canary = ensure_reference_passes(course, options, parts, submissions=path, output=out_dir)
     if announce:
         announce(describe_canary(summary.canary))
     set_output_sharing(outputs.root, share_output)
