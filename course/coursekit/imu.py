@@ -203,11 +203,11 @@ def smooth_motion(duration_s, rate_hz=None, seed=0):
     phase = rng.uniform(0.0, 2.0 * np.pi, size=(3, 3))
     t = (np.arange(n) + 0.5) * dt
     omega_b = np.sum(amp * np.sin(2.0 * np.pi * freq * t[:, None, None] + phase), axis=2)
-    steps = _exp_many(omega_b * dt)
     R_wb = np.empty((n + 1, 3, 3))
     R_wb[0] = _random_rotation(rng)
     for k in range(n):
-        R_wb[k + 1] = R_wb[k] @ steps[k]
+        # a spin about the world axis R ω_b, as lesson 03 writes one (dR/dt = [ω_w]× R with ω_w = R ω_b)
+        R_wb[k + 1] = _exp_many((R_wb[k] @ omega_b[k] * dt)[None])[0] @ R_wb[k]
     return R_wb, omega_b
 
 
