@@ -152,8 +152,8 @@ def test_two_grade_commands_on_a_fresh_machine_run_the_canary_once(tmp_path, mon
     with recording_turn(THIS_COURSE):
         for section in ("a", "b"):
             build_submission(tmp_path / section / "ana", lessons=("01",))
-            command = [sys.executable, "-m", "autograder", "grade", str(tmp_path / section), "--out"]
-            command += [str(tmp_path / f"out-{section}"), "--lessons", "01", "--jobs", "1", "--no-similarity"]
+            command = [sys.executable, "-m", "autograder", "grade", str(tmp_path / section), "--lessons", "01"]
+            command += ["--out", str(tmp_path / f"out-{section}"), "--jobs", "1", "--no-similarity", "--no-nbval"]
             runs.append(Watched(command))
         for run in runs:
             run.line_starting("waiting for another grader on this machine", seconds=180)
