@@ -74,6 +74,16 @@ REFUSED = {
         "def axis_from_eigen(R):\n    w = log_so3(R)\n    return w / np.linalg.norm(w)\n",
         "axis_from_eigen called your log_so3",
     ),
+    "own_rotation_read_off": (
+        "quat_to_matrix",
+        "def quat_to_matrix(q):\n    return np.column_stack([quat_rotate(q, e) for e in np.eye(3)])\n",
+        "quat_to_matrix called your quat_rotate",
+    ),
+    "own_product_matrices": (
+        "quat_to_matrix",
+        "def quat_to_matrix(q):\n    return (quat_left(q) @ quat_right(quat_conjugate(q)))[1:, 1:]\n",
+        "quat_to_matrix called your quat_left",
+    ),
     # a ufunc is called without any profile event: it is judged where the answer names it
     "scipy_special_ufunc": (
         "exp_so3",

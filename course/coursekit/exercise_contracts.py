@@ -74,7 +74,7 @@ def _hat(w):
 
 # Per-exercise samples where the name conventions do not give a valid (or interesting) one.
 OVERRIDES = {
-    "body_angular_velocity": {"R_dot": (np.array(_RZ) @ np.array(_hat([1, 2, 3]))).tolist()},
+    "body_angular_velocity": {"R_dot": (np.array(_hat([1, 2, 3])) @ np.array(_RZ)).tolist()},  # dR/dt = [ω_w]× R
     "quat_from_axis_angle": {"u": [0, 0, 1]},
     "align_svd": {"Q": (np.array(_POINTS) @ np.array(_RZ).T).tolist()},
     "align_gauss_newton": {"Q": (np.array(_POINTS) @ np.array(_RZ).T).tolist()},

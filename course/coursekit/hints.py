@@ -140,8 +140,7 @@ OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT = ("for opposite directions the answer is a
 POWER_ARCCOS_HINT = ("arccos(w) rounds small half-angles to 0 (cos α is 1.0 below about 1e-8): the angle must keep "
                      "its digits at every size, as your Log of lesson 03 had to")
 POWER_DEFINITION_HINT = "q^t = Exp_q(t Log_q q): write q as [cos α, sin α u] with α in [0, π], then apply the definition"
-POWER_HALF_ANGLE_HINT = ("q = [cos α, sin α u] already holds the half angle: Log_q doubles α and Exp_q halves it "
-                         "again, so q¹ must come back as q")
+POWER_HALF_ANGLE_HINT = "q¹ must come back as q, and q^½ ⊗ q^½ as q: check how the half angle enters q and Log_q"
 POWER_IDENTITY_HINT = "at the identity |v| = 0: guard the division (any axis will do there)"
 POWER_SIGN_FLIP_HINT = ("q and -q are one rotation but not one quaternion: -q has half-angle π - α about -u, so its "
                         "powers turn the other way; do not flip the sign of q")
@@ -344,7 +343,8 @@ UPDATE_FINITE_DIFFERENCES_HINT = ("right to several digits but not to rounding: 
                                   "and a Jacobian taken by finite differences is not; derive H")
 NEES_NOT_DIVIDED_HINT = "the NEES is the full quadratic form, not divided by the dimension"
 PREDICT_NO_TURN_R_HINT = "with ω = 0 the step turns nothing: R_new must be R itself, to the last bits"
-PREDICT_NO_TURN_P_HINT = "with ω = 0 the step turns nothing: P grows by the gyro noise's covariance over dt alone"
+PREDICT_NO_TURN_P_HINT = ("with ω = 0 the step turns nothing: P grows only by the turn the gyro noise makes over one "
+                          "step of dt")
 UPDATE_WRONG_SIDE_HINT = "the correction is applied on the wrong side: the error state is R_true = R Exp(ε)"
 
 # ---------------------------------------------------------------- checks/lesson09_compound.py
@@ -366,6 +366,6 @@ EDGE_FINITE_DIFFERENCES_HINT = ("your Jacobian agrees with finite differences bu
                                 "asks for the exact Jacobian; finite differences check a derivation, they do not "
                                 "replace it")
 EDGE_NOT_INVERTED_HINT = "Log's Jacobian at r is the inverse of Exp's right Jacobian there, not the Jacobian itself"
-EDGE_SIGN_HINT = ("the sign: J_i is the negative of a central difference of the residual in δ_i (T_i appears inverted "
+EDGE_SIGN_HINT = ("the sign: your J_i is the negative of a central difference of the residual in δ_i (T_i appears inverted "
                   "in the residual)")
 

@@ -182,6 +182,7 @@ LESSON_EXTRAS = {"09": ("scipy.spatial.transform", "scipy.linalg", "scipy.stats"
 # other function of the notebook is the student's own work and free to call).
 OWN_FORBIDDEN = {
     "axis_from_eigen": ("log_so3", "axis_angle"),  # the axis must come from the eigenvector
+    "quat_to_matrix": ("quat_rotate", "quat_left", "quat_right"),  # R(q) is to be written out, not evaluated
     "quat_power": ("quat_slerp",),  # quat_slerp does this exercise's job
     "right_jacobian_so3": ("right_jacobian_inv_so3",),  # the printed J_r⁻¹, inverted, is not a derivation
     "exp_se3": ("log_se3",),

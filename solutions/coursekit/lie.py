@@ -124,7 +124,7 @@ def JrSE3(xi):
     Defined by Exp(ξ + dξ) ≈ Exp(ξ) Exp(J_r(ξ) dξ) for small dξ, and computed from that definition:
     column j is the twist of Exp(ξ)⁻¹ times the derivative of Exp along e_j, read exactly from the
     exponential of the block matrix [[ξ^, e_j^], [0, ξ^]] (Van Loan's way to differentiate expm; no
-    formula for J_r is written out). All six exponentials are taken in one batched call.
+    formula for J_r is written out). These six and Exp(−ξ), the inverse, are taken in one batched call.
     Its inverse is the Jacobian of Log: Log(Exp(ξ) Exp(δ)) ≈ ξ + J_r(ξ)⁻¹ δ.
 
     Examples
@@ -141,14 +141,13 @@ def JrSE3(xi):
     # part of every twist by c and leaves phi alone, so it scales the columns and rows of J_r that mix the two.
     size = max(1.0, float(np.linalg.norm(twist[:3])))
     base = _twist_matrix(np.concatenate([twist[:3] / size, twist[3:]]))
-    blocks = np.zeros((6, 8, 8))
-    blocks[:, :4, :4] = blocks[:, 4:, 4:] = base
+    blocks = np.zeros((7, 8, 8))
+    blocks[:6, :4, :4] = blocks[:6, 4:, 4:] = base
     for j, direction in enumerate(np.eye(6)):
         blocks[j, :4, 4:] = _twist_matrix(direction)
+    blocks[6, :4, :4] = -base  # its exponential is the pose's inverse
     exponentials = expm(blocks)
-    pose, derivatives = exponentials[0, :4, :4], exponentials[:, :4, 4:]
-    inverse = np.eye(4)
-    inverse[:3, :3], inverse[:3, 3] = pose[:3, :3].T, -pose[:3, :3].T @ pose[:3, 3]
+    inverse, derivatives = exponentials[6, :4, :4], exponentials[:6, :4, 4:]
     J = np.column_stack([_vee_twist(inverse @ derivative) for derivative in derivatives])
     J[:3, 3:] *= size
     return J

@@ -21,7 +21,7 @@ WORLD_DIFFERENCE = np.array([[0.0, 0.0, 1.0, 3.0], [0.0, 1.0, 0.0, -3.0], [-1.0,
 TRANSPOSED = np.array([[1.0, 0.0, 0.0, -1.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [2.0, 0.0, 1.0, 2.0]])
 REVERSED = np.array([[1.0, 0.0, 0.0, 3.0], [0.0, 0.0, 1.0, -2.0], [0.0, -1.0, 0.0, -2.0], [0.0, 0.0, 0.0, 1.0]])
 UNROTATED = np.array([[1.0, 0.0, 0.0, 2.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
-WORLD_HINT = ("that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain (b, then w), so "
+WORLD_HINT = ("that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain (b, then a), so "
               "T_wa T_ab misses T_wb")
 TRANSPOSED_HINT = hints.INVERSE_POSE_TRANSPOSE_T1_HINT
 REVERSED_HINT = hints.RELATIVE_POSE_REVERSED_HINT

@@ -219,13 +219,16 @@ NO_TRANSPORT_HINT = (
     "when T2 = I and wrong otherwise"
 )
 WRONG_WAY_HINT = (
-    "the adjoint goes the other way: S is right when T2 = I and wrong for a turned or shifted T2; compare it "
+    "S is right when T2 = I and wrong for a turned or shifted T2, in the direction ξ1 is carried; compare it "
     "with the spread of simulated chains"
 )
-OTHER_POSE_HINT = "ξ1 crosses T2, not T1: the adjoint that moves it belongs to the factor it passes"
+OTHER_POSE_HINT = (
+    "S changes with T1 and should not, and misses what T2 does: which of the two poses does ξ1 have to cross? "
+    "Compare with simulated chains"
+)
 ROTATION_ONLY_HINT = (
-    "turning both halves of the twist by R2ᵀ forgets that a spin about T1's origin also shifts "
-    "T2's origin: the adjoint of a pose has a coupling block"
+    "S is right for a T2 that only turns and wrong once T2 also shifts: a spin about T1's origin moves "
+    "T2's origin too; compare with simulated chains"
 )
 ONE_SIDED_HINT = "a covariance takes the linear map on both sides: J S Jᵀ (the result must be symmetric)"
 SLIPS = [
