@@ -15,8 +15,8 @@ def quat_power(q, t):
     axis = q[1:] / s if s > 0.0 else np.array([1.0, 0.0, 0.0])
     return np.concatenate([[np.cos(t * theta)], np.sin(t * theta) * axis])
 """,
-        hint="already holds the half angle",
-        public_hint="already holds the half angle",
+        hint="how the half angle enters q",
+        public_hint="how the half angle enters q",
     ),
     Mistake(
         "power_arccos",

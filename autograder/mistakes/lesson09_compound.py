@@ -51,7 +51,7 @@ def compound_pose_covariance(T1, S1, T2, S2):
         "Ad(T2) instead of Ad(T2⁻¹)",
         _compound(adjoint="AdSE3(T2)"),
         hint="the adjoint goes the other way",
-        public_hint="the adjoint goes the other way",
+        public_hint="in the direction ξ1 is carried",
     ),
     Mistake(
         "compound_other_pose",
@@ -59,7 +59,7 @@ def compound_pose_covariance(T1, S1, T2, S2):
         "Ad(T1⁻¹): the adjoint of the wrong factor",
         _compound(adjoint="AdSE3(np.linalg.inv(T1))"),
         hint="belongs to the factor it passes",
-        public_hint="belongs to the factor it passes",
+        public_hint="which of the two poses does ξ1 have to cross",
     ),
     Mistake(
         "compound_rotation_only",
@@ -67,7 +67,7 @@ def compound_pose_covariance(T1, S1, T2, S2):
         "diag(R2ᵀ, R2ᵀ): the coupling block forgotten",
         _compound(adjoint="np.kron(np.eye(2), T2[:3, :3].T)"),
         hint="coupling block",
-        public_hint="coupling block",
+        public_hint="a spin about T1's origin moves",
     ),
     Mistake(
         "compound_one_sided",
