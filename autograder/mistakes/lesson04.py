@@ -172,7 +172,7 @@ def matrix_to_quat(R):
     return np.array([w, x, y, z])
 """,
         hint="cannot be small",
-        public_hint="cannot be small",
+        public_hint="dividing by 4w fails",
     ),
     Mistake(
         "matrix_to_quat_no_canonical",

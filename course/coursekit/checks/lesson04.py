@@ -374,12 +374,12 @@ def _(matrix_to_quat):
     got = matrix_to_quat(np.diag([1.0, -1.0, -1.0]))
     problem = shape_problem(got, (4,))
     if problem == "returned NaN or inf values":
-        raise Mismatch(problem, "at θ = π, w = 0 and dividing by 4w fails: divide only by a component that cannot be small")
+        raise Mismatch(problem, "at θ = π, w = 0 and dividing by 4w fails")
     got = require_shape(got, (4,))
     if not same_rotation_quat(got, I_, 1e-12):
         hint = quaternion_hint(got, I_)
         if hint is None and np.max(np.abs(got[1:])) < 1e-6:
-            hint = "the vector part vanished at θ = π, where R - Rᵀ = 0: divide only by a component that cannot be small"
+            hint = "the vector part vanished at θ = π, where R - Rᵀ = 0"
         raise Mismatch(f"got {fmt(got)}, expected ±[0, 1, 0, 0]", hint)
 
 
@@ -439,7 +439,7 @@ def _(matrix_to_quat):
                 hint = FLOAT32_HINT
             raise Mismatch(f"the rotation of q = {fmt(q)} gave {fmt(got)} ({off_by(got, q)})",
                            hint or (f"this rotation turns by nearly π (w = {q[0]:.0e}): a component you divide by was "
-                                    "small here; divide only by a component that cannot be small" if q[0] < 1e-3 else
+                                    "small here" if q[0] < 1e-3 else
                                     "one of the components is wrong although the angle is far from π: compare the "
                                     "rotation of your quaternion with the input, entry by entry"))
 
