@@ -113,7 +113,16 @@ def test_a_wait_past_the_timeout_goes_on_without_the_lock(tmp_path, monkeypatch)
     with recording_turn(THIS_COURSE):
         said = _other_grader(tmp_path / "cache", timeout=0.5).rest(seconds=60)
     assert said[0].startswith("waiting for another grader on this machine"), said
-    assert said[1:] == ["still locked after 0 s: recording the reference in this run too", "not held"], said
+    assert said[1:] == ["still locked after 0.5 s: recording the reference in this run too", "not held"], said
+
+
+def test_a_lock_file_of_garbage_only_loses_the_pid_from_the_message(tmp_path, monkeypatch):
+    monkeypatch.setenv("AUTOGRADER_CACHE", str(tmp_path / "cache"))
+    with recording_turn(THIS_COURSE):
+        recording_lock.lock_path(THIS_COURSE).write_bytes(b"\xff\xfe not a pid")
+        said = _other_grader(tmp_path / "cache", timeout=0.5).rest(seconds=60)
+    assert said[0].startswith("waiting for another grader on this machine that is recording"), said
+    assert said[-1] == "not held", said
 
 
 def test_a_cache_folder_that_cannot_hold_a_lock_costs_nothing(tmp_path, monkeypatch):

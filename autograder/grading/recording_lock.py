@@ -49,7 +49,7 @@ def _holder(handle) -> str:
     try:
         handle.seek(0)
         pid = handle.read(20).strip()
-    except OSError:
+    except (OSError, ValueError):  # unreadable, or not ASCII: the message goes without the pid
         return ""
     return f" (pid {pid})" if pid.isdigit() else ""
 
@@ -94,7 +94,7 @@ def recording_turn(
                     )
             if time.monotonic() > deadline:
                 if announce:
-                    announce(f"still locked after {timeout:.0f} s: recording the reference in this run too")
+                    announce(f"still locked after {timeout:g} s: recording the reference in this run too")
                 break
             time.sleep(POLL_SECONDS)
         if held:
