@@ -5,7 +5,7 @@ small standard helpers, the student's own functions, and the course tools its le
 ``coursekit.watching.watch_call`` refuses anything else by construction, whatever library it comes
 from. Oracles: answers that hand the work to scipy's ``expm``, a scipy ``Rotation`` method, a made-up
 "next library", ``importlib``, an import inside the function, a helper that calls scipy, the
-student's own other exercise that does this one's job, a thread: each is refused with its one line,
+student's own other exercise that does this one's job or comes later in the lesson, a thread: each is refused with its one line,
 in the check cell (in this process) and through the real sandbox (the hidden suite). Answers that use
 numpy only, math, their own helpers and earlier exercises, and coursekit.lie where the lesson allows
 it pass; every reference answer and every correct alternative pass under their own allowance
@@ -74,6 +74,18 @@ REFUSED = {
         "def axis_from_eigen(R):\n    w = log_so3(R)\n    return w / np.linalg.norm(w)\n",
         "axis_from_eigen called your log_so3",
     ),
+    # a later exercise builds on this one: calling it skips this one's step, whichever exercise it is
+    "own_later_exercise": (
+        "quat_power",
+        "def quat_power(q, t):\n    return quat_slerp(np.array([1.0, 0.0, 0.0, 0.0]), q, t)\n",
+        "quat_power called your quat_slerp",
+    ),
+    "own_later_exercise_through_a_helper": (
+        "exp_series",
+        "def _closed_form(W):\n    return exp_so3(vee(W))\n\n"
+        "def exp_series(W, n_terms=20):\n    return _closed_form(np.asarray(W, dtype=float))\n",
+        "exp_series called your exp_so3",
+    ),
     "own_rotation_read_off": (
         "quat_to_matrix",
         "def quat_to_matrix(q):\n    return np.column_stack([quat_rotate(q, e) for e in np.eye(3)])\n",
@@ -122,6 +134,10 @@ ALLOWED = {
         "def exp_so3(w):\n    w = np.asarray(w, dtype=float)\n    W = hat(w)\n"
         "    a, b = _coefficients(float(np.linalg.norm(w)))\n    return np.eye(3) + a * W + b * (W @ W)\n",
     ),
+    "earlier_exercise": (
+        "quat_inverse",
+        "def quat_inverse(q):\n    q = np.asarray(q, dtype=float)\n    return quat_conjugate(q) / np.dot(q, q)\n",
+    ),
     "coursekit_lie_where_the_lesson_uses_it": (
         "boxplus_right",
         "from coursekit.lie import Exp\n\ndef boxplus_right(R, delta):\n"
@@ -151,12 +167,17 @@ def test_the_allowance_is_stated_per_exercise():
     assert "coursekit.lie" in allowance_for("boxplus_right", "06").modules
     assert not any(m.startswith("scipy") for m in allowance_for("exp_se3", "07").modules)
     assert "scipy.spatial.transform" in allowance_for("integrate_gyro", "09").modules
-    assert allowance_for("axis_from_eigen", "03").own == ("log_so3", "axis_angle")
+    # the own functions off the list: the lesson's later exercises, then the earlier ones that do the job
+    assert allowance_for("axis_from_eigen", "03").own == ("body_angular_velocity", "log_so3", "axis_angle")
+    assert allowance_for("hat", "03").own[:2] == ("vee", "bracket")
+    assert allowance_for("body_angular_velocity", "03").own == ()
+    assert allowance_for("quat_inverse", "04").own[0] == "quat_from_axis_angle"
+    assert "quat_conjugate" not in allowance_for("quat_inverse", "04").own
     assert guard_for("hat", "03") == ("allowance:hat:03", "coursekit.lie.skew")
     line = refusal("exp_so3", ["scipy.linalg._matfuncs.expm"], "03")
     assert line == (
         "exp_so3 called scipy.linalg.expm: an answer to exp_so3 may use numpy, math and your own functions "
-        "(see the start page)"
+        "except later exercises (see the start page)"
     )
     assert DELEGATED_HINT.startswith("write the exercise with numpy yourself")  # the mistakes' hint substring
 

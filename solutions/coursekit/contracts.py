@@ -9,8 +9,10 @@
   small standard helpers, the student's own functions, and the course tools its
   lesson's text uses); anything else is refused, whatever library it comes from.
   Within that, :data:`FORBIDDEN` lists the library functions that do the
-  exercise's own job (``coursekit.lie.ExpSE3`` for ``exp_se3`` in lesson 07) and
-  :data:`OWN_FORBIDDEN` the student's other exercises that do it.
+  exercise's own job (``coursekit.lie.ExpSE3`` for ``exp_se3`` in lesson 07). Of the
+  student's own functions, the answers to the lesson's *later* exercises are off the list
+  (they build on this one, so calling one would skip its step), and :data:`OWN_FORBIDDEN`
+  names the few earlier ones that do this exercise's job.
 
 :func:`coursekit.watching.watch_call` sees both; the check cells and the
 grader's sandbox use it with this list and say what they saw in the same words
@@ -27,6 +29,8 @@ Examples
 >>> forbidden_for("boxplus_right")
 ()
 """
+
+from .exercise_contracts import later_exercises
 
 __all__ = [
     "FORBIDDEN",
@@ -178,20 +182,20 @@ PLAIN = (
 LIE_FROM_LESSON = "06"  # lessons 06-09 build on coursekit.lie (FORBIDDEN still keeps each exercise's own job)
 LESSON_EXTRAS = {"09": ("scipy.spatial.transform", "scipy.linalg", "scipy.stats")}  # lesson 09's text uses them
 
-# The student's own functions of other exercises that do this exercise's job (a closed set; any
-# other function of the notebook is the student's own work and free to call).
+# The student's own functions: an answer may call its lesson's earlier exercises and any helper of the
+# notebook, never a later exercise (later exercises build on earlier ones: slerp contains q^t, J_r⁻¹ inverts
+# J_r, Rodrigues' exp_so3 sums exp_series' series), whichever it is. Earlier exercises are free, except
+# these, which do this exercise's own job.
 OWN_FORBIDDEN = {
     "axis_from_eigen": ("log_so3", "axis_angle"),  # the axis must come from the eigenvector
     "quat_to_matrix": ("quat_rotate", "quat_left", "quat_right"),  # R(q) is to be written out, not evaluated
-    "quat_power": ("quat_slerp",),  # quat_slerp does this exercise's job
-    "right_jacobian_so3": ("right_jacobian_inv_so3",),  # the printed J_r⁻¹, inverted, is not a derivation
-    "exp_se3": ("log_se3",),
 }
 
 
 class Allowance:
     """What an answer to ``exercise`` (of ``lesson``) may call: ``modules`` (names, each with its
-    submodules), every function of the notebook except those in ``own``."""
+    submodules), every function of the notebook except those in ``own`` (the lesson's later exercises,
+    then the earlier ones of :data:`OWN_FORBIDDEN`)."""
 
     def __init__(self, exercise, lesson, modules, own):
         self.exercise, self.lesson, self.modules, self.own = exercise, lesson, tuple(modules), tuple(own)
@@ -203,7 +207,12 @@ class Allowance:
         if set(INVERSES) <= set(forbidden_for(self.exercise)):
             numpy = "numpy (without np.linalg's inverses and solvers)"
         tools = ", ".join([numpy, "math"] + extra)
-        return f"{tools} and your own functions"
+        later = later_exercises(self.exercise)
+        barred = ["later exercises"] if later else []
+        barred += [name for name in self.own if name not in later]
+        if not barred:
+            return f"{tools} and your own functions"
+        return f"{tools} and your own functions except {' and '.join(barred)}"
 
     def __repr__(self):
         return (
@@ -214,18 +223,20 @@ class Allowance:
 def allowance_for(exercise, lesson=""):
     """The :class:`Allowance` of ``exercise`` in ``lesson`` (``"03"``).
 
-    >>> allowance_for("exp_so3", "03").describe()
+    >>> allowance_for("body_angular_velocity", "03").describe()
     'numpy, math and your own functions'
     >>> allowance_for("pose_compose", "07").describe()
-    'numpy, math, coursekit.lie and your own functions'
+    'numpy, math, coursekit.lie and your own functions except later exercises'
     >>> allowance_for("exp_se3", "07").describe()
-    "numpy (without np.linalg's inverses and solvers), math, coursekit.lie and your own functions"
+    "numpy (without np.linalg's inverses and solvers), math, coursekit.lie and your own functions except later exercises"
+    >>> allowance_for("axis_from_eigen", "03").describe()
+    'numpy, math and your own functions except later exercises and log_so3 and axis_angle'
     """
     modules = PLAIN
     if str(lesson) >= LIE_FROM_LESSON:
         modules += ("coursekit.lie",)
     modules += LESSON_EXTRAS.get(str(lesson), ())
-    return Allowance(exercise, str(lesson), modules, OWN_FORBIDDEN.get(exercise, ()))
+    return Allowance(exercise, str(lesson), modules, later_exercises(exercise) + OWN_FORBIDDEN.get(exercise, ()))
 
 
 def guard_for(exercise, lesson):
@@ -241,8 +252,11 @@ def guard_for(exercise, lesson):
 def refusal(exercise, used, lesson=""):
     """The one line a refused answer gets, in the check cell and in the grader's feedback.
 
-    >>> refusal("exp_so3", ["scipy.linalg._matfuncs.expm"], "03")
-    'exp_so3 called scipy.linalg.expm: an answer to exp_so3 may use numpy, math and your own functions (see the start page)'
+    >>> done, rule = refusal("exp_so3", ["scipy.linalg._matfuncs.expm"], "03").split(": ")
+    >>> done
+    'exp_so3 called scipy.linalg.expm'
+    >>> rule
+    'an answer to exp_so3 may use numpy, math and your own functions except later exercises (see the start page)'
     """
     used = [used] if isinstance(used, str) else list(used)
     done = ", ".join(_shown(name) for name in used)

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["contract_of", "contract_problem", "covered", "sample_arguments", "sample_sets", "FORMS", "REGIMES"]
+__all__ = ["contract_of", "later_exercises", "contract_problem", "covered", "sample_arguments", "sample_sets", "FORMS", "REGIMES"]
 
 DESCRIPTION = "keeps its docstring's contract (lists, tuples, integer and read-only input; return type, dtype, shape)"
 FORMS = ("float arrays", "nested lists", "tuples", "integer arrays", "read-only arrays")
@@ -117,6 +117,20 @@ def _contracts():
 def contract_of(exercise):
     """The contract of ``exercise`` (a dict: ``params``, ``returns``), or None."""
     return _contracts().get(exercise)
+
+
+def later_exercises(exercise):
+    """The exercises of ``exercise``'s lesson that come after it, in order (a tuple; empty when unknown).
+
+    >>> later_exercises("right_jacobian_so3")[:2]
+    ('right_jacobian_inv_so3', 'jacobian_point_to_body')
+    """
+    contracts = _contracts()
+    if exercise not in contracts:
+        return ()
+    lesson = contracts[exercise]["lesson"]
+    names = [name for name, contract in contracts.items() if contract["lesson"] == lesson]
+    return tuple(names[names.index(exercise) + 1 :])
 
 
 def _array_sample(name, shape, counters, regime="quarter turns"):
