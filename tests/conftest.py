@@ -88,6 +88,7 @@ LAST_FILES = ("test_student_floor_grading.py",)  # when $STUDENT_FLOOR_OUT names
 QUICK = (
     # the course as the grader reads it, and its release
     "tests/test_catalog.py::",
+    "tests/test_coursekit_doctests.py::",
     "tests/test_release.py::test_course_is_in_sync_with_solutions",
     "tests/test_release.py::test_no_solution_code_in_course",
     "tests/test_release.py::test_released_answers_are_stubs_and_checks_are_locked",

@@ -366,7 +366,7 @@ def draw_slope(ax, x, anchor, slope, label=None, color="0.45"):
     Examples
     --------
     >>> fig, ax = plt.subplots()
-    >>> ax.loglog([1e-4, 1e-1], [1e-8, 1e-2])
+    >>> _ = ax.loglog([1e-4, 1e-1], [1e-8, 1e-2])
     >>> draw_slope(ax, [1e-4, 1e-1], (1e-4, 1e-8), 2, label="slope 2")
     """
     x = np.asarray(x, dtype=float)
