@@ -4,7 +4,7 @@ The error state is the right perturbation, R_true = R Exp(ε). Oracles: the defi
 
 - filter_predict: R_new = R Exp(ω Δt) to 1e-12; P_new the first-order covariance of ε' with
   R_new Exp(ε') = R Exp(ε) Exp((ω - n) Δt), n ~ N(0, Q), to 2e-12 of max |P_new|, for steps |ω Δt| at every decade
-  from 1e-12 to π (and just below 1e-6, 1e-3, 0.1), and the docstring's special value P + dt² Q at ω = 0 to 1e-14.
+  from 1e-12 to π (and just below 1e-6, 1e-3, 0.1), and the step that does not turn (ω = 0: P + dt² Q) to 1e-14.
   The oracle is exact: the old error crosses the step as Exp(-ω Δt), the noise enters through ∫₀¹ Exp(-s ω Δt) ds Δt,
   that integral read off scipy's matrix exponential of a 6 × 6 block matrix (no closed form);
   tests/test_hidden_oracles_lesson09.py holds it against central differences of the definition. First-order
@@ -175,7 +175,7 @@ def test_predict_attitude(student):
 
 @exercise("filter_predict", weight=1)
 def test_predict_no_turn(student):
-    """the docstring's special value: with ω = 0, R_new = R and P_new = P + dt² Q, to 1e-14 (generic R, P, Q)"""
+    """with ω = 0: R_new = R, and P_new is P plus one step's gyro noise, to 1e-14 (generic R, P, Q)"""
     rng = np.random.default_rng(9130)
     for dt in (0.005, 0.1, 0.5):
         R, P, Q = _exp(rng.uniform(0.2, 3.0) * _unit(rng)), _covariance(rng, 1e-3), _covariance(rng, 1e-2)

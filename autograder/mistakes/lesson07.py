@@ -555,15 +555,6 @@ def make_pose(R, t):
 """,
     ),
     Alternative(
-        "pose_inverse_solve",
-        "pose_inverse",
-        "np.linalg.inv of the 4×4 matrix",
-        """
-def pose_inverse(T):
-    return np.linalg.inv(np.asarray(T, dtype=float))
-""",
-    ),
-    Alternative(
         "transform_points_homogeneous",
         "transform_points",
         "through homogeneous coordinates",

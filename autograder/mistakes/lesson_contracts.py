@@ -81,8 +81,19 @@ def right_jacobian_so3(w):
         c = 1.0 / theta**2 - (1.0 + np.cos(theta)) / (2.0 * theta * np.sin(theta))
     return np.linalg.inv(np.eye(3) + W / 2.0 + c * (W @ W))
 """,
-        hint="inverting an inverse that the lesson prints",
-        public_hint="inverting an inverse that the lesson prints",
+        hint="a general inverse or solver finds the numbers",
+        public_hint="a general inverse or solver finds the numbers",
+    ),
+    Mistake(
+        "pose_inverse_general_inverse",
+        "pose_inverse",
+        "np.linalg.inv of the 4×4 matrix, where the exercise asks for the blocks built from R and t",
+        """
+def pose_inverse(T):
+    return np.linalg.inv(np.asarray(T, dtype=float))
+""",
+        hint="a general inverse or solver finds the numbers",
+        public_hint="a general inverse or solver finds the numbers",
     ),
     Mistake(
         "exp_se3_solves_with_the_printed_V_inverse",
@@ -103,8 +114,8 @@ def exp_se3(xi):
     T[:3, 3] = np.linalg.solve(np.eye(3) - W / 2.0 + c * (W @ W), rho)
     return T
 """,
-        hint="inverting an inverse that the lesson prints",
-        public_hint="inverting an inverse that the lesson prints",
+        hint="a general inverse or solver finds the numbers",
+        public_hint="a general inverse or solver finds the numbers",
     ),
     Mistake(
         "axis_from_eigen_complex",

@@ -48,8 +48,8 @@ __all__ = [
 SCIPY_ROTATIONS = ("scipy.spatial.transform",)  # Rotation, Slerp, RotationSpline
 MATRIX_FUNCTIONS = ("scipy.linalg.expm", "scipy.linalg.logm", "scipy.linalg.expm_frechet")
 EXP_LOG = ("coursekit.lie.Exp", "coursekit.lie.Log")
-# numpy's inverses and solvers: where the page prints the inverse of an exercise's answer (J_r⁻¹ in
-# lesson 06, V⁻¹ in lesson 07), inverting it numerically would skip the derivation
+# numpy's inverses and solvers: where the inverse is the exercise's job (pose_inverse) or the page prints the
+# inverse of an exercise's answer (J_r⁻¹ in lesson 06, V⁻¹ in lesson 07), inverting numerically skips the derivation
 # (and their kernels, numpy.linalg._umath_linalg's gufuncs, which no profile event shows being called:
 # coursekit.watching judges them where the code names them)
 INVERSES = tuple(
@@ -88,6 +88,7 @@ FORBIDDEN = {
     "right_jacobian_so3": ("coursekit.lie.JrSE3", "coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS + INVERSES,
     "right_jacobian_inv_so3": ("coursekit.lie.JrSE3", "coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
     # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)
+    "pose_inverse": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + INVERSES,  # the inverse is the job
     "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS + INVERSES,
     "log_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS,
     # lesson 07, section 10: the adjoint and the Jacobian of Exp are the job (Ad_Exp(ξ) = Jr(-ξ) Jr(ξ)⁻¹, and
@@ -111,8 +112,8 @@ DELEGATED_HINT = (
 
 
 INVERTED_HINT = (
-    "derive the answer itself, from your own closed form and numpy's arithmetic: inverting an inverse "
-    "that the lesson prints is not a derivation"
+    "derive the answer itself, from your own closed form and numpy's arithmetic: a general inverse or solver "
+    "finds the numbers without the derivation"
 )
 
 

@@ -9,6 +9,7 @@ pose's rotation changes, agreement with the Jacobian of the other perturbation. 
 """
 
 import numpy as np
+from scipy.linalg import expm
 
 from .. import hints
 from ..checking import Mismatch, public_check
@@ -144,6 +145,37 @@ def _(jacobian_transform_point):
     if not close(J, numeric, 1e-6):
         raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
                        _point_hint(J, numeric, T_QUARTER, POINT))
+
+
+def _exact_point_jacobian(T, p):
+    """The derivative of T Exp(ξ) [p; 1] at ξ = 0, exact to rounding: the complex-step derivative
+    Im f(i h e_j) / h, which subtracts nothing and so takes h = 1e-30, through scipy's matrix exponential."""
+    p_h = np.append(np.asarray(p, dtype=float), 1.0)
+    columns = []
+    for e in np.eye(6):
+        twist = np.zeros((4, 4), dtype=complex)
+        twist[:3, :3], twist[:3, 3] = skew(e[3:]) * 1e-30j, e[:3] * 1e-30j
+        columns.append(np.imag(T @ expm(twist) @ p_h)[:3] / 1e-30)
+    return np.column_stack(columns)
+
+
+@public_check("jacobian_transform_point", "exact to rounding, 1e-12 max(1, |p|), which finite differences are not "
+              "(|p| = 1 m and 1 km)")
+def _(jacobian_transform_point):
+    for size in (1.0, 1e3):
+        p = size * POINT / np.linalg.norm(POINT)
+        J = require_shape(jacobian_transform_point(T_QUARTER, p), (3, 6), "jacobian_transform_point(T, p)")
+        exact = _exact_point_jacobian(T_QUARTER, p)
+        tol = 1e-12 * max(1.0, size)
+        if close(J, exact, tol):
+            continue
+        if close(J, exact, 1e-5 * max(1.0, size)):
+            hint = ("close, but not exact: a finite-difference or truncated estimate; the blocks of the derivative "
+                    "can be written out exactly")
+        else:
+            numeric = central_differences(lambda xi: (T_QUARTER @ ExpSE3(xi) @ np.append(p, 1.0))[:3], 6)
+            hint = _point_hint(J, numeric, T_QUARTER, p)
+        raise Mismatch(f"for |p| = {size:g} m it is off by {np.max(np.abs(J - exact)):.2g} (tolerance {tol:.2g})", hint)
 
 
 @public_check("jacobian_transform_point", "accepts plain lists and leaves its inputs unchanged")

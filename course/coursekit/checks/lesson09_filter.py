@@ -287,14 +287,14 @@ def _(filter_predict):
         )
 
 
-@public_check("filter_predict", "with ω = 0: R_new = R and P_new = P + dt² Q, to 1e-14 (the docstring's example)")
+@public_check("filter_predict", "with ω = 0: R_new = R, and P_new is P plus one step's gyro noise, to 1e-14")
 def _(filter_predict):
     R_new, P_new = _pair(filter_predict(R_GENERIC, P0, np.zeros(3), DT, Q_GYRO), "filter_predict")
     if not close(R_new, R_GENERIC, 1e-14):
         raise Mismatch(f"with ω = 0 R_new is not R ({off_by(R_new, R_GENERIC)})", hints.PREDICT_NO_TURN_R_HINT)
     expected = P0 + DT * DT * Q_GYRO
     if not close(P_new, expected, 1e-14 * np.max(np.abs(expected))):
-        raise Mismatch(f"with ω = 0 P_new is not P + dt² Q ({off_by(P_new, expected)})", hints.PREDICT_NO_TURN_P_HINT)
+        raise Mismatch(f"with ω = 0 P_new is off ({off_by(P_new, expected)})", hints.PREDICT_NO_TURN_P_HINT)
 
 
 @public_check("filter_predict", "accepts plain lists and nested tuples")
