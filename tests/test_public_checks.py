@@ -66,3 +66,30 @@ def test_a_crashing_answer_is_reported_not_raised_raw(kit, capsys):
     with pytest.raises(CheckFailed):
         coursekit.check("rot_x", lambda a: 1 / 0)
     assert "raised ZeroDivisionError" in capsys.readouterr().out
+
+
+FINITE_DIFFERENCE_POINT_JACOBIAN = """
+from coursekit.lie import ExpSE3
+
+def jacobian_transform_point(T, p):
+    T, p_h = np.asarray(T, dtype=float), np.append(np.asarray(p, dtype=float), 1.0)
+    h = 1e-6
+    columns = [((T @ ExpSE3(h * e) @ p_h) - (T @ ExpSE3(-h * e) @ p_h))[:3] / (2 * h) for e in np.eye(6)]
+    return np.column_stack(columns)
+"""
+
+
+def test_an_inexact_derivative_is_a_cross_in_the_check_cell_and_a_loss_when_graded(tmp_path):
+    """A ✓ predicts the hidden grade: central differences come within 1e-9 of jacobian_transform_point's exact
+    answer, which the hidden suite holds to 1e-12 |p|; the check cell must say ✗, and say it is close but inexact."""
+    from public_runner import run_public_checks
+    from support import build_submission, grade
+
+    passed, printed = run_public_checks(THIS_COURSE, "jacobian_transform_point", FINITE_DIFFERENCE_POINT_JACOBIAN)
+    assert not passed
+    assert "✗ exact to rounding" in printed and "close, but not exact" in printed, printed
+    folder = build_submission(
+        tmp_path / "student", {"jacobian_transform_point": FINITE_DIFFERENCE_POINT_JACOBIAN}, lessons=("07",)
+    )
+    [graded] = [e for e in grade(folder, lessons=("07",)).exercises if e.name == "jacobian_transform_point"]
+    assert graded.points < graded.max_points
