@@ -21,6 +21,8 @@ hidden test::
 
 from __future__ import annotations
 
+import contextlib
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -66,27 +68,59 @@ def fmt(value: object, digits: int = 4) -> str:
     return " ".join(text.split())
 
 
-def expect(condition: object, reason: str, hint: str = "") -> None:
-    """Raise :class:`Wrong` unless ``condition``."""
+_NOT_ENFORCED = [False]
+
+
+@contextlib.contextmanager
+def checks_not_enforced():
+    """While inside, :func:`fail` (so :func:`expect`, :func:`expect_close` and the checks built on
+    :func:`fail`) returns instead of raising, so a test runs on past a failed check.
+
+    Only the grader's second recording of the reference uses it (answers nudged by 1e-14, which a check
+    as tight as the nudge rejects; :func:`autograder.grading.suite.transcripts_for`): it needs every call
+    the test would make, not a verdict. A ``raise Wrong`` written in a test still stops it.
+    """
+    _NOT_ENFORCED[0] = True
+    try:
+        yield
+    finally:
+        _NOT_ENFORCED[0] = False
+
+
+def fail(reason: str, hint: str | Callable[[], str] = "") -> None:
+    """Raise :class:`Wrong` (``hint`` called first when it is a function), except under
+    :func:`checks_not_enforced`."""
+    if _NOT_ENFORCED[0]:
+        return
+    raise Wrong(reason, hint() if callable(hint) else hint)
+
+
+def expect(condition: object, reason: str, hint: str | Callable[[], str] = "") -> None:
+    """Raise :class:`Wrong` unless ``condition``.
+
+    ``hint`` may be a function of no arguments, called only on a failure: naming a slip can cost more
+    than the check, and a passing answer should not pay for it.
+    """
     if not condition:
-        raise Wrong(reason, hint)
+        fail(reason, hint)
 
 
 def expect_close(
-    got: ArrayLike, expected: ArrayLike, tol: float, what: str, hint: str = "", scale: float = 1.0
+    got: ArrayLike, expected: ArrayLike, tol: float, what: str, hint: str | Callable[[], str] = "", scale: float = 1.0
 ) -> None:
     """Raise :class:`Wrong` unless ``got`` matches ``expected`` entrywise within ``tol · max(1, scale)``.
 
     ``scale`` is the size of the inputs (e.g. |ρ| of a pose), so the tolerance
-    is relative to them; the message gives the size of the error.
+    is relative to them; the message gives the size of the error. ``hint`` as for :func:`expect`.
     """
     got = np.asarray(got, dtype=float)
     expected = np.asarray(expected, dtype=float)
     if got.shape != expected.shape:
-        raise Wrong(f"{what}: shape {got.shape}, expected {expected.shape}", hint)
+        fail(f"{what}: shape {got.shape}, expected {expected.shape}", hint)
+        return
     tol = tol * max(1.0, float(scale))
     error = float(np.max(np.abs(got - expected))) if got.size else 0.0
     if not error <= tol:
-        raise Wrong(
+        fail(
             f"{what} is off by {error:.2g} (tolerance {tol:.2g}): got {fmt(got, 6)}, expected {fmt(expected, 6)}", hint
         )

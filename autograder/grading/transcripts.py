@@ -28,7 +28,10 @@ test, not from the student. So, once per grader process:
 The student's code never sees the recorded values, nor any input computed from
 them: only the calls go into the sandbox, and only calls whose inputs are the
 test's own. Each test is recorded a second time with every answer of the
-reference :func:`nudged` (those of the ``ref`` fixture too); a call whose input
+reference :func:`nudged` (those of the ``ref`` fixture too), its checks not
+enforced (:func:`~autograder.grading.hidden_api.checks_not_enforced`: a check as
+tight as the nudge, or an exact one, would otherwise end that run before its later
+calls are seen, and the test would run in full for every student); a call whose input
 moved was fed by an answer (``pose_inverse(pose_inverse(T))``), and the
 transcript stops before it (:meth:`Transcript.cut`), so that call and every
 later one are made one at a time, with the inputs the test computes from the

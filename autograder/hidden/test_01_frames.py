@@ -98,7 +98,7 @@ def test_rot2d_values(student):
     """matches cos/sin of the angle for random and special angles"""
     for theta in list(random_angles(12, seed=101)) + SPECIAL_ANGLES:
         got = expect_array(student.rot2d(theta), (2, 2), f"rot2d({theta:.4g})")
-        expect_close(got, _rot2d(theta), TOL, f"rot2d({theta:.4g})", _rot2d_hint(got, theta))
+        expect_close(got, _rot2d(theta), TOL, f"rot2d({theta:.4g})", lambda: _rot2d_hint(got, theta))
 
 
 @exercise("rot2d", weight=1)
@@ -193,7 +193,11 @@ def _check_elementary(student, name, axis_name, seed):
     for angle in list(random_angles(15, seed=seed)) + SPECIAL_ANGLES:
         got = expect_array(function(angle), (3, 3), f"{name}({angle:.4g})")
         expect_close(
-            got, _elementary(axis_name, angle), TOL, f"{name}({angle:.4g})", _elementary_hint(got, axis_name, angle)
+            got,
+            _elementary(axis_name, angle),
+            TOL,
+            f"{name}({angle:.4g})",
+            lambda: _elementary_hint(got, axis_name, angle),
         )
 
 
@@ -377,7 +381,7 @@ def test_is_rotation_matrix_rejects_non_orthogonal(student):
         expect(
             not verdict,
             f"accepted {name} (max |MᵀM - I| = {np.max(np.abs(M.T @ M - np.eye(3))):.2g}, tol = {TOL:g})",
-            _accepted_hint(M),
+            lambda: _accepted_hint(M),
         )
 
 
@@ -447,7 +451,7 @@ def test_rotate_point_single(student):
     for R, p in zip(random_rotations(20, seed=132), points):
         got = expect_array(student.rotate_point(R, p), (3,), "rotate_point(R, p) for one point")
         hint = _first_match(got, [(R.T @ p, "looks like you used R.T (the inverse): p_w = R_wb @ p_b")])
-        expect_close(got, R @ p, TOL, "rotate_point(R, p)", _or_float32(hint, got, R @ p))
+        expect_close(got, R @ p, TOL, "rotate_point(R, p)", lambda: _or_float32(hint, got, R @ p))
 
 
 @exercise("rotate_point", weight=2)
@@ -508,7 +512,7 @@ def test_compose_random(student):
     As, Bs = random_rotations(20, seed=141), random_rotations(20, seed=142)
     for A, B in zip(As, Bs):
         got = expect_array(student.compose(A, B), (3, 3), "compose(R_ab, R_bc)")
-        expect_close(got, A @ B, TOL, "compose(R_ab, R_bc)", _or_float32(_compose_hint(got, A, B), got, A @ B))
+        expect_close(got, A @ B, TOL, "compose(R_ab, R_bc)", lambda: _or_float32(_compose_hint(got, A, B), got, A @ B))
 
 
 @exercise("compose", weight=1)
@@ -517,7 +521,7 @@ def test_compose_identity(student):
     R = random_rotations(1, seed=143)[0]
     for A, B, what in ((R, np.eye(3), "compose(R, I)"), (np.eye(3), R, "compose(I, R)")):
         got = expect_array(student.compose(A, B), (3, 3), what)
-        expect_close(got, R, TOL, what, _or_float32(_compose_hint(got, A, B), got, R))
+        expect_close(got, R, TOL, what, lambda: _or_float32(_compose_hint(got, A, B), got, R))
 
 
 @exercise("compose", weight=1)
@@ -545,7 +549,7 @@ def test_invert_rotation_random(student):
     """R_ba = R_abᵀ for 20 random rotations"""
     for R in random_rotations(20, seed=151):
         got = expect_array(student.invert_rotation(R), (3, 3), "invert_rotation(R)")
-        expect_close(got, R.T, TOL, "invert_rotation(R)", _or_float32(_inverse_hint(got, R), got, R.T))
+        expect_close(got, R.T, TOL, "invert_rotation(R)", lambda: _or_float32(_inverse_hint(got, R), got, R.T))
 
 
 @exercise("invert_rotation", weight=1)
@@ -553,7 +557,7 @@ def test_invert_rotation_undoes(student):
     """R @ invert_rotation(R) is the identity"""
     R = random_rotations(1, seed=152)[0]
     got = expect_array(student.invert_rotation(R), (3, 3), "invert_rotation(R)")
-    expect_close(R @ got, np.eye(3), TOL, "R @ invert_rotation(R)", _inverse_hint(got, R))
+    expect_close(R @ got, np.eye(3), TOL, "R @ invert_rotation(R)", lambda: _inverse_hint(got, R))
 
 
 @exercise("invert_rotation", weight=1)
@@ -598,7 +602,7 @@ def test_nearest_rotation_keeps_rotations(student):
     """leaves exact rotations unchanged"""
     for R in random_rotations(10, seed=161):
         got = expect_array(student.nearest_rotation(R), (3, 3), "nearest_rotation(R)")
-        expect_close(got, R, 1e-9, "nearest_rotation of a rotation", _or_float32(_nearest_hint(got, R), got, R))
+        expect_close(got, R, 1e-9, "nearest_rotation of a rotation", lambda: _or_float32(_nearest_hint(got, R), got, R))
 
 
 @exercise("nearest_rotation", weight=2)
@@ -609,8 +613,8 @@ def test_nearest_rotation_noisy(student):
         M = R + 0.05 * rng.normal(size=(3, 3))
         got = expect_array(student.nearest_rotation(M), (3, 3), "nearest_rotation(M)")
         problem = rotation_problem(got)
-        expect(problem is None, f"nearest_rotation(M) is not a rotation: {problem}", _nearest_hint(got, M, ""))
-        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M)", _nearest_hint(got, M))
+        expect(problem is None, f"nearest_rotation(M) is not a rotation: {problem}", lambda: _nearest_hint(got, M, ""))
+        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M)", lambda: _nearest_hint(got, M))
 
 
 @exercise("nearest_rotation", weight=4)
@@ -625,9 +629,9 @@ def test_nearest_rotation_never_reflects(student):
         expect(
             det > 0,
             f"returned a matrix with det = {det:.3f} for a mirror-like M",
-            _nearest_hint(got, M, "the result must be a rotation, det = +1"),
+            lambda: _nearest_hint(got, M, "the result must be a rotation, det = +1"),
         )
-        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M) for a mirror-like M", _nearest_hint(got, M))
+        expect_close(got, _nearest(M), 1e-8, "nearest_rotation(M) for a mirror-like M", lambda: _nearest_hint(got, M))
 
 
 @exercise("nearest_rotation", weight=1)
@@ -635,4 +639,4 @@ def test_nearest_rotation_scaled(student):
     """removes a uniform scale: nearest_rotation(3 R) = R"""
     R = random_rotations(1, seed=166)[0]
     got = expect_array(student.nearest_rotation(3.0 * R), (3, 3), "nearest_rotation(3 R)")
-    expect_close(got, R, 1e-9, "nearest_rotation(3 R)", _nearest_hint(got, 3.0 * R))
+    expect_close(got, R, 1e-9, "nearest_rotation(3 R)", lambda: _nearest_hint(got, 3.0 * R))

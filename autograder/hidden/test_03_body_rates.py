@@ -60,7 +60,7 @@ def test_body_rate_every_angle_and_spin(student):
             error <= 1e-12 * size,
             f"for a turn of {angle:.3g} rad spinning at {size:g} rad/s the body rate is "
             f"off by {error:.2g} (tolerance {1e-12 * size:.2g}): got {fmt(got, 6)}, expected {fmt(omega_b, 6)}",
-            _hint(got, R, R_dot, omega_b),
+            lambda: _hint(got, R, R_dot, omega_b),
         )
 
 
@@ -74,7 +74,7 @@ def test_body_rate_of_a_world_spin(student):
         expect(
             np.max(np.abs(got - expected)) <= 1e-12 * (1.0 + np.linalg.norm(omega_w)),
             f"for a world spin {fmt(omega_w)} rad/s got {fmt(got)}, expected Rᵀ ω_w = {fmt(expected)}",
-            _hint(got, R, R_dot, expected),
+            lambda: _hint(got, R, R_dot, expected),
         )
 
 

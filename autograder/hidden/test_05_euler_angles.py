@@ -253,7 +253,7 @@ def test_euler_zyx_to_matrix_matches_scipy(student):
     for yaw, pitch, roll in cases:
         what = f"euler_zyx_to_matrix({yaw:.3f}, {pitch:.3f}, {roll:.3f})"
         got = expect_array(student.euler_zyx_to_matrix(yaw, pitch, roll), (3, 3), what)
-        expect_close(got, scipy_matrix(yaw, pitch, roll), TOL, what, _matrix_hint(got, yaw, pitch, roll))
+        expect_close(got, scipy_matrix(yaw, pitch, roll), TOL, what, lambda: _matrix_hint(got, yaw, pitch, roll))
 
 
 @exercise("euler_zyx_to_matrix", weight=1)
@@ -266,7 +266,7 @@ def test_euler_zyx_to_matrix_single_axes(student):
             what = f"euler_zyx_to_matrix{tuple(args)}"
             got = expect_array(student.euler_zyx_to_matrix(*args), (3, 3), what)
             expected = Rotation.from_euler(axis, angle).as_matrix()
-            expect_close(got, expected, TOL, what, _matrix_hint(got, *args))
+            expect_close(got, expected, TOL, what, lambda: _matrix_hint(got, *args))
 
 
 @exercise("euler_zyx_to_matrix", weight=1)
@@ -277,7 +277,7 @@ def test_euler_zyx_to_matrix_at_lock(student):
         got = expect_array(student.euler_zyx_to_matrix(yaw, pitch, roll), (3, 3), what)
         problem = rotation_problem(got, 1e-9)
         expect(problem is None, f"{what}: {problem}")
-        expect_close(got, scipy_matrix(yaw, pitch, roll), TOL, what, _matrix_hint(got, yaw, pitch, roll))
+        expect_close(got, scipy_matrix(yaw, pitch, roll), TOL, what, lambda: _matrix_hint(got, yaw, pitch, roll))
 
 
 # ---------------------------------------------------------------- matrix_to_euler_zyx
@@ -292,7 +292,7 @@ def test_matrix_to_euler_zyx_random(student):
         expect(
             error <= REBUILD_TOL,
             f"{what} = {fmt(got)} rebuilds R only to {error:.2g}",
-            _angles_hint(got, R) or ANGLES_GENERAL_HINT,
+            lambda: _angles_hint(got, R) or ANGLES_GENERAL_HINT,
         )
         _expect_in_range(got, what)
         difference = np.max(np.abs(wrapped(got - scipy_angles(R))))
@@ -315,7 +315,7 @@ def test_matrix_to_euler_zyx_other_solution(student):
             R,
             REBUILD_TOL,
             f"the matrix rebuilt from {what}",
-            _angles_hint(got, R) or ANGLES_GENERAL_HINT,
+            lambda: _angles_hint(got, R) or ANGLES_GENERAL_HINT,
         )
         _expect_in_range(got, what)
 
@@ -353,7 +353,7 @@ def test_matrix_to_euler_zyx_at_lock(student):
             abs(abs(pitch) - HALF_PI) <= 1e-12 and np.sign(pitch) == -np.sign(R[2, 0]),
             f"{what}: pitch = {pitch:.17g} is off by {abs(pitch - expected_pitch):.2g} from "
             f"{'-' if R[2, 0] > 0 else ''}π/2",
-            _extraction_hint(got, R),
+            lambda: _extraction_hint(got, R),
         )
         rebuilt_error = float(np.max(np.abs(scipy_matrix(*got) - R)))
         if np.max(np.abs(wrapped(got - _naive_angles(R)))) <= 1e-12:
@@ -368,7 +368,11 @@ def test_matrix_to_euler_zyx_at_lock(student):
             roll_hint,
         )
         expect_close(
-            scipy_matrix(*got), R, REBUILD_TOL, f"the matrix rebuilt from {what} = {fmt(got)}", _extraction_hint(got, R)
+            scipy_matrix(*got),
+            R,
+            REBUILD_TOL,
+            f"the matrix rebuilt from {what} = {fmt(got)}",
+            lambda: _extraction_hint(got, R),
         )
 
 
@@ -384,7 +388,7 @@ def test_matrix_to_euler_zyx_near_lock(student):
         expect(
             error <= REBUILD_TOL,
             f"{what}: the angles {fmt(got)} rebuild R only to {error:.2g}",
-            _extraction_hint(got, R, eps),
+            lambda: _extraction_hint(got, R, eps),
         )
 
 
@@ -466,7 +470,7 @@ def test_euler_zyx_to_quat_unit_and_lock(student):
         expect(
             abs(np.linalg.norm(got) - 1.0) <= TOL,
             f"{what} has |q| = {np.linalg.norm(got):.6f} (off by {abs(np.linalg.norm(got) - 1.0):.2g})",
-            _quat_hint(got, yaw, pitch, roll),
+            lambda: _quat_hint(got, yaw, pitch, roll),
         )
         _expect_same_quat(got, scipy_quat(yaw, pitch, roll), what, _quat_hint(got, yaw, pitch, roll))
 
@@ -527,7 +531,7 @@ def test_quat_to_euler_zyx_random(student):
         expect(
             error <= REBUILD_TOL,
             f"{what}: the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
-            _quat_angles_hint(got, q),
+            lambda: _quat_angles_hint(got, q),
         )
         _expect_in_range(got, what)
         difference = np.max(np.abs(wrapped(got - scipy_angles(R))))
@@ -583,16 +587,18 @@ def test_quat_to_euler_zyx_at_lock(student):
             expect(
                 abs(got[2]) <= 1e-12,
                 f"{what}: roll = {got[2]:.4f}, expected 0 (the course's convention)",
-                hints.LOCK_ONLY_YAW_ROLL_DEFINED_HINT
-                if rebuilt_error <= REBUILD_TOL
-                else _quat_angles_hint(got, q, at_lock=True),
+                lambda: (
+                    hints.LOCK_ONLY_YAW_ROLL_DEFINED_HINT
+                    if rebuilt_error <= REBUILD_TOL
+                    else _quat_angles_hint(got, q, at_lock=True)
+                ),
             )
             expect_close(
                 scipy_matrix(*got),
                 R,
                 REBUILD_TOL,
                 f"the rotation rebuilt from {what} = {fmt(got)}",
-                _quat_angles_hint(got, q, at_lock=True),
+                lambda: _quat_angles_hint(got, q, at_lock=True),
             )
             expect(
                 -np.pi < got[0] <= np.pi,
@@ -613,7 +619,7 @@ def test_quat_to_euler_zyx_near_lock(student):
         expect(
             error <= REBUILD_TOL,
             f"{what}: the angles {fmt(got)} rebuild the rotation only to {error:.2g}",
-            _quat_angles_hint(got, q),
+            lambda: _quat_angles_hint(got, q),
         )
 
 
@@ -663,7 +669,9 @@ def test_euler_rates_matrix_finite_differences(student):
         what = f"euler_rates_matrix({pitch:.3f}, {roll:.3f})"
         E = expect_array(student.euler_rates_matrix(pitch, roll), (3, 3), what)
         expected = _body_rates(np.array([yaw, pitch, roll]), rates)
-        expect_close(E @ rates, expected, 1e-7, f"{what} @ {fmt(rates, 3)} (body rates)", _rates_hint(E, pitch, roll))
+        expect_close(
+            E @ rates, expected, 1e-7, f"{what} @ {fmt(rates, 3)} (body rates)", lambda: _rates_hint(E, pitch, roll)
+        )
 
 
 @exercise("euler_rates_matrix", weight=1)
@@ -676,10 +684,14 @@ def test_euler_rates_matrix_determinant(student):
         expect(
             abs(det + np.cos(pitch)) <= 1e-9,
             f"det {what} = {det:.4f}, expected -cos(pitch) = {-np.cos(pitch):.4f} (off by {abs(det + np.cos(pitch)):.2g})",
-            _rates_hint(E, pitch, roll),
+            lambda: _rates_hint(E, pitch, roll),
         )
     for pitch, null in [(HALF_PI, [1.0, 0.0, 1.0]), (-HALF_PI, [1.0, 0.0, -1.0])]:
         E = expect_array(student.euler_rates_matrix(pitch, 0.8), (3, 3), "euler_rates_matrix")
         expect_close(
-            E @ null, np.zeros(3), 1e-12, f"euler_rates_matrix({pitch:.4f}, 0.8) @ {null}", _rates_hint(E, pitch, 0.8)
+            E @ null,
+            np.zeros(3),
+            1e-12,
+            f"euler_rates_matrix({pitch:.4f}, 0.8) @ {null}",
+            lambda: _rates_hint(E, pitch, 0.8),
         )

@@ -188,7 +188,7 @@ def test_boxplus_right_matches_definition(student):
     """equals R @ Exp(δ) for random rotations, δ = 0, tiny δ, |δ| = π and |δ| > π"""
     for R, d in _boxplus_cases(601):
         got = expect_array(student.boxplus_right(R, d), (3, 3), f"boxplus_right(R, {fmt(d)})")
-        expect_close(got, R @ _exp(d), TOL, f"boxplus_right(R, {fmt(d)})", _boxplus_hint(got, R, d, right=True))
+        expect_close(got, R @ _exp(d), TOL, f"boxplus_right(R, {fmt(d)})", lambda: _boxplus_hint(got, R, d, right=True))
 
 
 @exercise("boxplus_right", weight=1)
@@ -200,7 +200,7 @@ def test_boxplus_right_stays_rotation(student):
         expect(
             problem is None,
             f"boxplus_right(R, {fmt(d)}) is not a rotation: {problem}",
-            _boxplus_hint(got, R, d, True, hints.RIGHT_UPDATE_IS_A_ROTATION_HINT),
+            lambda: _boxplus_hint(got, R, d, True, hints.RIGHT_UPDATE_IS_A_ROTATION_HINT),
         )
 
 
@@ -216,7 +216,7 @@ def test_boxplus_right_turns_about_body_axes(student):
             R[:, k],
             TOL,
             f"body axis {k} after turning about it",
-            _boxplus_hint(got, R, d, True, "the right perturbation turns about the body's axes: R @ Exp(δ)"),
+            lambda: _boxplus_hint(got, R, d, True, "the right perturbation turns about the body's axes: R @ Exp(δ)"),
         )
 
 
@@ -226,7 +226,7 @@ def test_boxplus_left_matches_definition(student):
     """equals Exp(δ) @ R for random rotations, δ = 0, tiny δ, |δ| = π and |δ| > π"""
     for R, d in _boxplus_cases(611):
         got = expect_array(student.boxplus_left(R, d), (3, 3), f"boxplus_left(R, {fmt(d)})")
-        expect_close(got, _exp(d) @ R, TOL, f"boxplus_left(R, {fmt(d)})", _boxplus_hint(got, R, d, right=False))
+        expect_close(got, _exp(d) @ R, TOL, f"boxplus_left(R, {fmt(d)})", lambda: _boxplus_hint(got, R, d, right=False))
 
 
 @exercise("boxplus_left", weight=1)
@@ -238,7 +238,7 @@ def test_boxplus_left_stays_rotation(student):
         expect(
             problem is None,
             f"boxplus_left(R, {fmt(d)}) is not a rotation: {problem}",
-            _boxplus_hint(got, R, d, False, hints.LEFT_UPDATE_IS_A_ROTATION_HINT),
+            lambda: _boxplus_hint(got, R, d, False, hints.LEFT_UPDATE_IS_A_ROTATION_HINT),
         )
 
 
@@ -254,7 +254,7 @@ def test_boxplus_left_turns_about_world_axes(student):
             R[k, :],
             TOL,
             f"row {k} after turning about world axis {k}",
-            _boxplus_hint(got, R, d, False, "the left perturbation turns about the world's axes: Exp(δ) @ R"),
+            lambda: _boxplus_hint(got, R, d, False, "the left perturbation turns about the world's axes: Exp(δ) @ R"),
         )
 
 
@@ -285,7 +285,7 @@ def test_boxminus_matches_log(student):
     for R_b, step in zip(R_bs, steps):
         R_a = R_b @ _exp(step)
         got = expect_array(student.boxminus(R_a, R_b), (3,), "boxminus(R_a, R_b)")
-        expect_close(got, step, 1e-9, "boxminus(R_a, R_b)", _boxminus_hint(got, R_a, R_b))
+        expect_close(got, step, 1e-9, "boxminus(R_a, R_b)", lambda: _boxminus_hint(got, R_a, R_b))
 
 
 @exercise("boxminus", weight=2)
@@ -302,7 +302,7 @@ def test_boxminus_round_trip(student):
             R_a,
             1e-8,
             f"R_b @ Exp(boxminus(R_a, R_b)) for a relative angle of {angle:.4f}",
-            _boxminus_hint(got, R_a, R_b),
+            lambda: _boxminus_hint(got, R_a, R_b),
         )
         expect(
             np.linalg.norm(got) <= np.pi + 1e-9,
@@ -318,7 +318,9 @@ def test_boxminus_inverts_boxplus(student):
     deltas = list(_rotvecs(5, 626, 0.1, 3.0)) + [1e-9 * _unit(627, 1)[0], np.zeros(3)]
     for d in deltas:
         got = expect_array(student.boxminus(R @ _exp(d), R), (3,), "boxminus(R ⊞ δ, R)")
-        expect_close(got, d, 1e-9, f"boxminus(R Exp(δ), R) for δ = {fmt(d)}", _boxminus_hint(got, R @ _exp(d), R))
+        expect_close(
+            got, d, 1e-9, f"boxminus(R Exp(δ), R) for δ = {fmt(d)}", lambda: _boxminus_hint(got, R @ _exp(d), R)
+        )
     expect_same_with_lists(student.boxminus, (R @ _exp(deltas[0]), R), (3,), "boxminus(R_a, R_b)")
 
 
@@ -378,7 +380,7 @@ def test_quat_boxplus_matches_definition(student):
                 expected if np.dot(got, expected) >= 0 else -expected,
                 TOL,
                 f"quat_boxplus(q, {fmt(d)})",
-                _quat_hint(got, q, d),
+                lambda: _quat_hint(got, q, d),
             )
 
 
@@ -391,7 +393,7 @@ def test_quat_boxplus_unit_norm(student):
         expect(
             abs(norm - 1.0) <= 1e-12,
             f"|quat_boxplus(q, {fmt(d)})| = {norm:.9f} (off by {abs(norm - 1):.2g})",
-            _quat_hint(got, q, d),
+            lambda: _quat_hint(got, q, d),
         )
 
 
@@ -403,9 +405,11 @@ def test_quat_boxplus_agrees_with_matrices(student):
         expect(
             abs(np.linalg.norm(got) - 1.0) <= 1e-9,
             f"|quat_boxplus(q, δ)| = {np.linalg.norm(got):.6f}",
-            _quat_hint(got, q, d, "return a unit quaternion"),
+            lambda: _quat_hint(got, q, d, "return a unit quaternion"),
         )
-        expect_close(_quat_matrix(got), _quat_matrix(q) @ _exp(d), 1e-9, "R(quat_boxplus(q, δ))", _quat_hint(got, q, d))
+        expect_close(
+            _quat_matrix(got), _quat_matrix(q) @ _exp(d), 1e-9, "R(quat_boxplus(q, δ))", lambda: _quat_hint(got, q, d)
+        )
 
 
 @exercise("quat_boxplus", weight=1)
@@ -425,7 +429,7 @@ def test_quat_boxplus_tiny_and_zero(student):
     expect(
         _same_quat(got, expected, 1e-15),
         f"quat_boxplus(q, δ) for |δ| = 1e-9 is off by {error:.2g} (tolerance 1e-15)",
-        _quat_hint(got, q, d, "below a tiny angle, Exp_q(δ) = [1, δ/2] to machine precision"),
+        lambda: _quat_hint(got, q, d, "below a tiny angle, Exp_q(δ) = [1, δ/2] to machine precision"),
     )
 
 
@@ -527,7 +531,7 @@ def test_numerical_jacobian_vector_function(student):
             expected,
             2e-3 * (1.0 + np.max(np.abs(expected))),
             f"numerical_jacobian(f, {fmt(x)})",
-            _step_hint(got, expected, probes.smooth_vector_function, x),
+            lambda: _step_hint(got, expected, probes.smooth_vector_function, x),
         )
 
 
@@ -542,7 +546,7 @@ def _expect_accurate_jacobian(got, x, what, ref):
         error <= allowed,
         f"{what} is off by {error:.2g} from the analytic Jacobian; the lecture's forward "
         f"steps are off by {(allowed - 1e-8 * (1 + np.max(np.abs(exact)))) / 2:.2g} (allowed: {allowed:.2g})",
-        _step_hint(got, exact, probes.smooth_vector_function, x),
+        lambda: _step_hint(got, exact, probes.smooth_vector_function, x),
     )
 
 
@@ -593,7 +597,7 @@ def test_numerical_jacobian_rotation_right(student):
         expect(
             not _matrix_entries_hint(value),
             f"returned shape {np.shape(value)} for a rotation",
-            _matrix_entries_hint(value),
+            lambda: _matrix_entries_hint(value),
         )
         got = expect_array(value, (3, 3), "numerical_jacobian(R ↦ R p, R, so3_plus_right)")
         exact = -R @ _skew(p)
@@ -615,7 +619,7 @@ def test_numerical_jacobian_rotation_left(student):
         expect(
             not _matrix_entries_hint(value),
             f"returned shape {np.shape(value)} for a rotation",
-            _matrix_entries_hint(value),
+            lambda: _matrix_entries_hint(value),
         )
         got = expect_array(value, (3, 3), "numerical_jacobian(R ↦ R p, R, so3_plus_left)")
         exact = -_skew(R @ p)
@@ -635,7 +639,7 @@ def test_numerical_jacobian_unrotate(student):
         expect(
             not _matrix_entries_hint(value),
             f"returned shape {np.shape(value)} for a rotation",
-            _matrix_entries_hint(value),
+            lambda: _matrix_entries_hint(value),
         )
         got = expect_array(value, (3, 3), "numerical_jacobian(R ↦ Rᵀ p, R, so3_plus_right)")
         exact = _skew(R.T @ p)
@@ -644,7 +648,9 @@ def test_numerical_jacobian_unrotate(student):
             exact,
             _manifold_tol(p),
             "numerical_jacobian(R ↦ Rᵀ p, R, right ⊞)",
-            _step_hint(got, exact, lambda X: probes.unrotate_point_by(p, X), R, probes.so3_plus_right, _MANIFOLD_HINT),
+            lambda: _step_hint(
+                got, exact, lambda X: probes.unrotate_point_by(p, X), R, probes.so3_plus_right, _MANIFOLD_HINT
+            ),
         )
 
 
@@ -658,7 +664,7 @@ def test_numerical_jacobian_quaternion(student):
         expect(
             not _matrix_entries_hint(value),
             f"returned shape {np.shape(value)} for a quaternion",
-            _matrix_entries_hint(value),
+            lambda: _matrix_entries_hint(value),
         )
         got = expect_array(value, (3, 3), "numerical_jacobian(q ↦ R(q) p, q, quat_plus_right)")
         exact = -_quat_matrix(q) @ _skew(p)
@@ -667,7 +673,7 @@ def test_numerical_jacobian_quaternion(student):
             exact,
             _manifold_tol(p),
             "numerical_jacobian(q ↦ R(q) p, q, ⊞)",
-            _step_hint(
+            lambda: _step_hint(
                 got, exact, lambda X: probes.quat_rotate_point_by(p, X), q, probes.quat_plus_right, _MANIFOLD_HINT
             ),
         )
@@ -689,14 +695,14 @@ def test_numerical_jacobian_shapes(student):
         np.eye(5),
         1e-6,
         "numerical_jacobian of the identity map",
-        _step_hint(got, np.eye(5), probes.identity_function, x),
+        lambda: _step_hint(got, np.eye(5), probes.identity_function, x),
     )
     R = random_rotations(1, seed=649)[0]
     value = student.numerical_jacobian(Probe("rotate_point_by", [1.0, 2.0, 3.0]), R, Probe("so3_plus_right"))
     expect(
         np.shape(value) == (3, 3),
         f"returned shape {np.shape(value)} for f: SO(3) → R³, expected (3, 3)",
-        _matrix_entries_hint(value),
+        lambda: _matrix_entries_hint(value),
     )
 
 
@@ -746,7 +752,7 @@ def test_jacobian_rotate_point_formula(student):
     """equals d(R Exp(δ) p)/dδ at δ = 0 for 20 random rotations and points"""
     for R, p in _rotation_cases(651, count=20):
         got = expect_array(student.jacobian_rotate_point(R, p), (3, 3), "jacobian_rotate_point(R, p)")
-        expect_close(got, -R @ _skew(p), TOL, "jacobian_rotate_point(R, p)", _rotate_point_hint(got, R, p))
+        expect_close(got, -R @ _skew(p), TOL, "jacobian_rotate_point(R, p)", lambda: _rotate_point_hint(got, R, p))
 
 
 @exercise("jacobian_rotate_point", weight=2)
@@ -762,7 +768,7 @@ def test_jacobian_rotate_point_linearises(student):
                 remainder <= np.linalg.norm(p) * scale**2 + 1e-13,
                 f"R Exp(δ) p - R p - J δ = {remainder:.2g} for |δ| = {scale:g}: not of order |δ|² "
                 f"(allowed {np.linalg.norm(p) * scale**2 + 1e-13:.2g})",
-                _rotate_point_hint(J, R, p),
+                lambda: _rotate_point_hint(J, R, p),
             )
 
 
@@ -778,7 +784,7 @@ def test_jacobian_rotate_point_matches_finite_differences(student):
             numeric,
             1e-8 * (1.0 + np.linalg.norm(p)),
             "jacobian_rotate_point vs finite differences",
-            _rotate_point_hint(got, R, p),
+            lambda: _rotate_point_hint(got, R, p),
         )
 
 
@@ -914,7 +920,7 @@ def test_right_jacobian_matches_reference(student, ref):
             ref.right_jacobian_so3(w),
             1e-9,
             f"right_jacobian_so3 at angle {np.linalg.norm(w):.4f}",
-            _jr_hint(got, w),
+            lambda: _jr_hint(got, w),
         )
 
 
@@ -931,7 +937,7 @@ def test_right_jacobian_linearises(student):
             leftover <= np.dot(dw, dw) + 1e-13,
             f"at angle {np.linalg.norm(w):.4f}, Exp(w) Exp(J dw) misses Exp(w + dw) by {leftover:.2g} rad "
             f"for |dw| = 1e-4 (expected below 1e-8)",
-            _jr_hint(J, w, _jacobian_side_hint(J, w, dw) or JR_FORMULA),
+            lambda: _jr_hint(J, w, _jacobian_side_hint(J, w, dw) or JR_FORMULA),
         )
 
 
@@ -950,7 +956,7 @@ def test_right_jacobian_matches_finite_differences(student):
             numeric,
             1e-8,
             f"right_jacobian_so3 vs finite differences at angle {np.linalg.norm(w):.3f}",
-            _jr_hint(got, w),
+            lambda: _jr_hint(got, w),
         )
 
 
@@ -997,7 +1003,11 @@ def test_right_jacobian_near_pi(student, ref):
         w = (np.pi - offset) * axis
         got = expect_array(student.right_jacobian_so3(w), (3, 3), f"right_jacobian_so3 at angle π - {offset:g}")
         expect_close(
-            got, ref.right_jacobian_so3(w), 1e-9, f"right_jacobian_so3 at angle π - {offset:g}", _jr_hint(got, w)
+            got,
+            ref.right_jacobian_so3(w),
+            1e-9,
+            f"right_jacobian_so3 at angle π - {offset:g}",
+            lambda: _jr_hint(got, w),
         )
 
 
@@ -1007,14 +1017,14 @@ def test_right_jacobian_identities(student):
     for w in _rotvecs(5, 669, 0.2, 3.0):
         J = expect_array(student.right_jacobian_so3(w), (3, 3), "right_jacobian_so3(w)")
         J_minus = expect_array(student.right_jacobian_so3(-w), (3, 3), "right_jacobian_so3(-w)")
-        expect_close(J @ w, w, 1e-10, "Jr(w) @ w", _jr_hint(J, w, "Jr leaves w itself unchanged: [w]× w = 0"))
-        expect_close(J_minus, J.T, 1e-10, "Jr(-w) against Jr(w)ᵀ", _jr_hint(J, w))
+        expect_close(J @ w, w, 1e-10, "Jr(w) @ w", lambda: _jr_hint(J, w, "Jr leaves w itself unchanged: [w]× w = 0"))
+        expect_close(J_minus, J.T, 1e-10, "Jr(-w) against Jr(w)ᵀ", lambda: _jr_hint(J, w))
         expect_close(
             J_minus,
             _exp(w) @ J,
             1e-10,
             "Jr(-w) against Exp(w) Jr(w)",
-            _jr_hint(J, w, "Jl(w) = Exp(w) Jr(w) holds for the right Jacobian only: " + JR_FORMULA),
+            lambda: _jr_hint(J, w, "Jl(w) = Exp(w) Jr(w) holds for the right Jacobian only: " + JR_FORMULA),
         )
 
 
@@ -1053,7 +1063,7 @@ def test_right_jacobian_inv_inverts(student, ref):
             np.eye(3),
             1e-9,
             f"right_jacobian_inv_so3(w) @ Jr(w) at angle {np.linalg.norm(w):.4f}",
-            _inverse_hint(got, w, ref),
+            lambda: _inverse_hint(got, w, ref),
         )
 
 
@@ -1069,7 +1079,7 @@ def test_right_jacobian_inv_linearises_log(student, ref):
             error <= np.dot(v, v) + 1e-13,
             f"at angle {np.linalg.norm(w):.4f}, Log(Exp(w) Exp(v)) - w - J v = {error:.2g} for |v| = 1e-4 "
             f"(expected below 1e-8)",
-            _inverse_hint(J, w, ref),
+            lambda: _inverse_hint(J, w, ref),
         )
 
 
@@ -1132,5 +1142,5 @@ def test_right_jacobian_inv_near_pi(student, ref):
             ref.right_jacobian_inv_so3(w),
             1e-8,
             f"right_jacobian_inv_so3 at angle π - {offset:g}",
-            _inverse_hint(got, w, ref),
+            lambda: _inverse_hint(got, w, ref),
         )

@@ -59,7 +59,7 @@ def test_point_to_body_exact(student):
             _skew(R.T @ p),
             1e-12,
             f"jacobian_point_to_body for a turn of {angle:.3g} rad and |p_w| = {size:g} m",
-            _hint(J, R, p),
+            lambda: _hint(J, R, p),
             scale=size,
         )
 
@@ -87,7 +87,7 @@ def test_point_to_body_finite_differences(student):
             numeric,
             1e-8,
             "jacobian_point_to_body against finite differences",
-            _hint(J, R, p),
+            lambda: _hint(J, R, p),
             scale=1.0 + np.linalg.norm(p),
         )
 

@@ -67,7 +67,7 @@ def _hint(M, Rs, w):
 def _mean(student, Rs, w, what):
     M = expect_array(student.with_timeout(SLOW).weighted_rotation_mean(Rs, w), (3, 3), what)
     problem = rotation_problem(M, 1e-8)
-    expect(problem is None, f"{what} is not a rotation: {problem}", _hint(M, Rs, w))
+    expect(problem is None, f"{what} is not a rotation: {problem}", lambda: _hint(M, Rs, w))
     return M
 
 
@@ -83,7 +83,7 @@ def test_weighted_balance(student):
             imbalance <= 1e-9,
             f"|Σ w_i Log(Mᵀ R_i)| / Σ w_i = {imbalance:.2g} for {count} rotations of spread "
             f"{spread} rad (should be 0 at the weighted mean)",
-            _hint(M, Rs, w),
+            lambda: _hint(M, Rs, w),
         )
 
 
@@ -98,7 +98,7 @@ def test_weights_are_counts(student):
     expect(
         imbalance <= 1e-9,
         f"with integer weights the mean does not balance the repeated list ({imbalance:.2g})",
-        _hint(M, Rs, counts),
+        lambda: _hint(M, Rs, counts),
     )
     for scale in (1e-6, 1e6):
         scaled = _mean(student, Rs, scale * counts, f"weighted_rotation_mean(Rs, {scale:g} × counts)")
@@ -125,7 +125,7 @@ def test_weighted_two_rotations(student):
             A @ _exp(b / (a + b) * step),
             1e-9,
             f"the weighted mean of two rotations (weights {a:g}, {b:g})",
-            _hint(M, np.array([A, A @ _exp(step)]), [a, b]),
+            lambda: _hint(M, np.array([A, A @ _exp(step)]), [a, b]),
         )
 
 
@@ -138,7 +138,9 @@ def test_weighted_bi_invariant(student):
     for A, B in zip(random_rotations(2, 8342), random_rotations(2, 8343)):
         moved = np.array([A @ R @ B for R in Rs])
         got = _mean(student, moved, w, "weighted_rotation_mean of A R_i B")
-        expect_close(got, A @ M @ B, 1e-8, "weighted_rotation_mean(A R_i B) against A M B", _hint(got, moved, w))
+        expect_close(
+            got, A @ M @ B, 1e-8, "weighted_rotation_mean(A R_i B) against A M B", lambda: _hint(got, moved, w)
+        )
 
 
 @exercise("weighted_rotation_mean", weight=1)

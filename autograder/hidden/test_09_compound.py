@@ -186,7 +186,7 @@ def test_compound_every_angle(student):
             expected / scale,
             EXACT,
             f"S / |S| for T2 turning {angle:.3g} rad",
-            FINITE_DIFFERENCES_HINT if near else _hint(S, T1, S1, T2, S2),
+            lambda: FINITE_DIFFERENCES_HINT if near else _hint(S, T1, S1, T2, S2),
         )
 
 
@@ -228,7 +228,7 @@ def test_compound_against_monte_carlo(student):
     _, S = _pair(student.compound_pose_covariance(T1.copy(), S1.copy(), T2.copy(), S2.copy()))
     scale = np.max(np.abs(sampled))
     # sample covariance entries scatter by about sqrt(2 / 40 000) = 0.7 % of the scale: 4 % is over five of those
-    expect_close(S / scale, sampled / scale, 0.04, "S / |S| against Monte Carlo", _hint(S, T1, S1, T2, S2))
+    expect_close(S / scale, sampled / scale, 0.04, "S / |S| against Monte Carlo", lambda: _hint(S, T1, S1, T2, S2))
 
 
 @exercise("compound_pose_covariance", weight=1)
