@@ -253,12 +253,12 @@ INVERSE_LEFT_HINT = ("that is the Jacobian for perturbations on the left of R an
                      "the right, R Exp(d) and R⁻¹ Exp(J d)")
 INVERSE_NOT_MOVED_HINT = ("-I is right only at the identity: the inverted turn sits on the left of Rᵀ, but J is "
                           "defined by a turn on the right of R⁻¹")
-INVERSE_AT_IDENTITY_HINT = "at the identity, inverting a small turn simply reverses it: the Jacobian there is -I"
+INVERSE_AT_IDENTITY_HINT = ("at the identity, inverting Exp(d) simply reverses the small turn: read J off "
+                            "(Exp(d))⁻¹ = Exp(J d) there first")
 INVERSE_SIGN_HINT = ("your J turns R⁻¹ in the same sense as d, but inverting R Exp(d) must undo that small turn; "
                      "check (R Exp(d))⁻¹ = R⁻¹ Exp(J d) at R = I first")
-INVERSE_TRANSPOSE_HINT = ("wrong in two ways at once: at R = I your J is not -I, yet inverting a small turn "
-                          "reverses it; and at this R, flipping the sign alone still leaves the turn on the wrong "
-                          "axis")
+INVERSE_TRANSPOSE_HINT = ("wrong in two ways at once: at R = I your J does not reverse a small turn, as inverting "
+                          "one must; and at this R, flipping the sign alone still leaves the turn on the wrong axis")
 
 # ---------------------------------------------------------------- checks/lesson07.py
 DIVIDED_FIRST_COORDINATE_X_HINT = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
