@@ -5,7 +5,8 @@ small standard helpers, the student's own functions, and the course tools its le
 ``coursekit.watching.watch_call`` refuses anything else by construction, whatever library it comes
 from. Oracles: answers that hand the work to scipy's ``expm``, a scipy ``Rotation`` method, a made-up
 "next library", ``importlib``, an import inside the function, a helper that calls scipy, the
-student's own other exercise that does this one's job or comes later in the lesson, a thread: each is refused with its one line,
+student's own other exercise that does this one's job or comes later in the lesson, a thread, a Jacobian read off
+its definition with the Exp and Log its exercise may not call: each is refused with its one line,
 in the check cell (in this process) and through the real sandbox (the hidden suite). Answers that use
 numpy only, math, their own helpers and earlier exercises, and coursekit.lie where the lesson allows
 it pass; every reference answer and every correct alternative pass under their own allowance
@@ -95,6 +96,13 @@ REFUSED = {
         "quat_to_matrix",
         "def quat_to_matrix(q):\n    return (quat_left(q) @ quat_right(quat_conjugate(q)))[1:, 1:]\n",
         "quat_to_matrix called your quat_left",
+    ),
+    # the Jacobian of inverting is exactly linear in d: Log of its definition at unit turns returns it, no derivation
+    "definition_evaluated": (
+        "jacobian_of_inverse",
+        "def jacobian_of_inverse(R):\n    R = np.asarray(R, dtype=float)\n"
+        "    return np.column_stack([Log(R @ (R @ Exp(e)).T) for e in np.eye(3)])\n",
+        "jacobian_of_inverse called coursekit.lie.Exp",
     ),
     # a ufunc is called without any profile event: it is judged where the answer names it
     "scipy_special_ufunc": (

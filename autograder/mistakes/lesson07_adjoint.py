@@ -141,8 +141,8 @@ def jacobian_transform_point(T, p):
     R = np.asarray(T, dtype=float)[:3, :3]
     return np.hstack([R, R @ skew(p)])
 """,
-        hint="[phi]× p = -[p]× phi",
-        public_hint="[phi]× p = -[p]× phi",
+        hint="the sign of the rotation block (the phi columns) is flipped",
+        public_hint="the sign of the rotation block (the phi columns) is flipped",
     ),
     Mistake(
         "point_world_rotation",

@@ -87,6 +87,10 @@ FORBIDDEN = {
     # lesson 06: the right Jacobian is the job (the library's SE(3) maps carry the SO(3) Jacobian inside them)
     "right_jacobian_so3": ("coursekit.lie.JrSE3", "coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS + INVERSES,
     "right_jacobian_inv_so3": ("coursekit.lie.JrSE3", "coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + MATRIX_FUNCTIONS,
+    # the Jacobians of composing and inverting are exactly linear in d, so Log of their definition at unit turns
+    # would return them without a derivation; neither answer needs Exp or Log
+    "jacobians_of_compose": EXP_LOG,
+    "jacobian_of_inverse": EXP_LOG,
     # lesson 07: poses (the rotation part may come from Exp; V(phi) and the assembly are the job)
     "pose_inverse": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3") + INVERSES,  # the inverse is the job
     "exp_se3": ("coursekit.lie.ExpSE3", "coursekit.lie.LogSE3", "coursekit.lie.JrSE3") + MATRIX_FUNCTIONS + INVERSES,
@@ -203,7 +207,13 @@ class Allowance:
 
     def describe(self):
         """The allowance in words, as the feedback line says it."""
-        extra = [name for name in self.modules if name.startswith(("coursekit", "scipy"))]
+        forbidden = forbidden_for(self.exercise)
+
+        def shown(module):  # "coursekit.lie (without Exp and Log)" when the exercise may not call some of it
+            names = [f[len(module) + 1 :] for f in forbidden if f.startswith(module + ".") and "." not in f[len(module) + 1 :]]
+            return f"{module} (without {_in_words(names)})" if names else module
+
+        extra = [shown(name) for name in self.modules if name.startswith(("coursekit", "scipy"))]
         numpy = "numpy"
         if set(INVERSES) <= set(forbidden_for(self.exercise)):
             numpy = "numpy (without np.linalg's inverses and solvers)"
@@ -221,6 +231,11 @@ class Allowance:
         )
 
 
+def _in_words(names):
+    """``["A", "B", "C"]`` → ``"A, B and C"``."""
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
 def allowance_for(exercise, lesson=""):
     """The :class:`Allowance` of ``exercise`` in ``lesson`` (``"03"``).
 
@@ -228,8 +243,11 @@ def allowance_for(exercise, lesson=""):
     'numpy, math and your own functions'
     >>> allowance_for("pose_compose", "07").describe()
     'numpy, math, coursekit.lie and your own functions except later exercises'
-    >>> allowance_for("exp_se3", "07").describe()
-    "numpy (without np.linalg's inverses and solvers), math, coursekit.lie and your own functions except later exercises"
+    >>> allowance_for("exp_se3", "07").describe()  # doctest: +NORMALIZE_WHITESPACE
+    "numpy (without np.linalg's inverses and solvers), math, coursekit.lie (without ExpSE3, LogSE3 and JrSE3)
+    and your own functions except later exercises"
+    >>> allowance_for("jacobian_of_inverse", "06").describe()
+    'numpy, math, coursekit.lie (without Exp and Log) and your own functions'
     >>> allowance_for("axis_from_eigen", "03").describe()
     'numpy, math and your own functions except later exercises and log_so3 and axis_angle'
     """

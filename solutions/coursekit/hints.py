@@ -322,15 +322,16 @@ RETURNED_R0_UNCHANGED_APPLY_HINT = "returned R0 unchanged: apply one update per 
 RETURNED_T0_UNCHANGED_DO_HINT = "returned T0 unchanged: do iters updates T ← T Exp(xi)"
 RETURNED_T0_UNCHANGED_ITERATE_HINT = ("returned T0 unchanged: iterate from T0 until the gradient of the Huber cost "
                                       "vanishes")
-SIGN_ROTATION_BLOCK_PHI_HINT = "the sign of the rotation block: [phi]× p = -[p]× phi"
+SIGN_ROTATION_BLOCK_PHI_HINT = ("the sign of the rotation block (the phi columns) is flipped: rewrite [phi]× p "
+                               "as a matrix times phi with care")
 TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rates are body rates, so each update goes "
                              "on the right, R ← R Exp(ω_b dt)")
 UNIT_AXIS_FROM_VECTOR_PART_HINT = "v = sin α u: divide the vector part by its length to get the unit axis u"
 WEIGHTS_K_R_BEYOND_HINT = ("your pose is a stationary point of another cost, whose pull on a pair beyond k fades with "
                            "the pair's distance: the Huber cost's pull beyond k does not fade")
 
-ROBUST_WEIGHT_QUESTION_HINT = ("compare the gradient of ρ_k(|r|) with respect to r with that of ½|r|²: what does each "
-                               "residual weigh?")
+ROBUST_WEIGHT_QUESTION_HINT = ("the Huber cost's gradient is not zero at your pose: compute it there (finite "
+                               "differences will do) and find what stops your iteration short of it")
 
 # ---------------------------------------------------------------- checks/lesson09_filter.py, _update.py
 # the derive exercises of lesson 09 promise exact results: finite differences and cancelling closed forms come close

@@ -144,7 +144,6 @@ def _(jacobian_of_inverse):
 @public_check("jacobian_of_inverse", "is exact at the identity (to 1e-12), accepts lists, leaves R unchanged")
 def _(jacobian_of_inverse):
     J = require_shape(jacobian_of_inverse(np.eye(3)), (3, 3), "jacobian_of_inverse(I)")
-    # Log((Exp(d))⁻¹) is linear in d, so wide central differences are exact up to rounding (about 1e-16)
     exact = central_differences(lambda d: Log(Exp(d).T), 3, h=0.1)
     if not close(J, exact, 1e-12):
         raise Mismatch(f"jacobian_of_inverse(I) disagrees with inverting Exp(d) ({off_by(J, exact)})",

@@ -139,7 +139,7 @@ COV_POINT_TURNED_SIGMA = np.array([[0.01, 0.0, 0.02], [0.0, 0.04, 0.01], [0.02, 
 COV_POINT_ONE_SIDED = np.array([[0.07, -0.07, -0.02], [-0.01, -0.13, -0.04], [0.04, 0.03, 0.01]])
 COV_POINT_TRANSPOSED = np.array([[0.17, -0.12, -0.07], [-0.12, 0.15, 0.18], [-0.07, 0.18, 0.29]])
 COV_NO_R_HINT = (
-    "that is [p]× Σ [p]×ᵀ, the covariance in the body frame: the world point is R p, so R belongs in J (the "
+    "that is the covariance in the body frame: the world point is R p, so the attitude R belongs in J (the "
     "Jacobian of R p that you derived in lesson 06)"
 )
 COV_LEFT_HINT = (
