@@ -105,7 +105,7 @@ def filter_predict(R, P, omega_meas, dt, Q):
         "noise term dt² Q: the Jacobian of Exp taken as I",
         _predict(noise_jacobian="np.eye(3) * dt"),
         hint="which is not I",
-        public_hint="whose Jacobian at a long step is not I",
+        public_hint="right for a short step and wrong for a long one",
     ),
     Mistake(
         "predict_no_noise",

@@ -87,8 +87,8 @@ PREDICT_SLIPS = [
     ),
     (
         PREDICT_NO_JR,
-        "the noise's part of P_new is right for a short step and wrong for a long one: the noise sits inside "
-        "the step's Exp, whose Jacobian at a long step is not I",
+        "the noise's part of P_new is right for a short step and wrong for a long one: look again at where the "
+        "noise enters the step, and what carries it from there to the new attitude's error",
     ),
     (
         PREDICT_NOISE_DT,
