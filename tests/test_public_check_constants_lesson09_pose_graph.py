@@ -65,3 +65,4 @@ def test_the_edge_slips():
         checks.EDGE_I_MEASUREMENT_ADJOINT, -np.linalg.solve(Jr, AdSE3(np.linalg.inv(T_ij))), rtol=0, atol=1e-12
     )
     assert np.allclose(checks.EDGE_J_NOT_INVERTED, Jr, rtol=0, atol=1e-12)
+    assert np.allclose(checks.EDGE_I_NOT_INVERTED, Jr @ checks.EDGE_I_NO_JR, rtol=0, atol=1e-12)

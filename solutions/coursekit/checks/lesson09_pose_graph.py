@@ -193,9 +193,62 @@ EDGE_J_NOT_INVERTED = np.array(
         [0.0, 0.0, 0.0, -0.15677315439254633, -0.572530857894788, 0.7001145543946944],
     ]
 )
+
+EDGE_I_NOT_INVERTED = np.array(  # J_i with Log's Jacobian taken the wrong way round, as a student might
+    [
+        [
+            -0.3214224370933829,
+            0.5461683510309201,
+            -0.6990084737406962,
+            2.101001821077228,
+            2.5979878970367385,
+            1.2689778226647146,
+        ],
+        [
+            0.8778422902258313,
+            0.10020746606139194,
+            -0.22138430536452286,
+            0.4815632249302828,
+            -0.9759610464999972,
+            1.9492808940371824,
+        ],
+        [
+            -0.024783361766702556,
+            0.7712675278092482,
+            0.49705329692273825,
+            0.31670983699016014,
+            -1.6236802032634026,
+            2.1428127708653304,
+        ],
+        [
+            0.0,
+            0.0,
+            0.0,
+            -0.3214224370933828,
+            0.5461683510309201,
+            -0.6990084737406965,
+        ],
+        [
+            0.0,
+            0.0,
+            0.0,
+            0.8778422902258312,
+            0.10020746606139193,
+            -0.22138430536452292,
+        ],
+        [
+            0.0,
+            0.0,
+            0.0,
+            -0.024783361766702584,
+            0.7712675278092481,
+            0.4970532969227384,
+        ],
+    ]
+)
 NO_JR_HINT = (
-    "that Jacobian holds only for a small residual: at a large one, Log's own Jacobian at r sits "
-    "between the perturbation and the residual"
+    "that Jacobian holds only for a small residual: J must be right at a large one too (compare it with a central "
+    "difference of the residual at this edge)"
 )
 ADJOINT_INVERTED_HINT = (
     "the adjoint is of the wrong pose, or inverted: J_i disagrees with a central difference of the residual in δ_i "
@@ -254,7 +307,7 @@ def _(pose_graph_edge):
             hint = FINITE_DIFFERENCES_HINT
         raise Mismatch(
             f"J_j disagrees with the derivative of the residual ({off_by(J_j, expected)})",
-            hint or "perturb T_j on the right inside the residual and use Log's Jacobian at r",
+            hint or "compare J_j column by column with a central difference of the residual in δ_j, here and at r = 0",
         )
 
 
@@ -268,7 +321,7 @@ def _(pose_graph_edge):
             (EDGE_I_ADJOINT_INVERTED, ADJOINT_INVERTED_HINT),
             (EDGE_I_MEASUREMENT_ADJOINT, MEASUREMENT_ADJOINT_HINT),
             (-expected, SIGN_HINT),
-            (EDGE_J_NOT_INVERTED @ EDGE_I_NO_JR, NOT_INVERTED_HINT),
+            (EDGE_I_NOT_INVERTED, NOT_INVERTED_HINT),
         ]
         hint = next((h for value, h in slips if close(J_i, value, 1e-7)), None)
         if hint is None and close(J_i, expected, 1e-7):
