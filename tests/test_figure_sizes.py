@@ -99,15 +99,15 @@ def survey(out_json, png_dir=None):
     Animation.to_jshtml = last_frame_only
     sys.path.insert(0, str(SOLUTIONS))
     os.chdir(SOLUTIONS)
-    records, seen = [], set()
+    records, seen = [], {}  # id -> the figure itself: kept alive, so that a new figure never reuses a measured one's id
     shell = InteractiveShell.instance()
     real_close = plt.close
     lesson = {"name": ""}
 
     def record(fig, where):
-        if id(fig) in seen:
+        if seen.get(id(fig)) is fig:
             return
-        seen.add(id(fig))
+        seen[id(fig)] = fig
         entry = dict(_measure(fig, where), lesson=lesson["name"])
         if png_dir:
             path = Path(png_dir) / f"{lesson['name'][:2]}_{len(records):02d}.png"

@@ -22,7 +22,7 @@ hidden test::
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -72,7 +72,7 @@ _NOT_ENFORCED = [False]
 
 
 @contextlib.contextmanager
-def checks_not_enforced():
+def checks_not_enforced() -> Iterator[None]:
     """While inside, :func:`fail` (so :func:`expect`, :func:`expect_close` and the checks built on
     :func:`fail`) returns instead of raising, so a test runs on past a failed check.
 
