@@ -8,15 +8,21 @@ from the transcript. Oracles, over every transcript of the real hidden suite:
 - no argument of a kept call equals, bit for bit, a value an earlier call of the same test returned,
   or a value the test got from the ``ref`` fixture (or a row or column of one);
 - a second recording with answers moved by another amount keeps exactly the same calls;
-- a chained test of our own is cut before its chained call, and a cut test is never passed unrun.
+- a chained test of our own is cut before its chained call, and a cut test is never passed unrun;
+- a check tighter than the nudge (an exact comparison) does not end the nudged recording: the calls after it
+  are kept, and the test passes unrun for a student whose values are the reference's;
+- checks are relaxed only inside ``checks_not_enforced`` and only in its own thread, and a hint given as a
+  function is made only when its check fails.
 """
 
+import threading
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 from autograder.grading import suite, transcripts
+from autograder.grading.hidden_api import Wrong, checks_not_enforced, expect, expect_close
 from autograder.sandbox.child import wire
 from support import THIS_COURSE
 
@@ -164,3 +170,53 @@ def test_a_chained_call_is_cut_and_the_test_always_runs():
     replay = transcripts.Replay(Answering())
     replay.prefetch(recorded)
     assert not replay.passes_as_recorded(), "a test cut short must run: its chained call is still to be made"
+
+
+def _exact_then_independent(student, ref):
+    T = np.eye(4)
+    T[:3, 3] = [1.0, 2.0, 3.0]
+    expect(np.array_equal(student.pose_inverse(T), ref.pose_inverse(T)), "not exact")  # fails when nudged
+    expect_close(student.pose_inverse(np.eye(4)), np.eye(4), 0.0, "the identity")  # so does this one
+    T[:3, 3] = [-1.0, 0.5, 0.0]
+    expect_close(student.pose_inverse(T)[:3, 3], [1.0, -0.5, 0.0], 1e-15, "a shift")
+
+
+def test_an_exact_check_does_not_cut_the_transcript():
+    reference, catalog = THIS_COURSE.reference, THIS_COURSE.catalog
+    test = SimpleNamespace(
+        function=_exact_then_independent, params={}, fixtures=("student", "ref"), nodeid="synthetic::exact"
+    )
+    found = suite._record_transcripts(reference, catalog, [test])["synthetic::exact"]
+    assert found.passed and found.complete and len(found.calls) == 3, (found.passed, found.complete, found.calls)
+
+
+def test_checks_are_relaxed_only_inside_and_in_their_own_thread():
+    made = []
+
+    def hint():
+        made.append(1)
+        return "the hint"
+
+    expect(True, "passes", hint)
+    expect_close([1.0], [1.0], 0.0, "passes", hint)
+    assert not made, "a passing check made its hint"
+    with pytest.raises(Wrong) as failed:
+        expect_close([1.0], [2.0], 0.5, "fails", hint)
+    assert failed.value.hint == "the hint" and made == [1]
+    raised = []
+    with checks_not_enforced():
+        expect(False, "relaxed")
+        expect_close([1.0, 2.0], [1.0], 0.0, "relaxed: shapes differ")
+
+        def elsewhere():
+            try:
+                expect(False, "another thread")
+            except Wrong:
+                raised.append(True)
+
+        other = threading.Thread(target=elsewhere)
+        other.start()
+        other.join()
+    assert raised == [True], "another thread's checks were relaxed"
+    with pytest.raises(Wrong):
+        expect(False, "enforced again")
