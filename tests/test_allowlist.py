@@ -123,6 +123,35 @@ REFUSED = {
         "    T = np.eye(4)\n    T[:3, :3] = Exp(phi)\n    T[:3, 3] = V @ rho\n    return T\n",
         "exp_se3 called numpy.linalg.inv",
     ),
+    # the same kernel fetched by a computed name, which no code names and no profile event shows being called:
+    # it is replaced by a stand-in whose calls the watch sees (coursekit.watching._put_stand_ins)
+    "inverse_kernel_by_computed_name": (
+        "exp_se3",
+        "from coursekit.lie import Exp, skew\n\ndef exp_se3(xi):\n"
+        "    xi = np.asarray(xi, dtype=float).reshape(6)\n    rho, phi = xi[:3], xi[3:]\n"
+        "    theta = np.linalg.norm(phi)\n    W = skew(phi)\n"
+        "    c = 1 / 12 if theta < 1e-3 else (1 - theta * np.sin(theta) / (2 * (1 - np.cos(theta)))) / theta**2\n"
+        "    kernels = getattr(np.linalg, '_umath' + '_linalg')\n"
+        "    V = getattr(kernels, 'in' + 'v')(np.eye(3) - 0.5 * W + c * (W @ W))\n"
+        "    T = np.eye(4)\n    T[:3, :3] = Exp(phi)\n    T[:3, 3] = V @ rho\n    return T\n",
+        "exp_se3 called numpy.linalg.inv",
+    ),
+    "ufunc_by_computed_name": (
+        "exp_so3",
+        "import scipy.special\n\ndef exp_so3(w):\n    w = np.asarray(w, dtype=float)\n    theta = np.linalg.norm(w)\n"
+        "    if theta < 1e-8:\n        return np.eye(3) + hat(w)\n    K = hat(w / theta)\n"
+        "    one_minus_cos = -vars(scipy)['spe' + 'cial'].cosm1(theta)\n"
+        "    return np.eye(3) + np.sin(theta) * K + one_minus_cos * (K @ K)\n",
+        "exp_so3 called scipy.special.cosm1",
+    ),
+    "ufunc_stored_in_a_container": (
+        "exp_so3",
+        "import scipy.special\nTOOLS = {'c': getattr(scipy.special, 'cos' + 'm1')}\n\n"
+        "def exp_so3(w):\n    w = np.asarray(w, dtype=float)\n    theta = np.linalg.norm(w)\n"
+        "    if theta < 1e-8:\n        return np.eye(3) + hat(w)\n    K = hat(w / theta)\n"
+        "    return np.eye(3) + np.sin(theta) * K - TOOLS['c'](theta) * (K @ K)\n",
+        "exp_so3 called scipy.special.cosm1",
+    ),
     "thread": (
         "exp_so3",
         "import threading\nfrom scipy.linalg import expm\n\ndef exp_so3(w):\n"
@@ -218,6 +247,26 @@ def test_allowed_imports_and_calls_go_through():
     )
     _, seen = watch_call(namespace["f"], ([0.1, 0.2, 0.3],), forbidden=guard_for("exp_so3", "03"))
     assert seen.used == [] and not seen.tampered
+
+
+def test_kernels_stood_in_for_still_work_for_the_libraries_that_use_them():
+    """After a watched call has put its stand-ins in place (numpy's inverse kernels for exp_se3, scipy's ufuncs
+    and LAPACK routines for exp_so3), the libraries' own functions that call those kernels give the same numbers,
+    inside an allowed answer (not refused) and outside any watched call."""
+    import scipy.linalg
+    import scipy.special
+
+    A = np.array([[4.0, 1.0, 0.0], [1.0, 3.0, 1.0], [0.0, 1.0, 2.0]])
+    before = (np.linalg.det(A), np.linalg.eigvalsh(A), scipy.special.cosm1(0.3), scipy.linalg.solve(A, np.ones(3)))
+    namespace = _main("def f(A):\n    return np.linalg.det(A), np.linalg.eigvalsh(A), np.linalg.svd(A)[1]\n")
+    for exercise, lesson in (("exp_se3", "07"), ("exp_so3", "03")):
+        value, seen = watch_call(namespace["f"], (A,), forbidden=guard_for(exercise, lesson))
+        assert seen.used == [] and not seen.tampered, (exercise, seen.used)
+        assert value[0] == pytest.approx(before[0]) and np.allclose(value[1], before[1])
+    assert type(np.linalg._umath_linalg.inv).__name__ == "inv", "the inverse kernel has no stand-in: test nothing"
+    after = (np.linalg.det(A), np.linalg.eigvalsh(A), scipy.special.cosm1(0.3), scipy.linalg.solve(A, np.ones(3)))
+    for old, new in zip(before, after):
+        np.testing.assert_allclose(new, old, rtol=1e-15)
 
 
 def test_callbacks_handed_to_numpy_count_and_functions_handed_in_are_the_callers():

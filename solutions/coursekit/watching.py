@@ -166,7 +166,8 @@ class _Tracer:
     outside the standard library; ``print`` and what it writes to are free. Threads started during
     the call are watched too (``threading.setprofile``), though starting one already leaves the
     allowance (``threading``). A ufunc or an f2py routine makes no profile event when called; those are
-    judged where notebook code names them (:func:`_check_unreported`). The tracer switched off
+    judged where notebook code names them (:func:`_check_unreported`) and, fetched by a computed name, through
+    the stand-ins that take their place (:func:`_put_stand_ins`). The tracer switched off
     (``sys.setprofile``) is seen as ``tampered``.
     """
 
@@ -370,8 +371,9 @@ def _check_unreported(function, tracer, limit=64):
     The profile hook sees every Python function and C function that notebook code calls, but no event
     marks the call of a ufunc or an f2py routine (``numpy.linalg._umath_linalg.inv``, the kernel under
     ``np.linalg.inv``). So these are judged where the code names them: a global or a closure's value, a
-    default, or an attribute chain read from a module (``np.linalg._umath_linalg.inv``, resolved from the
-    modules' own dictionaries, so no code runs). Reachable code is ``function``'s, its nested functions',
+    default, an item of a list, tuple, set or dict held there, or an attribute chain read from a module
+    (``np.linalg._umath_linalg.inv``, resolved from the modules' own dictionaries, so no code runs); a kernel
+    fetched by a computed name is left to its stand-in (:func:`_put_stand_ins`). Reachable code is ``function``'s, its nested functions',
     and that of the notebook functions and classes it names, transitively (at most ``limit`` code
     objects). A name in a branch that never runs counts too: the answer names a tool it may not use.
     """
@@ -386,9 +388,18 @@ def _check_unreported(function, tracer, limit=64):
             queue.append(value)
         elif isinstance(value, type) and getattr(value, "__module__", None) == namespace.get("__name__"):
             queue.extend(v for v in vars(value).values() if isinstance(v, types.FunctionType))
+        elif isinstance(value, _Visible):  # a kernel's stand-in, named: judged as the kernel would be
+            tracer._check(module or type(value).__module__, attribute or type(value).__name__)
+        elif type(value) in (list, tuple, set, frozenset, dict):  # kernels stored where no name shows them
+            for item in _contents(value):
+                consider(item)
         elif _unreported(value):
             if module is not None:
                 tracer._check(module, attribute)
+                return
+            known = _KERNELS["stand_ins"].get(id(value))
+            if known is not None and known[0] is value:  # a kernel kept from before its modules got its stand-in
+                tracer._check(type(known[1]).__module__, type(known[1]).__name__)
                 return
             homes = _homes(value)
             cleared = [home for home in homes if tracer.allowed(home) and not (home + ".").startswith(tracer.prefixes)]
@@ -427,6 +438,121 @@ def _check_unreported(function, tracer, limit=64):
                     if value is _MISSING:
                         break
                     consider(value, module, attribute)
+
+
+# --- kernels fetched by a computed name ---------------------------------------------------------------------
+# A ufunc or an f2py routine that notebook code reaches by a computed name (``getattr(np.linalg, "_umath" +
+# "_linalg").inv``, ``vars(scipy)["special"].cosm1``) is named nowhere in its code, so _check_unreported cannot
+# judge it, and no profile event marks its call. So before a watched call runs, each such kernel that only
+# modules the call may not use hold (outside the allowance, or forbidden) is replaced there by a _Visible
+# stand-in: calling it runs a Python frame of that module's name, which the profile hook judges like any other
+# call. The stand-ins stay (putting them back would cost a millisecond a call where scipy is loaded); library
+# code that uses a kernel goes on working, since calls and attributes are passed on, and is free as always:
+# its caller is not notebook code. Kernels stored before the call, where no name shows them, are looked for in
+# containers (_contents).
+_MODULE_DICT = types.ModuleType.__dict__["__dict__"]  # a module's namespace, read without running any code
+_TYPE_NAME = type.__dict__["__name__"]  # a type's own name, read without running a metaclass's code
+_KERNELS = {"modules": -1, "holders": {}, "done": set(), "stand_ins": {}}
+
+
+def _is_kernel(value):
+    """A ufunc or an f2py routine (checked by exact type: no code of ``value`` runs).
+
+    >>> _is_kernel(np.sqrt), _is_kernel(np.linalg.norm), _is_kernel(len)
+    (True, False, False)
+    """
+    kind = type(value)
+    return kind is np.ufunc or (not kind.__flags__ & _HEAP_TYPE and _TYPE_NAME.__get__(kind, type) == "fortran")
+
+
+def _kernel_holders():
+    """``{id(kernel): (kernel, [(module namespace, module name, attribute), ...])}`` over the loaded modules,
+    built again when a module has been loaded since (a few milliseconds)."""
+    if _KERNELS["modules"] != len(sys.modules):
+        holders = {}
+        for name, module in list(sys.modules.items()):
+            if not isinstance(name, str) or not isinstance(module, types.ModuleType):
+                continue
+            namespace = _MODULE_DICT.__get__(module)
+            for attribute, value in list(namespace.items()) if isinstance(namespace, dict) else ():
+                if isinstance(attribute, str) and _is_kernel(value):
+                    holders.setdefault(id(value), (value, []))[1].append((namespace, name, attribute))
+        _KERNELS.update(modules=len(sys.modules), holders=holders, done=set())
+    return _KERNELS["holders"]
+
+
+class _Visible:
+    """A kernel's stand-in: a Python callable, so that its calls make a profile event. Each kernel gets a
+    subclass whose ``__call__`` is a frame of the kernel's module and name."""
+
+    __slots__ = ("_kernel",)
+
+    def __getattr__(self, name):
+        return getattr(object.__getattribute__(self, "_kernel"), name)
+
+    def __setattr__(self, name, value):  # scipy labels its LAPACK routines (func.dtype = ...)
+        setattr(object.__getattribute__(self, "_kernel"), name, value)
+
+    def __delattr__(self, name):
+        delattr(object.__getattribute__(self, "_kernel"), name)
+
+    def __repr__(self):
+        return repr(object.__getattribute__(self, "_kernel"))
+
+
+def _stand_in(kernel, module_name, attribute):
+    """The :class:`_Visible` stand-in of ``kernel``, made once per kernel."""
+    cached = _KERNELS["stand_ins"].get(id(kernel))
+    if cached is None or cached[0] is not kernel:
+
+        def call(self, *args, **kwargs):
+            return kernel(*args, **kwargs)
+
+        names = {"co_name": attribute}
+        if hasattr(call.__code__, "co_qualname"):  # Python 3.11+
+            names["co_qualname"] = attribute
+        namespace = {"__name__": module_name, "__builtins__": builtins}  # the frame's module, as the hook reads it
+        call = types.FunctionType(call.__code__.replace(**names), namespace, attribute, None, call.__closure__)
+        kind = type(attribute, (_Visible,), {"__slots__": (), "__call__": call, "__module__": module_name})
+        stand_in = object.__new__(kind)
+        object.__setattr__(stand_in, "_kernel", kernel)
+        cached = _KERNELS["stand_ins"][id(kernel)] = (kernel, stand_in)
+    return cached[1]
+
+
+def _put_stand_ins(tracer):
+    """Put in place the stand-ins of the kernels that only modules ``tracer``'s call may not use hold (once per
+    allowance and set of loaded modules)."""
+    holders = _kernel_holders()
+    key = (tracer.modules, tracer.prefixes, tracer.allowance is None)
+    if key in _KERNELS["done"]:
+        return
+    for kernel, places in holders.values():
+        shut = [
+            place
+            for place in places
+            if not tracer.allowed(place[1]) or f"{place[1]}.{place[2]}.".startswith(tracer.prefixes)
+        ]
+        if shut and len(shut) == len(places):
+            shown = min(shut, key=lambda place: (place[1].count("._"), len(place[1])))
+            stand_in = _stand_in(kernel, shown[1], shown[2])
+            for namespace, _, attribute in shut:
+                if namespace.get(attribute) is kernel:
+                    namespace[attribute] = stand_in
+    _KERNELS["done"].add(key)
+
+
+def _contents(value, depth=0):
+    """The values inside plain containers (lists, tuples, sets, dicts' values; at most 2 levels, 256 items each),
+    read by exact type so that no code of the notebook runs."""
+    if depth >= 2 or type(value) not in (list, tuple, set, frozenset, dict):
+        return []
+    items = list(value.values() if type(value) is dict else value)[:256]
+    found = []
+    for item in items:
+        found.append(item)
+        found += _contents(item, depth + 1)
+    return found
 
 
 def _resolve(name):
@@ -548,6 +674,7 @@ def watch_call(function, args=(), kwargs=None, forbidden=()):
             tracer.codes.add(_ImportGuard.__call__.__code__)
             builtins.__import__ = guard
         _check_unreported(function, tracer)
+        _put_stand_ins(tracer)
         hook = tracer.make_hook()
         opening, closing = tracer.collection_callbacks()
         gc.callbacks.insert(0, opening)
