@@ -19,3 +19,4 @@ def test_quaternion_power_slips():
     same(checks.Q_TWO_RAD, np.concatenate([[np.cos(alpha)], np.sin(alpha) * axis]))
     same(checks.Q_ONE_FULL_ANGLE, np.concatenate([[np.cos(2 * alpha)], np.sin(2 * alpha) * axis]))
     same(checks.HALF_WITHOUT_UNIT_AXIS, np.sin(0.5 * alpha) * np.linalg.norm(np.sin(alpha) * axis))
+    same(checks.HALF_ELEMENTWISE, checks.Q_TWO_RAD**0.5)

@@ -25,16 +25,18 @@ def test_hand_written_rotations():
 def test_each_slip_gets_its_own_hint_at_the_checks_inputs():
     R1, R2 = checks.QUARTER_Z, checks.QUARTER_X
     assert np.allclose(checks._compose_numeric(R1, R2), [R2.T, np.eye(3)], atol=1e-9)  # the answer (R2ᵀ, I)
-    slips = {
-        "transpose": (R2, np.eye(3)),
-        "ignores R2": (np.eye(3), np.eye(3)),
-        "left": (np.eye(3), R1),
-        "swapped": (np.eye(3), R2.T),
-        "wrong factor": (R1.T, np.eye(3)),
+    identity = np.eye(3)
+    slips = {  # each slip as the function a student would write, since a hint may call it on other inputs
+        "transpose": lambda A, B: (B, identity),
+        "ignores R2": lambda A, B: (identity, identity),
+        "left": lambda A, B: (identity, A),
+        "swapped": lambda A, B: (identity, B.T),
+        "wrong factor": lambda A, B: (A.T, identity),
     }
-    compose_hints = {name: checks._compose_hint(*pair, R1, R2) for name, pair in slips.items()}
+    compose_hints = {name: checks._compose_hint(slip, *slip(R1, R2), R1, R2) for name, slip in slips.items()}
     assert None not in compose_hints.values() and len(set(compose_hints.values())) == len(slips), compose_hints
     R = checks.PERMUTATION
     assert np.allclose(checks._inverse_numeric(R), -R, atol=1e-9)  # the answer -R
-    inverse_hints = [checks._inverse_hint(slip, R) for slip in (-R.T, -np.eye(3), R, R.T)]
+    inverse_slips = (lambda X: -X.T, lambda X: -identity, lambda X: X, lambda X: X.T)
+    inverse_hints = [checks._inverse_hint(slip, slip(R), R) for slip in inverse_slips]
     assert None not in inverse_hints and len(set(inverse_hints)) == 4, inverse_hints

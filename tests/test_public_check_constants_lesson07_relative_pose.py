@@ -23,7 +23,7 @@ def test_the_poses_and_the_slips():
     assert np.allclose(checks.T_WA, T_wa, atol=1e-15) and np.allclose(checks.T_WB, T_wb, atol=1e-15)
     inv = np.linalg.inv
     assert np.allclose(checks.T_AB, inv(T_wa) @ T_wb, atol=1e-14)
-    assert np.allclose(checks.WORLD_DIFFERENCE, T_wb @ inv(T_wa), atol=1e-14)
+    assert np.allclose(checks.COLLEAGUE_RESULT, T_wb @ inv(T_wa), atol=1e-14)
     assert np.allclose(checks.TRANSPOSED, T_wa.T @ T_wb, atol=1e-14)
     assert np.allclose(checks.REVERSED, inv(T_wb) @ T_wa, atol=1e-14)
     assert np.allclose(checks.UNROTATED, pose(qz.T @ qz @ qx, T_wb[:3, 3] - T_wa[:3, 3]), atol=1e-14)

@@ -65,10 +65,10 @@ def test_the_prediction_slips():
     G = JrSE3(np.concatenate([np.zeros(3), step]))[3:, 3:] * dt  # the noise through the right Jacobian
     assert np.allclose(checks.PREDICT_NOT_CARRIED, P + G @ Q @ G.T, atol=1e-15)
     assert np.allclose(checks.PREDICT_WRONG_WAY, F.T @ P @ F + G @ Q @ G.T, atol=1e-15)
-    assert np.allclose(checks.PREDICT_NO_JR, F @ P @ F.T + dt * dt * Q, atol=1e-15)
+    assert np.allclose(checks.PREDICT_NOISE_SHORT_STEP_ONLY, F @ P @ F.T + dt * dt * Q, atol=1e-15)
     assert np.allclose(checks.PREDICT_NOISE_DT, F @ P @ F.T + G @ Q @ G.T / dt, atol=1e-15)
     assert np.allclose(checks.PREDICT_NO_NOISE, F @ P @ F.T, atol=1e-15)
-    assert np.allclose(checks.PREDICT_LEFT_JACOBIAN, F @ P @ F.T + G.T @ Q @ G, atol=1e-15)
+    assert np.allclose(checks.PREDICT_NOISE_OLD_AXES, F @ P @ F.T + G.T @ Q @ G, atol=1e-15)
 
 
 def test_the_nees_numbers():

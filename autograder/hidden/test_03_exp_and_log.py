@@ -454,7 +454,7 @@ def _log_hint(got, R, expected):
         return "the identity's log is the zero vector" if np.max(np.abs(got)) > 0.0 else ""
     unit = expected / angle
     if explains(got, -expected, expected):
-        return hints.OPPOSITE_ROTATION_CHECK_SIGN_HINT
+        return hints.LOG_AXIS_SIGN_NEAR_PI_HINT if angle > 3.0 else hints.OPPOSITE_ROTATION_CHECK_SIGN_HINT
     if explains(got, 2.0 * expected, expected):
         return hints.TWICE_ROTATION_VECTOR_VEE_HINT
     if angle < 0.5 and explains(got, a, expected):

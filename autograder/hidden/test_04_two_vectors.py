@@ -1,4 +1,4 @@
-"""Hidden checks for lesson 04, section 15: quat_from_two_vectors.
+"""Hidden checks for lesson 04, section 16: quat_from_two_vectors.
 
 Oracle: the data are built by turning a known direction a through a known angle θ about an axis n
 perpendicular to it (scipy's Rotation), and the answer is applied with scipy. A correct answer is a unit
@@ -55,7 +55,8 @@ def _slip_values(a, b):
     return [
         (
             np.concatenate([[np.cos(theta)], np.sin(theta) * u]),
-            "the quaternion holds half the angle: [cos(θ/2), sin(θ/2) u]",
+            "R(q) turns a twice as far as b: a quaternion holds half the angle of its turn, [cos(φ/2), "
+            "sin(φ/2) u] turns by φ (section 7)",
         ),
         (
             np.concatenate([[np.cos(theta / 2)], -np.sin(theta / 2) * u]),
@@ -79,14 +80,15 @@ def _hint(got, a, b, truth):
         if np.max(np.abs(candidate - truth)) > 1e-13 and explains(got, candidate, truth, floor=1e-17):
             return hint
     return (
-        "the rotation of q must take the direction of a onto that of b through the angle between them: check "
-        "the half angle, the axis (perpendicular to both), the sense of the turn and the accuracy at tiny angles"
+        "the rotation of q must take the direction of a onto that of b, and no rotation that does may turn less: "
+        "try pairs whose answer you can see (x onto y is a quarter turn about +z), and check how q holds the "
+        "angle, the sense of the turn and the accuracy at tiny angles"
     )
 
 
 @exercise("quat_from_two_vectors", weight=3)
 def test_two_vectors_every_angle(student):
-    """takes a to b through the angle between them, for θ from 1e-12 to π − 1e-6 and |a|, |b| from 0.01 to 100:
+    """takes a to b by the shortest turn, for turns from 1e-12 to π − 1e-6 rad and |a|, |b| from 0.01 to 100:
     unit norm to 1e-14, angle to 1e-14, action to 1e-14 (1e-15 / (π − θ) near π)"""
     for k, theta in enumerate(ANGLES):
         a, b = _pair(theta, 4100 + k)
@@ -122,8 +124,8 @@ def test_two_vectors_opposite_and_parallel(student):
         expect(
             np.shape(got) != (4,) or np.all(np.isfinite(np.asarray(got, dtype=float))),
             f"for opposite directions ({fmt(a)} and its negative) got NaN",
-            "for opposite directions the cross product is zero or rounding noise: take a half turn about any axis "
-            "perpendicular to a",
+            "for opposite directions whatever gives your axis elsewhere is zero or rounding noise here: take a half "
+            "turn about any axis perpendicular to a, found another way",
         )
         got = expect_array(got, (4,), "quat_from_two_vectors(a, -3a)")
         a_hat = a / np.linalg.norm(a)
@@ -131,8 +133,8 @@ def test_two_vectors_opposite_and_parallel(student):
         expect(
             abs(np.linalg.norm(got) - 1.0) <= 1e-14 and np.linalg.norm(_matrix(got) @ a_hat + a_hat) <= 1e-14,
             f"for opposite directions got {fmt(got, 6)}: not a unit half turn sending a to -a",
-            "for opposite directions the cross product is zero or rounding noise: take a half turn about any axis "
-            "perpendicular to a"
+            "for opposite directions whatever gives your axis elsewhere is zero or rounding noise here: take a half "
+            "turn about any axis perpendicular to a, found another way"
             if half_turn_wrong_axis
             else hints.OPPOSITE_DIRECTIONS_ANSWER_HALF_HINT,
         )

@@ -209,7 +209,7 @@ def _extraction_hint(got, R, eps=None):
         return (
             "next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
             "atan2 of them gives yaw and roll only to ~1e-16/cos(pitch), and the angles rebuild the large entries "
-            "of R badly; the roll must come from entries of R that stay large next to the lock"
+            "of R badly; the angles must rebuild every entry of R, the large ones included"
         )
     if eps is not None and abs(got[2]) == 0.0:
         return (
@@ -218,7 +218,8 @@ def _extraction_hint(got, R, eps=None):
         )
     return (
         "at and next to the lock the angles must rebuild R: check the pitch's digits there, a lock branch at the "
-        "docstring's threshold (roll = 0), and which entries of R the roll is read from"
+        "docstring's threshold (roll = 0), and whether your angles rebuild the large entries of R as well as the "
+        "small ones"
     )
 
 

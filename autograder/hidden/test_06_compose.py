@@ -79,7 +79,7 @@ def _compose_hint(J1, J2, R1, R2):
     ) or (
         FLOAT32_HINT
         if single_precision_error(got, truth)
-        else "write R1 Exp(d) R2 as (R1 R2) Exp(J1 d) with the adjoint, and read off J1"
+        else "J1 must satisfy R1 Exp(d) R2 ≈ (R1 R2) Exp(J1 d): compare it with finite differences at a generic R2"
     )
 
 
@@ -138,15 +138,15 @@ def _inverse_hint(J, R):
             (R.T, hints.INVERSE_TRANSPOSE_HINT),
             (
                 np.eye(3),
-                "the sign and the side: inverting reverses the small turn, and J must act on a turn to the right "
-                "of R⁻¹; at the identity J is -I",
+                "J = I fits neither R = I nor this R: compare (R Exp(d))⁻¹ with R⁻¹ Exp(J d) for a small d along "
+                "one axis, first at R = I, then at a generic R",
             ),
         ],
         -R,
     ) or (
         FLOAT32_HINT
         if single_precision_error(J, -R)
-        else "J must satisfy (R Exp(d))⁻¹ ≈ R⁻¹ Exp(J d): compare it with finite differences, and with -I at the identity"
+        else "J must satisfy (R Exp(d))⁻¹ ≈ R⁻¹ Exp(J d): compare it with finite differences, first at R = I"
     )
 
 
@@ -175,7 +175,7 @@ def test_inverse_jacobian_finite_differences(student):
 
 @exercise("jacobian_of_inverse", weight=1)
 def test_inverse_jacobian_at_the_identity(student):
-    """is -I at the identity: inverting a small turn reverses it"""
+    """is exact at the identity, where (Exp(d))⁻¹ = Exp(J d) for every small d"""
     J = expect_array(student.jacobian_of_inverse(np.eye(3)), (3, 3), "jacobian_of_inverse(I)")
     expect_close(J, -np.eye(3), 1e-15, "jacobian_of_inverse(I)", hints.INVERSE_AT_IDENTITY_HINT)
 

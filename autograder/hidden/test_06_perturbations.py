@@ -857,7 +857,7 @@ def _jr_candidates(w):
         (_jr_naive(w), hints.CLOSED_FORM_LOSES_DIGITS_HINT),
         (
             _jr_series(w),
-            f"that is a one-term series of each coefficient at θ = {theta:.2g}, off by about θ³/24 there: "
+            f"that is a one-term series of each coefficient at θ = {theta:.2g}, whose error grows like θ³: "
             "below your threshold keep the θ² term of each coefficient's series",
         ),
     ]

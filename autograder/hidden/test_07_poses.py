@@ -493,7 +493,7 @@ def test_transform_points_lists(student):
 
 
 # ---------------------------------------------------------------- exp_se3
-FORGETS_V_HINT = "the translation is V(phi) @ rho, not rho"
+FORGETS_V_HINT = hints.EXP_SE3_TRANSLATION_IS_RHO_HINT
 
 
 def _is_rho(got, xi):
@@ -515,7 +515,7 @@ def _one_term_series_hint(got, xi):
     gap = float(np.max(np.abs(short - exact)))
     if gap > 0.0 and float(np.max(np.abs(np.asarray(got)[:3, 3] - short))) <= 1e-2 * gap:
         return (
-            f"that is V's one-term series I + W/2 + W²/6 at |phi| = {theta:.2g}, off by about θ³/24 |rho| there: "
+            f"that is V's one-term series I + W/2 + W²/6 at |phi| = {theta:.2g}, whose error grows like θ³ |rho|: "
             "below your threshold keep the θ² term of each coefficient's series"
         )
     return ""
@@ -538,7 +538,7 @@ def _exp_hint(got, xi, tiny=False):
             if tiny
             else "the rotation block is right; check V (its two coefficients and the sign of the W term)"
         )
-    return "T = [[Exp(phi), V(phi) rho], [0, 1]] with xi = [rho, phi]"
+    return "compare your pose with expm of the 4×4 twist matrix ξ^ = [[skew(phi), rho], [0, 0]], xi = [rho, phi]"
 
 
 @exercise("exp_se3", weight=3)

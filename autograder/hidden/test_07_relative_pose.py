@@ -27,7 +27,7 @@ def _pose(R, t):
 def _hint(got, T_wa, T_wb):
     truth = np.linalg.inv(T_wa) @ T_wb
     slips = [
-        (T_wb @ np.linalg.inv(T_wa), "that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain"),
+        (T_wb @ np.linalg.inv(T_wa), hints.RELATIVE_POSE_COLLEAGUE_HINT),
         (T_wa.T @ T_wb, hints.INVERSE_POSE_TRANSPOSE_T1_HINT),
         (np.linalg.inv(T_wb) @ T_wa, hints.RELATIVE_POSE_REVERSED_HINT),
         (_pose(T_wa[:3, :3].T @ T_wb[:3, :3], T_wb[:3, 3] - T_wa[:3, 3]), hints.SHIFT_IN_WORLD_AXES_HINT),

@@ -66,7 +66,7 @@ def _judge(student, seed, pairs, sigma, outliers, cone=None, plane=False):
     expect(
         not problem,
         f"hand_eye_rotation returned a matrix that is not a rotation: {problem}",
-        "project your fit onto SO(3)",
+        hints.HAND_EYE_NOT_A_ROTATION_HINT,
     )
     error = float(np.linalg.norm(_log(X.T @ X_true)))
     what = (

@@ -143,25 +143,43 @@ def _adjoint_of(T):
     return np.column_stack([_log_se3(T @ _exp_se3(1e-7 * e) @ inverse) / 1e-7 for e in np.eye(6)])
 
 
-def _hint(S, T1, S1, T2, S2):
+def _parts_hint(student, T1, S1, T2, S2):
+    """Which part of S is wrong, told from the student's own S with S2 = 0 (the part from S1) and with S1 = 0."""
+    zero = np.zeros((6, 6))
+    scale = np.max(np.abs(S1)) + np.max(np.abs(S2))
+    try:
+        _, from_s1 = _pair(student.compound_pose_covariance(T1, S1, T2, zero))
+        _, from_s2 = _pair(student.compound_pose_covariance(T1, zero, T2, S2))
+    except Exception:  # noqa: BLE001 - the test itself reports the failure
+        return ""
+    s1_right = np.max(np.abs(from_s1 - exact_covariance(T1, S1, T2, zero))) <= 1e-9 * scale
+    s2_right = np.max(np.abs(from_s2 - S2)) <= 1e-9 * scale
+    if s1_right and s2_right:
+        return hints.COMPOUND_NOT_A_SUM_HINT
+    if s2_right:
+        return hints.COMPOUND_S1_PART_HINT
+    return hints.COMPOUND_S2_PART_HINT if s1_right else hints.COMPOUND_BOTH_PARTS_HINT
+
+
+def _hint(student, S, T1, S1, T2, S2):
     _, J = _linearised(T1, S1, T2, S2)
     A = J[:, :6]
     R2 = np.kron(np.eye(2), T2[:3, :3].T)
     B = np.linalg.inv(A)
     slips = [
-        (S1 + S2, "S1 must be carried across T2 before S2 is added"),
-        (B @ S1 @ B.T + S2, "the adjoint goes the other way"),
-        (R2 @ S1 @ R2.T + S2, "the adjoint of a pose has a coupling block"),
+        (S1 + S2, hints.COMPOUND_IGNORES_T2_HINT),
+        (B @ S1 @ B.T + S2, hints.COMPOUND_INVERTED_T2_HINT),
+        (R2 @ S1 @ R2.T + S2, hints.COMPOUND_SHIFT_IGNORED_HINT),
         (A @ S1 + S2, "a covariance takes the linear map on both sides"),
         (
             _adjoint_of(np.linalg.inv(T1)) @ S1 @ _adjoint_of(np.linalg.inv(T1)).T + S2,
-            "the adjoint belongs to the factor it passes: ξ1 crosses T2, not T1",
+            hints.COMPOUND_DEPENDS_ON_T1_HINT,
         ),
     ]
     scale = np.max(np.abs(S1)) + np.max(np.abs(S2))
     matching = [hint for value, hint in slips if np.max(np.abs(S - value)) <= 1e-6 * scale]
     # two slips that agree at this input (T2 barely turning) cannot be told apart here: name neither
-    return matching[0] if len(matching) == 1 else hints.COMPOUND_EXPAND_HINT
+    return matching[0] if len(matching) == 1 else _parts_hint(student, T1, S1, T2, S2)
 
 
 def compound_cases(seed=9800):
@@ -186,7 +204,7 @@ def test_compound_every_angle(student):
             expected / scale,
             EXACT,
             f"S / |S| for T2 turning {angle:.3g} rad",
-            lambda: FINITE_DIFFERENCES_HINT if near else _hint(S, T1, S1, T2, S2),
+            lambda: FINITE_DIFFERENCES_HINT if near else _hint(student, S, T1, S1, T2, S2),
         )
 
 
@@ -204,7 +222,7 @@ def test_compound_pose(student):
 
 @exercise("compound_pose_covariance", weight=1)
 def test_compound_exact_when_nothing_is_carried(student):
-    """with T2 = I nothing crosses it: S equals S1 + S2 to 1e-9 (relative), for covariances whose digits need float64"""
+    """with T2 = I: S equals S1 + S2 to 1e-9 (relative), for covariances whose digits need float64"""
     rng = np.random.default_rng(9815)
     for size in (1e-8, 1e-3, 1.0):
         T1 = _pose(rng.uniform(0, 3), rng.normal(size=3), 3 * rng.normal(size=3))
@@ -228,7 +246,9 @@ def test_compound_against_monte_carlo(student):
     _, S = _pair(student.compound_pose_covariance(T1.copy(), S1.copy(), T2.copy(), S2.copy()))
     scale = np.max(np.abs(sampled))
     # sample covariance entries scatter by about sqrt(2 / 40 000) = 0.7 % of the scale: 4 % is over five of those
-    expect_close(S / scale, sampled / scale, 0.04, "S / |S| against Monte Carlo", lambda: _hint(S, T1, S1, T2, S2))
+    expect_close(
+        S / scale, sampled / scale, 0.04, "S / |S| against Monte Carlo", lambda: _hint(student, S, T1, S1, T2, S2)
+    )
 
 
 @exercise("compound_pose_covariance", weight=1)

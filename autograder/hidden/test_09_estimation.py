@@ -608,10 +608,10 @@ def _robust_hint(got, P, Q, T0, k):
     if np.max(np.abs(_huber_gradient(got, P, Q, np.inf))) < 1e-8:
         return hints.MINIMISES_SQUARED_COST_LEAST_HINT
     if _squared_weights_stationary(got, P, Q, k):
-        return hints.WEIGHTS_K_R_BEYOND_HINT
+        return hints.ROBUST_SLOWER_TAIL_HINT
     if _huber_cost(got, P, Q, k) < _huber_cost(np.asarray(T0, dtype=float), P, Q, k):
         return "the cost went down but the gradient is not zero yet: iterate until your steps are tiny"
-    return hints.ROBUST_WEIGHT_QUESTION_HINT
+    return hints.ROBUST_GRADIENT_NOT_ZERO_HINT
 
 
 @exercise("align_pose_robust", weight=3)

@@ -85,18 +85,18 @@ def _predict_hint(P_new, R, P, omega, dt, Q, truth, tol):
     return _first(
         P_new,
         [
-            (P + G @ Q @ G.T, "P was not carried across the step: the old error must cross the step's turn"),
-            (F.T @ P @ F + G @ Q @ G.T, "the error crosses the step's turn the wrong way round"),
             (
-                F @ P @ F.T + dt * dt * Q,
-                "the noise sits inside the step's Exp: the Jacobian of Exp there, which is not I",
+                P + G @ Q @ G.T,
+                "P was not carried across the step: P_new is right when the step does not turn, and wrong when it does",
             ),
+            (F.T @ P @ F + G @ Q @ G.T, "the error crosses the step's turn the wrong way round"),
+            (F @ P @ F.T + dt * dt * Q, hints.PREDICT_NOISE_SHORT_STEP_HINT),
             (
                 F @ P @ F.T + G @ Q @ G.T / dt,
                 "Q is in (rad/s)² and P in rad²: check the units of the noise's part",
             ),
             (F @ P @ F.T, "the gyro noise must add to P"),
-            (F @ P @ F.T + G.T @ Q @ G, "the noise's Jacobian, to first order in ε and n, is the right one of Exp"),
+            (F @ P @ F.T + G.T @ Q @ G, hints.PREDICT_NOISE_OLD_AXES_HINT),
         ],
         truth,
         tol,

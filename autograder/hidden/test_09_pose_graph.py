@@ -75,7 +75,7 @@ def _slip(got, candidates, truth, tol):
     return ""
 
 
-NO_JR = "that Jacobian holds only for a small residual: at a large one, Log's Jacobian at r sits in between"
+NO_JR = hints.EDGE_SMALL_RESIDUAL_HINT
 NOT_INVERTED = hints.EDGE_NOT_INVERTED_HINT
 
 

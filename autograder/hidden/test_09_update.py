@@ -90,7 +90,7 @@ def _update_hint(step, R, P, y, g_w, Rn, truth, tol):
     return _first(
         step,
         [
-            (kalman(-_skew(g_b)), "the step moves away from the measurement: the sign of the measurement Jacobian"),
+            (kalman(-_skew(g_b)), hints.UPDATE_SIGN_HINT),
             (kalman(_skew(g_w)), "the measurement Jacobian must depend on the attitude R"),
             (
                 kalman(R.T @ _skew(g_w)),

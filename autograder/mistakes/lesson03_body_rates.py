@@ -52,8 +52,8 @@ def body_angular_velocity(R, R_dot):
     W = R.T @ np.asarray(R_dot, dtype=float)
     return R.T @ ({_VEE})
 """,
-        hint="turned into body axes twice",
-        public_hint="turned into body axes twice",
+        hint="one change of axes too many",
+        public_hint="one change of axes too many",
     ),
     Mistake(
         "body_rate_lists_transposed",

@@ -506,8 +506,8 @@ def quat_to_matrix(q):
                      [x * y + w * z, 1 - (x * x + z * z), y * z - w * x],
                      [x * z - w * y, y * z + w * x, 1 - (x * x + y * y)]])
 """,
-        hint="factor 2",
-        public_hint="factor 2",
+        hint="compare with your first column",
+        public_hint="compare with your first column",
     ),
     Mistake(
         "quat_to_matrix_unnormalised",
@@ -519,8 +519,8 @@ def quat_to_matrix(q):
     K = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
     return np.eye(3) + w * K + K @ K
 """,
-        hint="factor 2",
-        public_hint="factor 2",
+        hint="compare with your first column",
+        public_hint="compare with your first column",
     ),
     Mistake(
         "matrix_to_quat_scalar_last",

@@ -513,7 +513,7 @@ def right_jacobian_so3(w):
     return np.eye(3) - (1 - np.cos(theta)) / theta**2 * W + (theta - np.sin(theta)) / theta**3 * W @ W
 """,
         hint="a one-term series of each coefficient",
-        public_hint="a one-term series is off by about θ³/24",
+        public_hint="without it the error grows like θ³",
     ),
     Mistake(
         "right_jacobian_inv_one_term_below_1e_2",

@@ -12,8 +12,8 @@ MISTAKES = [
 def jacobians_of_compose(R1, R2):
     return np.asarray(R2, dtype=float), np.eye(3)
 """,
-        hint="in the wrong direction",
-        public_hint="in the wrong direction",
+        hint="the transpose of what finite differences give",
+        public_hint="the transpose of what finite differences give",
         classic=True,
     ),
     Mistake(
@@ -24,8 +24,8 @@ def jacobians_of_compose(R1, R2):
 def jacobians_of_compose(R1, R2):
     return np.eye(3), np.eye(3)
 """,
-        hint="only after crossing R2",
-        public_hint="only after crossing R2",
+        hint="your J1 fits only when R2 = I",
+        public_hint="your J1 fits only when R2 = I",
     ),
     Mistake(
         "compose_left",
@@ -92,8 +92,8 @@ def jacobian_of_inverse(R):
 def jacobian_of_inverse(R):
     return -np.eye(3)
 """,
-        hint="sits on the left of Rᵀ",
-        public_hint="sits on the left of Rᵀ",
+        hint="your J does not change with R",
+        public_hint="your J does not change with R",
     ),
     Mistake(
         "inverse_sign",

@@ -154,8 +154,8 @@ def exp_se3(xi):
     T[:3, 3] = xi[:3]
     return T
 """,
-        hint="V(phi) @ rho, not rho",
-        public_hint="V(phi) @ rho, not rho",
+        hint="your translation is rho itself although phi ≠ 0",
+        public_hint="your translation is rho itself although phi ≠ 0",
         classic=True,
     ),
     Mistake(

@@ -58,16 +58,16 @@ MISTAKES = [
         "adjoint_se3",
         "the coupling block bottom-left (rotation-first layout)",
         _adjoint("skew(t) @ R", rotation_first=True),
-        hint="written rotation first",
-        public_hint="written rotation first",
+        hint="came out with a spin",
+        public_hint="came out with a spin",
     ),
     Mistake(
         "adjoint_no_coupling",
         "adjoint_se3",
         "diag(R, R): forgets the coupling of spin and shift",
         _adjoint("np.zeros((3, 3))"),
-        hint="adjoint of a pure rotation",
-        public_hint="adjoint of a pure rotation",
+        hint="came out with no translation part",
+        public_hint="came out with no translation part",
         classic=True,
     ),
     Mistake(
@@ -75,16 +75,16 @@ MISTAKES = [
         "adjoint_se3",
         "coupling block [t]× without R",
         _adjoint("skew(t)"),
-        hint="the coupling block does not depend on R",
-        public_hint="the coupling block does not depend on R",
+        hint="stays the same when T turns",
+        public_hint="stays the same when T turns",
     ),
     Mistake(
         "adjoint_coupling_sign",
         "adjoint_se3",
         "coupling block -[t]× R",
         _adjoint("-skew(t) @ R"),
-        hint="wrong sign",
-        public_hint="wrong sign",
+        hint="is the negative of that of (T ξ^ T⁻¹)∨",
+        public_hint="is the negative of that of (T ξ^ T⁻¹)∨",
     ),
     Mistake(
         "adjoint_coupling_order",
@@ -141,8 +141,8 @@ def jacobian_transform_point(T, p):
     R = np.asarray(T, dtype=float)[:3, :3]
     return np.hstack([R, R @ skew(p)])
 """,
-        hint="the sign of the rotation block (the phi columns) is flipped",
-        public_hint="the sign of the rotation block (the phi columns) is flipped",
+        hint="the phi columns of J are the negative of the finite differences",
+        public_hint="the phi columns of J are the negative of the finite differences",
     ),
     Mistake(
         "point_world_rotation",
@@ -172,8 +172,8 @@ def right_jacobian_se3(xi):
     J[3:, 3:] = jr_so3(xi[3:])
     return J
 """,
-        hint="the top-right block is zero",
-        public_hint="the top-right block is zero",
+        hint="a change of phi never reaches the translation part",
+        public_hint="a change of phi never reaches the translation part",
         classic=True,
     ),
     Mistake(
@@ -189,8 +189,8 @@ def right_jacobian_se3(xi):
         "right_jacobian_se3",
         "the coupling block with the wrong sign",
         _series(finish="S[:3, 3:] = -S[:3, 3:]"),
-        hint="wrong sign",
-        public_hint="wrong sign",
+        hint="the phi columns of J's translation rows are the negative",
+        public_hint="the phi columns of J's translation rows are the negative",
     ),
     Mistake(
         "jr_se3_short_series",
@@ -211,8 +211,8 @@ def right_jacobian_se3(xi):
     h = 1e-6
     return np.column_stack([log_se3(base_inverse @ exp_se3(xi + h * e)) / h for e in np.eye(6)])
 """,
-        hint="finite differences",
-        public_hint="finite differences",
+        hint="finite differences stop short of rounding",
+        public_hint="finite differences stop short of rounding",
     ),
     Mistake(
         "jr_se3_inverse",

@@ -11,8 +11,8 @@ MISTAKES = [
 def relative_pose(T_wa, T_wb):
     return np.asarray(T_wb, dtype=float) @ np.linalg.inv(np.asarray(T_wa, dtype=float))
 """,
-        hint="the colleague's bug",
-        public_hint="the colleague's bug",
+        hint="what the colleague's function returns",
+        public_hint="what the colleague's function returns",
         classic=True,
     ),
     Mistake(

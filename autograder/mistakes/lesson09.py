@@ -301,8 +301,8 @@ def align_pose_robust(P, Q, T0, k):
         "align_pose_robust",
         "weights (k/|r|)² beyond k: a log tail, not Huber's",
         _robust(weight="1.0 if size <= k else (k / size) ** 2"),
-        hint="whose pull on a pair beyond k fades",
-        public_hint="whose pull on a pair beyond k fades",
+        hint="less than Huber's linear tail",
+        public_hint="less than Huber's linear tail",
     ),
     Mistake(
         "point_covariance_lists_negated",

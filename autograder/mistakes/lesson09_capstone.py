@@ -78,8 +78,8 @@ def hand_eye_rotation(As, Bs):
     b = np.array([Log(B) for B in np.asarray(Bs, dtype=float)])
     return np.linalg.lstsq(b, a, rcond=None)[0].T
 """,
-        hint="project your fit onto SO(3)",
-        public_hint="project it onto SO(3)",
+        hint="X must be a rotation",
+        public_hint="X must be a rotation",
     ),
 ]
 

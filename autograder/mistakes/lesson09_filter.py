@@ -70,8 +70,8 @@ def filter_predict(R, P, omega_meas, dt, Q):
     F, G = J[:, :3], J[:, 3:]
     return R_new, F @ P @ F.T + G @ Q @ G.T
 """,
-        hint="a Jacobian taken by finite differences is not",
-        public_hint="a Jacobian taken by finite differences is not",
+        hint="which finite differences cannot reach",
+        public_hint="which finite differences cannot reach",
     ),
     # ------------------------------------------------------------ filter_predict
     Mistake(
@@ -104,7 +104,7 @@ def filter_predict(R, P, omega_meas, dt, Q):
         "filter_predict",
         "noise term dt² Q: the Jacobian of Exp taken as I",
         _predict(noise_jacobian="np.eye(3) * dt"),
-        hint="which is not I",
+        hint="right for a short step and wrong for a long one",
         public_hint="right for a short step and wrong for a long one",
     ),
     Mistake(
@@ -120,8 +120,8 @@ def filter_predict(R, P, omega_meas, dt, Q):
         "filter_predict",
         "the left Jacobian of Exp for the noise",
         _predict(noise_jacobian="Jr.T * dt"),
-        hint="to first order in ε and n",
-        public_hint="left Jacobian of Exp",
+        hint="in the axes the body had before the step",
+        public_hint="in the axes the body had before the step",
     ),
     Mistake(
         "predict_left_update",

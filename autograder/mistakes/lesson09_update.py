@@ -33,8 +33,8 @@ def filter_update(R, P, y, g_w, Rn):
     step = np.linalg.solve(information, H.T @ np.linalg.solve(Rn, y - R.T @ g_w))
     return R @ Exp(step), np.linalg.inv(information)
 """,
-        hint="a Jacobian taken by finite differences is not",
-        public_hint="a Jacobian taken by finite differences is not",
+        hint="which a Jacobian taken by finite differences cannot reach",
+        public_hint="which a Jacobian taken by finite differences cannot reach",
     ),
     Mistake(
         "update_left_jacobian",

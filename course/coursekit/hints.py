@@ -80,6 +80,9 @@ ONE_TERM_TOO_MANY_HINT = "one term too many: n_terms terms means k = 0 … n_ter
 ONLY_AB_BRACKET_SUBTRACTS_HINT = "that is only AB: the bracket subtracts BA, [A, B] = AB - BA"
 OPPOSITE_ROTATION_CHECK_SIGN_HINT = ("the opposite rotation: check the sign of the axis (Exp of your answer turns "
                                      "the other way than R; the order of R and Rᵀ in R - Rᵀ decides it)")
+LOG_AXIS_SIGN_NEAR_PI_HINT = ("near π the axis has the wrong sign: Exp of your answer turns the other way. Only at "
+                              "θ = π are θu and -θu one rotation; just below π, R still tells them apart, so the sign "
+                              "of the axis must come from R")
 RETURNED_ZERO_TINY_ROTATION_HINT = ("returned zero for a tiny rotation: arccos rounds tiny angles to 0, so the angle "
                                     "must come from numbers that keep it")
 RODRIGUES_FORMULA_HINT = ("not a turn by |w| about w/|w|: compare your matrix with Rodrigues' formula on the page, "
@@ -99,8 +102,8 @@ AXIS_AT_HALF_TURN_HINT = ("at θ = π, R - Rᵀ is zero up to rounding and carri
                           "of R still does")
 
 # ---------------------------------------------------------------- checks/lesson03_body_rates.py
-RATE_TURNED_INTO_BODY_HINT = ("the rate was turned into body axes twice: your ω_b is the right one turned once "
-                              "more by Rᵀ")
+RATE_TURNED_INTO_BODY_HINT = ("right at R = I, wrong at this R: your ω_b is written in the wrong axes, one change "
+                              "of axes too many (at R = I a change of axes changes nothing, so it cannot show there)")
 BODY_RATE_IS_WORLD_RATE_HINT = ("that is the world rate ω_w, the spin written in world axes; the gyroscope's rate "
                                 "ω_b is the same spin in the body's own axes (section 8)")
 
@@ -163,12 +166,12 @@ NO_GIMBAL_LOCK_BRANCH_HINT = ("no gimbal-lock branch, or a lock test too strict 
                               "arguments of the atan2 formulas for yaw and roll are rounding noise (about 1e-16, "
                               "seldom exactly 0); call it locked below about 1e-12, and there set roll = 0 and give "
                               "the whole turn to yaw")
-NO_SEPARATE_GIMBAL_LOCK_HINT = ("no separate gimbal-lock branch, or a lock test too strict to fire: at |pitch| = π/2 "
-                                "the entries R[0, 0], R[1, 0], R[2, 1], R[2, 2] are rounding noise (about 1e-16, "
-                                "seldom exactly 0), so atan2 of them is arbitrary; at the docstring's lock threshold "
-                                "set roll = 0 and read the yaw from entries that stay large there")
+NO_SEPARATE_GIMBAL_LOCK_HINT = ("no separate gimbal-lock branch, or a lock test too strict to fire: at pitch ±π/2, "
+                                "R[0, 0], R[1, 0], R[2, 1], R[2, 2] are rounding noise, seldom exactly 0; below the "
+                                "docstring's threshold set roll = 0")
 PITCH_ARCSIN_R_LOSES_HINT = ("pitch = arcsin(-R[2, 0]) loses digits near ±1 (an error ε in R[2, 0] moves the angle by "
-                             "√(2ε)): read the pitch from a pair of numbers that both keep their digits there")
+                             "√(2ε)): next to the lock the pitch must still be right to about 1e-12, and arcsin of "
+                             "R[2, 0] cannot give that")
 PITCH_TURNS_WRONG_WAY_HINT = ("the pitch turns the wrong way: Ry(pitch) = [[cos, 0, sin], [0, 1, 0], [-sin, 0, cos]] "
                               "(about y the minus sign sits bottom-left)")
 ROLL_SIGNS_FLIPPED_EXPRESS_HINT = ("the roll signs are flipped: every entry with sin(roll) has the wrong sign; the "
@@ -197,7 +200,9 @@ FACTORS_WRONG_ORDER_R_HINT = ("the frames are mixed: a turn moves the world poin
 FIRST_ORDER_PART_ONLY_HINT = ("that is I + [w]×/2, only the first-order part: the [w]×² term of the formula on the "
                               "page is missing")
 JACOBIAN_TRANSPOSE_NOT_INVERSE_HINT = "that is Jr(w)ᵀ: Jr is not orthogonal, its transpose is not its inverse"
-ROTATED_POINT_SIGN_FLIPPED_HINT = "the sign is flipped: turning δ × p round to put δ on the right changes its sign"
+ROTATED_POINT_SIGN_FLIPPED_HINT = ("the sign is flipped: J is the negative of the finite differences of R Exp(δ) p in "
+                                   "every column; check each column's sign on a sanity case, R = I and p = x, where a "
+                                   "turn about z moves p towards +y")
 ROTATED_POINT_R_MISSING_HINT = ("right at R = I, wrong at a generic R: your J stays the same whatever the attitude, "
                                 "but how the world point R Exp(δ) p moves changes with R; compare with finite "
                                 "differences at a generic R")
@@ -234,16 +239,17 @@ LEFT_PERTURBATION_POINT_JACOBIAN_HINT = ("that Jacobian belongs to the left pert
                                          "world's axes; here δ turns the body about its own axes, R Exp(δ)")
 POINT_SEEN_BODY_RT_HINT = ("your J fits the finite differences only at the identity attitude: it stays the same "
                            "for every R, yet the body-frame point (R Exp(δ))ᵀ p_w, and how it moves, change with R")
-POINT_TO_BODY_SIGN_HINT = ("the sign is flipped: J is the negative of the finite differences; a transpose "
-                           "reverses a small turn, and moving δ to the other side of a cross product changes its sign")
+POINT_TO_BODY_SIGN_HINT = ("the sign is flipped: J is the negative of the finite differences of (R Exp(δ))ᵀ p_w in "
+                           "every column; check the sign on a sanity case, R = I and p_w = x: a turn about z makes x "
+                           "seem to swing to -y")
 
 # ---------------------------------------------------------------- checks/lesson06_compose.py
-COMPOSE_IGNORES_R2_HINT = ("a turn of R1 reaches the end of the product only after crossing R2: move it past R2 "
-                           "with the adjoint")
+COMPOSE_IGNORES_R2_HINT = ("your J1 fits only when R2 = I: it does not change with R2, but how the turn of R1 shows "
+                           "up at the end of the product does; compare with finite differences at a generic R2")
 COMPOSE_LEFT_HINT = ("those are the left Jacobians (the turn on the left of R1 and of R2); here both the input and "
                      "the output are perturbed on the right")
 COMPOSE_SWAPPED_HINT = "J1 and J2 are swapped: return (J1, J2), the first for a turn of R1, the second for a turn of R2"
-COMPOSE_TRANSPOSE_HINT = ("J1 carries the turn of R1 across R2 in the wrong direction: R1 Exp(d) R2 must equal "
+COMPOSE_TRANSPOSE_HINT = ("your J1 is the transpose of what finite differences give: R1 Exp(d) R2 must equal "
                           "R1 R2 Exp(J1 d); try R1 = I, R2 a quarter turn and d along one axis, and see which axis "
                           "the turn ends on")
 COMPOSE_WRONG_FACTOR_HINT = ("your J1 fits the product taken the other way round, R2 R1: try R2 = I, where the "
@@ -251,14 +257,13 @@ COMPOSE_WRONG_FACTOR_HINT = ("your J1 fits the product taken the other way round
                              "differences")
 INVERSE_LEFT_HINT = ("that is the Jacobian for perturbations on the left of R and of R⁻¹; here both turns sit on "
                      "the right, R Exp(d) and R⁻¹ Exp(J d)")
-INVERSE_NOT_MOVED_HINT = ("-I is right only at the identity: the inverted turn sits on the left of Rᵀ, but J is "
-                          "defined by a turn on the right of R⁻¹")
-INVERSE_AT_IDENTITY_HINT = ("at the identity, inverting Exp(d) simply reverses the small turn: read J off "
-                            "(Exp(d))⁻¹ = Exp(J d) there first")
-INVERSE_SIGN_HINT = ("your J turns R⁻¹ in the same sense as d, but inverting R Exp(d) must undo that small turn; "
-                     "check (R Exp(d))⁻¹ = R⁻¹ Exp(J d) at R = I first")
-INVERSE_TRANSPOSE_HINT = ("wrong in two ways at once: at R = I your J does not reverse a small turn, as inverting "
-                          "one must; and at this R, flipping the sign alone still leaves the turn on the wrong axis")
+INVERSE_NOT_MOVED_HINT = ("right at R = I but not at this R: your J does not change with R, while (R Exp(d))⁻¹ "
+                          "does; compare with finite differences at a generic R")
+INVERSE_AT_IDENTITY_HINT = ("wrong at R = I: compare (Exp(d))⁻¹ with Exp(J d) for a small d along one axis")
+INVERSE_SIGN_HINT = ("J is the negative of the finite differences of Log(R (R Exp(d))⁻¹): inverting R Exp(d) must "
+                     "undo that small turn; check the sign at R = I first, comparing (Exp(d))⁻¹ with Exp(J d)")
+INVERSE_TRANSPOSE_HINT = ("wrong in two ways at once: at R = I your J fails (Exp(d))⁻¹ = Exp(J d), and at this R "
+                          "flipping its sign alone still leaves the turn on the wrong axis")
 
 # ---------------------------------------------------------------- checks/lesson07.py
 DIVIDED_FIRST_COORDINATE_X_HINT = "divided by the first coordinate: [x, y, z, w] is the point [x/w, y/w, z/w]"
@@ -277,13 +282,43 @@ TRANSFORM_ROWS_FORMULA_HINT = "p_a = R p_b + t: for rows P of shape (N, 3), P @ 
 TRANSPOSES_T_AB_T_HINT = "transposes T_ab: T_ac = T_ab @ T_bc, with no transpose"
 INVERSE_TRANSLATION_FRAME_HINT = ("the rotation block is right, but the translation is not: T_ba (T_ab p) must give "
                                   "p back; try p = 0, b's origin, and see where it lands")
-V_SERIES_TINY_ANGLE_HINT = ("below θ = 1e-2 use the Taylor series of V's two coefficients, each with its θ² term: "
-                            "once cos θ rounds to 1, a closed form's coefficient of W comes out 0, not its limit")
-ADJOINT_COUPLING_WITHOUT_R_HINT = ("the coupling block does not depend on R: conjugating by T turns the spin phi as "
-                                   "well as shifting it; compare that block with T ξ^ T⁻¹")
+EXP_SE3_TRANSLATION_IS_RHO_HINT = (
+    "your translation is rho itself although phi ≠ 0: a body that turns while it drives does not end "
+    "at rho; compare your pose with expm of the 4×4 twist matrix ξ^"
+)
+V_SERIES_TINY_ANGLE_HINT = ("below θ = 1e-2 the closed forms of V's two coefficients lose digits as θ shrinks (at "
+                            "θ = 1e-4 about half of them, at 1e-8 all): there use the Taylor series of each "
+                            "coefficient, with its θ² term")
 
-ADJOINT_COUPLING_IDENTITY_HINT = ("the coupling block fails the defining identity (T ξ^ T⁻¹)∨ = Ad ξ: try a pure spin, "
-                                  "ξ = [0, phi], at a pose that both turns and shifts, and compare the translation rows")
+# ---------------------------------------------------------------- checks/lesson07_adjoint.py
+# adjoint_se3: each hint names the twist that fails (a pure shift [rho, 0] or a pure spin [0, phi]) and what its
+# image under Ad_T does that the twist of T ξ^ T⁻¹ does not
+ADJOINT_DEFINITION_HINT = ("Ad_T ξ must be the twist of T ξ^ T⁻¹ for every ξ: try a pure shift [rho, 0] and a pure "
+                           "spin [0, phi] on their own, first at a pure turn (t = 0), then at a pure shift (R = I)")
+ADJOINT_SPIN_FROM_SHIFT_HINT = ("a pure shift ξ = [rho, 0] came out with a spin: conjugating by T turns and moves a "
+                                "shift, but cannot make it a turn (a formula written for twists with the rotation "
+                                "part first does this)")
+ADJOINT_SPIN_WITHOUT_SHIFT_HINT = ("a pure spin ξ = [0, phi] at a pose with t ≠ 0 came out with no translation part, "
+                                   "but (T ξ^ T⁻¹)∨ has one: a body spinning away from the world's origin carries the "
+                                   "point there around")
+ADJOINT_COUPLING_WITHOUT_R_HINT = ("for a pure spin ξ = [0, phi], the translation part of your Ad_T ξ stays the same "
+                                   "when T turns with the same t, but that of (T ξ^ T⁻¹)∨ turns with it: compare at "
+                                   "one t with two turns")
+ADJOINT_SPIN_SHIFT_SIGN_HINT = ("for a pure spin ξ = [0, phi], the translation part of Ad_T ξ is the negative of that "
+                                "of (T ξ^ T⁻¹)∨: check its sign on a spin about z at a pose shifted along x, not "
+                                "turned")
+ADJOINT_COUPLING_IDENTITY_HINT = ("for a pure spin ξ = [0, phi], the translation part of Ad_T ξ misses that of (T ξ^ "
+                                  "T⁻¹)∨ (a pure shift comes out right): try a pure spin at a pose that both turns "
+                                  "and shifts")
+# right_jacobian_se3
+JR_SE3_NO_COUPLING_HINT = ("in your J a change of phi never reaches the translation part (the phi columns' translation "
+                           "rows are zero), yet with rho ≠ 0 a change of phi moves the translation of Exp(ξ)")
+JR_SE3_COUPLING_SIGN_HINT = ("the phi columns of J's translation rows are the negative of the finite differences of "
+                             "Log(Exp(ξ)⁻¹ Exp(ξ + dξ)) there, and the rest matches: check that part's sign on a "
+                             "sanity case")
+JR_SE3_DIFFERENCES_HINT = ("close but not exact ({error}): finite differences stop short of rounding (forward near "
+                           "1e-8, central near 1e-11 (1 + |ρ|) at best); use an exact route: closed form, series or "
+                           "quadrature")
 
 # ---------------------------------------------------------------- checks/lesson07_relative_pose.py
 INVERSE_POSE_TRANSPOSE_T1_HINT = ("the inverse of a pose is not its transpose: Tᵀ puts t in the bottom row and "
@@ -291,6 +326,8 @@ INVERSE_POSE_TRANSPOSE_T1_HINT = ("the inverse of a pose is not its transpose: T
 SHIFT_IN_WORLD_AXES_HINT = ("the rotation block is right, but the translation is not b's origin as a sees it: "
                             "T_wa T_ab must equal T_wb; compare the translation columns with T_wa turned")
 RELATIVE_POSE_CHAIN_HINT = "T_wa T_ab must equal T_wb: poses compose only where the inner letters match"
+RELATIVE_POSE_COLLEAGUE_HINT = ("that is what the colleague's function returns: T_wa times it misses T_wb as soon as "
+                                "the poses turn; find out what it computes before you write yours")
 RELATIVE_POSE_REVERSED_HINT = "that is T_ba, a seen from b: swap the roles of a and b"
 
 # ---------------------------------------------------------------- checks/lesson08.py
@@ -317,31 +354,41 @@ LEFT_TO_RIGHT_WITH_ADJOINT_HINT = ("Σ_R is the covariance of ε_R, defined by E
                                    "map that takes ε_L to ε_R, then how a covariance changes under a linear map")
 MINIMISES_SQUARED_COST_LEAST_HINT = ("that minimises the squared cost (least squares): the Huber cost counts "
                                      "residuals above k linearly, so large residuals must pull less")
-QUAT_POWER_FORMULA_HINT = "q^t = Exp_q(t Log_q q): read α in [0, π] and the unit axis u off q, then apply the definition"
 RETURNED_R0_UNCHANGED_APPLY_HINT = "returned R0 unchanged: apply one update per sample"
 RETURNED_T0_UNCHANGED_DO_HINT = "returned T0 unchanged: do iters updates T ← T Exp(xi)"
 RETURNED_T0_UNCHANGED_ITERATE_HINT = ("returned T0 unchanged: iterate from T0 until the gradient of the Huber cost "
                                       "vanishes")
-SIGN_ROTATION_BLOCK_PHI_HINT = ("the sign of the rotation block (the phi columns) is flipped: rewrite [phi]× p "
-                               "as a matrix times phi with care")
+SIGN_ROTATION_BLOCK_PHI_HINT = ("the phi columns of J are the negative of the finite differences of T Exp(ξ) p (the "
+                                "rho columns match): check their sign on a sanity case, T = I and p = x, where a turn "
+                                "about z moves p to +y")
 TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rates are body rates, so each update goes "
                              "on the right, R ← R Exp(ω_b dt)")
-UNIT_AXIS_FROM_VECTOR_PART_HINT = "v = sin α u: divide the vector part by its length to get the unit axis u"
-WEIGHTS_K_R_BEYOND_HINT = ("your pose is a stationary point of another cost, whose pull on a pair beyond k fades with "
-                           "the pair's distance: the Huber cost's pull beyond k does not fade")
+ROBUST_SLOWER_TAIL_HINT = ("your pose is a stationary point of another cost, one that counts residuals beyond k for "
+                           "less than Huber's linear tail does (it grows like log r there, not like r)")
 
-ROBUST_WEIGHT_QUESTION_HINT = ("the Huber cost's gradient is not zero at your pose: compute it there (finite "
-                               "differences will do) and find what stops your iteration short of it")
+ROBUST_GRADIENT_NOT_ZERO_HINT = ("the Huber cost's gradient is not zero at your pose: compute it there (finite "
+                                 "differences will do) and find what stops your iteration short of it")
 
 # ---------------------------------------------------------------- checks/lesson09_filter.py, _update.py
-# the derive exercises of lesson 09 promise exact results: finite differences and cancelling closed forms come close
-PREDICT_FINITE_DIFFERENCES_HINT = ("P_new is right to several digits but not to rounding: the first-order covariance is "
-                                   "exact, and a Jacobian taken by finite differences is not; derive F and G")
-PREDICT_CANCELS_HINT = ("P_new loses digits at this small step: a closed form of J_r used just above its small-step "
-                        "branch has a coefficient that subtracts nearly equal numbers there; move the branch, or "
-                        "write the coefficient so that it subtracts nothing")
-UPDATE_FINITE_DIFFERENCES_HINT = ("right to several digits but not to rounding: the docstring's linearisation is exact, "
-                                  "and a Jacobian taken by finite differences is not; derive H")
+# the derive exercises of lesson 09 have closed forms, held to rounding: finite differences and cancelling closed
+# forms come close
+PREDICT_FINITE_DIFFERENCES_HINT = ("P_new is right to several digits but not to rounding: it has a closed form, held "
+                                   "here to 2e-12 of its largest entry, which finite differences cannot reach; derive "
+                                   "how ε and n enter ε_new")
+PREDICT_CANCELS_HINT = ("P_new loses digits at this small step: a closed-form coefficient used just above its "
+                        "small-step branch subtracts nearly equal numbers there; move the branch, or rewrite the "
+                        "coefficient")
+PREDICT_NOISE_SHORT_STEP_HINT = ("the noise's part of P_new is right for a short step and wrong for a long one: look "
+                                 "again at where the noise enters the step, and what carries it from there to the new "
+                                 "attitude's error")
+PREDICT_NOISE_OLD_AXES_HINT = ("the noise's part of P_new is written in the axes the body had before the step: right "
+                               "when the step does not turn, wrong when it does; ε_new is a turn about the body axes "
+                               "of R_new")
+UPDATE_FINITE_DIFFERENCES_HINT = ("right to several digits but not to rounding: the checks hold the correction and P_new "
+                                  "to 1e-11 relative, which a Jacobian taken by finite differences cannot reach; "
+                                  "derive H")
+UPDATE_SIGN_HINT = ("the step moves away from the measurement: compare the sign of your H with a central difference "
+                    "of h(δ) = (R Exp(δ))ᵀ g_w at δ = 0")
 NEES_NOT_DIVIDED_HINT = "the NEES is the full quadratic form, not divided by the dimension"
 PREDICT_NO_TURN_R_HINT = "with ω = 0 the step turns nothing: R_new must be R itself, to the last bits"
 PREDICT_NO_TURN_P_HINT = ("with ω = 0 the step turns nothing: P grows only by the turn the gyro noise makes over one "
@@ -349,18 +396,34 @@ PREDICT_NO_TURN_P_HINT = ("with ω = 0 the step turns nothing: P grows only by t
 UPDATE_WRONG_SIDE_HINT = "the correction is applied on the wrong side: the error state is R_true = R Exp(ε)"
 
 # ---------------------------------------------------------------- checks/lesson09_compound.py
-COMPOUND_FINITE_DIFFERENCES_HINT = ("right to several digits but not to rounding: the docstring's first-order covariance "
-                                    "is exact, and a linearisation by finite differences is not; derive how ξ1 "
-                                    "crosses T2")
+COMPOUND_FINITE_DIFFERENCES_HINT = ("S is right to several digits but not to rounding: it has a closed form, held here "
+                                    "to 1e-11 relative, which finite differences (good to about 1e-10) cannot reach; "
+                                    "use them to test a derivation")
 COMPOUND_PAIR_REASON = "compound_pose_covariance must return a pair (T, S)"
-COMPOUND_EXPAND_HINT = "expand T1 Exp(ξ1) T2 Exp(ξ2) to first order, gathering both twists on the right"
+# which part of S is wrong, told from the student's own S with S2 = 0 (the part from S1) and with S1 = 0
+COMPOUND_S1_PART_HINT = ("the part of S that comes from S1 (your S with S2 = 0) disagrees with the linearised "
+                         "definition; the part from S2 (your S with S1 = 0) is right")
+COMPOUND_S2_PART_HINT = ("the part of S that comes from S2 (your S with S1 = 0) disagrees with the linearised "
+                         "definition; the part from S1 (your S with S2 = 0) is right")
+COMPOUND_BOTH_PARTS_HINT = ("both parts of S are off, the one that comes from S1 (your S with S2 = 0) and the one from "
+                            "S2 (your S with S1 = 0): compare each with simulated chains")
+COMPOUND_NOT_A_SUM_HINT = ("your S with S2 = 0 and your S with S1 = 0 are both right, but S is not their sum: ξ1 and ξ2 "
+                           "are independent, so their contributions to the covariance add")
+COMPOUND_IGNORES_T2_HINT = ("your S ignores T2: it is right when T2 = I and wrong otherwise, yet ξ1 is a twist in "
+                            "T1's body frame and ξ one in the frame at the end of the chain")
+COMPOUND_INVERTED_T2_HINT = ("S is right when T2 = I and wrong for a turned or shifted T2, as if T2 were replaced by "
+                             "its inverse; compare it with the spread of simulated chains")
+COMPOUND_DEPENDS_ON_T1_HINT = ("S changes with T1 and should not, and misses what T2 does; compare it with the spread "
+                               "of simulated chains")
+COMPOUND_SHIFT_IGNORED_HINT = ("S is right for a T2 that only turns and wrong once T2 also shifts: a spin about T1's "
+                               "origin moves T2's origin too; compare with simulated chains")
 COMPOUND_PRECISION_HINT = (
-    "with T2 = I nothing is carried across it, so S must be S1 + S2 to double precision: your S lost digits "
-    "(single precision somewhere?)"
+    "with T2 = I, S must be S1 + S2 to double precision: your S lost digits (single precision somewhere?)"
 )
 
 # ---------------------------------------------------------------- checks/lesson09_capstone.py
 HAND_EYE_LISTS_REASON = "hand_eye_rotation answers differently for plain lists"
+HAND_EYE_NOT_A_ROTATION_HINT = "X must be a rotation: XᵀX = I and det X = +1"
 
 # ---------------------------------------------------------------- checks/lesson09_pose_graph.py
 EDGE_FINITE_DIFFERENCES_HINT = ("your Jacobian agrees with finite differences but not to rounding: the docstring "
@@ -369,4 +432,6 @@ EDGE_FINITE_DIFFERENCES_HINT = ("your Jacobian agrees with finite differences bu
 EDGE_NOT_INVERTED_HINT = "Log's Jacobian at r is the inverse of Exp's right Jacobian there, not the Jacobian itself"
 EDGE_SIGN_HINT = ("the sign: your J_i is the negative of a central difference of the residual in δ_i (T_i appears inverted "
                   "in the residual)")
+EDGE_SMALL_RESIDUAL_HINT = ("that Jacobian holds only for a small residual: J must be right at a large one too "
+                            "(compare it with a central difference of the residual at this edge)")
 

@@ -1,4 +1,4 @@
-"""Public checks for lesson 04, section 15: the shortest rotation between two directions.
+"""Public checks for lesson 04, section 16: the shortest rotation between two directions.
 
 The checks use pairs of directions whose answer is known by heart (x onto y, an eighth of a turn in the x-y
 plane), exactly opposite and parallel vectors, and a pair 1e-10 rad apart; the values the usual slips return
@@ -22,13 +22,14 @@ EIGHTH_UNNORMALISED = np.array([0.7592566023652966, 0.0, 0.0, 0.6507913734559685
 # the answer for the pair 1e-6 rad apart of the scaling check, to the last digit
 MICRO = np.array([0.999999999999877, -4.91862567841899e-07, -3.2549728759549535e-08, 5.424954791639181e-08])
 
-FULL_ANGLE_HINT = "the quaternion holds half the angle: [cos(θ/2), sin(θ/2) u], with θ the angle between a and b"
+FULL_ANGLE_HINT = ("R(q) turns a twice as far as b (x went past y, to -x): a quaternion holds half the angle of its "
+                   "turn, [cos(φ/2), sin(φ/2) u] turns by φ (section 7)")
 REVERSED_HINT = ("the axis points the wrong way: the turn takes a away from b (x went to -y); a positive turn "
                  "about an axis follows the right-hand rule")
 UNNORMALISED_HINT = "only the directions count: normalise a and b first (a · b is |a| |b| cos θ)"
 ARCCOS_HINT = hints.ARCCOS_LOSES_SMALL_ANGLES_HINT
-OPPOSITE_HINT = ("for opposite directions the cross product of a and b is zero, or only rounding noise pointing "
-                 "anywhere: take a half turn about any axis perpendicular to a, found without that cross product")
+OPPOSITE_HINT = ("for opposite directions whatever gives your axis elsewhere is zero here, or only rounding noise "
+                 "pointing anywhere: take a half turn about any axis perpendicular to a, found another way")
 
 
 def _rotate(q, v):
@@ -114,8 +115,10 @@ def _(quat_from_two_vectors):
     if abs(np.linalg.norm(got) - 1.0) > 1e-12:
         raise Mismatch(f"|q| = {np.linalg.norm(got):.6f}, not 1",
                        "q = [cos(θ/2), sin(θ/2) u] is a unit quaternion only when its axis u is a unit vector")
-    if not close(_rotate(got, a / np.linalg.norm(a)), b / np.linalg.norm(b), 1e-12):
-        raise Mismatch("the rotation of q does not take the direction of a onto that of b",
-                       "R(q) must take the direction of a onto that of b: check that the axis is perpendicular "
-                       "to both and that the turn goes from a towards b")
+    turned, target = _rotate(got, a / np.linalg.norm(a)), b / np.linalg.norm(b)
+    if not close(turned, target, 1e-12):
+        miss = np.arctan2(np.linalg.norm(np.cross(turned, target)), turned @ target)
+        raise Mismatch(f"R(q) a/|a| misses b/|b| by {miss:.2g} rad",
+                       "R(q) must take the direction of a onto that of b: try it on pairs whose answer you can see, "
+                       "x onto y (a quarter turn about +z), y onto x, x onto z, and see where each lands")
     require_same_with_lists(quat_from_two_vectors, (a, b), (4,), "quat_from_two_vectors(a, b)")

@@ -119,12 +119,15 @@ def _extraction_hint(angles, R, pitch, no_branch, asin=None, near=False):
     if np.max(np.abs(_wrapped(angles - no_branch))) <= 1e-12:
         if not near:
             return NO_LOCK_BRANCH_HINT
-        return ("next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch) and lose their digits: "
-                "the roll read from them rebuilds the large entries of R badly; take it from entries that stay large")
+        difference = np.abs(_zyx(*angles) - np.asarray(R, dtype=float))
+        i, j = np.unravel_index(int(np.argmax(difference)), difference.shape)
+        return ("next to the lock R[0, 0], R[1, 0], R[2, 1], R[2, 2] shrink like cos(pitch): angles read from them "
+                f"rebuild those, but not the large entries (R[{i}, {j}] is off by {difference[i, j]:.1e}); every "
+                "entry of R must come back")
     if near and angles[2] == 0.0:
         return "treated a matrix 1e-9 rad from the lock as locked: call it gimbal lock only when cos(pitch) < 1e-12"
-    return ("at and next to the lock the angles must rebuild R to 1e-11: check the pitch's digits there, the lock "
-            "test against the docstring's threshold, and which entries of R the roll is read from")
+    return ("at and next to the lock the angles must rebuild R to 1e-11: check the pitch's digits, the lock test "
+            "against the docstring's threshold, and the large entries of R as well as the small ones")
 
 
 def _random_attitudes(seed, count=5):

@@ -49,16 +49,14 @@ UPDATE_GENERIC_P_NEW = np.array(
 UPDATE_SIGN_STEP = np.array([-0.07951038259168974, 0.006147640176339267, -0.0520504716485234])
 UPDATE_NO_R_STEP = np.array([-0.022168626738025207, -0.04519060476755945, 0.0144176174847466])
 UPDATE_LEFT_STEP = np.array([0.07884941040238526, -0.05202786526636899, 0.02608735195162375])
-SIGN_HINT = (
-    "the step moves away from the measurement: check the sign of your measurement Jacobian, (R Exp(ε))ᵀ = Exp(-ε) Rᵀ"
-)
+SIGN_HINT = hints.UPDATE_SIGN_HINT
 NO_R_HINT = "the measurement Jacobian must depend on the attitude R: the body sees g_w through Rᵀ"
 LEFT_JACOBIAN_HINT = (
     "that measurement Jacobian belongs to a left (world-frame) error; this filter's error is on the right, R Exp(ε)"
 )
 LEFT_UPDATE_HINT = hints.UPDATE_WRONG_SIDE_HINT
 UPDATE_SLIPS = [(UPDATE_SIGN_STEP, SIGN_HINT), (UPDATE_NO_R_STEP, NO_R_HINT), (UPDATE_LEFT_STEP, LEFT_JACOBIAN_HINT)]
-EXACT = 1e-11  # relative, as the hidden checks hold it: the linearisation is exact, not by differences
+EXACT = 1e-11  # relative, as the hidden checks hold it: H derived (to rounding), not taken by differences
 P_UNCHANGED_HINT = "a measurement adds information: the covariance must shrink along the directions it sees"
 
 

@@ -345,10 +345,11 @@ def _(quat_to_matrix):
                        "every term linear in w")
     if close(R, np.array([[1.0, 0, 0], [0, 0, -1.0], [0, 1.0, 0]]), 1e-9):
         raise Mismatch("got a quarter turn about x", "scalar last? this course stores q = [w, x, y, z]")
-    # What the quarter turn gives when every term beyond I is half its size.
+    # What the quarter turn gives when every term beyond I is half its size (no factor 2, or I + w[v]× + [v]×²).
     if close(R, [[0.5, -0.5, 0.0], [0.5, 0.5, 0.0], [0.0, 0.0, 1.0]], 1e-9):
-        raise Mismatch(f"got\n{fmt(R)}", "the factor 2 is missing: the quarter turn about z came out with "
-                       "0.5 where cos 90° = 0 and sin 90° = 1 belong, so every term beyond I is half its size")
+        raise Mismatch(f"got\n{fmt(R)}", "e_x went to (0.5, 0.5, 0), of length 0.71, not to e_y: a rotation keeps "
+                       "lengths; rotate e_x with the sandwich on paper and compare with your first column, term by "
+                       "term")
     if not close(R, QUARTER_TURN_Z, 1e-9):
         raise Mismatch(f"got\n{fmt(R)}\n{off_by(R, QUARTER_TURN_Z)}")
     R = require_shape(quat_to_matrix(ONE), (3, 3))

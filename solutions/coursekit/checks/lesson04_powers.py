@@ -1,7 +1,7 @@
 """Public checks for lesson 04, section 14: the power q^t of a unit quaternion.
 
 The checks use the defining properties of the power (q¹ = q, q⁰ = 1, q^½ ⊗ q^½ = q with its sign, the identity
-to any power, q² = q ⊗ q at a tiny angle), never its formula; the values two usual slips return at the checks'
+to any power, q² = q ⊗ q at a tiny angle), never its formula; the values three usual slips return at the checks'
 fixed inputs are stored as numbers (``tests/test_public_check_constants_lesson04_powers.py`` recomputes them).
 """
 
@@ -18,7 +18,11 @@ Q_TWO_RAD = np.array([np.cos(1.0), 0.0, 0.6 * np.sin(1.0), 0.8 * np.sin(1.0)])
 # What q¹ is when α is doubled, and the length of the vector part of q^½ when v is used as the axis (v = sin α u).
 Q_ONE_FULL_ANGLE = np.array([-0.4161468365471424, 0.0, 0.545578456095409, 0.7274379414605454])
 HALF_WITHOUT_UNIT_AXIS = 0.4034226801113349
+# What q ** ½ gives, each entry raised to the power ½ (every entry of Q_TWO_RAD is >= 0, so no NaN).
+HALF_ELEMENTWISE = np.array([0.7350525871447157, 0.0, 0.7105509066103131, 0.8204735144087939])
 ELEMENTWISE_HINT = "q ** t raises each entry to the power t; the power of a quaternion is Exp_q(t Log_q q)"
+NAN_HINT = "look for an arccos or arcsin of a number beyond ±1, or a division by zero"
+NOT_UNIT_HINT = "the power of a unit quaternion is a unit quaternion, for every t: q^½ must have length 1"
 
 
 def _power(quat_power, q, t, what):
@@ -54,12 +58,14 @@ def _(quat_power):
     with np.errstate(invalid="ignore"):
         half = np.asarray(quat_power(Q_TWO_RAD, 0.5), dtype=float)
     if half.shape == (4,) and not np.all(np.isfinite(half)):
-        raise Mismatch("q^½ has NaN entries", ELEMENTWISE_HINT)
+        raise Mismatch("q^½ has NaN entries", NAN_HINT)
     half = _power(quat_power, Q_TWO_RAD, 0.5, "quat_power(q, 0.5)")
     if abs(np.linalg.norm(half) - 1.0) > 1e-9:
-        raise Mismatch(f"q^½ has length {np.linalg.norm(half):.6f}, not 1",
-                       hints.POWER_UNIT_AXIS_HINT if abs(np.linalg.norm(half[1:]) - HALF_WITHOUT_UNIT_AXIS) < 1e-9
-                       else ELEMENTWISE_HINT)
+        if abs(np.linalg.norm(half[1:]) - HALF_WITHOUT_UNIT_AXIS) < 1e-9:
+            hint = hints.POWER_UNIT_AXIS_HINT
+        else:
+            hint = ELEMENTWISE_HINT if close(half, HALF_ELEMENTWISE, 1e-12) else NOT_UNIT_HINT
+        raise Mismatch(f"q^½ has length {np.linalg.norm(half):.6f}, not 1", hint)
     if not close(quat_product(half, half), Q_TWO_RAD, 1e-9):
         raise Mismatch(f"q^½ ⊗ q^½ misses q ({off_by(quat_product(half, half), Q_TWO_RAD)})",
                        hints.POWER_DEFINITION_HINT)

@@ -573,18 +573,28 @@ def _first_order(J, R, p, left, directions):
     return worst
 
 
-def _rotate_point_hint(J, R, p):
-    """Name the slip by what fixes it: J works for the left perturbation, or -J, Jᵀ, R J or R J Rᵀ would pass."""
-    def passes(candidate, left=False):
-        return _first_order(candidate, R, p, left, _TEST_DIRECTIONS) <= 1.0
+def _rotate_point_hint(jacobian_rotate_point, J, R, p):
+    """Name the slip by what the answer does: J works for the left perturbation; -J or Jᵀ would pass; J is the
+    student's own answer at R = I, where it passes; or J's columns are perpendicular to the body coordinates p
+    instead of to the world point R p (a turn moves R p at right angles to itself)."""
+    def passes(candidate, rotation=R, left=False):
+        return _first_order(candidate, rotation, p, left, _TEST_DIRECTIONS) <= 1.0
 
     for candidate, left, hint in [(J, True, hints.LEFT_JACOBIAN_OF_ROTATED_POINT_HINT),
                                   (-J, False, hints.ROTATED_POINT_SIGN_FLIPPED_HINT),
-                                  (J.T, False, hints.TRANSPOSE_R_P_ROW_HINT),
-                                  (R @ J, False, hints.ROTATED_POINT_R_MISSING_HINT),
-                                  (R @ J @ R.T, False, hints.FACTORS_WRONG_ORDER_R_HINT)]:
-        if passes(candidate, left):
+                                  (J.T, False, hints.TRANSPOSE_R_P_ROW_HINT)]:
+        if passes(candidate, left=left):
             return hint
+    try:
+        at_identity = np.asarray(jacobian_rotate_point(np.eye(3), p), dtype=float)
+    except Exception:
+        at_identity = None
+    if at_identity is not None and at_identity.shape == (3, 3) and close(at_identity, J, 1e-12) and \
+            passes(at_identity, rotation=np.eye(3)):
+        return hints.ROTATED_POINT_R_MISSING_HINT
+    size = np.linalg.norm(p) * np.max(np.abs(J))
+    if size > 0 and np.max(np.abs(p @ J)) <= 1e-9 * size and np.max(np.abs((R @ p) @ J)) > 1e-3 * size:
+        return hints.FACTORS_WRONG_ORDER_R_HINT
     return "column j of J is how R Exp(δ) p moves per radian of δ_j, at δ = 0"
 
 
@@ -598,7 +608,7 @@ def _(jacobian_rotate_point):
         remainder = np.linalg.norm(R_SAMPLE @ Exp(d) @ p - R_SAMPLE @ p - J @ d)
         if remainder > 2.0 * np.linalg.norm(p) * size**2:
             raise Mismatch(f"for |δ| = {size:g} the remainder is {remainder:.1e}, not of order |δ|²",
-                           _rotate_point_hint(J, R_SAMPLE, p))
+                           _rotate_point_hint(jacobian_rotate_point, J, R_SAMPLE, p))
 
 
 @public_check("jacobian_rotate_point", "exact (to 1e-12) at a generic attitude and point, and accepts plain lists")
@@ -785,7 +795,7 @@ def _every_decade(function, name, expected_at, formula, closed_form, series, fir
 @public_check("right_jacobian_so3", "exact to 1e-13 just below each power of ten, θ = 0.97 … 9.7e-9 (one as a list)")
 def _(right_jacobian_so3):
     _every_decade(right_jacobian_so3, "right_jacobian_so3", JR_AT_DECADES,
-                  "keep the θ² term of each coefficient's series (a one-term series is off by about θ³/24)",
+                  "keep the θ² term of each coefficient's series (without it the error grows like θ³)",
                   hints.RIGHT_JACOBIAN_FORMULA_HINT,
                   "the Taylor series of a and b, each with its θ² term", "-[w]×/2")
 

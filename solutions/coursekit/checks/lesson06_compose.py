@@ -43,9 +43,9 @@ def _compose_numeric(R1, R2, left=False):
             central_differences(lambda d: Log(R.T @ R @ Exp(d)), 3))
 
 
-def _compose_hint(J1, J2, R1, R2):
+def _compose_hint(jacobians_of_compose, J1, J2, R1, R2):
     """Name the slip by what would pass: Jᵀ for J, the two swapped, the left versions, J1 of R2 R1, or a J1 that
-    ignores R2 (right only when R2 = I)."""
+    ignores R2 (the student's own J1 at R2 = I, where it is right)."""
     def same(pair, other):
         return close(pair[0], other[0], 1e-6) and close(pair[1], other[1], 1e-6)
 
@@ -53,7 +53,12 @@ def _compose_hint(J1, J2, R1, R2):
     if same((J1.T, J2), truth):
         return hints.COMPOSE_TRANSPOSE_HINT
     if close(J1, _compose_numeric(R1, np.eye(3))[0], 1e-6) and close(J2, truth[1], 1e-6):
-        return hints.COMPOSE_IGNORES_R2_HINT
+        try:
+            at_identity = _pair(jacobians_of_compose(R1, np.eye(3)), "jacobians_of_compose(R1, I)")[0]
+        except Mismatch:
+            at_identity = None
+        if at_identity is not None and close(at_identity, J1, 1e-9):
+            return hints.COMPOSE_IGNORES_R2_HINT
     if same((J1, J2), _compose_numeric(R1, R2, left=True)):
         return hints.COMPOSE_LEFT_HINT
     if same((J2, J1), truth):
@@ -79,7 +84,7 @@ def _(jacobians_of_compose):
     numeric2 = central_differences(lambda d: Log((R1 @ R2).T @ R1 @ R2 @ Exp(d)), 3)
     if close(J1, numeric1, 1e-6) and close(J2, numeric2, 1e-6):
         return
-    hint = _compose_hint(J1, J2, R1, R2)
+    hint = _compose_hint(jacobians_of_compose, J1, J2, R1, R2)
     which = "J1" if not close(J1, numeric1, 1e-6) else "J2"
     error = off_by(J1, numeric1) if which == "J1" else off_by(J2, numeric2)
     raise Mismatch(f"{which} disagrees with finite differences ({error})",
@@ -106,8 +111,8 @@ def _(jacobians_of_compose):
 @public_check("jacobians_of_compose", "for generic rotations, J1 and J2 keep a small turn's size, to 1e-12")
 def _(jacobians_of_compose):
     J1, J2 = _pair(jacobians_of_compose(Exp([0.3, -0.5, 0.2]), Exp([-0.4, 0.1, 0.9])), "jacobians_of_compose(R1, R2)")
-    _require_turn_preserving(J1, "J1", "a turn of R1 moved past R2 changes its axis, never its angle")
-    _require_turn_preserving(J2, "J2", "a turn of R2 is already at the end of the product")
+    _require_turn_preserving(J1, "J1", "a small turn must keep its angle")
+    _require_turn_preserving(J2, "J2", "a small turn must keep its angle")
 
 
 # ---------------------------------------------------------------- jacobian_of_inverse
@@ -118,14 +123,18 @@ def _inverse_numeric(R, left=False):
     return central_differences(lambda d: Log(R @ (R @ Exp(d)).T), 3)
 
 
-def _inverse_hint(J, R):
-    """Name the slip by what would pass: the left version, J at the identity, -J, or -Jᵀ."""
+def _inverse_hint(jacobian_of_inverse, J, R):
+    """Name the slip by what would pass: the left version, J at the identity (and the student's J there is the
+    same), -J, or -Jᵀ."""
     for candidate, expected, hint in [(J, _inverse_numeric(R, left=True), hints.INVERSE_LEFT_HINT),
-                                      (J, _inverse_numeric(np.eye(3)), hints.INVERSE_NOT_MOVED_HINT),
                                       (-J, _inverse_numeric(R), hints.INVERSE_SIGN_HINT),
                                       (-J.T, _inverse_numeric(R), hints.INVERSE_TRANSPOSE_HINT)]:
         if close(candidate, expected, 1e-6):
             return hint
+    if close(J, _inverse_numeric(np.eye(3)), 1e-6):
+        at_identity = require_shape(jacobian_of_inverse(np.eye(3)), (3, 3), "jacobian_of_inverse(I)")
+        if close(at_identity, J, 1e-9):
+            return hints.INVERSE_NOT_MOVED_HINT
     return None
 
 
@@ -136,7 +145,7 @@ def _(jacobian_of_inverse):
     J = require_shape(jacobian_of_inverse(R), (3, 3), "jacobian_of_inverse(R)")
     numeric = central_differences(lambda d: Log(R @ (R @ Exp(d)).T), 3)
     if not close(J, numeric, 1e-6):
-        hint = _inverse_hint(J, R)
+        hint = _inverse_hint(jacobian_of_inverse, J, R)
         raise Mismatch(f"disagrees with finite differences ({off_by(J, numeric)})",
                        hint or "write (R Exp(d))⁻¹ as R⁻¹ Exp(J d) and read off J")
 
@@ -155,4 +164,4 @@ def _(jacobian_of_inverse):
 @public_check("jacobian_of_inverse", "for a generic rotation, J keeps a small turn's size, to 1e-12")
 def _(jacobian_of_inverse):
     J = require_shape(jacobian_of_inverse(Exp([0.3, -0.5, 0.2])), (3, 3), "jacobian_of_inverse(R)")
-    _require_turn_preserving(J, "J", "inverting R Exp(d) reverses the small turn and moves it, by the same angle")
+    _require_turn_preserving(J, "J", "inverting must keep a small turn's angle")

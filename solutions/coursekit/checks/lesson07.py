@@ -32,9 +32,9 @@ T_QUARTER_X = np.array([[1.0, 0.0, 0.0, 0.0],
 
 
 MIRROR_HINT = "xi = [rho, phi]: translation part first (xi[:3]), rotation part last (xi[3:])"
-FORGETS_V_HINT = "the translation of exp(xi) is V(phi) @ rho, not rho"
-V_SERIES_HINT = ("T = [[Exp(phi), V(phi) rho], [0, 1]] with V = I + W/2 + W²/6 + W³/24 + … (W = [phi]×): compare "
-                 "your closed form of V with that series, and your pose with expm of the twist matrix")
+FORGETS_V_HINT = hints.EXP_SE3_TRANSLATION_IS_RHO_HINT
+V_SERIES_HINT = ("the pose is off: compare it with expm of the 4×4 twist matrix ξ^ at this xi, and your closed form of "
+                 "V with the first terms of its series on the page")
 SERIES_NAN_HINT_V = ("NaN or inf: the closed forms of V's coefficients divide 0 by 0 at θ = 0; "
                      "below θ = 1e-2 use their Taylor series, each with its θ² term")
 SERIES_HINT_C = (hints.SMALL_ANGLE_SERIES_HINT)

@@ -3,9 +3,10 @@
 The checks use a quarter turn and a shift written out by hand, the defining identities
 (T Exp(ξ) T⁻¹ = Exp(Ad_T ξ), Exp(ξ + dξ) ≈ Exp(ξ) Exp(J dξ)), central differences of those definitions
 (computed here with the course's ``ExpSE3`` and ``LogSE3``), and exact identities a true Jacobian of Exp
-satisfies (J(-ξ) = Ad_Exp(ξ) J(ξ) and J(ξ) ξ = ξ). A slip is named by a property seen at run time: which
-blocks pass the definition, a block that passes once its sign is flipped, a block that stays put when the
-pose's rotation changes, agreement with the Jacobian of the other perturbation. No expected matrix is stored.
+satisfies (J(-ξ) = Ad_Exp(ξ) J(ξ) and J(ξ) ξ = ξ). A slip is named by a property seen at run time: a pure shift
+[rho, 0] that comes out with a spin, a pure spin [0, phi] whose translation part is missing, of the wrong sign, or the
+same when the pose's rotation changes; columns that pass once their sign is flipped; agreement with the Jacobian of
+the other perturbation. No expected matrix is stored.
 """
 
 import numpy as np
@@ -15,7 +16,7 @@ from .. import hints
 from ..checking import Mismatch, public_check
 from ..diagnose import close
 from ..lie import AdSE3, Exp, ExpSE3, LogSE3, skew
-from .common import central_differences, off_by, require_same_with_lists, require_shape, require_unchanged_inputs
+from .common import central_differences, fmt, off_by, require_same_with_lists, require_shape, require_unchanged_inputs
 
 # A quarter turn about z (x goes to y) and a shift, written out.
 QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
@@ -28,20 +29,24 @@ T_QUARTER = np.array([[0.0, -1.0, 0.0, 1.0],
 
 # ---------------------------------------------------------------- adjoint_se3
 XI = np.array([0.3, -0.2, 0.5, 0.2, 0.4, -0.3])
-# The same shift as T_QUARTER without the turn: a block that comes out the same for both does not depend on R.
+# Two more twists for the defining identity: a pure shift and a pure spin of their own.
+XI_SHIFT = np.array([-0.6, 0.1, 0.4, 0.0, 0.0, 0.0])
+XI_SPIN = np.array([0.0, 0.0, 0.0, 0.5, -0.1, 0.7])
+# The same shift as T_QUARTER without the turn, and the same turn without the shift.
 T_SHIFT = np.array([[1.0, 0.0, 0.0, 1.0],
                     [0.0, 1.0, 0.0, 2.0],
                     [0.0, 0.0, 1.0, 3.0],
                     [0.0, 0.0, 0.0, 1.0]])
-ROTATION_FIRST_HINT = ("the coupling block sits bottom-left: that is the layout for twists written rotation first; "
-                       "here xi = [rho, phi], so it multiplies phi in the translation rows (top-right)")
-NO_COUPLING_HINT = ("diag(R, R) is the adjoint of a pure rotation: with a translation t, a spin also moves the origin, "
-                    "so the translation rows need a block that multiplies phi")
+T_TURN = np.array([[0.0, -1.0, 0.0, 0.0],
+                   [1.0, 0.0, 0.0, 0.0],
+                   [0.0, 0.0, 1.0, 0.0],
+                   [0.0, 0.0, 0.0, 1.0]])
+ADJOINT_HINT = hints.ADJOINT_DEFINITION_HINT
+SPIN_FROM_SHIFT_HINT = hints.ADJOINT_SPIN_FROM_SHIFT_HINT
+SPIN_WITHOUT_SHIFT_HINT = hints.ADJOINT_SPIN_WITHOUT_SHIFT_HINT
 COUPLING_WITHOUT_R_HINT = hints.ADJOINT_COUPLING_WITHOUT_R_HINT
-COUPLING_SIGN_HINT = ("the coupling block has the wrong sign: check the step that moves phi to the right of the cross "
-                      "product, a × b = -b × a")
+COUPLING_SIGN_HINT = hints.ADJOINT_SPIN_SHIFT_SIGN_HINT
 COUPLING_ORDER_HINT = hints.ADJOINT_COUPLING_IDENTITY_HINT
-ADJOINT_HINT = "conjugate the twist matrix block by block, T ξ^ T⁻¹, and read off how its rho and phi parts depend on those of ξ"
 
 
 def _twist_matrix(xi):
@@ -50,40 +55,62 @@ def _twist_matrix(xi):
     return M
 
 
-def _adjoint_hint(adjoint_se3, Ad, satisfies_definition):
-    """Which part of Ad fails, told from Ad itself and the student's adjoint of T_SHIFT."""
-    zero = np.zeros((3, 3))
-    if not (close(Ad[:3, :3], QUARTER_Z, 1e-9) and close(Ad[3:, 3:], QUARTER_Z, 1e-9)):
+def _conjugated_twist(T, xi):
+    """The twist of the 4×4 matrix T ξ^ T⁻¹, read off its entries: [translation part, spin part]."""
+    M = T @ _twist_matrix(xi) @ np.linalg.inv(T)
+    return np.array([M[0, 3], M[1, 3], M[2, 3], M[2, 1], M[0, 2], M[1, 0]])
+
+
+def _adjoint_hint(adjoint_se3, T, Ad):
+    """Which twist Ad carries wrongly at the pose T, told from what Ad does to a pure shift [rho, 0] and a pure spin
+    [0, phi] (compared with the twist of T ξ^ T⁻¹) and from the student's adjoint of T_SHIFT (the same t, no turn)."""
+    shift, spin = np.concatenate([XI[:3], np.zeros(3)]), np.concatenate([np.zeros(3), XI[3:]])
+    from_shift, from_spin = Ad @ shift, Ad @ spin
+    want_shift, want_spin = _conjugated_twist(T, shift), _conjugated_twist(T, spin)
+    if not close(from_shift[3:], np.zeros(3), 1e-9):          # a shift can never come out with a spin
+        return SPIN_FROM_SHIFT_HINT
+    if not close(from_shift[:3], want_shift[:3], 1e-9) or not close(from_spin[3:], want_spin[3:], 1e-9):
         return ADJOINT_HINT
-    coupling, spin_from_shift = Ad[:3, 3:], Ad[3:, :3]
-    if not close(spin_from_shift, zero, 1e-9):        # a pure shift would come out with a spin
-        return ROTATION_FIRST_HINT if close(coupling, zero, 1e-9) else ADJOINT_HINT
-    if close(coupling, zero, 1e-9):
-        return NO_COUPLING_HINT
-    flipped = Ad.copy()
-    flipped[:3, 3:] = -coupling
-    if satisfies_definition(flipped):
+    moved, want = from_spin[:3], want_spin[:3]                 # where a pure spin moves the world's origin
+    if close(moved, want, 1e-9):
+        return ADJOINT_HINT
+    if close(moved, np.zeros(3), 1e-9):
+        return SPIN_WITHOUT_SHIFT_HINT
+    if close(moved, -want, 1e-9):
         return COUPLING_SIGN_HINT
-    unturned = require_shape(adjoint_se3(T_SHIFT), (6, 6), "adjoint_se3(T) for a shift without a turn")
-    if close(unturned[:3, 3:], coupling, 1e-9):
-        return COUPLING_WITHOUT_R_HINT
+    if not close(T[:3, :3], np.eye(3), 1e-12):
+        unturned = require_shape(adjoint_se3(T_SHIFT), (6, 6), "adjoint_se3(T) for a shift without a turn")
+        if close((unturned @ spin)[:3], moved, 1e-9):
+            return COUPLING_WITHOUT_R_HINT
     return COUPLING_ORDER_HINT
 
 
-@public_check("adjoint_se3", "T Exp(ξ) T⁻¹ = Exp(Ad_T ξ) for a quarter turn about z and a shift of (1, 2, 3)")
+def _require_defining_identity(adjoint_se3, T, twists, what, tol=1e-9):
+    """Mismatch unless Exp(Ad_T ξ) = T Exp(ξ) T⁻¹ for each twist ξ, with the hint of _adjoint_hint."""
+    Ad = require_shape(adjoint_se3(T), (6, 6), what)
+    for xi in twists:
+        conjugated = T @ expm(_twist_matrix(xi)) @ np.linalg.inv(T)
+        got = expm(_twist_matrix(Ad @ xi))
+        if not close(got, conjugated, tol):
+            raise Mismatch(f"{what}: Exp(Ad_T ξ) misses T Exp(ξ) T⁻¹ at ξ = {fmt(xi)} ({off_by(got, conjugated)})",
+                           _adjoint_hint(adjoint_se3, T, Ad))
+
+
+@public_check("adjoint_se3", "T Exp(ξ) T⁻¹ = Exp(Ad_T ξ) for three twists at a quarter turn about z and a shift of "
+              "(1, 2, 3)")
 def _(adjoint_se3):
-    from scipy.linalg import expm
+    _require_defining_identity(adjoint_se3, T_QUARTER, (XI, XI_SHIFT, XI_SPIN), "adjoint_se3(T)")
 
+
+@public_check("adjoint_se3", "pure motions: the same identity at a pure turn and at a pure shift, to 1e-12; and a "
+              "pure shift ξ = [ρ, 0] gains no spin")
+def _(adjoint_se3):
+    _require_defining_identity(adjoint_se3, T_TURN, (XI, XI_SHIFT, XI_SPIN), "adjoint_se3 of a pure turn", 1e-12)
+    _require_defining_identity(adjoint_se3, T_SHIFT, (XI, XI_SHIFT, XI_SPIN), "adjoint_se3 of a pure shift", 1e-12)
     Ad = require_shape(adjoint_se3(T_QUARTER), (6, 6), "adjoint_se3(T)")
-    conjugated = T_QUARTER @ expm(_twist_matrix(XI)) @ np.linalg.inv(T_QUARTER)
-
-    def satisfies_definition(A):
-        return close(expm(_twist_matrix(A @ XI)), conjugated, 1e-9)
-
-    if not satisfies_definition(Ad):
-        got = expm(_twist_matrix(Ad @ XI))
-        raise Mismatch(f"Exp(Ad_T ξ) misses T Exp(ξ) T⁻¹ ({off_by(got, conjugated)})",
-                       _adjoint_hint(adjoint_se3, Ad, satisfies_definition))
+    spin = (Ad @ XI_SHIFT)[3:]
+    if not close(spin, np.zeros(3), 1e-12):
+        raise Mismatch(f"Ad_T [ρ, 0] has the spin part {fmt(spin)}", SPIN_FROM_SHIFT_HINT)
 
 
 @public_check("adjoint_se3", "Ad(T1 T2) = Ad(T1) Ad(T2), and Ad(I) = I")
@@ -189,16 +216,14 @@ def _(jacobian_transform_point):
 XI_MODERATE = np.array([0.8, -1.5, 1.1, 0.6, -0.3, 0.7])
 XI_TINY = np.array([0.5, 0.2, -0.4, 3e-7, -2e-7, 6e-7])
 XI_LARGE = np.array([30.0, -20.0, 10.0, 1.5, 2.0, -1.8])
-JR_NO_COUPLING_HINT = ("the top-right block is zero: with a translation part rho, a change of phi also changes the "
-                       "translation of Exp(ξ), so that block couples the two")
-JR_SIGN_HINT = "the coupling (top-right) block has the wrong sign; the diagonal blocks are right"
+JR_NO_COUPLING_HINT = hints.JR_SE3_NO_COUPLING_HINT
+JR_SIGN_HINT = hints.JR_SE3_COUPLING_SIGN_HINT
 JR_LEFT_HINT = ("that is the left Jacobian, Exp(ξ + dξ) ≈ Exp(J dξ) Exp(ξ); here the small step goes on the right: "
                 "carry the nudge felt at instant s to the end of the motion, Exp(-s ξ)")
 JR_INVERSE_HINT = "that is the inverse of the Jacobian of Exp (the Jacobian of Log); return J itself"
 JR_SERIES_HINT = ("exact at a tiny angle but not at {angle}: a series cut off after a few terms; near π its terms "
                   "shrink slowly, so sum many more (or use a closed form or a quadrature rule)")
-JR_DIFFERENCES_HINT = ("close but not exact ({error}): finite differences stop near 1e-8; these identities need an "
-                       "exact route (a closed form, a long enough series or a quadrature rule)")
+JR_DIFFERENCES_HINT = hints.JR_SE3_DIFFERENCES_HINT
 
 
 def _numeric_jr(xi):
@@ -221,7 +246,8 @@ def _(right_jacobian_se3):
     hint = "compare Exp(ξ + dξ) with Exp(ξ) Exp(J dξ) for a small dξ: J must make them agree to first order"
     if close(J[:3, 3:], np.zeros((3, 3)), 1e-12):
         hint = JR_NO_COUPLING_HINT
-    elif close(J[:3, :3], numeric[:3, :3], 1e-6) and close(J[:3, 3:], -numeric[:3, 3:], 1e-6 * scale):
+    elif (close(J[:3, :3], numeric[:3, :3], 1e-6) and close(J[3:], numeric[3:], 1e-6)
+          and close(J[:3, 3:], -numeric[:3, 3:], 1e-6 * scale)):
         hint = JR_SIGN_HINT
     elif close(J @ numeric, np.eye(6), 1e-6 * scale):
         hint = JR_INVERSE_HINT
@@ -251,7 +277,7 @@ def _(right_jacobian_se3):
             hint = JR_DIFFERENCES_HINT.format(error=f"off by {error * scale:.2g}")
         else:
             hint = ("J(-ξ) = Ad_Exp(ξ) J(ξ) says the left and right Jacobians are one matrix seen from the two ends "
-                    "of the motion; check the coupling block and the sign of each term")
+                    "of the motion; compare your J with central differences of its definition, part by part")
         which = "J(-ξ) ≠ Ad_Exp(ξ) J(ξ)" if errors[0] >= errors[1] else "J(ξ) ξ ≠ ξ"
         raise Mismatch(f"{which} at {angle}, |ρ| = {np.linalg.norm(xi[:3]):.3g} m ({error * scale:.2g})", hint)
 

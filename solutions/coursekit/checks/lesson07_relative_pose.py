@@ -16,17 +16,16 @@ from .lesson07 import T_GENERIC, T_GENERIC_2, require_exact
 T_WA = np.array([[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
 T_WB = np.array([[0.0, 0.0, 1.0, 3.0], [1.0, 0.0, 0.0, -1.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
 T_AB = np.array([[1.0, 0.0, 0.0, -3.0], [0.0, 0.0, -1.0, -2.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
-WORLD_DIFFERENCE = np.array([[0.0, 0.0, 1.0, 3.0], [0.0, 1.0, 0.0, -3.0], [-1.0, 0.0, 0.0, 3.0],
+COLLEAGUE_RESULT = np.array([[0.0, 0.0, 1.0, 3.0], [0.0, 1.0, 0.0, -3.0], [-1.0, 0.0, 0.0, 3.0],
                              [0.0, 0.0, 0.0, 1.0]])
 TRANSPOSED = np.array([[1.0, 0.0, 0.0, -1.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [2.0, 0.0, 1.0, 2.0]])
 REVERSED = np.array([[1.0, 0.0, 0.0, 3.0], [0.0, 0.0, 1.0, -2.0], [0.0, -1.0, 0.0, -2.0], [0.0, 0.0, 0.0, 1.0]])
 UNROTATED = np.array([[1.0, 0.0, 0.0, 2.0], [0.0, 0.0, -1.0, -3.0], [0.0, 1.0, 0.0, 2.0], [0.0, 0.0, 0.0, 1.0]])
-WORLD_HINT = ("that is T_wb T_wa⁻¹, the colleague's bug: its inner letters do not chain (b, then a), so "
-              "T_wa T_ab misses T_wb")
+COLLEAGUE_HINT = hints.RELATIVE_POSE_COLLEAGUE_HINT
 TRANSPOSED_HINT = hints.INVERSE_POSE_TRANSPOSE_T1_HINT
 REVERSED_HINT = hints.RELATIVE_POSE_REVERSED_HINT
 UNROTATED_HINT = hints.SHIFT_IN_WORLD_AXES_HINT
-SLIPS = [(WORLD_DIFFERENCE, WORLD_HINT), (TRANSPOSED, TRANSPOSED_HINT), (REVERSED, REVERSED_HINT),
+SLIPS = [(COLLEAGUE_RESULT, COLLEAGUE_HINT), (TRANSPOSED, TRANSPOSED_HINT), (REVERSED, REVERSED_HINT),
          (UNROTATED, UNROTATED_HINT)]
 
 

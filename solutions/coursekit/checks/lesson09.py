@@ -228,7 +228,7 @@ def _(covariance_left_to_right):
     got = require_shape(covariance_left_to_right(PERMUTATION, SIGMA_LEFT), (3, 3), "covariance_left_to_right(R, Σ)")
     if not close(got, COV_RIGHT, 1e-12):
         raise Mismatch(
-            f"got {fmt(got)}, expected {fmt(COV_RIGHT)} ({off_by(got, COV_RIGHT)})",
+            f"Σ_R disagrees with the covariance of ε_R ({off_by(got, COV_RIGHT)})",
             first_match(got, COV_RIGHT_SLIPS, 1e-12)
             or hints.LEFT_TO_RIGHT_WITH_ADJOINT_HINT,
         )
@@ -351,7 +351,7 @@ def _huber_cost(T, P, Q, k):
 
 
 def _log_tail_cost(T, P, Q, k):
-    """A cost whose pull fades beyond k (not Huber's): ½ r² up to k, then ½ k² + k² log(r / k)."""
+    """A cost that grows like log r beyond k (not Huber's linear tail): ½ r² up to k, then ½ k² + k² log(r / k)."""
     r = np.linalg.norm(P @ T[:3, :3].T + T[:3, 3] - Q, axis=1)
     return float(np.sum(np.where(r <= k, 0.5 * r**2, 0.5 * k * k + k * k * np.log(np.maximum(r, k) / k))))
 
@@ -379,13 +379,13 @@ def _robust_hint(got, P, Q, T0, k):
         return hints.MINIMISES_SQUARED_COST_LEAST_HINT
     log_tail = _numeric_gradient(lambda T: _log_tail_cost(T, P, Q, k), got)
     if np.max(np.abs(log_tail)) < 1e-6:
-        return hints.WEIGHTS_K_R_BEYOND_HINT
+        return hints.ROBUST_SLOWER_TAIL_HINT
     if _huber_cost(got, P, Q, k) < _huber_cost(np.asarray(T0, dtype=float), P, Q, k):
         return (
             "the cost went down but the gradient is not zero yet: iterate until your steps are tiny "
             "(|xi| below about 1e-12)"
         )
-    return hints.ROBUST_WEIGHT_QUESTION_HINT
+    return hints.ROBUST_GRADIENT_NOT_ZERO_HINT
 
 
 @public_check("align_pose_robust", "returns a pose where the Huber cost's gradient vanishes (3 of 12 pairs 1 m off)")

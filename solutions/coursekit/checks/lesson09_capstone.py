@@ -16,9 +16,10 @@ from .common import require_shape
 
 
 # Each noisy dataset of these checks, by (seed, pairs, σ, outliers): σ_X, the first-order spread of the best
-# estimate from the noise and the good pairs, and the rotation vectors of what two slips return on it (every pair
-# trusted equally; only the first two pairs used). Stored as numbers so that how they are computed stays off the
-# student's page; tests/test_public_check_constants_lesson09_capstone.py recomputes them.
+# estimate from the noise and the good pairs (the lesson's own cell computes it the same way, in the open), and the
+# rotation vectors of what two slips return on it (every pair trusted equally; only the first two pairs used). The
+# slips' answers are stored as numbers so that the method behind them stays off the student's page;
+# tests/test_public_check_constants_lesson09_capstone.py recomputes every figure.
 NOISY = {
     (91, 20, 0.01, 4): {
         "spread": 0.00420638853633649,
@@ -64,8 +65,8 @@ def _dataset(seed, pairs, sigma, outliers, plane=False):
 
 
 PLANE_HINT = (
-    "right when the turn axes point every way, wrong when they all lie in one plane: there the data fix only two "
-    "directions, and your fit must still choose a proper rotation for the third"
+    "right when the turn axes point every way, wrong when they all lie in one plane: these exact pairs still "
+    "determine X, and the answer must still be a proper rotation"
 )
 
 
@@ -75,8 +76,7 @@ def _answer(hand_eye_rotation, As, Bs):
     if problem:
         raise Mismatch(
             f"hand_eye_rotation returned a matrix that is not a rotation: {problem}",
-            "X must be a rotation: a linear least-squares fit of a 3×3 matrix is not one until you "
-            "project it onto SO(3) (lesson 08)",
+            hints.HAND_EYE_NOT_A_ROTATION_HINT,
         )
     return X
 

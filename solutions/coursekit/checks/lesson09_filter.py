@@ -47,7 +47,7 @@ PREDICT_WRONG_WAY = np.array(
         [0.0020319417246335014, 0.000763071235606186, 0.0042854222108825255],
     ]
 )
-PREDICT_NO_JR = np.array(
+PREDICT_NOISE_SHORT_STEP_ONLY = np.array(
     [
         [0.009353197689496644, -0.0010478571086972358, 0.00019649744716920825],
         [-0.0010478571086972358, 0.00269911846339176, -0.00028075639229964216],
@@ -68,7 +68,7 @@ PREDICT_NO_NOISE = np.array(
         [-0.0010535025528307913, -0.00028075639229964205, 0.0031976838471115955],
     ]
 )
-PREDICT_LEFT_JACOBIAN = np.array(
+PREDICT_NOISE_OLD_AXES = np.array(
     [
         [0.00825342713624529, 0.00013404522039368676, 0.0007141248518997437],
         [0.00013404522039368676, 0.003111152451000655, -0.00013585714551084323],
@@ -85,11 +85,7 @@ PREDICT_SLIPS = [
         "the old error's part of P_new is turned the wrong way round: right when the step does not turn, and turned "
         "by the step's opposite when it does",
     ),
-    (
-        PREDICT_NO_JR,
-        "the noise's part of P_new is right for a short step and wrong for a long one: look again at where the "
-        "noise enters the step, and what carries it from there to the new attitude's error",
-    ),
+    (PREDICT_NOISE_SHORT_STEP_ONLY, hints.PREDICT_NOISE_SHORT_STEP_HINT),
     (
         PREDICT_NOISE_DT,
         "the noise's part of P_new has the wrong size: Q is in (rad/s)² and P_new in rad², so check the units "
@@ -99,11 +95,7 @@ PREDICT_SLIPS = [
         PREDICT_NO_NOISE,
         "the gyro's noise makes the truth drift from the estimate: P must grow by the covariance it adds",
     ),
-    (
-        PREDICT_LEFT_JACOBIAN,
-        "that is the left Jacobian of Exp, which belongs to an error written on the left: ε_new is a right "
-        "perturbation of R_new",
-    ),
+    (PREDICT_NOISE_OLD_AXES, hints.PREDICT_NOISE_OLD_AXES_HINT),
 ]
 
 # attitude_nees: P = L Lᵀ and ε = L u, so that εᵀ P⁻¹ ε = |u|² = 1.69.
@@ -128,7 +120,7 @@ NEES_SLIPS = [
 
 R_GENERIC = Exp([0.4, -1.1, 2.0])
 STEPS = (1e-12, 1e-9, 9.9e-7, 1e-6, 9.9e-4, 1e-3, 1e-2, 9.9e-2, 0.1, 0.7, 2.0, 3.0, np.pi - 1e-9)  # |ω Δt|, rad
-EXACT = 2e-12  # of max |P_new|, as the hidden checks hold it: the first-order covariance is exact, not by differences
+EXACT = 2e-12  # of max |P_new|, as the hidden checks hold it: the closed form to rounding, not by differences
 # The answer's P_new of filter_predict(QUARTER_Z, P0, step / DT * OMEGA / |OMEGA|, DT, Q_GYRO), one per step of STEPS.
 PREDICT_SWEEP_P_NEW = np.array(
     [

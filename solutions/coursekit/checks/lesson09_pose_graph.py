@@ -69,7 +69,7 @@ CONSISTENT_J_I = np.array(
 )
 
 # What the usual slips return at the large edge.
-EDGE_I_NO_JR = np.array(
+EDGE_I_SMALL_RESIDUAL = np.array(
     [
         [
             -0.7418969057076252,
@@ -246,10 +246,7 @@ EDGE_I_NOT_INVERTED = np.array(  # J_i with Log's Jacobian taken the wrong way r
         ],
     ]
 )
-NO_JR_HINT = (
-    "that Jacobian holds only for a small residual: J must be right at a large one too (compare it with a central "
-    "difference of the residual at this edge)"
-)
+SMALL_RESIDUAL_HINT = hints.EDGE_SMALL_RESIDUAL_HINT
 ADJOINT_INVERTED_HINT = (
     "the adjoint is of the wrong pose, or inverted: J_i disagrees with a central difference of the residual in δ_i "
     "even for a consistent edge (r = 0), while J_j agrees"
@@ -263,7 +260,7 @@ SIGN_HINT = hints.EDGE_SIGN_HINT
 REVERSED_HINT = "that is the residual of the reversed edge, -r: the residual is Log(T_ij⁻¹ T_i⁻¹ T_j)"
 
 
-EXACT = 1e-11  # relative to 1 + the largest translation, as the hidden checks hold it: exact Jacobians, not differences
+EXACT = 1e-11  # relative to 1 + the largest translation, as the hidden checks hold it: derived Jacobians, not differences
 FINITE_DIFFERENCES_HINT = hints.EDGE_FINITE_DIFFERENCES_HINT
 
 
@@ -300,7 +297,7 @@ def _(pose_graph_edge):
     if not close(J_j, expected, _tolerance(EDGE_T_I, EDGE_T_J, EDGE_T_IJ)):
         hint = None
         if close(J_j, np.eye(6), 1e-12):
-            hint = NO_JR_HINT
+            hint = SMALL_RESIDUAL_HINT
         elif close(J_j, EDGE_J_NOT_INVERTED, 1e-9):
             hint = NOT_INVERTED_HINT
         elif close(J_j, expected, 1e-7):
@@ -317,7 +314,7 @@ def _(pose_graph_edge):
     expected = EDGE_J_I
     if not close(J_i, expected, _tolerance(EDGE_T_I, EDGE_T_J, EDGE_T_IJ)):
         slips = [
-            (EDGE_I_NO_JR, NO_JR_HINT),
+            (EDGE_I_SMALL_RESIDUAL, SMALL_RESIDUAL_HINT),
             (EDGE_I_ADJOINT_INVERTED, ADJOINT_INVERTED_HINT),
             (EDGE_I_MEASUREMENT_ADJOINT, MEASUREMENT_ADJOINT_HINT),
             (-expected, SIGN_HINT),
@@ -352,7 +349,7 @@ def _(pose_graph_edge):
             if close(J_i, -expected_i, 1e-7)
             else FINITE_DIFFERENCES_HINT
             if close(J_i, expected_i, 1e-7) and close(J_j, expected_j, 1e-7)
-            else "at r = 0, J_j is I and J_i must agree with a central difference of the residual in δ_i",
+            else "at r = 0 both Jacobians must agree with central differences of the residual (in δ_i and in δ_j)",
         )
 
 
