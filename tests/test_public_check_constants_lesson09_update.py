@@ -1,6 +1,6 @@
 """The numbers stored in lesson 09's public checks of filter_update, recomputed from their definitions: the answer
 at the checks' fixed inputs both with the measurement Jacobian by central differences of (R Exp(ε))ᵀ g_w (the MAP
-cost's minimiser and inverse Hessian, as the checks once computed them) and in closed form (the Kalman gain)."""
+cost's minimiser and the inverse of half its Hessian, as the checks once computed them) and in closed form (the Kalman gain)."""
 
 import numpy as np
 import pytest
@@ -16,7 +16,7 @@ def _central(f, n, h=1e-6):
 
 
 def _map_update(R, P, y, g_w, Rn):
-    """Minimiser and inverse Hessian of |ε|²_P⁻¹ + |y - h(0) - H ε|²_Rn⁻¹, H by central differences."""
+    """Minimiser, and inverse of half the Hessian, of |ε|²_P⁻¹ + |y - h(0) - H ε|²_Rn⁻¹, H by central differences."""
     H = _central(lambda e: (R @ Exp(e)).T @ g_w, 3)
     information = np.linalg.inv(P) + H.T @ np.linalg.solve(Rn, H)
     step = np.linalg.solve(information, H.T @ np.linalg.solve(Rn, y - R.T @ g_w))

@@ -2,7 +2,7 @@
 
 The error state is the right perturbation, R_true = R Exp(ε); the measurement is y = R_trueᵀ g_w + v, v ~ N(0, Rn).
 Oracles: the definitions, with scipy's Exp and Log. Log(Rᵀ R_new) must be the minimiser of the linearised MAP cost
-|ε|²_{P⁻¹} + |y - Rᵀ g_w - H ε|²_{Rn⁻¹} and P_new its inverse Hessian, both to 1e-11 relative, with H the exact
+|ε|²_{P⁻¹} + |y - Rᵀ g_w - H ε|²_{Rn⁻¹} and P_new the inverse of half its Hessian, both to 1e-11 relative, with H the exact
 derivative of (R Exp(ε))ᵀ g_w at ε = 0 (tests/test_hidden_oracles_lesson09.py holds it against central differences):
 the docstring's linearisation is exact, and a Jacobian taken by the lesson's central differences (good to about
 3e-10) does not pass (values alone cannot tell an accurate numerical Jacobian from an exact one: a high-order
@@ -137,7 +137,7 @@ def test_update_is_the_map_minimiser(student):
 
 @exercise("filter_update", weight=1)
 def test_update_covariance(student):
-    """P_new is the inverse Hessian of the linearised MAP cost, to 1e-11 of max |P_new|"""
+    """P_new is the inverse of half the Hessian of the linearised MAP cost, to 1e-11 of max |P_new|"""
     for R, P, y, g_w, Rn in _update_cases(9210):
         _, P_new = _pair(student.filter_update(R, P, y, g_w, Rn), "filter_update")
         _, truth, _ = _map(R, P, y, g_w, Rn)
@@ -202,7 +202,7 @@ def test_update_filter_is_consistent(student, ref):
     expect(
         low <= average <= high,
         f"the average NEES over {count} runs is {average:.3g}, outside the 99 % band [{low:.3g}, {high:.3g}]",
-        "over-confident (too large) or over-cautious (too small): compare P_new with the MAP cost's inverse Hessian",
+        "over-confident (too large) or over-cautious (too small): compare P_new with the inverse of half the MAP cost's Hessian",
     )
 
 

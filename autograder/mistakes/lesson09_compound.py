@@ -50,8 +50,8 @@ def compound_pose_covariance(T1, S1, T2, S2):
         "compound_pose_covariance",
         "Ad(T2) instead of Ad(T2⁻¹)",
         _compound(adjoint="AdSE3(T2)"),
-        hint="as if T2 were replaced by its inverse",
-        public_hint="as if T2 were replaced by its inverse",
+        hint="but not as ξ1 moves",
+        public_hint="but not as ξ1 moves",
     ),
     Mistake(
         "compound_other_pose",

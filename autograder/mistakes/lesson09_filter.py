@@ -89,7 +89,7 @@ def filter_predict(R, P, omega_meas, dt, Q):
         "Exp(ω dt) P Exp(ω dt)ᵀ: carried the wrong way",
         _predict(carried="step @ P @ step.T"),
         hint="the wrong way round",
-        public_hint="the wrong way round",
+        public_hint="but not as the error turns",
     ),
     Mistake(
         "predict_noise_dt",

@@ -361,8 +361,8 @@ RETURNED_T0_UNCHANGED_ITERATE_HINT = ("returned T0 unchanged: iterate from T0 un
 SIGN_ROTATION_BLOCK_PHI_HINT = ("the phi columns of J are the negative of the finite differences of T Exp(ξ) p (the "
                                 "rho columns match): check their sign on a sanity case, T = I and p = x, where a turn "
                                 "about z moves p to +y")
-TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes: gyroscope rates are body rates, so each update goes "
-                             "on the right, R ← R Exp(ω_b dt)")
+TURNED_ABOUT_WORLD_S_HINT = ("that turned about the world's axes, but gyroscope rates are body rates, measured in the "
+                             "body's own axes: check on which side of R each sample's small turn belongs (lesson 03)")
 ROBUST_SLOWER_TAIL_HINT = ("your pose is a stationary point of another cost, one that counts residuals beyond k for "
                            "less than Huber's linear tail does (it grows like log r there, not like r)")
 
@@ -411,8 +411,8 @@ COMPOUND_NOT_A_SUM_HINT = ("your S with S2 = 0 and your S with S1 = 0 are both r
                            "are independent, so their contributions to the covariance add")
 COMPOUND_IGNORES_T2_HINT = ("your S ignores T2: it is right when T2 = I and wrong otherwise, yet ξ1 is a twist in "
                             "T1's body frame and ξ one in the frame at the end of the chain")
-COMPOUND_INVERTED_T2_HINT = ("S is right when T2 = I and wrong for a turned or shifted T2, as if T2 were replaced by "
-                             "its inverse; compare it with the spread of simulated chains")
+COMPOUND_INVERTED_T2_HINT = ("S is right when T2 = I and wrong for a turned or shifted T2: the part from S1 is moved "
+                             "to the end of the chain, but not as ξ1 moves; compare it with the spread of simulated chains")
 COMPOUND_DEPENDS_ON_T1_HINT = ("S changes with T1 and should not, and misses what T2 does; compare it with the spread "
                                "of simulated chains")
 COMPOUND_SHIFT_IGNORED_HINT = ("S is right for a T2 that only turns and wrong once T2 also shifts: a spin about T1's "

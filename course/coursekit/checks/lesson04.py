@@ -333,7 +333,7 @@ def _(quat_to_matrix):
     if problem:
         raise Mismatch(problem)
     if not close(R, require_shape(quat_to_matrix(-GENERIC), (3, 3)), 1e-12):
-        raise Mismatch("R(q) differs from R(-q)", "every entry of R(q) is a product of two components of q")
+        raise Mismatch("R(q) differs from R(-q)", "every entry of R(q) is a sum of products of two components of q")
 
 
 @public_check("quat_to_matrix", "the quarter turn about z: x → y (and the identity for [1, 0, 0, 0])")
@@ -345,7 +345,7 @@ def _(quat_to_matrix):
                        "every term linear in w")
     if close(R, np.array([[1.0, 0, 0], [0, 0, -1.0], [0, 1.0, 0]]), 1e-9):
         raise Mismatch("got a quarter turn about x", "scalar last? this course stores q = [w, x, y, z]")
-    # What the quarter turn gives when every term beyond I is half its size (no factor 2, or I + w[v]× + [v]×²).
+    # What the quarter turn gives when a factor of the formula is lost (a typical slip's answer, stored).
     if close(R, [[0.5, -0.5, 0.0], [0.5, 0.5, 0.0], [0.0, 0.0, 1.0]], 1e-9):
         raise Mismatch(f"got\n{fmt(R)}", "e_x went to (0.5, 0.5, 0), of length 0.71, not to e_y: a rotation keeps "
                        "lengths; rotate e_x with the sandwich on paper and compare with your first column, term by "

@@ -15,7 +15,7 @@ from .common import fmt, off_by, require_shape
 
 # 2 rad about (0, 0.6, 0.8): α = 1, written with the course's half angle.
 Q_TWO_RAD = np.array([np.cos(1.0), 0.0, 0.6 * np.sin(1.0), 0.8 * np.sin(1.0)])
-# What q¹ is when α is doubled, and the length of the vector part of q^½ when v is used as the axis (v = sin α u).
+# Two typical slips' answers, stored: their q¹, and the length of their q^½'s vector part.
 Q_ONE_FULL_ANGLE = np.array([-0.4161468365471424, 0.0, 0.545578456095409, 0.7274379414605454])
 HALF_WITHOUT_UNIT_AXIS = 0.4034226801113349
 # What q ** ½ gives, each entry raised to the power ½ (every entry of Q_TWO_RAD is >= 0, so no NaN).

@@ -117,8 +117,8 @@ def _(quat_from_two_vectors):
                        "q = [cos(θ/2), sin(θ/2) u] is a unit quaternion only when its axis u is a unit vector")
     turned, target = _rotate(got, a / np.linalg.norm(a)), b / np.linalg.norm(b)
     if not close(turned, target, 1e-12):
-        miss = np.arctan2(np.linalg.norm(np.cross(turned, target)), turned @ target)
-        raise Mismatch(f"R(q) a/|a| misses b/|b| by {miss:.2g} rad",
+        miss = np.linalg.norm(turned - target)
+        raise Mismatch(f"R(q) a/|a| misses b/|b| by {miss:.2g} (the distance between the two unit vectors)",
                        "R(q) must take the direction of a onto that of b: try it on pairs whose answer you can see, "
                        "x onto y (a quarter turn about +z), y onto x, x onto z, and see where each lands")
     require_same_with_lists(quat_from_two_vectors, (a, b), (4,), "quat_from_two_vectors(a, b)")

@@ -82,8 +82,8 @@ PREDICT_SLIPS = [
     ),
     (
         PREDICT_WRONG_WAY,
-        "the old error's part of P_new is turned the wrong way round: right when the step does not turn, and turned "
-        "by the step's opposite when it does",
+        "the old error's part of P_new is turned, but not as the error turns: right when the step does not turn, "
+        "wrong when it does; follow one small error through the step",
     ),
     (PREDICT_NOISE_SHORT_STEP_ONLY, hints.PREDICT_NOISE_SHORT_STEP_HINT),
     (

@@ -1,7 +1,7 @@
 """Public checks for lesson 09, section 6: the attitude filter's update with a measured direction.
 
 The error state is the right perturbation, R_true = R Exp(ε). The update is compared, at the checks' fixed inputs,
-with numbers stored here: the minimiser and the inverse Hessian of its linearised MAP cost there, and the steps the
+with numbers stored here: the minimiser of its linearised MAP cost and the inverse of half its Hessian there, and the steps the
 usual slips take there (all recomputed by ``tests/test_public_check_constants_lesson09_update.py``, from the
 definition by central differences of (R Exp(ε))ᵀ g_w and in closed form). Nothing here computes an update for
 other inputs; the remaining checks test properties (no innovation, no correction) and the accepted argument types.
@@ -22,7 +22,7 @@ Y_ACCEL = np.array([0.5, 9.6, -0.8])
 R_NOISE = np.array([[4.0, 1.0, 0.0], [1.0, 2.0, 0.0], [0.0, 0.0, 1.0]]) * 1e-2
 
 # The answer of filter_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE): its step Log(Rᵀ R_new) and its P_new, the
-# minimiser and the inverse Hessian of the linearised MAP cost.
+# minimiser of the linearised MAP cost and the inverse of half its Hessian.
 UPDATE_STEP = np.array([0.07951038259168972, -0.006147640176339278, 0.05205047164852342])
 UPDATE_P_NEW = np.array(
     [
@@ -95,13 +95,13 @@ def _(filter_update):
         )
 
 
-@public_check("filter_update", "P_new is the inverse Hessian of the linearised MAP cost")
+@public_check("filter_update", "P_new is the inverse of half the Hessian of the linearised MAP cost")
 def _(filter_update):
     _, P_new = _pair(filter_update(QUARTER_X, P0, Y_ACCEL, GRAVITY_W, R_NOISE), "filter_update")
     expected = UPDATE_P_NEW
     if not close(P_new, expected, EXACT * np.max(np.abs(expected))):
         raise Mismatch(
-            f"P_new disagrees with the inverse Hessian ({off_by(P_new, expected)})",
+            f"P_new disagrees with the inverse of half the Hessian ({off_by(P_new, expected)})",
             P_UNCHANGED_HINT
             if close(P_new, P0, 1e-15)
             else hints.UPDATE_FINITE_DIFFERENCES_HINT
