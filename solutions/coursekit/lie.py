@@ -104,7 +104,9 @@ def _vee_twist(M):
 def AdSE3(T):
     """The adjoint of a pose ``T`` (shape (4, 4)): the 6×6 matrix with T Exp(ξ) T⁻¹ = Exp(Ad_T ξ).
 
-    Twists are written ``[rho, phi]``, translation part first.
+    Twists are written ``[rho, phi]``, translation part first. Computed from the Jacobians of Exp at
+    ξ = Log(T): moving a small step from the right of Exp(ξ) to its left, Exp(ξ) Exp(J_r(ξ) d) ≈
+    Exp(ξ + d) ≈ Exp(J_r(−ξ) d) Exp(ξ), so Ad_T J_r(ξ) = J_r(−ξ) (no block of the matrix is written out).
 
     Examples
     --------
@@ -113,9 +115,8 @@ def AdSE3(T):
     >>> bool(np.allclose(T @ ExpSE3(xi) @ np.linalg.inv(T), ExpSE3(AdSE3(T) @ xi)))
     True
     """
-    pose = np.asarray(T, dtype=float)
-    inverse = np.linalg.inv(pose)
-    return np.column_stack([_vee_twist(pose @ _twist_matrix(e) @ inverse) for e in np.eye(6)])
+    twist = LogSE3(T)
+    return np.linalg.solve(JrSE3(twist).T, JrSE3(-twist).T).T
 
 
 def JrSE3(xi):
