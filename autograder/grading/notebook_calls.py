@@ -15,20 +15,30 @@ lesson and grader version:
    its notebook passed both times and both runs made the same calls and got
    the same values: a master that reads randomness, the clock or anything
    else that changes between runs, and feeds it to a call, records two
-   different lists and is never skipped. A lesson whose master passes a
-   function to a student function (a callback) or gets an exception back is
-   not skipped either.
+   different lists and is never skipped. When the master passes one of its
+   own functions to a student function (a callback: a demonstration's map for
+   ``numerical_jacobian``), each time the student's code called it is noted
+   too, with its arguments, the calls that function made to the student's
+   functions in turn (``boxplus_right``) and their values, and the answer the
+   kernel gave. A lesson whose master gets an exception back is not skipped.
 2. **Replay.** For a student, the lesson's calls go, in order, in one batch, to
    a fresh sandbox of the student's functions for that lesson, as the kernel's
    would (the same program, limits and walls as the hidden suite's calls;
    the feeder hands the student's process one call at a time). The batch stops
    at the first call whose value is not the reference's, bit for bit, so no
    call is made with an input computed from a value the student's own
-   function did not return.
+   function did not return. A callback is answered by the feeder from the
+   notes, and only when the student's code calls it exactly as the
+   reference's did (the same callable, the same arguments, bit for bit, in
+   the same order, as often): any other use fails the call, and the kernel
+   runs, since only the kernel can compute what the notes do not hold. The
+   calls the callable made to the student's functions are made again, at
+   that very moment, in the student's process, as the kernel's would be, and
+   must return the noted values.
 3. **Same values, same notebook.** When every call returned the reference's
    value, the kernel run would have made exactly these calls (by induction:
    each call's inputs come from the master and the values before it, all the
-   reference's) and got exactly these values, so every cell's output is the
+   reference's, and so does every callback's answer) and got exactly these values, so every cell's output is the
    reference run's, which passed: the lesson's run is ``passed`` without a
    kernel. Any other outcome (a different value, an error, a timeout, a batch
    over :data:`REPLAY_BUDGET` seconds, which could have been a cell over its
@@ -55,7 +65,7 @@ from autograder.grading.fingerprint import cache_dir, write_private
 from autograder.lessons.course import Course
 from autograder.sandbox.session import StudentSandbox
 
-FORMAT = 1
+FORMAT = 2  # 2: the callbacks of each call are noted (``exchanges``)
 REPLAY_BUDGET = 20.0  # seconds of student calls in a replay; a nbval cell may take 60 (nbval_runner.py)
 CHUNK_CALLS = 4000  # calls per batch (a batch's replies stop at 8 MiB in the feeder)
 CHUNK_BYTES = 2 * 1024**2  # of call text per batch
@@ -71,6 +81,7 @@ class NotebookTranscript:
     calls: list  # wire text of {"lesson", "name", "args", "kwargs", "timeout"} per call
     results: list  # wire text of the value the reference returned, per call
     timeouts: list  # each call's time limit
+    exchanges: list  # per call, the callbacks it made: [handle, args text, kwargs text, answer] each
 
 
 MEMO_KEY = "notebook calls"
@@ -108,17 +119,20 @@ def read_records(scratch_dir: Path) -> list[dict] | None:
 
 def transcript_from(runs: list[list[dict] | None]) -> NotebookTranscript | None:
     """The lesson's transcript from its recorded runs, or None when it must not be replayed: a run
-    unreadable, runs that differ, a callback, a call that raised, or too many calls."""
+    unreadable, runs that differ, a callback that could not be noted, a call that raised, or too many calls."""
     if not runs or any(run is None for run in runs):
         return None
     first = runs[0]
     if any(run != first for run in runs[1:]) or len(first) > MAX_CALLS:
         return None
-    calls, results, timeouts = [], [], []
+    calls, results, timeouts, exchanges = [], [], [], []
     for entry in first:
-        if not isinstance(entry, dict) or entry.get("callbacks") or not entry.get("ok"):
+        if not isinstance(entry, dict) or not entry.get("ok"):
             return None
         if not isinstance(entry.get("call"), str) or not isinstance(entry.get("text"), str):
+            return None
+        noted = entry.get("exchanges", [] if not entry.get("callbacks") else None)
+        if not isinstance(noted, list) or not all(_is_exchange(item) for item in noted):
             return None
         try:
             timeout = json.loads(entry["call"])["__dict__"]
@@ -128,24 +142,53 @@ def transcript_from(runs: list[list[dict] | None]) -> NotebookTranscript | None:
         calls.append(entry["call"])
         results.append(entry["text"])
         timeouts.append(timeout)
-    return NotebookTranscript(calls=calls, results=results, timeouts=timeouts)
+        exchanges.append(noted)
+    return NotebookTranscript(calls=calls, results=results, timeouts=timeouts, exchanges=exchanges)
+
+
+def _is_exchange(item) -> bool:
+    """``[handle, args text, kwargs text, {"ok": bool, "text" or "error": str}, [[call text, value text], ...]]``,
+    as ``student_client`` notes a callback (the last: the calls to student functions the callable made)."""
+    return (
+        isinstance(item, list)
+        and len(item) == 5
+        and type(item[0]) is int
+        and isinstance(item[1], str)
+        and isinstance(item[2], str)
+        and isinstance(item[3], dict)
+        and isinstance(item[3].get("ok"), bool)
+        and isinstance(item[3].get("text" if item[3]["ok"] else "error"), str)
+        and isinstance(item[4], list)
+        and all(
+            isinstance(pair, list) and len(pair) == 2 and all(isinstance(text, str) for text in pair)
+            for pair in item[4]
+        )
+    )
 
 
 def replays_as_recorded(box: StudentSandbox, transcript: NotebookTranscript) -> bool:
     """Make the lesson's recorded calls in ``box`` (a fresh sandbox of the student's functions), in order, in
-    batches of at most :data:`CHUNK_CALLS` calls or :data:`CHUNK_BYTES` of call text; True when every one
-    returned the reference's value, bit for bit (the kernel run can then be skipped)."""
+    batches of at most :data:`CHUNK_CALLS` calls or :data:`CHUNK_BYTES` of call text, their callbacks answered from
+    the notes; True when every one returned the reference's value, bit for bit, and called back exactly as the
+    reference's did (the kernel run can then be skipped)."""
     spent, start = 0.0, 0
     total = len(transcript.calls)
     while start < total:
         end, size = start, 0
         while end < total and end - start < CHUNK_CALLS and (size < CHUNK_BYTES or end == start):
-            size += len(transcript.calls[end])
+            size += len(transcript.calls[end]) + sum(
+                len(args) + len(kwargs) + len(answer.get("text") or "") + sum(map(len, sum(inner, [])))
+                for _, args, kwargs, answer, inner in transcript.exchanges[end]
+            )
             end += 1
         before = box.time_used
         expected = transcript.results[start:end]
         replies = box.call_batch(
-            transcript.calls[start:end], transcript.timeouts[start:end], budget=REPLAY_BUDGET - spent, expect=expected
+            transcript.calls[start:end],
+            transcript.timeouts[start:end],
+            budget=REPLAY_BUDGET - spent,
+            expect=expected,
+            callbacks=transcript.exchanges[start:end],
         )
         spent += box.time_used - before
         if (

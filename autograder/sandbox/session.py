@@ -442,7 +442,12 @@ class StudentSandbox:
         raise StudentError(kind, f"{name} raised {_format_error(error)}", stdout)
 
     def call_batch(
-        self, calls: list[str], timeouts: list[float | None], budget: float = 2.0, expect: list[str] | None = None
+        self,
+        calls: list[str],
+        timeouts: list[float | None],
+        budget: float = 2.0,
+        expect: list[str] | None = None,
+        callbacks: list[list] | None = None,
     ) -> list[dict] | None:
         """Make several calls in one round trip; return their raw replies, in order, or None.
 
@@ -456,6 +461,9 @@ class StudentSandbox:
         the caller makes its calls one at a time, which says what happened.
         ``expect``: the wire text of each call's expected value; the batch also stops after the first call
         whose value is another (the inputs of the calls after it may have been computed from that value).
+        ``callbacks``: per call, the callbacks it may make and their answers (``[handle, args as wire text, kwargs
+        as wire text, answer]`` each, in order, as :mod:`~autograder.grading.notebook_calls` notes them); the
+        feeder answers them, and a call that calls back in any other way fails.
         """
         try:
             self._ensure_loaded()
@@ -473,6 +481,8 @@ class StudentSandbox:
         )
         if expect is not None:
             line = line[:-2] + ',["expect",%s]]}' % wire.dumps(list(expect))
+        if callbacks is not None:
+            line = line[:-2] + ',["callbacks",%s]]}' % wire.dumps(list(callbacks))
         started = time.monotonic()
         try:
             self._send_line(line)

@@ -21,7 +21,7 @@ Protocol (JSON lines, :mod:`wire`): the grader's requests are those of
 ``exec``, ``call`` and ``bye`` as they are and the runner's reply back. For a
 ``batch`` it sends the runner one ``call`` at a time and answers with
 ``{"ok": true, "replies": [...]}``, stopping after the first call that fails (or that returns another value than
-the batch names in its ``expect`` list),
+the batch names in its ``expect`` list, or calls back otherwise than its ``callbacks`` list says),
 once the calls have run ``budget`` seconds, or once the replies reach
 :data:`MAX_BATCH_BYTES`. If the runner dies, the feeder says
 ``{"died": <raw wait status>, "id": <request>}`` and exits (taking every
@@ -32,11 +32,18 @@ call's callable arguments (:func:`callables_in`). When the student's code
 calls it, the runner asks ``{"callback": k, "args", "kwargs"}``; the feeder
 evaluates a probe itself and passes any other callable (the notebook stage's
 functions) up to whoever sent the call, who answers
-``{"op": "callback_result", "seq", "ok", "text"|"error"}``.
+``{"op": "callback_result", "seq", "ok", "text"|"error"}``. In a ``batch``
+with a ``callbacks`` list (the notebook stage's replay of a recorded lesson),
+the feeder answers a call's callbacks from that list instead, in order, each
+only when the runner asks for the same callable with the same arguments (as
+wire text) and, first, the calls that callable made to student functions,
+made again in the runner, return the values noted; any other callback fails
+the call.
 """
 
 from __future__ import annotations
 
+import json
 import os
 import signal
 import time
@@ -88,13 +95,34 @@ class LineChannel:
         return line
 
 
-def _op_and_id(line):
-    """A request's ``op`` and ``id`` (a wire dict), read without decoding its arguments."""
-    import json
+def _fields(raw):
+    """The items of a wire dict as JSON parsed them (``{"__dict__": [[key, value], ...]}``), values not decoded."""
+    items = raw.get("__dict__", []) if isinstance(raw, dict) else []
+    return {pair[0]: pair[1] for pair in items if isinstance(pair, list) and len(pair) == 2 and type(pair[0]) is str}
 
-    items = json.loads(line).get("__dict__", [])
-    found = {pair[0]: pair[1] for pair in items if isinstance(pair, list) and len(pair) == 2}
-    return found.get("op"), found.get("id", 0)
+
+def _op_and_id(line):
+    """A request's ``op``, ``id`` and items (a wire dict), read without decoding its arguments: a batch's calls
+    go to the runner as the grader wrote them (the runner decodes each, strictly), not decoded and written again."""
+    found = _fields(json.loads(line))
+    return found.get("op"), found.get("id", 0), found
+
+
+def _call_line(call, number, timeout):
+    """The runner's request for one call of a batch (``call`` as JSON parsed it), with its ``op``, ``id`` and
+    time limit, and the callable arguments in it (decoded only when there are any)."""
+    fields = _fields(call)
+    items = [pair for pair in call["__dict__"] if not (isinstance(pair, list) and pair and pair[0] in _SET_HERE)]
+    items += [["op", "call"], ["id", number], ["timeout", fields.get("timeout") or timeout]]
+    text = json.dumps({"__dict__": items}, separators=(",", ":"), allow_nan=False)
+    found = []
+    if '"__probe__"' in text or '"__callback__"' in text:
+        decoded = wire.decode(call)
+        found = callables_in([decoded.get("args", []), decoded.get("kwargs", {})])
+    return text.encode() + b"\n", found
+
+
+_SET_HERE = ("op", "id", "timeout")
 
 
 def _write(fd, data):
@@ -126,6 +154,9 @@ class Feeder:
         self.request_id = 0
         self._probes_fd, self._probes = probes_fd, None
         self._callables = []  # the callable arguments of the call the runner is running
+        self._answers = None  # in a batch with a callbacks list: the running call's expected callbacks, left
+        self._answers_broken = False  # the running call called back otherwise than its list says
+        self._inner_id = 1 << 30  # ids of the calls made again inside a callback (far from the batch's)
 
     # ------------------------------------------------------------ probes
     def probes(self) -> types.ModuleType:
@@ -174,11 +205,42 @@ class Feeder:
         target = self._callables[handle] if type(handle) is int and 0 <= handle < len(self._callables) else None
         if isinstance(target, wire.Probe):
             result = self.evaluate_probe(target, message)
+        elif isinstance(target, wire.Callback) and self._answers is not None:
+            result = self.noted_answer(handle, message)
         elif isinstance(target, wire.Callback):
             result = self.ask_upstream(message)
         else:
             result = {"ok": False, "error": "not a callable argument of this call"}
         self.send_runner(dict(result, op="callback_result", seq=seq))
+
+    def noted_answer(self, handle: int, message: dict) -> dict:
+        """The answer noted for the running call's next callback, if the runner asks exactly for it."""
+        try:
+            asked = [handle, wire.dumps(message.get("args", [])), wire.dumps(message.get("kwargs", {}))]
+        except wire.WireError:
+            asked = None
+        if self._answers and not self._answers_broken and asked == self._answers[0][:3]:
+            _, _, _, answer, inner = self._answers.pop(0)
+            if all(self.call_again(call, value) for call, value in inner):
+                return dict(answer)
+        self._answers_broken = True
+        return {"ok": False, "error": "called back otherwise than the reference's answer did"}
+
+    def call_again(self, call: str, value: str) -> bool:
+        """Make, while the runner waits for a callback, a call the callable made to a student function when it
+        was noted (``call``, wire text); True when it returns ``value``, bit for bit."""
+        if not (isinstance(call, str) and call.endswith("]]}") and isinstance(value, str)):
+            return False
+        self._inner_id += 1
+        outer, self._callables = self._callables, []
+        try:
+            _write(self.runner_fd, (call[:-2] + ',["op","call"],["id",%d]]}\n' % self._inner_id).encode())
+            reply, _ = self.runner_reply()
+        except OSError:
+            raise RunnerGone("stopped reading its requests") from None
+        finally:
+            self._callables = outer
+        return reply.get("ok") is True and reply.get("text") == value
 
     def evaluate_probe(self, probe: wire.Probe, message: dict) -> dict:
         args, kwargs = message.get("args"), message.get("kwargs")
@@ -244,24 +306,45 @@ class Feeder:
             os._exit(0)
 
     def batch(self, request: dict) -> None:
+        """Run a batch's calls one at a time (``request``: the batch's items as JSON parsed them, see
+        :func:`_op_and_id`); answer with the replies as the runner wrote them."""
         replies, spent, size = [], 0.0, 0
         timeout = request.get("timeout") or 5.0
         expect = request.get("expect") if isinstance(request.get("expect"), list) else None
+        noted = wire.decode(request["callbacks"]) if isinstance(request.get("callbacks"), list) else None
+        budget = request.get("budget") if type(request.get("budget")) in (int, float) else 2.0
         for number, call in enumerate(request.get("calls") or []):
-            if not isinstance(call, dict):
+            if not isinstance(call, dict) or not isinstance(call.get("__dict__"), list):
                 break
-            self._callables = callables_in([call.get("args", []), call.get("kwargs", {})])
-            self.send_runner(dict(call, op="call", id=number + 1, timeout=call.get("timeout") or timeout))
-            reply, line = self.runner_reply()
-            reply.pop("id", None)
-            replies.append(reply)
+            line, self._callables = _call_line(call, number + 1, timeout)
+            answers = noted[number] if noted is not None and number < len(noted) else None
+            self._answers = list(answers) if isinstance(answers, list) else None
+            self._answers_broken = False
+            try:
+                _write(self.runner_fd, line)
+            except OSError:
+                raise RunnerGone("stopped reading its requests") from None
+            try:
+                reply, line = self.runner_reply()
+            finally:
+                left, self._answers = self._answers, None
+            if left is not None and (left or self._answers_broken):  # called back otherwise, or fewer times
+                reply = {"ok": False, "error": {"type": "Replay", "message": "called back otherwise", "where": ""}}
+                line = wire.dumps(reply).encode()
+            replies.append(line)
             spent += float(reply.get("seconds") or 0.0)
             size += len(line)
-            if not reply.get("ok") or spent > request.get("budget", 2.0) or size > MAX_BATCH_BYTES:
+            if not reply.get("ok") or spent > budget or size > MAX_BATCH_BYTES:
                 break
             if expect is not None and (number >= len(expect) or reply.get("text") != expect[number]):
                 break  # a value other than the one expected: the inputs of later calls may come from it
-        self.send_upstream({"ok": True, "replies": replies, "id": self.request_id})
+        # the replies as the runner wrote them (each decoded above, so plain data), each still with its "id"
+        head = b'{"__dict__":[["ok",true],["replies",['
+        tail = b']],["id",%d]]}\n' % int(self.request_id)
+        try:
+            _write(self.upstream_out, head + b",".join(replies) + tail)
+        except OSError:
+            os._exit(0)
 
     def report_death(self, why: str | None = None) -> None:
         """Tell the grader how the runner ended (its raw wait status, or ``why`` it was stopped), then
@@ -292,9 +375,9 @@ class Feeder:
                 line = self.upstream.read_line()
                 if line is None:
                     return
-                op, self.request_id = _op_and_id(line)
+                op, self.request_id, fields = _op_and_id(line)
                 if op == "batch":
-                    self.batch(wire.loads(line.decode("utf-8")))
+                    self.batch(fields)
                 else:
                     self.forward(None, line)
                     if op == "bye":

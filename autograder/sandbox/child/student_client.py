@@ -137,6 +137,10 @@ def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, t
             f"{name} can only be given numbers, arrays, lists, tuples, dicts and functions here, not {error}"
         ) from None
     deadline = time.monotonic() + timeout + MARGIN
+    recording = bool(os.environ.get("AUTOGRADER_RECORD_CALLS"))
+    noted = _Exchanges()
+    parent = _OPEN[-1] if _OPEN else None  # this call is made by a callable that an outer call called back
+    _OPEN.append(noted)
     try:
         channel.write(line)
         while True:
@@ -146,7 +150,10 @@ def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, t
             if "died" in message:
                 raise StudentSandboxGone(str(message.get("why") or "ended"))
             if "callback" in message:
-                channel.send(_answer_callback(callables, message))
+                answer = _answer_callback(callables, message)
+                if recording:
+                    noted.add(message, answer)
+                channel.send(answer)
                 continue
             if message.get("id") != request["id"]:
                 raise StudentSandboxGone("answered another request")
@@ -154,8 +161,12 @@ def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, t
     except (StudentSandboxGone, RunnerGone, OSError, wire.WireError) as error:
         channel.gone = str(error) or type(error).__name__
         raise StudentSandboxGone(f"calling {name}, the student's code {channel.gone}") from None
-    if os.environ.get("AUTOGRADER_RECORD_CALLS"):
-        _record(request, callables, message)
+    finally:
+        _OPEN.pop()
+    if parent is not None:
+        parent.made(request, callables, message, noted)
+    elif recording:
+        _record(request, callables, message, noted)
     if message.get("stdout"):
         sys.stdout.write(str(message["stdout"]))
     if not message.get("ok"):
@@ -163,25 +174,65 @@ def call(lesson: str, name: str, args: tuple = (), kwargs: dict | None = None, t
     return wire.loads(message["text"], max_bytes=MAX_REPLY_BYTES)
 
 
+class _Exchanges:
+    """The callbacks one call made, in order, as the notebook stage's replay feeds them back: ``[handle, args as
+    wire text, kwargs as wire text, the answer sent, the calls to student functions the callable made]`` each,
+    the last as ``[call as wire text, value as wire text]`` pairs (a demonstration's map that calls
+    ``boxplus_right``). ``nested`` when they cannot be replayed: such a call failed, passed a callable itself,
+    or an argument could not be written down."""
+
+    def __init__(self):
+        self.items, self.nested, self.inner = [], False, []
+
+    def made(self, request, callables, message, exchanges):
+        """Note a call to a student function that the callable being answered made (only while recording)."""
+        if not os.environ.get("AUTOGRADER_RECORD_CALLS"):
+            return
+        if callables or exchanges.items or not message.get("ok") or not isinstance(message.get("text"), str):
+            self.nested = True
+            return
+        self.inner.append([_call_text(request), message["text"]])
+
+    def add(self, message, answer):
+        inner, self.inner = self.inner, []
+        try:
+            args, kwargs = wire.dumps(message.get("args", [])), wire.dumps(message.get("kwargs", {}))
+        except wire.WireError:
+            self.nested = True
+            return
+        kept = {key: answer[key] for key in ("ok", "text", "error") if key in answer}
+        self.items.append([message.get("callback"), args, kwargs, kept, inner])
+
+    def noted(self):
+        return None if self.nested else self.items
+
+
+def _call_text(request):
+    return wire.dumps({key: request[key] for key in ("lesson", "name", "args", "kwargs", "timeout")})
+
+
+_OPEN = []  # the exchanges of the calls in progress, outermost first (a callable may call a student function)
 _RECORDED_BYTES = {}  # lesson -> bytes noted so far (-1 once over the budget)
 
 
-def _record(request, callables, message):
+def _record(request, callables, message, exchanges):
     """Note one call and its reply for the grader (only when the kernel runs the *reference*'s functions,
-    once per lesson: ``nbval_stage.record_notebook_calls``), one JSON line per call in the lesson's own file,
+    once per lesson: ``nbval_stage.record_notebook_calls``) with the callbacks it made (``exchanges``), one JSON
+    line per call in the lesson's own file,
     ``$AUTOGRADER_RECORD_CALLS-<lesson>.jsonl``. Past ``$AUTOGRADER_RECORD_BYTES`` one line saying so
     ends the lesson's notes (it will not be replayed); a failed write never reaches the notebook."""
     lesson = str(request["lesson"])
     written = _RECORDED_BYTES.get(lesson, 0)
     if written < 0 or not lesson.isalnum():
         return
-    call_text = wire.dumps({key: request[key] for key in ("lesson", "name", "args", "kwargs", "timeout")})
+    call_text = _call_text(request)
     entry = {
         "lesson": lesson,
         "call": call_text,
         "ok": bool(message.get("ok")),
         "text": message.get("text") if isinstance(message.get("text"), str) else None,
         "callbacks": len(callables),
+        "exchanges": exchanges.noted(),
     }
     line = json.dumps(entry) + "\n"
     if written + len(line) > int(os.environ.get("AUTOGRADER_RECORD_BYTES", "0")):
