@@ -55,18 +55,12 @@ def _twist_matrix(xi):
     return M
 
 
-def _conjugated_twist(T, xi):
-    """The twist of the 4×4 matrix T ξ^ T⁻¹, read off its entries: [translation part, spin part]."""
-    M = T @ _twist_matrix(xi) @ np.linalg.inv(T)
-    return np.array([M[0, 3], M[1, 3], M[2, 3], M[2, 1], M[0, 2], M[1, 0]])
-
-
 def _adjoint_hint(adjoint_se3, T, Ad):
     """Which twist Ad carries wrongly at the pose T, told from what Ad does to a pure shift [rho, 0] and a pure spin
-    [0, phi] (compared with the twist of T ξ^ T⁻¹) and from the student's adjoint of T_SHIFT (the same t, no turn)."""
+    [0, phi] (compared with coursekit.lie's AdSE3) and from the student's adjoint of T_SHIFT (the same t, no turn)."""
     shift, spin = np.concatenate([XI[:3], np.zeros(3)]), np.concatenate([np.zeros(3), XI[3:]])
     from_shift, from_spin = Ad @ shift, Ad @ spin
-    want_shift, want_spin = _conjugated_twist(T, shift), _conjugated_twist(T, spin)
+    want_shift, want_spin = AdSE3(T) @ shift, AdSE3(T) @ spin
     if not close(from_shift[3:], np.zeros(3), 1e-9):          # a shift can never come out with a spin
         return SPIN_FROM_SHIFT_HINT
     if not close(from_shift[:3], want_shift[:3], 1e-9) or not close(from_spin[3:], want_spin[3:], 1e-9):
