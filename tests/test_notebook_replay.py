@@ -102,10 +102,8 @@ def _notebook_verdicts(result):
     }
 
 
-@pytest.mark.parametrize("case", list(CASES))
-def test_the_skip_path_gives_the_full_paths_verdicts(tmp_path, monkeypatch, transcripts, case):
-    overrides = {"rotate_point": CASES[case]} if CASES[case] else {}
-    folder = build_submission(tmp_path / case, overrides, lessons=("01",))
+def _graded_both_ways(monkeypatch, folder, lesson):
+    """``(with the transcripts, with every kernel run, what each replay returned)`` for one submission's lesson."""
     replayed = []
     original = notebook_calls.replays_as_recorded
 
@@ -114,9 +112,17 @@ def test_the_skip_path_gives_the_full_paths_verdicts(tmp_path, monkeypatch, tran
         return replayed[-1]
 
     monkeypatch.setattr(notebook_calls, "replays_as_recorded", spy)
-    with_skip = grade(folder, lessons=("01",), nbval=True)
+    with_skip = grade(folder, lessons=(lesson,), nbval=True)
     monkeypatch.setitem(THIS_COURSE.reference.memo, notebook_calls.MEMO_KEY, {})  # the old path: every kernel runs
-    full = grade(folder, lessons=("01",), nbval=True)
+    full = grade(folder, lessons=(lesson,), nbval=True)
+    return with_skip, full, replayed
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_skip_path_gives_the_full_paths_verdicts(tmp_path, monkeypatch, transcripts, case):
+    overrides = {"rotate_point": CASES[case]} if CASES[case] else {}
+    folder = build_submission(tmp_path / case, overrides, lessons=("01",))
+    with_skip, full, replayed = _graded_both_ways(monkeypatch, folder, "01")
 
     assert _notebook_verdicts(with_skip) == _notebook_verdicts(full)
     assert with_skip.score == full.score
@@ -148,17 +154,7 @@ def test_callbacks_are_replayed_only_when_called_as_the_reference_did(tmp_path, 
         for name, change in CALLBACK_CASES[case].items()
     }
     folder = build_submission(tmp_path / case, overrides, lessons=("06",))
-    replayed = []
-    original = notebook_calls.replays_as_recorded
-
-    def spy(box, transcript):
-        replayed.append(original(box, transcript))
-        return replayed[-1]
-
-    monkeypatch.setattr(notebook_calls, "replays_as_recorded", spy)
-    with_skip = grade(folder, lessons=("06",), nbval=True)
-    monkeypatch.setitem(THIS_COURSE.reference.memo, notebook_calls.MEMO_KEY, {})
-    full = grade(folder, lessons=("06",), nbval=True)
+    with_skip, full, replayed = _graded_both_ways(monkeypatch, folder, "06")
 
     assert _notebook_verdicts(with_skip) == _notebook_verdicts(full)
     assert with_skip.score == full.score
